@@ -1,0 +1,114 @@
+// doublet — lowers GLSL doubles (double, dvec2-4) to float-float GLSL.
+//
+// The library entry point. No exception crosses this API: every failure is a
+// Diagnostic in Result::diagnostics and Result::ok == false.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace doublet {
+
+enum class Stage { Vertex, Fragment, Compute };
+
+// Output dialects. es* are GLSL ES, glsl* desktop GLSL (core profile).
+enum class Target { Es100, Es300, Es310, Es320, Glsl330, Glsl450 };
+
+// How the float-float error terms are protected from the driver's optimizer.
+//  Precise: every rule temporary is declared `precise` (ES 3.20, desktop 4.00+,
+//           or ES 3.10 with GL_EXT_gpu_shader5 when allowed).
+//  Uniform: every rule step adds an opaque `uniform float` that GL zero-fills at
+//           link time, so the compiler cannot prove algebraic identities.
+//  Auto:    Precise where the target has it, Uniform otherwise.
+enum class GuardKind { Auto, Precise, Uniform, None /* unprotected: tests only */ };
+
+enum class Severity { Error, Warning, Note };
+
+struct Diagnostic {
+  std::string file;
+  int line = 0;    // 1-based; 0 when not tied to a place
+  int column = 0;  // 1-based; 0 when unknown
+  Severity severity = Severity::Error;
+  std::string message;
+};
+
+// `file:line:col: error: message`, the form compilers print.
+std::string format_diagnostic(const Diagnostic& d);
+
+// Resolves `#include "name"` for the front end. Return std::nullopt when the
+// file cannot be found; `resolved_path` names the file for diagnostics/depfiles.
+struct IncludeResult {
+  std::string resolved_path;
+  std::string contents;
+};
+class Includer {
+ public:
+  virtual ~Includer() = default;
+  virtual std::optional<IncludeResult> include(std::string_view requested,
+                                               std::string_view includer_path) = 0;
+};
+
+struct Options {
+  std::optional<Stage> stage;          // required; the CLI derives it from the extension
+  Target target = Target::Es300;
+  std::string file_name = "<stdin>";   // used in diagnostics
+  std::vector<std::pair<std::string, std::string>> defines;  // -D NAME[=VALUE]
+  std::vector<std::string> include_dirs;                     // -I DIR (used when includer is null)
+  Includer* includer = nullptr;        // overrides include_dirs when set
+  std::string hi_suffix = "_hi";
+  std::string lo_suffix = "_lo";
+  GuardKind guard = GuardKind::Auto;
+  bool allow_gpu_shader5 = false;      // es310: use `precise` via GL_EXT_gpu_shader5
+  std::string guard_uniform_name = "df_guard";
+};
+
+// One original interface variable and what it became in the output.
+struct InterfaceVariable {
+  std::string name;          // as the user wrote it
+  std::string storage;       // "in", "out", "uniform", "attribute", "varying", "buffer"
+  std::string type;          // original GLSL type, e.g. "dvec3"
+  bool split = false;        // true when the variable held doubles and was split
+  std::string lowered_type;  // type of each emitted variable, e.g. "vec3"
+  std::vector<std::string> lowered_names;  // {"X_hi","X_lo"} when split, else {"X"}
+  std::vector<int> locations;              // explicit locations of lowered_names, if any
+};
+
+struct GuardInfo {
+  std::string kind;          // "precise", "uniform" or "none"
+  std::string uniform_name;  // for kind == "uniform"
+  std::string uniform_type;  // "float"
+  double required_value = 0; // the value the host must leave it at (GL's default 0)
+};
+
+struct Manifest {
+  std::string stage;   // "vert", "frag", "comp"
+  std::string target;  // "es300", ...
+  std::vector<InterfaceVariable> variables;
+  GuardInfo guard;
+  std::string to_json() const;  // pretty-printed JSON
+};
+
+struct Result {
+  bool ok = false;
+  std::string output;                    // the lowered shader (empty unless ok)
+  std::vector<Diagnostic> diagnostics;   // errors and warnings, in source order
+  Manifest manifest;
+  std::vector<std::string> included_files;
+};
+
+Result lower(std::string_view source, const Options& options);
+
+// Spelling helpers shared by the CLI and tests.
+std::string_view to_string(Target t);           // "es300"
+std::string_view to_string(Stage s);            // "vert"
+std::optional<Target> parse_target(std::string_view name);
+std::optional<Stage> parse_stage(std::string_view name);  // "vert"|"frag"|"comp"
+// Stage from a file name: x.vert, x.frag, x.comp, x.vert.glsl, ...
+std::optional<Stage> stage_from_path(std::string_view path);
+bool target_is_es(Target t);
+int target_version(Target t);  // 100, 300, 310, 320, 330, 450
+
+}  // namespace doublet

@@ -1,0 +1,72 @@
+// The float-float runtime: GLSL rule files from rules/, embedded at build time,
+// instantiated per vector width and guard style, emitted on demand.
+//
+// Rule file format (see docs/rules-format.md): each function is a "chunk"
+// (its comment header + definition). Placeholders, substituted per width W:
+//   $DF  df_double | df_dvec2 | df_dvec3 | df_dvec4   (the float-float type)
+//   $F   float | vec2 | vec3 | vec4                   (the float type)
+//   $B   bool  | bvec2 | bvec3 | bvec4
+//   $I   int   | ivec2 | ivec3 | ivec4
+//   $U   uint  | uvec2 | uvec3 | uvec4
+//   $W   1 | 2 | 3 | 4
+//   $PRECISE   `precise ` when the guard is Precise, empty otherwise
+//   $G(expr)   `(expr)` when Precise or None, `((expr) + df_guard)` when Uniform
+// Annotations in the chunk's header comment:
+//   // @widths 1 2 3 4        widths this chunk is instantiated for (default: 1)
+//   // @min-es 300            lowest ES version that may use it (default 100)
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace doublet::rules {
+
+enum class GuardStyle { Precise, Uniform, None };
+
+struct RuleRef {
+  std::string name;  // e.g. "df_add"
+  int width = 1;     // 1..4
+  bool operator==(const RuleRef&) const = default;
+};
+
+struct EmitRequest {
+  std::vector<RuleRef> used;        // what the lowered code calls directly
+  GuardStyle guard = GuardStyle::Uniform;
+  std::string guard_uniform = "df_guard";
+  int es_version = 300;             // 100/300/310/320; desktop targets pass 320
+};
+
+struct EmitResult {
+  bool ok = false;
+  std::string text;            // struct definitions, guard uniform, functions: dependency order
+  std::string error;           // e.g. "df_to_uint is not available on ES 1.00"
+};
+
+class RuleLibrary {
+ public:
+  // The library built from the embedded rules/ files (parsed once, thread-safe).
+  static const RuleLibrary& builtin();
+  // Parse rule sources given as {file name, text}; for tests.
+  static std::optional<RuleLibrary> parse(const std::vector<std::pair<std::string, std::string>>& files,
+                                          std::string* error);
+
+  bool has(const RuleRef& ref) const;
+  // Emits the transitive closure of `used` (plus the df_* struct types they
+  // need), each function exactly once, callees before callers.
+  EmitResult emit(const EmitRequest& request) const;
+  // Every {name,width} the library defines (for tests that instantiate all).
+  std::vector<RuleRef> all() const;
+
+  RuleLibrary();
+  ~RuleLibrary();
+  RuleLibrary(RuleLibrary&&) noexcept;
+  RuleLibrary& operator=(RuleLibrary&&) noexcept;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace doublet::rules
