@@ -1,0 +1,55 @@
+// doublet — command-line front end. See `doublet --help`.
+#include <exception>
+#include <iostream>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+
+#ifndef DOUBLET_VERSION
+#define DOUBLET_VERSION "unknown"
+#endif
+
+namespace doublet::cli {
+
+int usage_error(const CLI::App& command, std::string_view message) {
+  std::string path = command.get_name();
+  for (const CLI::App* p = command.get_parent(); p != nullptr; p = p->get_parent())
+    path = p->get_name() + " " + path;
+  std::cerr << path << ": error: " << message << "\nRun with --help for more information.\n";
+  return kExitUsage;
+}
+
+}  // namespace doublet::cli
+
+int main(int argc, char** argv) {
+  using namespace doublet::cli;
+  CLI::App app{"doublet " DOUBLET_VERSION
+               " - lowers GLSL doubles (double, dvec2-4) to float-float GLSL ES / desktop GLSL",
+               "doublet"};
+  app.set_version_flag("--version", "doublet " DOUBLET_VERSION);
+  app.require_subcommand(1);
+  app.footer("Exit status: 0 success, 1 usage error, 2 input/output or compile error.");
+
+  std::vector<Command> commands;
+  commands.push_back(add_lower_command(app));
+  // Later: verify, bench, plan.
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help / --version exit 0; every real parse error is a usage error.
+    int rc = app.exit(e);
+    return rc == 0 ? kExitOk : kExitUsage;
+  }
+
+  try {
+    for (const Command& c : commands)
+      if (c.app->parsed()) return c.run();
+  } catch (const std::exception& e) {
+    std::cerr << "doublet: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+  return usage_error(app, "no command given");
+}
