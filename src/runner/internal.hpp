@@ -1,0 +1,37 @@
+// Internal interfaces between the runner's translation units.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "runner/runner.hpp"
+
+namespace doublet::runner::detail {
+
+// Where a live loose uniform sits in the global uniform block (std140, from glslang reflection).
+struct UniformSlot {
+  uint32_t offset = 0;
+  bool is_float = false;  // only `float` can be set through ComputeJob::float_uniforms
+};
+
+struct SpirvProgram {
+  std::vector<uint32_t> words;
+  std::map<std::string, UniformSlot> uniforms;  // live members of the global uniform block
+  uint32_t uniform_block_size = 0;              // 0 when the shader has no loose uniforms
+  std::vector<int> ssbo_bindings;               // bindings of the shader's buffer blocks
+};
+
+// glslang compile + link + IO mapping + reflection + SPIRV-Tools validation.
+bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error);
+
+// True if the module declares OpCapability Float64.
+bool spirv_uses_float64(const std::vector<uint32_t>& words);
+
+ComputeResult vulkan_run(const SpirvProgram& program, const ComputeJob& job);
+std::string vulkan_unavailable_reason();
+ComputeResult gles_run(const ComputeJob& job);
+std::string gles_unavailable_reason();
+
+}  // namespace doublet::runner::detail

@@ -1,0 +1,41 @@
+#include "runner/runner.hpp"
+
+#include "runner/internal.hpp"
+
+namespace doublet::runner {
+
+const char* backend_name(Backend b) { return b == Backend::Vulkan ? "Vulkan" : "GLES"; }
+
+ComputeResult run_compute(Backend backend, const ComputeJob& job) {
+  if (backend == Backend::Gles) return detail::gles_run(job);
+  detail::SpirvProgram program;
+  std::string error;
+  if (!detail::compile_glsl(job.glsl, &program, &error)) {
+    ComputeResult result;
+    result.error = std::move(error);
+    return result;
+  }
+  return detail::vulkan_run(program, job);
+}
+
+ComputeResult run_spirv_compute(const std::vector<uint32_t>& spirv, const ComputeJob& job) {
+  ComputeResult result;
+  if (!job.float_uniforms.empty()) {
+    result.error = "run_spirv_compute cannot set float_uniforms (no reflection for raw SPIR-V)";
+    return result;
+  }
+  if (std::string v = validate_spirv(spirv); !v.empty()) {
+    result.error = "invalid SPIR-V: " + v;
+    return result;
+  }
+  detail::SpirvProgram program;
+  program.words = spirv;
+  // Without reflection the SSBO bindings are unknown; the layout still offers bindings 0..n-1.
+  return detail::vulkan_run(program, job);
+}
+
+std::string backend_unavailable_reason(Backend backend) {
+  return backend == Backend::Gles ? detail::gles_unavailable_reason() : detail::vulkan_unavailable_reason();
+}
+
+}  // namespace doublet::runner

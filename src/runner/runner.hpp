@@ -1,0 +1,62 @@
+// doublet_runner: executes GLSL compute shaders on real Mesa drivers, so that tests can see what
+// the drivers' optimizers actually do to float-float code (see /work/shared/NUMERICS.md).
+//   Backend::Vulkan — glslang → SPIR-V (validated by SPIRV-Tools) → lavapipe.
+//   Backend::Gles   — the text as-is → Mesa's GLES 3.2 compiler (llvmpipe, EGL surfaceless).
+// The driver objects (VkInstance/VkDevice, EGL context) are created once per process, lazily;
+// run_compute is thread-safe (calls on one backend are serialised).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace doublet::runner {
+
+enum class Backend { Vulkan, Gles };
+
+const char* backend_name(Backend);
+
+struct ComputeJob {
+  // Full GLSL source with its #version line.
+  // Vulkan: compiled by glslang with relaxed Vulkan rules: bindings/locations auto-mapped, loose
+  //   uniforms gathered into a global uniform block (set kUniformSet, binding kUniformBinding).
+  //   "#version 450" text may use double/dvec (needs shaderFloat64; reported if missing).
+  // Gles: handed as-is to glShaderSource; ES 3.10/3.20 compute.
+  std::string glsl;
+  // buffers[i] is bound as SSBO binding i (set 0 on Vulkan); contents uploaded before the dispatch.
+  std::vector<std::vector<uint8_t>> buffers;
+  // Loose `uniform float` values by name. Unlisted uniforms stay 0. A name the compiler removed
+  // (inactive) is ignored, as in GL; a name bound to a non-float uniform is an error.
+  std::map<std::string, float> float_uniforms;
+  uint32_t groups_x = 1, groups_y = 1, groups_z = 1;
+};
+
+struct ComputeResult {
+  bool ok = false;
+  std::string error;                          // compile log / "invalid SPIR-V: ..." / driver error
+  std::vector<std::vector<uint8_t>> buffers;  // every buffer, read back after the dispatch
+  std::string device;                         // VkPhysicalDeviceProperties::deviceName / GL_RENDERER
+};
+
+ComputeResult run_compute(Backend, const ComputeJob&);
+
+// Runs an already-compiled SPIR-V compute module on Vulkan (validated first, like compiled text).
+// Loose-uniform offsets are unknown here, so job.float_uniforms must be empty; job.glsl is ignored.
+ComputeResult run_spirv_compute(const std::vector<uint32_t>& spirv, const ComputeJob&);
+
+// glslang front end used by the Vulkan backend, exposed for tools/tests. Returns false and sets
+// *error (compile/link log, or "invalid SPIR-V: ...") on failure.
+bool compile_compute_to_spirv(const std::string& glsl, std::vector<uint32_t>* spirv, std::string* error);
+
+// SPIRV-Tools validation for the Vulkan 1.1 environment. Empty when valid, else the messages.
+std::string validate_spirv(const std::vector<uint32_t>& spirv);
+
+// Empty when the backend works on this machine, else why not. Tests report it; they never skip.
+std::string backend_unavailable_reason(Backend);
+
+// Descriptor slot of the glslang global uniform block on Vulkan (SSBOs live in set 0).
+inline constexpr uint32_t kUniformSet = 1;
+inline constexpr uint32_t kUniformBinding = 0;
+
+}  // namespace doublet::runner

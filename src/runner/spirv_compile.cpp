@@ -1,0 +1,133 @@
+// GLSL → SPIR-V with glslang, plus SPIRV-Tools validation, for the Vulkan backend.
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <spirv-tools/libspirv.hpp>
+
+#include <memory>
+#include <mutex>
+#include <sstream>
+
+#include "runner/internal.hpp"
+
+namespace doublet::runner {
+namespace detail {
+namespace {
+
+constexpr const char* kGlobalBlockName = "doublet_GlobalUniforms";
+constexpr int kGlFloat = 0x1406;  // GL_FLOAT, glslang's reflection type code for `float`
+
+// glslang keeps process-wide state (symbol tables); initialise it once and serialise compiles.
+std::mutex& glslang_mutex() {
+  static std::mutex mu;
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+  return mu;
+}
+
+}  // namespace
+
+bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error) {
+  std::lock_guard<std::mutex> lock(glslang_mutex());
+  const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+
+  glslang::TShader shader(EShLangCompute);
+  const char* text = glsl.c_str();
+  const char* name = "job.comp";
+  shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+  // Relaxed rules accept GL-style text (loose uniforms, no explicit bindings), which is what the
+  // compiler under test emits; loose uniforms go to one block we fill from reflection.
+  shader.setEnvInputVulkanRulesRelaxed();
+  shader.setAutoMapBindings(true);
+  shader.setAutoMapLocations(true);
+  shader.setGlobalUniformBlockName(kGlobalBlockName);
+  shader.setGlobalUniformSet(kUniformSet);
+  shader.setGlobalUniformBinding(kUniformBinding);
+
+  if (!shader.parse(GetDefaultResources(), 100, false, messages)) {
+    *error = std::string("GLSL compile failed (glslang):\n") + shader.getInfoLog() + shader.getInfoDebugLog();
+    return false;
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages) || !program.mapIO()) {
+    *error = std::string("GLSL link failed (glslang):\n") + program.getInfoLog() + program.getInfoDebugLog();
+    return false;
+  }
+  // SeparateBuffers: SSBOs are listed as buffer blocks, not mixed into the uniform blocks.
+  if (!program.buildReflection(EShReflectionSeparateBuffers)) {
+    *error = "glslang reflection failed";
+    return false;
+  }
+
+  SpirvProgram result;
+  for (int i = 0; i < program.getNumUniformBlocks(); ++i) {
+    const glslang::TObjectReflection& block = program.getUniformBlock(i);
+    if (block.name != kGlobalBlockName) {
+      *error = "unsupported: uniform block '" + block.name + "' (only loose uniforms can be fed by the runner)";
+      return false;
+    }
+    result.uniform_block_size = static_cast<uint32_t>(block.size);
+  }
+  for (int i = 0; i < program.getNumUniformVariables(); ++i) {
+    const glslang::TObjectReflection& u = program.getUniform(i);
+    if (u.index < 0) {
+      *error = "unsupported: opaque uniform '" + u.name + "' (samplers/images are not fed by the runner)";
+      return false;
+    }
+    result.uniforms[u.name] = UniformSlot{static_cast<uint32_t>(u.offset), u.glDefineType == kGlFloat && u.size == 1};
+  }
+  for (int i = 0; i < program.getNumBufferBlocks(); ++i) result.ssbo_bindings.push_back(program.getBufferBlock(i).getBinding());
+
+  glslang::SpvOptions options;
+  options.disableOptimizer = true;  // the driver's optimizer is what we want to observe, not spirv-opt's
+  options.validate = false;         // validated below with a readable message
+  spv::SpvBuildLogger logger;
+  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), result.words, &logger, &options);
+  if (result.words.empty()) {
+    *error = "glslang produced no SPIR-V: " + logger.getAllMessages();
+    return false;
+  }
+  if (std::string v = validate_spirv(result.words); !v.empty()) {
+    *error = "invalid SPIR-V: " + v;
+    return false;
+  }
+  *out = std::move(result);
+  return true;
+}
+
+bool spirv_uses_float64(const std::vector<uint32_t>& words) {
+  constexpr uint32_t kOpCapability = 17, kCapabilityFloat64 = 10;
+  for (size_t i = 5; i < words.size();) {
+    const uint32_t count = words[i] >> 16, opcode = words[i] & 0xffff;
+    if (count == 0) break;  // malformed; the validator reports it
+    if (opcode == kOpCapability && i + 1 < words.size() && words[i + 1] == kCapabilityFloat64) return true;
+    i += count;
+  }
+  return false;
+}
+
+}  // namespace detail
+
+std::string validate_spirv(const std::vector<uint32_t>& spirv) {
+  spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
+  std::ostringstream messages;
+  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& pos, const char* msg) {
+    messages << "word " << pos.index << ": " << msg << "\n";
+  });
+  if (tools.Validate(spirv)) return {};
+  std::string text = messages.str();
+  return text.empty() ? "validator rejected the module without a message" : text;
+}
+
+bool compile_compute_to_spirv(const std::string& glsl, std::vector<uint32_t>* spirv, std::string* error) {
+  detail::SpirvProgram program;
+  if (!detail::compile_glsl(glsl, &program, error)) return false;
+  *spirv = std::move(program.words);
+  return true;
+}
+
+}  // namespace doublet::runner

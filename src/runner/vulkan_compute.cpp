@@ -1,0 +1,369 @@
+// Vulkan backend: one lavapipe device per process; each job builds and destroys its own objects.
+#include <vulkan/vulkan.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <mutex>
+
+#include "runner/internal.hpp"
+
+namespace doublet::runner::detail {
+namespace {
+
+const char* result_name(VkResult r) {
+  switch (r) {
+    case VK_SUCCESS: return "VK_SUCCESS";
+    case VK_TIMEOUT: return "VK_TIMEOUT";
+    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
+    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
+    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER";
+    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
+    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
+    case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
+    case VK_ERROR_INVALID_SHADER_NV: return "VK_ERROR_INVALID_SHADER_NV";
+    default: return "VkResult(other)";
+  }
+}
+
+std::string vk_failed(const char* call, VkResult r) {
+  return std::string(call) + " failed: " + result_name(r) + " (" + std::to_string(static_cast<int>(r)) + ")";
+}
+
+constexpr const char* kLavapipeIcd = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
+
+struct VulkanDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  uint32_t queue_family = 0;
+  VkPhysicalDeviceMemoryProperties memory{};
+  VkPhysicalDeviceLimits limits{};
+  bool float64 = false;
+  std::string name;
+  std::string error;  // non-empty: this backend is unusable, and why
+  std::mutex mu;      // the queue and per-job pools are externally synchronised objects
+};
+
+// Creates an instance and returns the lavapipe physical device, or an explanation.
+std::string find_lavapipe(VulkanDevice& d) {
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "doublet_runner";
+  app.apiVersion = VK_API_VERSION_1_1;
+  VkInstanceCreateInfo ici{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  ici.pApplicationInfo = &app;
+  if (VkResult r = vkCreateInstance(&ici, nullptr, &d.instance); r != VK_SUCCESS) {
+    d.instance = VK_NULL_HANDLE;
+    return vk_failed("vkCreateInstance", r);
+  }
+  uint32_t count = 0;
+  // An ICD for absent hardware may fail here; the loader then reports an error for the whole call.
+  VkResult r = vkEnumeratePhysicalDevices(d.instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  if (r == VK_SUCCESS || r == VK_INCOMPLETE) r = vkEnumeratePhysicalDevices(d.instance, &count, devices.data());
+  if (r != VK_SUCCESS && r != VK_INCOMPLETE) return vk_failed("vkEnumeratePhysicalDevices", r);
+  std::string seen;
+  for (uint32_t i = 0; i < count; ++i) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(devices[i], &p);
+    seen += std::string(seen.empty() ? "" : ", ") + p.deviceName;
+    if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU || std::strstr(p.deviceName, "llvmpipe")) {
+      if (p.apiVersion < VK_API_VERSION_1_1) return std::string(p.deviceName) + " supports only Vulkan 1.0";
+      d.physical = devices[i];
+      d.name = p.deviceName;
+      d.limits = p.limits;
+      return {};
+    }
+  }
+  return "no lavapipe (CPU) Vulkan device among [" + seen + "]";
+}
+
+std::string init(VulkanDevice& d) {
+  std::string why = find_lavapipe(d);
+  // Other ICDs (hardware drivers without their hardware) can break instance creation or
+  // enumeration. Unless the user chose ICDs, retry with lavapipe alone.
+  if (!why.empty() && !std::getenv("VK_ICD_FILENAMES") && !std::getenv("VK_DRIVER_FILES") &&
+      std::filesystem::exists(kLavapipeIcd)) {
+    if (d.instance) vkDestroyInstance(d.instance, nullptr);
+    d.instance = VK_NULL_HANDLE;
+    setenv("VK_ICD_FILENAMES", kLavapipeIcd, 0);
+    std::string again = find_lavapipe(d);
+    if (!again.empty()) why += "; with VK_ICD_FILENAMES=" + std::string(kLavapipeIcd) + ": " + again;
+    else why.clear();
+  }
+  if (!why.empty()) return why;
+
+  uint32_t nfam = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(d.physical, &nfam, nullptr);
+  std::vector<VkQueueFamilyProperties> fams(nfam);
+  vkGetPhysicalDeviceQueueFamilyProperties(d.physical, &nfam, fams.data());
+  d.queue_family = UINT32_MAX;
+  for (uint32_t i = 0; i < nfam; ++i)
+    if (fams[i].queueFlags & VK_QUEUE_COMPUTE_BIT) { d.queue_family = i; break; }
+  if (d.queue_family == UINT32_MAX) return d.name + " has no compute queue";
+
+  VkPhysicalDeviceFeatures supported;
+  vkGetPhysicalDeviceFeatures(d.physical, &supported);
+  VkPhysicalDeviceFeatures enabled{};
+  enabled.shaderFloat64 = supported.shaderFloat64;  // native doubles: the reference for lowered code
+  enabled.shaderInt64 = supported.shaderInt64;
+  d.float64 = supported.shaderFloat64 == VK_TRUE;
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  qci.queueFamilyIndex = d.queue_family;
+  qci.queueCount = 1;
+  qci.pQueuePriorities = &priority;
+  VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  dci.queueCreateInfoCount = 1;
+  dci.pQueueCreateInfos = &qci;
+  dci.pEnabledFeatures = &enabled;
+  if (VkResult r = vkCreateDevice(d.physical, &dci, nullptr, &d.device); r != VK_SUCCESS)
+    return vk_failed("vkCreateDevice", r);
+  vkGetDeviceQueue(d.device, d.queue_family, 0, &d.queue);
+  vkGetPhysicalDeviceMemoryProperties(d.physical, &d.memory);
+  return {};
+}
+
+// Never destroyed: tearing down a driver during static destruction only invites exit-time crashes.
+VulkanDevice& shared_device() {
+  static VulkanDevice* d = [] {
+    auto* dev = new VulkanDevice;
+    dev->error = init(*dev);
+    return dev;
+  }();
+  return *d;
+}
+
+// Everything one job creates; destroyed in reverse order whatever happens.
+struct JobObjects {
+  VkDevice dev;
+  std::vector<std::function<void()>> cleanup;
+  explicit JobObjects(VkDevice d) : dev(d) {}
+  ~JobObjects() {
+    for (auto it = cleanup.rbegin(); it != cleanup.rend(); ++it) (*it)();
+  }
+};
+
+struct HostBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  void* mapped = nullptr;
+};
+
+std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usage, const std::vector<uint8_t>& data,
+                        HostBuffer* out) {
+  VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  bci.size = std::max<VkDeviceSize>(data.size(), 16);  // Vulkan forbids empty buffers
+  bci.usage = usage;
+  bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  if (VkResult r = vkCreateBuffer(d.device, &bci, nullptr, &out->buffer); r != VK_SUCCESS)
+    return vk_failed("vkCreateBuffer", r);
+  VkBuffer buf = out->buffer;
+  job.cleanup.push_back([&d, buf] { vkDestroyBuffer(d.device, buf, nullptr); });
+
+  VkMemoryRequirements req;
+  vkGetBufferMemoryRequirements(d.device, buf, &req);
+  const VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  uint32_t type = UINT32_MAX;
+  for (uint32_t i = 0; i < d.memory.memoryTypeCount; ++i)
+    if ((req.memoryTypeBits & (1u << i)) && (d.memory.memoryTypes[i].propertyFlags & want) == want) { type = i; break; }
+  if (type == UINT32_MAX) return "no host-visible coherent memory type on " + d.name;
+  VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  mai.allocationSize = req.size;
+  mai.memoryTypeIndex = type;
+  VkDeviceMemory mem;
+  if (VkResult r = vkAllocateMemory(d.device, &mai, nullptr, &mem); r != VK_SUCCESS) return vk_failed("vkAllocateMemory", r);
+  job.cleanup.push_back([&d, mem] { vkFreeMemory(d.device, mem, nullptr); });
+  if (VkResult r = vkBindBufferMemory(d.device, buf, mem, 0); r != VK_SUCCESS) return vk_failed("vkBindBufferMemory", r);
+  if (VkResult r = vkMapMemory(d.device, mem, 0, VK_WHOLE_SIZE, 0, &out->mapped); r != VK_SUCCESS)
+    return vk_failed("vkMapMemory", r);
+  std::memset(out->mapped, 0, bci.size);
+  if (!data.empty()) std::memcpy(out->mapped, data.data(), data.size());
+  return {};
+}
+
+// Fills the global uniform block: zero everywhere, then each named float at its reflected offset.
+std::string uniform_block_bytes(const SpirvProgram& program, const ComputeJob& job, std::vector<uint8_t>* bytes) {
+  bytes->assign(std::max<uint32_t>(program.uniform_block_size, 16), 0);
+  for (const auto& [name, value] : job.float_uniforms) {
+    auto it = program.uniforms.find(name);
+    if (it == program.uniforms.end()) continue;  // inactive or absent: GL ignores it too
+    if (!it->second.is_float) return "uniform '" + name + "' is not a float; float_uniforms can only set floats";
+    if (it->second.offset + sizeof(float) > bytes->size()) return "uniform '" + name + "' lies outside its block";
+    std::memcpy(bytes->data() + it->second.offset, &value, sizeof(float));
+  }
+  return {};
+}
+
+std::string run_job(VulkanDevice& d, const SpirvProgram& program, const ComputeJob& job, ComputeResult* result) {
+  if (spirv_uses_float64(program.words) && !d.float64)
+    return "shader uses double (Float64) but " + d.name + " lacks shaderFloat64";
+  for (int b : program.ssbo_bindings)
+    if (b < 0 || static_cast<size_t>(b) >= job.buffers.size())
+      return "shader declares an SSBO at binding " + std::to_string(b) + " but the job has " +
+             std::to_string(job.buffers.size()) + " buffer(s)";
+  if (job.buffers.size() > d.limits.maxPerStageDescriptorStorageBuffers)
+    return "too many buffers for " + d.name;
+  const uint32_t* maxg = d.limits.maxComputeWorkGroupCount;
+  if (job.groups_x > maxg[0] || job.groups_y > maxg[1] || job.groups_z > maxg[2])
+    return "group count exceeds maxComputeWorkGroupCount";
+  std::vector<uint8_t> ubo_data;
+  if (std::string e = uniform_block_bytes(program, job, &ubo_data); !e.empty()) return e;
+
+  JobObjects objs(d.device);
+  const auto n = static_cast<uint32_t>(job.buffers.size());
+  std::vector<HostBuffer> ssbos(n);
+  for (uint32_t i = 0; i < n; ++i)
+    if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, job.buffers[i], &ssbos[i]); !e.empty())
+      return e;
+  HostBuffer ubo;
+  if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, ubo_data, &ubo); !e.empty()) return e;
+
+  // Set 0: SSBO i at binding i. Set kUniformSet: the global uniform block.
+  static_assert(kUniformSet == 1 && kUniformBinding == 0, "layout below assumes set 1, binding 0");
+  std::vector<VkDescriptorSetLayoutBinding> ssbo_bindings(n);
+  for (uint32_t i = 0; i < n; ++i)
+    ssbo_bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  VkDescriptorSetLayoutBinding ubo_binding{kUniformBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
+                                           VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+  VkDescriptorSetLayout layouts[2];
+  for (int s = 0; s < 2; ++s) {
+    VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    lci.bindingCount = s == 0 ? n : 1;
+    lci.pBindings = s == 0 ? ssbo_bindings.data() : &ubo_binding;
+    if (VkResult r = vkCreateDescriptorSetLayout(d.device, &lci, nullptr, &layouts[s]); r != VK_SUCCESS)
+      return vk_failed("vkCreateDescriptorSetLayout", r);
+    VkDescriptorSetLayout l = layouts[s];
+    objs.cleanup.push_back([&d, l] { vkDestroyDescriptorSetLayout(d.device, l, nullptr); });
+  }
+  VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  plci.setLayoutCount = 2;
+  plci.pSetLayouts = layouts;
+  VkPipelineLayout pipeline_layout;
+  if (VkResult r = vkCreatePipelineLayout(d.device, &plci, nullptr, &pipeline_layout); r != VK_SUCCESS)
+    return vk_failed("vkCreatePipelineLayout", r);
+  objs.cleanup.push_back([&d, pipeline_layout] { vkDestroyPipelineLayout(d.device, pipeline_layout, nullptr); });
+
+  std::vector<VkDescriptorPoolSize> pool_sizes{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}};
+  if (n) pool_sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n});
+  VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  dpci.maxSets = 2;
+  dpci.poolSizeCount = static_cast<uint32_t>(pool_sizes.size());
+  dpci.pPoolSizes = pool_sizes.data();
+  VkDescriptorPool pool;
+  if (VkResult r = vkCreateDescriptorPool(d.device, &dpci, nullptr, &pool); r != VK_SUCCESS)
+    return vk_failed("vkCreateDescriptorPool", r);
+  objs.cleanup.push_back([&d, pool] { vkDestroyDescriptorPool(d.device, pool, nullptr); });
+  VkDescriptorSetAllocateInfo dsai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  dsai.descriptorPool = pool;
+  dsai.descriptorSetCount = 2;
+  dsai.pSetLayouts = layouts;
+  VkDescriptorSet sets[2];
+  if (VkResult r = vkAllocateDescriptorSets(d.device, &dsai, sets); r != VK_SUCCESS)
+    return vk_failed("vkAllocateDescriptorSets", r);
+
+  std::vector<VkDescriptorBufferInfo> infos(n + 1);
+  std::vector<VkWriteDescriptorSet> writes(n + 1);
+  for (uint32_t i = 0; i <= n; ++i) {
+    const bool is_ubo = i == n;
+    infos[i] = {is_ubo ? ubo.buffer : ssbos[i].buffer, 0, VK_WHOLE_SIZE};
+    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[i].dstSet = sets[is_ubo ? 1 : 0];
+    writes[i].dstBinding = is_ubo ? kUniformBinding : i;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = is_ubo ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[i].pBufferInfo = &infos[i];
+  }
+  vkUpdateDescriptorSets(d.device, n + 1, writes.data(), 0, nullptr);
+
+  VkShaderModuleCreateInfo smci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  smci.codeSize = program.words.size() * sizeof(uint32_t);
+  smci.pCode = program.words.data();
+  VkShaderModule module;
+  if (VkResult r = vkCreateShaderModule(d.device, &smci, nullptr, &module); r != VK_SUCCESS)
+    return vk_failed("vkCreateShaderModule", r);
+  objs.cleanup.push_back([&d, module] { vkDestroyShaderModule(d.device, module, nullptr); });
+  VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  cpci.stage.module = module;
+  cpci.stage.pName = "main";
+  cpci.layout = pipeline_layout;
+  VkPipeline pipeline;
+  if (VkResult r = vkCreateComputePipelines(d.device, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline); r != VK_SUCCESS)
+    return vk_failed("vkCreateComputePipelines", r);
+  objs.cleanup.push_back([&d, pipeline] { vkDestroyPipeline(d.device, pipeline, nullptr); });
+
+  VkCommandPoolCreateInfo cpool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  cpool.queueFamilyIndex = d.queue_family;
+  VkCommandPool cmd_pool;
+  if (VkResult r = vkCreateCommandPool(d.device, &cpool, nullptr, &cmd_pool); r != VK_SUCCESS)
+    return vk_failed("vkCreateCommandPool", r);
+  objs.cleanup.push_back([&d, cmd_pool] { vkDestroyCommandPool(d.device, cmd_pool, nullptr); });
+  VkCommandBufferAllocateInfo cbai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  cbai.commandPool = cmd_pool;
+  cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  cbai.commandBufferCount = 1;
+  VkCommandBuffer cmd;
+  if (VkResult r = vkAllocateCommandBuffers(d.device, &cbai, &cmd); r != VK_SUCCESS)
+    return vk_failed("vkAllocateCommandBuffers", r);
+
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkBeginCommandBuffer(cmd, &begin);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout, 0, 2, sets, 0, nullptr);
+  vkCmdDispatch(cmd, job.groups_x, job.groups_y, job.groups_z);
+  // Make shader writes visible to the host mapping we read back from.
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0,
+                       nullptr, 0, nullptr);
+  if (VkResult r = vkEndCommandBuffer(cmd); r != VK_SUCCESS) return vk_failed("vkEndCommandBuffer", r);
+
+  VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence;
+  if (VkResult r = vkCreateFence(d.device, &fci, nullptr, &fence); r != VK_SUCCESS) return vk_failed("vkCreateFence", r);
+  objs.cleanup.push_back([&d, fence] { vkDestroyFence(d.device, fence, nullptr); });
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  if (VkResult r = vkQueueSubmit(d.queue, 1, &submit, fence); r != VK_SUCCESS) return vk_failed("vkQueueSubmit", r);
+  if (VkResult r = vkWaitForFences(d.device, 1, &fence, VK_TRUE, 300ull * 1000 * 1000 * 1000); r != VK_SUCCESS) {
+    vkQueueWaitIdle(d.queue);  // never free objects the queue may still use
+    return vk_failed("vkWaitForFences (300 s)", r);
+  }
+  result->buffers.resize(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    const auto* p = static_cast<const uint8_t*>(ssbos[i].mapped);
+    result->buffers[i].assign(p, p + job.buffers[i].size());
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string vulkan_unavailable_reason() { return shared_device().error; }
+
+ComputeResult vulkan_run(const SpirvProgram& program, const ComputeJob& job) {
+  ComputeResult result;
+  VulkanDevice& d = shared_device();
+  result.device = d.name;
+  if (!d.error.empty()) {
+    result.error = "Vulkan unavailable: " + d.error;
+    return result;
+  }
+  std::lock_guard<std::mutex> lock(d.mu);
+  result.error = run_job(d, program, job, &result);
+  result.ok = result.error.empty();
+  if (!result.ok) result.buffers.clear();
+  return result;
+}
+
+}  // namespace doublet::runner::detail
