@@ -1,0 +1,300 @@
+// Golden-file tests of doublet::lower.
+//
+//   cases/<name>.<vert|frag|comp>          input; an optional first line
+//                                          `// targets: es100 es300 ...` picks the
+//                                          targets (default: es300 es310 es320 glsl450).
+//                                          That line is removed before lowering: GLSL ES
+//                                          allows nothing, not even a comment, before
+//                                          #version (diagnostic lines shift by one).
+//   expected/<name>.<stage>.<target>.glsl  expected output, one per target
+//
+// For every case and target (one test each) the harness lowers the case with
+// the library and compares the result with the expected file byte for byte.
+// Independently of the compiler under test, every expected file is compiled
+// with glslang for the target's version and profile and must contain no
+// double/dvec/dmat token.
+//
+// DOUBLET_UPDATE_GOLDEN=1 writes the expected files instead of comparing:
+//   DOUBLET_UPDATE_GOLDEN=1 ctest --test-dir build -R '^golden\.'
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <gtest/gtest.h>
+
+#include "doublet/doublet.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kGoldenDir = DOUBLET_GOLDEN_DIR;
+const fs::path kCasesDir = kGoldenDir / "cases";
+const fs::path kExpectedDir = kGoldenDir / "expected";
+const std::vector<std::string> kDefaultTargets = {"es300", "es310", "es320", "glsl450"};
+
+// The harness's own view of each target: deliberately not taken from the
+// library, so that validation does not trust the code under test.
+struct TargetInfo {
+  doublet::Target target;
+  int version;
+  bool es;
+};
+const std::map<std::string, TargetInfo> kTargets = {
+    {"es100", {doublet::Target::Es100, 100, true}},
+    {"es300", {doublet::Target::Es300, 300, true}},
+    {"es310", {doublet::Target::Es310, 310, true}},
+    {"es320", {doublet::Target::Es320, 320, true}},
+    {"glsl330", {doublet::Target::Glsl330, 330, false}},
+    {"glsl450", {doublet::Target::Glsl450, 450, false}},
+};
+
+struct StageInfo {
+  doublet::Stage stage;
+  EShLanguage language;
+};
+const std::map<std::string, StageInfo> kStages = {
+    {"vert", {doublet::Stage::Vertex, EShLangVertex}},
+    {"frag", {doublet::Stage::Fragment, EShLangFragment}},
+    {"comp", {doublet::Stage::Compute, EShLangCompute}},
+};
+
+struct GoldenParam {
+  std::string name;    // case name: file name without the stage extension
+  std::string stage;   // "vert" | "frag" | "comp"
+  std::string target;  // as written in the targets line (may be unknown)
+
+  std::string case_file() const { return name + "." + stage; }
+  std::string expected_file() const { return name + "." + stage + "." + target + ".glsl"; }
+};
+
+// Short form for test listings (instead of a byte dump).
+void PrintTo(const GoldenParam& p, std::ostream* os) { *os << p.expected_file(); }
+
+bool update_mode() {
+  const char* v = std::getenv("DOUBLET_UPDATE_GOLDEN");
+  return v != nullptr && std::string(v) == "1";
+}
+
+std::optional<std::string> read_file(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  if (!f) return std::nullopt;
+  std::ostringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+const std::regex& targets_line_re() {
+  static const std::regex re(R"(^\s*//\s*targets\s*:(.*)$)");
+  return re;
+}
+
+std::string first_line(const std::string& source) {
+  std::string line = source.substr(0, source.find('\n'));
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return line;
+}
+
+// The source handed to the compiler: without the targets line.
+std::string case_source_for_lowering(const std::string& source) {
+  if (!std::regex_match(first_line(source), targets_line_re())) return source;
+  size_t nl = source.find('\n');
+  return nl == std::string::npos ? std::string() : source.substr(nl + 1);
+}
+
+// Targets from a `// targets: a b c` first line, else the defaults.
+std::vector<std::string> case_targets(const std::string& source) {
+  std::string first = first_line(source);
+  std::smatch m;
+  if (!std::regex_match(first, m, targets_line_re())) return kDefaultTargets;
+  std::vector<std::string> targets;
+  std::istringstream words(std::regex_replace(m[1].str(), std::regex(","), " "));
+  for (std::string w; words >> w;)
+    if (std::find(targets.begin(), targets.end(), w) == targets.end()) targets.push_back(w);
+  return targets;
+}
+
+// (name, stage) of every case file, sorted.
+std::vector<std::pair<std::string, std::string>> case_files() {
+  std::vector<std::pair<std::string, std::string>> files;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(kCasesDir, ec)) {
+    if (!e.is_regular_file()) continue;
+    std::string ext = e.path().extension().string();
+    if (ext.size() < 2 || !kStages.count(ext.substr(1))) continue;
+    files.emplace_back(e.path().stem().string(), ext.substr(1));
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::vector<GoldenParam> discover() {
+  std::vector<GoldenParam> params;
+  for (const auto& [name, stage] : case_files()) {
+    std::string source = read_file(kCasesDir / (name + "." + stage)).value_or("");
+    for (const std::string& t : case_targets(source)) params.push_back({name, stage, t});
+  }
+  return params;
+}
+
+std::string param_name(const ::testing::TestParamInfo<GoldenParam>& info) {
+  std::string s = info.param.name + "_" + info.param.stage + "_" + info.param.target;
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s;
+}
+
+std::string strip_comments(const std::string& s) {
+  std::string out;
+  for (size_t i = 0; i < s.size();) {
+    if (s.compare(i, 2, "//") == 0) {
+      while (i < s.size() && s[i] != '\n') ++i;
+    } else if (s.compare(i, 2, "/*") == 0) {
+      size_t end = s.find("*/", i + 2);
+      i = end == std::string::npos ? s.size() : end + 2;
+      out += ' ';
+    } else {
+      out += s[i++];
+    }
+  }
+  return out;
+}
+
+class GlslangProcess : public ::testing::Environment {
+ public:
+  void SetUp() override { glslang::InitializeProcess(); }
+  void TearDown() override { glslang::FinalizeProcess(); }
+};
+[[maybe_unused]] ::testing::Environment* const kGlslangEnv =
+    ::testing::AddGlobalTestEnvironment(new GlslangProcess);
+
+// Checks one expected file on its own terms: compiles with glslang for the
+// target's version/profile, declares that version, has no double tokens.
+void validate_expected(const std::string& file, const std::string& text, const StageInfo& stage,
+                       const TargetInfo& target) {
+  SCOPED_TRACE("validating expected/" + file);
+
+  const std::string code = strip_comments(text);
+  static const std::regex doubles(R"(\b(double|dvec[234]|dmat[234](x[234])?)\b)");
+  std::smatch m;
+  EXPECT_FALSE(std::regex_search(code, m, doubles)) << "contains the token '" << m.str() << "'";
+
+  // The #version directive must name exactly the target (GLSL ES 1.00 may omit it).
+  static const std::regex version_re(R"((^|\n)[ \t]*#[ \t]*version[ \t]+(\d+)[ \t]*(\w*))");
+  if (std::regex_search(code, m, version_re)) {
+    EXPECT_EQ(std::stoi(m[2].str()), target.version) << "wrong #version";
+    std::string profile = m[3].str();
+    if (target.es && target.version >= 300)
+      EXPECT_EQ(profile, "es") << "#version " << target.version << " needs 'es'";
+    else if (target.es)
+      EXPECT_EQ(profile, "") << "#version 100 takes no profile";
+    else
+      EXPECT_TRUE(profile.empty() || profile == "core") << "desktop targets are core profile";
+  } else {
+    EXPECT_EQ(target.version, 100) << "no #version directive";
+  }
+
+  glslang::TShader shader(stage.language);
+  const char* strings[] = {text.c_str()};
+  const char* names[] = {file.c_str()};
+  shader.setStringsWithLengthsAndNames(strings, nullptr, names, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, stage.language, glslang::EShClientNone, 0);
+  shader.setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
+  shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+  const EProfile profile = target.es ? EEsProfile : ECoreProfile;
+  const bool parsed = shader.parse(GetDefaultResources(), target.version, profile,
+                                   /*forceDefaultVersionAndProfile=*/false,
+                                   /*forwardCompatible=*/false, EShMsgDefault);
+  EXPECT_TRUE(parsed) << "glslang rejects it:\n" << shader.getInfoLog() << shader.getInfoDebugLog();
+}
+
+class Golden : public ::testing::TestWithParam<GoldenParam> {};
+
+TEST_P(Golden, Matches) {
+  const GoldenParam& p = GetParam();
+  auto target_it = kTargets.find(p.target);
+  ASSERT_NE(target_it, kTargets.end())
+      << "cases/" << p.case_file() << ": unknown target '" << p.target << "' in the targets line";
+  const TargetInfo& target = target_it->second;
+  const StageInfo& stage = kStages.at(p.stage);
+
+  std::optional<std::string> source = read_file(kCasesDir / p.case_file());
+  ASSERT_TRUE(source) << "cannot read cases/" << p.case_file() << " (re-run cmake after removing a case)";
+
+  doublet::Options options;
+  options.stage = stage.stage;
+  options.target = target.target;
+  options.file_name = "cases/" + p.case_file();
+  doublet::Result result = doublet::lower(case_source_for_lowering(*source), options);
+  std::string diagnostics;
+  for (const doublet::Diagnostic& d : result.diagnostics) diagnostics += doublet::format_diagnostic(d) + "\n";
+  EXPECT_TRUE(result.ok) << "doublet::lower failed:\n" << diagnostics;
+
+  const fs::path expected_path = kExpectedDir / p.expected_file();
+  std::optional<std::string> expected = read_file(expected_path);
+
+  if (update_mode()) {
+    ASSERT_TRUE(result.ok) << "not writing expected/" << p.expected_file();
+    if (expected != result.output) {
+      fs::create_directories(kExpectedDir);
+      std::ofstream out(expected_path, std::ios::binary | std::ios::trunc);
+      out << result.output;
+      out.close();
+      ASSERT_TRUE(out) << "cannot write " << expected_path;
+      std::cout << "[golden] wrote expected/" << p.expected_file() << std::endl;
+    } else {
+      std::cout << "[golden] unchanged expected/" << p.expected_file() << std::endl;
+    }
+    validate_expected(p.expected_file(), result.output, stage, target);
+    return;
+  }
+
+  ASSERT_TRUE(expected) << "missing expected/" << p.expected_file()
+                        << "\n  create it with: DOUBLET_UPDATE_GOLDEN=1 ctest --test-dir build -R '^golden\\.'"
+                        << "\n  (then review and commit it)";
+  validate_expected(p.expected_file(), *expected, stage, target);
+  if (result.ok) {
+    EXPECT_EQ(*expected, result.output)
+        << "output differs from expected/" << p.expected_file()
+        << "\n  if the change is intended: DOUBLET_UPDATE_GOLDEN=1 ctest --test-dir build -R '^golden\\.'";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(discover()), param_name);
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Golden);
+
+// Expected files must belong to an existing case and one of its targets.
+TEST(GoldenFiles, NoOrphanedExpectedFiles) {
+  std::set<std::string> wanted;
+  for (const GoldenParam& p : discover()) wanted.insert(p.expected_file());
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(kExpectedDir, ec)) {
+    std::string name = e.path().filename().string();
+    if (name.starts_with(".")) continue;
+    EXPECT_TRUE(wanted.count(name)) << "expected/" << name
+                                    << " has no case/target (stale? delete it, or fix the targets line)";
+  }
+}
+
+// Test names are derived from case names; two cases must not collide.
+TEST(GoldenFiles, TestNamesAreUnique) {
+  std::map<std::string, std::string> seen;
+  for (const GoldenParam& p : discover()) {
+    std::string n = param_name(::testing::TestParamInfo<GoldenParam>(p, 0));
+    auto [it, inserted] = seen.emplace(n, p.expected_file());
+    EXPECT_TRUE(inserted) << p.expected_file() << " and " << it->second << " map to test name " << n;
+  }
+}
+
+}  // namespace
