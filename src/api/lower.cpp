@@ -1,18 +1,159 @@
-// TEMPORARY STUB so the tree links while the core is written.
+// doublet::lower: front end → import → lowering passes → print → re-validate.
+#include <algorithm>
+#include <exception>
+#include <regex>
+
 #include "doublet/doublet.hpp"
+#include "emit/printer.hpp"
+#include "emit/validate.hpp"
+#include "frontend/frontend.hpp"
+#include "frontend/import.hpp"
+#include "lower/lower.hpp"
+#include "rules/rule_library.hpp"
+
 namespace doublet {
-std::string format_diagnostic(const Diagnostic& d) { return d.file + ": error: " + d.message; }
-Result lower(std::string_view, const Options& o) {
-  Result r;
-  r.diagnostics.push_back({o.file_name, 1, 1, Severity::Error, "not implemented yet"});
-  return r;
+namespace {
+
+bool target_has_precise(Target t) { return t == Target::Es320 || t == Target::Glsl450; }
+
+struct GuardChoice {
+  rules::GuardStyle style = rules::GuardStyle::Uniform;
+  std::vector<std::string> extensions;
+};
+
+bool choose_guard(const Options& o, GuardChoice& out, std::vector<Diagnostic>& diags) {
+  bool via_extension = o.target == Target::Es310 && o.allow_gpu_shader5;
+  switch (o.guard) {
+    case GuardKind::None: out.style = rules::GuardStyle::None; return true;
+    case GuardKind::Uniform: out.style = rules::GuardStyle::Uniform; return true;
+    case GuardKind::Auto:
+      out.style = target_has_precise(o.target) || via_extension ? rules::GuardStyle::Precise : rules::GuardStyle::Uniform;
+      break;
+    case GuardKind::Precise:
+      if (!target_has_precise(o.target) && !via_extension) {
+        diags.push_back({o.file_name, 0, 0, Severity::Error,
+                         "target " + std::string(to_string(o.target)) +
+                             " has no 'precise' qualifier (it needs ES 3.20, desktop 4.00+, or ES 3.10 with "
+                             "GL_EXT_gpu_shader5); use --guard uniform"});
+        return false;
+      }
+      out.style = rules::GuardStyle::Precise;
+      break;
+  }
+  if (out.style == rules::GuardStyle::Precise && via_extension && !target_has_precise(o.target))
+    out.extensions.push_back("GL_EXT_gpu_shader5");
+  return true;
 }
-std::string Manifest::to_json() const { return "{}"; }
-std::string_view to_string(Target) { return "es300"; }
-std::string_view to_string(Stage) { return "vert"; }
-std::optional<Target> parse_target(std::string_view) { return Target::Es300; }
-std::optional<Stage> parse_stage(std::string_view) { return Stage::Vertex; }
-std::optional<Stage> stage_from_path(std::string_view) { return Stage::Vertex; }
-bool target_is_es(Target) { return true; }
-int target_version(Target) { return 300; }
+
+// The df_* struct for every width the lowered code names, where the emitted
+// rules did not already define it.
+std::string missing_struct_types(const std::vector<int>& widths, const std::string& runtime) {
+  std::string out;
+  std::vector<int> sorted = widths;
+  std::sort(sorted.begin(), sorted.end());
+  for (int w : sorted) {
+    std::string name = passes::df_type_name(w);
+    if (runtime.find("struct " + name) != std::string::npos) continue;
+    std::string f = w == 1 ? "float" : "vec" + std::to_string(w);
+    out += "struct " + name + " {\n  " + f + " hi;\n  " + f + " lo;\n};\n";
+  }
+  return out;
+}
+
+Result lower_unchecked(std::string_view source, const Options& options) {
+  Result result;
+  auto& diags = result.diagnostics;
+  if (!options.stage) {
+    diags.push_back({options.file_name, 0, 0, Severity::Error,
+                     "the shader stage is unknown: name the file .vert/.frag/.comp or pass -S"});
+    return result;
+  }
+  GuardChoice guard;
+  if (!choose_guard(options, guard, diags)) return result;
+
+  frontend::ParsedShader parsed;
+  if (!frontend::parse(source, options, parsed, diags)) return result;
+  result.included_files = parsed.included_files;
+
+  ir::Module module;
+  if (!frontend::import_module(parsed, options, module, diags)) return result;
+
+  passes::Context ctx{options, diags};
+  result.manifest.stage = std::string(to_string(*options.stage));
+  result.manifest.target = std::string(to_string(options.target));
+  if (!passes::lower_doubles(module, ctx)) return result;
+  if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
+
+  emit::PrintOptions print_options;
+  print_options.target = options.target;
+  print_options.extensions = guard.extensions;
+  result.manifest.guard.kind = "none";
+  if (!ctx.rules_used.empty() || !ctx.widths_used.empty()) {
+    rules::EmitRequest request;
+    request.used = ctx.rules_used;
+    request.guard = guard.style;
+    request.guard_uniform = options.guard_uniform_name;
+    request.es_version = target_is_es(options.target) ? target_version(options.target) : 320;
+    rules::EmitResult emitted = rules::RuleLibrary::builtin().emit(request);
+    if (!emitted.ok) {
+      diags.push_back({options.file_name, 0, 0, Severity::Error, emitted.error});
+      return result;
+    }
+    std::string helpers;
+    for (const auto& name : ctx.helper_order) helpers += "\n" + ctx.helpers[name];
+    print_options.runtime = missing_struct_types(ctx.widths_used, emitted.text) + emitted.text + helpers;
+    if (!ctx.rules_used.empty()) {
+      if (guard.style == rules::GuardStyle::Precise) result.manifest.guard.kind = "precise";
+      if (guard.style == rules::GuardStyle::Uniform) {
+        result.manifest.guard.kind = "uniform";
+        result.manifest.guard.uniform_name = options.guard_uniform_name;
+        result.manifest.guard.uniform_type = "float";
+        result.manifest.guard.required_value = 0;
+      }
+    }
+  }
+  emit::PrintResult printed = emit::print(module, print_options, options.file_name);
+  diags.insert(diags.end(), printed.diagnostics.begin(), printed.diagnostics.end());
+  if (std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }))
+    return result;
+
+  std::string log = emit::validate(printed.text, *options.stage, options.target);
+  if (!log.empty()) {
+    // Quote the emitted lines glslang names, so the report is actionable.
+    static const std::regex where(R"(ERROR: 0:(\d+):)");
+    std::string quoted;
+    for (std::sregex_iterator it(log.begin(), log.end(), where), end; it != end; ++it) {
+      int line = std::stoi((*it)[1].str());
+      size_t start = 0;
+      for (int l = 1; l < line && start != std::string::npos; ++l) start = printed.text.find('\n', start) + 1;
+      if (start == std::string::npos || start == 0 && line > 1) continue;
+      quoted += "  line " + std::to_string(line) + ": " + printed.text.substr(start, printed.text.find('\n', start) - start) + "\n";
+    }
+    log += quoted;
+    diags.push_back({options.file_name, 0, 0, Severity::Error,
+                     "internal error: the lowered shader is not valid " + std::string(to_string(options.target)) +
+                         " GLSL (please report this with the input):\n" + log});
+    return result;
+  }
+  result.output = std::move(printed.text);
+  result.ok = true;
+  return result;
+}
+
+}  // namespace
+
+Result lower(std::string_view source, const Options& options) {
+  try {
+    return lower_unchecked(source, options);
+  } catch (const std::exception& e) {
+    Result r;
+    r.diagnostics.push_back({options.file_name, 0, 0, Severity::Error, std::string("internal error: ") + e.what()});
+    return r;
+  } catch (...) {
+    Result r;
+    r.diagnostics.push_back({options.file_name, 0, 0, Severity::Error, "internal error"});
+    return r;
+  }
+}
+
 }  // namespace doublet

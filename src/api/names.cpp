@@ -1,0 +1,100 @@
+// Spellings shared by the library, the CLI and the tests; the manifest's JSON.
+#include <nlohmann/json.hpp>
+
+#include "doublet/doublet.hpp"
+
+namespace doublet {
+
+namespace {
+struct TargetName {
+  Target target;
+  const char* name;
+  int version;
+  bool es;
+};
+constexpr TargetName kTargets[] = {
+    {Target::Es100, "es100", 100, true},   {Target::Es300, "es300", 300, true},
+    {Target::Es310, "es310", 310, true},   {Target::Es320, "es320", 320, true},
+    {Target::Glsl330, "glsl330", 330, false}, {Target::Glsl450, "glsl450", 450, false},
+};
+const TargetName& info(Target t) {
+  for (const auto& n : kTargets)
+    if (n.target == t) return n;
+  return kTargets[1];
+}
+}  // namespace
+
+std::string_view to_string(Target t) { return info(t).name; }
+bool target_is_es(Target t) { return info(t).es; }
+int target_version(Target t) { return info(t).version; }
+
+std::optional<Target> parse_target(std::string_view name) {
+  for (const auto& n : kTargets)
+    if (name == n.name) return n.target;
+  return std::nullopt;
+}
+
+std::string_view to_string(Stage s) {
+  switch (s) {
+    case Stage::Vertex: return "vert";
+    case Stage::Fragment: return "frag";
+    case Stage::Compute: return "comp";
+  }
+  return "vert";
+}
+
+std::optional<Stage> parse_stage(std::string_view name) {
+  if (name == "vert") return Stage::Vertex;
+  if (name == "frag") return Stage::Fragment;
+  if (name == "comp") return Stage::Compute;
+  return std::nullopt;
+}
+
+std::optional<Stage> stage_from_path(std::string_view path) {
+  auto slash = path.find_last_of("/\\");
+  std::string_view file = slash == std::string_view::npos ? path : path.substr(slash + 1);
+  if (file.size() > 5 && file.substr(file.size() - 5) == ".glsl") file.remove_suffix(5);
+  auto dot = file.find_last_of('.');
+  if (dot == std::string_view::npos) return std::nullopt;
+  return parse_stage(file.substr(dot + 1));
+}
+
+std::string format_diagnostic(const Diagnostic& d) {
+  std::string s = d.file.empty() ? "<input>" : d.file;
+  if (d.line > 0) {
+    s += ":" + std::to_string(d.line);
+    s += ":" + std::to_string(d.column > 0 ? d.column : 1);
+  }
+  s += d.severity == Severity::Error ? ": error: " : d.severity == Severity::Warning ? ": warning: " : ": note: ";
+  return s + d.message;
+}
+
+std::string Manifest::to_json() const {
+  nlohmann::ordered_json j;
+  j["stage"] = stage;
+  j["target"] = target;
+  j["variables"] = nlohmann::ordered_json::array();
+  for (const auto& v : variables) {
+    nlohmann::ordered_json e;
+    e["name"] = v.name;
+    e["storage"] = v.storage;
+    e["type"] = v.type;
+    e["split"] = v.split;
+    e["lowered_type"] = v.lowered_type;
+    e["lowered_names"] = v.lowered_names;
+    if (!v.locations.empty()) e["locations"] = v.locations;
+    j["variables"].push_back(e);
+  }
+  nlohmann::ordered_json g;
+  g["kind"] = guard.kind;
+  if (guard.kind == "uniform") {
+    g["uniform"] = guard.uniform_name;
+    g["type"] = guard.uniform_type;
+    g["required_value"] = guard.required_value;
+    g["note"] = "GL and GLES zero-initialise uniforms at link time: leave it unset";
+  }
+  j["guard"] = g;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace doublet

@@ -1,0 +1,385 @@
+#include "emit/printer.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+
+#include "ir/walk.hpp"
+
+namespace doublet::emit {
+
+std::string float_literal(float value) {
+  if (std::isinf(value)) return value > 0 ? "uintBitsToFloat(0x7F800000u)" : "uintBitsToFloat(0xFF800000u)";
+  if (std::isnan(value)) return "uintBitsToFloat(0x7FC00000u)";
+  char buf[64];
+  for (int precision = 1; precision <= 9; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, static_cast<double>(value));
+    if (std::strtof(buf, nullptr) == value) break;
+  }
+  std::string s = buf;
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  else if (s.find('.') == std::string::npos) s.insert(s.find('e'), ".0");
+  return s;
+}
+
+namespace {
+
+using ir::Expr;
+using ir::Stmt;
+
+class Printer {
+ public:
+  Printer(const ir::Module& m, const PrintOptions& o, const std::string& file)
+      : module_(m), options_(o), file_(file), es_(target_is_es(o.target)), version_(target_version(o.target)) {}
+
+  PrintResult run() {
+    header();
+    for (const auto& t : module_.structs) struct_definition(t);
+    if (!module_.structs.empty()) out_ << "\n";
+    fragment_output_rename();
+    for (size_t i = 0; i < module_.globals.size(); ++i) global(module_.globals[i], module_.global_inits[i]);
+    if (frag_color_declared_) out_ << "layout(location = 0) out highp vec4 df_frag_color;\n";
+    if (!module_.globals.empty() || frag_color_declared_) out_ << "\n";
+    for (const auto& f : module_.functions)
+      if (f->name != "main") out_ << signature(*f) << ";\n";
+    for (const auto& f : module_.functions) {
+      out_ << "\n" << signature(*f) << "\n";
+      statement(f->body, 0);
+    }
+    return {out_.str(), diags_};
+  }
+
+ private:
+  void error(ir::Loc loc, const std::string& msg) {
+    diags_.push_back({file_, loc.line, loc.column, Severity::Error, msg});
+  }
+
+  // ---- header --------------------------------------------------------------
+  void header() {
+    switch (options_.target) {
+      case Target::Es100: out_ << "#version 100\n"; break;
+      case Target::Es300: out_ << "#version 300 es\n"; break;
+      case Target::Es310: out_ << "#version 310 es\n"; break;
+      case Target::Es320: out_ << "#version 320 es\n"; break;
+      case Target::Glsl330: out_ << "#version 330 core\n"; break;
+      case Target::Glsl450: out_ << "#version 450 core\n"; break;
+    }
+    for (const auto& e : options_.extensions) out_ << "#extension " << e << " : require\n";
+    out_ << "precision highp float;\nprecision highp int;\n";
+    if (es_ && version_ >= 300) {
+      std::set<std::string> opaque;
+      for (const auto& g : module_.globals)
+        if (g->type.base == ir::Base::Opaque && g->type.name != "sampler2D" && g->type.name != "samplerCube")
+          opaque.insert(g->type.name);
+      for (const auto& t : opaque) out_ << "precision highp " << t << ";\n";
+    }
+    if (module_.stage == ir::StageKind::Compute)
+      out_ << "layout(local_size_x = " << module_.local_size[0] << ", local_size_y = " << module_.local_size[1]
+           << ", local_size_z = " << module_.local_size[2] << ") in;\n";
+    out_ << "\n";
+    if (!options_.runtime.empty()) out_ << options_.runtime << "\n";
+  }
+
+  void struct_definition(const ir::Type& t) {
+    out_ << "struct " << t.name << " {\n";
+    for (const auto& f : *t.fields) out_ << "  " << declarator(f.type, f.name) << ";\n";
+    out_ << "};\n";
+  }
+
+  // ES 1.00 has one fragment output, gl_FragColor; ES 3.00+ has no gl_FragColor.
+  void fragment_output_rename() {
+    if (module_.stage != ir::StageKind::Fragment) return;
+    if (options_.target != Target::Es100)
+      for (const auto& f : module_.functions)
+        ir::visit(f->body, [&](const ir::ExprPtr& e) {
+          frag_color_declared_ |= e->kind == Expr::Kind::Sym && e->var->name == "gl_FragColor";
+        });
+    if (options_.target == Target::Es100) {
+      std::vector<ir::VarPtr> outs;
+      for (const auto& g : module_.globals)
+        if (g->storage == ir::Storage::Out) outs.push_back(g);
+      if (outs.size() == 1 && ir::type_name(outs[0]->type) == "vec4" && !outs[0]->type.is_array()) {
+        frag_output_ = outs[0].get();
+      } else if (!outs.empty()) {
+        error(outs[0]->loc, "GLSL ES 1.00 has a single fragment output (gl_FragColor); this shader declares " +
+                                std::to_string(outs.size()) + " outputs or a non-vec4 output");
+      }
+    }
+  }
+
+  // ---- declarations --------------------------------------------------------
+  std::string declarator(const ir::Type& t, const std::string& name) {
+    return ir::type_name(t) + " " + name + ir::array_suffix(t);
+  }
+
+  std::string storage_keyword(const ir::Var& v) {
+    bool vert = module_.stage == ir::StageKind::Vertex;
+    switch (v.storage) {
+      case ir::Storage::In:
+        if (options_.target == Target::Es100) return vert ? "attribute" : "varying";
+        return "in";
+      case ir::Storage::Out:
+        if (options_.target == Target::Es100) return "varying";
+        return "out";
+      case ir::Storage::Uniform: return "uniform";
+      case ir::Storage::Buffer: return "buffer";
+      case ir::Storage::Shared: return "shared";
+      case ir::Storage::Const: return "const";
+      default: return "";
+    }
+  }
+
+  bool location_allowed(const ir::Var& v) {
+    if (v.storage == ir::Storage::Uniform || v.storage == ir::Storage::Buffer)
+      return es_ ? version_ >= 310 : version_ >= 430;
+    if (options_.target == Target::Es100) return false;
+    bool vert = module_.stage == ir::StageKind::Vertex;
+    if ((v.storage == ir::Storage::In && vert) || (v.storage == ir::Storage::Out && !vert)) return true;
+    return es_ ? version_ >= 310 : version_ >= 410;
+  }
+
+  std::string layout(const ir::Var& v) {
+    std::vector<std::string> parts;
+    const bool block = v.type.base == ir::Base::Block;
+    if (!v.layout.packing.empty() && block) {
+      if (options_.target == Target::Es100)
+        error(v.loc, "interface blocks need GLSL ES 3.00 or later");
+      else
+        parts.push_back(v.layout.packing);
+    }
+    if (v.layout.set >= 0 && !es_ && version_ >= 450) parts.push_back("set = " + std::to_string(v.layout.set));
+    if (v.layout.binding >= 0 && (es_ ? version_ >= 310 : version_ >= 420))
+      parts.push_back("binding = " + std::to_string(v.layout.binding));
+    if (v.layout.location >= 0 && location_allowed(v)) parts.push_back("location = " + std::to_string(v.layout.location));
+    if (parts.empty()) return "";
+    std::string s = "layout(";
+    for (size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + parts[i];
+    return s + ") ";
+  }
+
+  std::string qualifiers(const ir::Var& v) {
+    std::string s;
+    if (v.invariant) s += "invariant ";
+    if (v.precise) s += "precise ";
+    s += layout(v);
+    bool interface = v.storage == ir::Storage::In || v.storage == ir::Storage::Out;
+    if (interface && options_.target != Target::Es100) {
+      if (v.interp == ir::Interp::Flat) s += "flat ";
+      else if (v.interp == ir::Interp::Centroid) s += "centroid ";
+      else if (v.interp == ir::Interp::NoPerspective && !es_) s += "noperspective ";
+    }
+    if (v.coherent) s += "coherent ";
+    if (v.volatile_) s += "volatile ";
+    if (v.restrict_) s += "restrict ";
+    if (v.readonly) s += "readonly ";
+    if (v.writeonly) s += "writeonly ";
+    std::string kw = storage_keyword(v);
+    if (!kw.empty()) s += kw + " ";
+    return s;
+  }
+
+  void global(const ir::VarPtr& v, const ir::ExprPtr& init) {
+    if (v.get() == frag_output_) return;
+    if (v->storage == ir::Storage::BuiltIn) return;
+    if (v->type.base == ir::Base::Block) {
+      out_ << qualifiers(*v) << v->type.name << " {\n";
+      for (const auto& f : *v->type.fields) out_ << "  " << declarator(f.type, f.name) << ";\n";
+      out_ << "}";
+      if (v->name.rfind("anon@", 0) != 0) out_ << " " << v->name << ir::array_suffix(v->type);
+      out_ << ";\n";
+      return;
+    }
+    out_ << qualifiers(*v) << declarator(v->type, v->name);
+    if (init) out_ << " = " << expr(init);
+    out_ << ";\n";
+  }
+
+  std::string signature(const ir::Function& f) {
+    std::string s = ir::type_name(f.return_type) + " " + f.name + "(";
+    for (size_t i = 0; i < f.params.size(); ++i) {
+      const auto& p = *f.params[i];
+      if (i) s += ", ";
+      if (p.storage == ir::Storage::ParamOut) s += "out ";
+      if (p.storage == ir::Storage::ParamInOut) s += "inout ";
+      s += declarator(p.type, p.name);
+    }
+    return s + ")";
+  }
+
+  // ---- statements ----------------------------------------------------------
+  void indent(int depth) { out_ << std::string(static_cast<size_t>(depth) * 2, ' '); }
+
+  std::string decl_text(const Stmt& s) {
+    std::string text = (s.var->precise ? "precise " : "") + declarator(s.var->type, s.var->name);
+    if (s.expr) text += " = " + expr(s.expr);
+    return text;
+  }
+
+  std::string simple_statement(const ir::StmtPtr& s) {
+    if (!s) return "";
+    if (s->kind == Stmt::Kind::Decl) return decl_text(*s);
+    if (s->kind == Stmt::Kind::Expr) return expr(s->expr);
+    return "";
+  }
+
+  void statement(const ir::StmtPtr& s, int depth) {
+    switch (s->kind) {
+      case Stmt::Kind::Block:
+        indent(depth);
+        out_ << "{\n";
+        for (const auto& b : s->body) statement(b, depth + 1);
+        indent(depth);
+        out_ << "}\n";
+        return;
+      case Stmt::Kind::Expr: indent(depth); out_ << expr(s->expr) << ";\n"; return;
+      case Stmt::Kind::Decl: indent(depth); out_ << decl_text(*s) << ";\n"; return;
+      case Stmt::Kind::If:
+        indent(depth);
+        out_ << "if (" << expr(s->expr) << ")\n";
+        statement(s->body[0], depth);
+        if (s->body.size() > 1) {
+          indent(depth);
+          out_ << "else\n";
+          statement(s->body[1], depth);
+        }
+        return;
+      case Stmt::Kind::Loop:
+        indent(depth);
+        if (!s->test_first) {
+          out_ << "do\n";
+          statement(s->body[1], depth);
+          indent(depth);
+          out_ << "while (" << expr(s->expr) << ");\n";
+          return;
+        }
+        if (!s->body[0] && !s->step && s->expr) {
+          out_ << "while (" << expr(s->expr) << ")\n";
+        } else {
+          out_ << "for (" << simple_statement(s->body[0]) << "; " << (s->expr ? expr(s->expr) : "") << "; "
+               << (s->step ? expr(s->step) : "") << ")\n";
+        }
+        statement(s->body[1], depth);
+        return;
+      case Stmt::Kind::Switch:
+        indent(depth);
+        out_ << "switch (" << expr(s->expr) << ")\n";
+        statement(s->body[0], depth);
+        return;
+      case Stmt::Kind::Case: indent(depth - 1); out_ << "case " << expr(s->expr) << ":\n"; return;
+      case Stmt::Kind::Default: indent(depth - 1); out_ << "default:\n"; return;
+      case Stmt::Kind::Break: indent(depth); out_ << "break;\n"; return;
+      case Stmt::Kind::Continue: indent(depth); out_ << "continue;\n"; return;
+      case Stmt::Kind::Discard: indent(depth); out_ << "discard;\n"; return;
+      case Stmt::Kind::Return:
+        indent(depth);
+        out_ << "return" << (s->expr ? " " + expr(s->expr) : "") << ";\n";
+        return;
+    }
+  }
+
+  // ---- expressions ---------------------------------------------------------
+  std::string scalar(const ir::Scalar& v) {
+    switch (v.base) {
+      case ir::Base::Bool: return v.b ? "true" : "false";
+      case ir::Base::Int: return std::to_string(v.i);
+      case ir::Base::Uint: return std::to_string(v.i) + "u";
+      case ir::Base::Float: return float_literal(static_cast<float>(v.d));
+      default: return "<double constant>";  // lowering removes these
+    }
+  }
+
+  std::string constant(const Expr& e) {
+    ir::Type elem = e.type;
+    elem.array_dims.clear();
+    size_t per = static_cast<size_t>(elem.vec) * static_cast<size_t>(std::max(elem.cols, 1));
+    auto one = [&](size_t start) {
+      if (per == 1) return scalar(e.values[start]);
+      bool same = true;
+      for (size_t i = 1; i < per; ++i) same &= scalar(e.values[start + i]) == scalar(e.values[start]);
+      std::string s = ir::type_name(elem) + "(";
+      for (size_t i = 0; i < (same && !elem.is_matrix() ? 1 : per); ++i) s += (i ? ", " : "") + scalar(e.values[start + i]);
+      return s + ")";
+    };
+    if (!e.type.is_array()) return e.values.empty() ? "0" : one(0);
+    std::string s = ir::type_name(elem) + ir::array_suffix(e.type) + "(";
+    for (size_t i = 0; i * per < e.values.size(); ++i) s += (i ? ", " : "") + one(i * per);
+    return s + ")";
+  }
+
+  std::string operand(const ir::ExprPtr& e) {
+    std::string s = expr(e);
+    bool compound = e->kind == Expr::Kind::Binary || e->kind == Expr::Kind::Ternary || e->kind == Expr::Kind::Comma ||
+                    e->kind == Expr::Kind::Unary || (e->kind == Expr::Kind::Const && !s.empty() && s[0] == '-');
+    return compound ? "(" + s + ")" : s;
+  }
+
+  std::string call(const std::string& name, const std::vector<ir::ExprPtr>& args) {
+    std::string s = name + "(";
+    for (size_t i = 0; i < args.size(); ++i) s += (i ? ", " : "") + expr(args[i]);
+    return s + ")";
+  }
+
+  std::string builtin_name(const Expr& e) {
+    if (options_.target != Target::Es100) return e.name;
+    std::string sampler = e.args.empty() ? "" : e.args[0]->type.name;
+    std::string dim = sampler == "samplerCube" ? "Cube" : "2D";
+    if (e.name == "texture") return "texture" + dim;
+    if (e.name == "textureProj") return "texture2DProj";
+    if (e.name == "textureLod") return "texture" + dim + "Lod";
+    if (e.name == "textureProjLod") return "texture2DProjLod";
+    return e.name;
+  }
+
+  std::string symbol(const ir::Var& v) {
+    if (&v == frag_output_) return "gl_FragColor";
+    if (v.name == "gl_FragColor" && frag_color_declared_) return "df_frag_color";  // ES 3.00+/core lack it
+    return v.name;
+  }
+
+  std::string expr(const ir::ExprPtr& e) {
+    switch (e->kind) {
+      case Expr::Kind::Sym: return symbol(*e->var);
+      case Expr::Kind::Const: return constant(*e);
+      case Expr::Kind::Unary: {
+        const std::string& op = e->op;
+        if (op == "x++" || op == "x--") return operand(e->args[0]) + op.substr(1);
+        if (op == "++x" || op == "--x") return op.substr(0, 2) + operand(e->args[0]);
+        return op + operand(e->args[0]);
+      }
+      case Expr::Kind::Binary: return operand(e->args[0]) + " " + e->op + " " + operand(e->args[1]);
+      case Expr::Kind::Ternary:
+        return operand(e->args[0]) + " ? " + operand(e->args[1]) + " : " + operand(e->args[2]);
+      case Expr::Kind::Call: return call(e->name, e->args);
+      case Expr::Kind::Builtin: return call(builtin_name(*e), e->args);
+      case Expr::Kind::Construct: return call(ir::type_name(e->type) + ir::array_suffix(e->type), e->args);
+      case Expr::Kind::Member: return operand(e->args[0]) + "." + e->name;
+      case Expr::Kind::Index: return operand(e->args[0]) + "[" + expr(e->args[1]) + "]";
+      case Expr::Kind::Comma: {
+        std::string s;
+        for (size_t i = 0; i < e->args.size(); ++i) s += (i ? ", " : "") + operand(e->args[i]);
+        return s;
+      }
+    }
+    return "";
+  }
+
+  const ir::Module& module_;
+  const PrintOptions& options_;
+  std::string file_;
+  bool es_;
+  int version_;
+  std::ostringstream out_;
+  std::vector<Diagnostic> diags_;
+  const ir::Var* frag_output_ = nullptr;
+  bool frag_color_declared_ = false;
+};
+
+}  // namespace
+
+PrintResult print(const ir::Module& module, const PrintOptions& options, const std::string& file_name) {
+  return Printer(module, options, file_name).run();
+}
+
+}  // namespace doublet::emit

@@ -1,0 +1,30 @@
+// The one GLSL printer, parameterised by target: version line, precision
+// statements, storage spellings (attribute/varying for ES 1.00), layout
+// qualifiers the target accepts, ES 1.00 built-in names.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+#include "ir/ir.hpp"
+
+namespace doublet::emit {
+
+struct PrintOptions {
+  Target target = Target::Es300;
+  std::vector<std::string> extensions;  // #extension NAME : require
+  std::string runtime;                  // float-float runtime text, printed before user types
+};
+
+struct PrintResult {
+  std::string text;
+  std::vector<Diagnostic> diagnostics;  // constructs the target cannot express
+};
+
+PrintResult print(const ir::Module& module, const PrintOptions& options, const std::string& file_name);
+
+// A float literal that reads back as exactly `value` (as a float).
+std::string float_literal(float value);
+
+}  // namespace doublet::emit

@@ -1,0 +1,26 @@
+#include "emit/validate.hpp"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include "frontend/frontend.hpp"
+
+namespace doublet::emit {
+
+std::string validate(std::string_view text, Stage stage, Target target) {
+  frontend::ensure_glslang_initialized();
+  EShLanguage lang = stage == Stage::Vertex ? EShLangVertex : stage == Stage::Fragment ? EShLangFragment : EShLangCompute;
+  glslang::TShader shader(lang);
+  std::string source(text);
+  const char* strings[] = {source.c_str()};
+  shader.setStrings(strings, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientNone, 100);
+  shader.setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
+  shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+  EProfile profile = target_is_es(target) ? EEsProfile : ECoreProfile;
+  if (shader.parse(GetDefaultResources(), target_version(target), profile, true, false, EShMsgDefault)) return "";
+  std::string log = shader.getInfoLog();
+  return log.empty() ? "glslang rejected the output without a message" : log;
+}
+
+}  // namespace doublet::emit

@@ -1,0 +1,198 @@
+#include "frontend/builtin_names.hpp"
+
+namespace doublet::frontend {
+using namespace glslang;
+
+const char* binary_operator_spelling(TOperator op) {
+  switch (op) {
+    case EOpAdd: return "+";
+    case EOpSub: return "-";
+    case EOpMul:
+    case EOpVectorTimesScalar:
+    case EOpVectorTimesMatrix:
+    case EOpMatrixTimesVector:
+    case EOpMatrixTimesScalar:
+    case EOpMatrixTimesMatrix: return "*";
+    case EOpDiv: return "/";
+    case EOpMod: return "%";
+    case EOpRightShift: return ">>";
+    case EOpLeftShift: return "<<";
+    case EOpAnd: return "&";
+    case EOpInclusiveOr: return "|";
+    case EOpExclusiveOr: return "^";
+    case EOpEqual: return "==";
+    case EOpNotEqual: return "!=";
+    case EOpLessThan: return "<";
+    case EOpGreaterThan: return ">";
+    case EOpLessThanEqual: return "<=";
+    case EOpGreaterThanEqual: return ">=";
+    case EOpComma: return ",";
+    case EOpLogicalOr: return "||";
+    case EOpLogicalXor: return "^^";
+    case EOpLogicalAnd: return "&&";
+    case EOpAssign: return "=";
+    case EOpAddAssign: return "+=";
+    case EOpSubAssign: return "-=";
+    case EOpMulAssign:
+    case EOpVectorTimesMatrixAssign:
+    case EOpVectorTimesScalarAssign:
+    case EOpMatrixTimesScalarAssign:
+    case EOpMatrixTimesMatrixAssign: return "*=";
+    case EOpDivAssign: return "/=";
+    case EOpModAssign: return "%=";
+    case EOpAndAssign: return "&=";
+    case EOpInclusiveOrAssign: return "|=";
+    case EOpExclusiveOrAssign: return "^=";
+    case EOpLeftShiftAssign: return "<<=";
+    case EOpRightShiftAssign: return ">>=";
+    default: return nullptr;
+  }
+}
+
+const char* unary_operator_spelling(TOperator op) {
+  switch (op) {
+    case EOpNegative: return "-";
+    case EOpLogicalNot: return "!";
+    case EOpBitwiseNot: return "~";
+    case EOpPreIncrement: return "++x";
+    case EOpPreDecrement: return "--x";
+    case EOpPostIncrement: return "x++";
+    case EOpPostDecrement: return "x--";
+    default: return nullptr;
+  }
+}
+
+bool is_conversion(TOperator op) {
+  return op >= EOpConvInt8ToBool && op <= EOpConvDoubleToFloat;
+}
+
+const char* builtin_function_name(TOperator op, int args) {
+  switch (op) {
+    case EOpVectorLogicalNot: return "not";
+    case EOpRadians: return "radians";
+    case EOpDegrees: return "degrees";
+    case EOpSin: return "sin";
+    case EOpCos: return "cos";
+    case EOpTan: return "tan";
+    case EOpAsin: return "asin";
+    case EOpAcos: return "acos";
+    case EOpAtan: return "atan";
+    case EOpSinh: return "sinh";
+    case EOpCosh: return "cosh";
+    case EOpTanh: return "tanh";
+    case EOpAsinh: return "asinh";
+    case EOpAcosh: return "acosh";
+    case EOpAtanh: return "atanh";
+    case EOpPow: return "pow";
+    case EOpExp: return "exp";
+    case EOpLog: return "log";
+    case EOpExp2: return "exp2";
+    case EOpLog2: return "log2";
+    case EOpSqrt: return "sqrt";
+    case EOpInverseSqrt: return "inversesqrt";
+    case EOpAbs: return "abs";
+    case EOpSign: return "sign";
+    case EOpFloor: return "floor";
+    case EOpTrunc: return "trunc";
+    case EOpRound: return "round";
+    case EOpRoundEven: return "roundEven";
+    case EOpCeil: return "ceil";
+    case EOpFract: return "fract";
+    case EOpModf: return "modf";
+    case EOpMod: return "mod";
+    case EOpMin: return "min";
+    case EOpMax: return "max";
+    case EOpClamp: return "clamp";
+    case EOpMix: return "mix";
+    case EOpStep: return "step";
+    case EOpSmoothStep: return "smoothstep";
+    case EOpIsNan: return "isnan";
+    case EOpIsInf: return "isinf";
+    case EOpFma: return "fma";
+    case EOpFrexp: return "frexp";
+    case EOpLdexp: return "ldexp";
+    case EOpFloatBitsToInt: return "floatBitsToInt";
+    case EOpFloatBitsToUint: return "floatBitsToUint";
+    case EOpIntBitsToFloat: return "intBitsToFloat";
+    case EOpUintBitsToFloat: return "uintBitsToFloat";
+    case EOpPackSnorm2x16: return "packSnorm2x16";
+    case EOpUnpackSnorm2x16: return "unpackSnorm2x16";
+    case EOpPackUnorm2x16: return "packUnorm2x16";
+    case EOpUnpackUnorm2x16: return "unpackUnorm2x16";
+    case EOpPackSnorm4x8: return "packSnorm4x8";
+    case EOpUnpackSnorm4x8: return "unpackSnorm4x8";
+    case EOpPackUnorm4x8: return "packUnorm4x8";
+    case EOpUnpackUnorm4x8: return "unpackUnorm4x8";
+    case EOpPackHalf2x16: return "packHalf2x16";
+    case EOpUnpackHalf2x16: return "unpackHalf2x16";
+    case EOpPackDouble2x32: return "packDouble2x32";
+    case EOpUnpackDouble2x32: return "unpackDouble2x32";
+    case EOpLength: return "length";
+    case EOpDistance: return "distance";
+    case EOpDot: return "dot";
+    case EOpCross: return "cross";
+    case EOpNormalize: return "normalize";
+    case EOpFaceForward: return "faceforward";
+    case EOpReflect: return "reflect";
+    case EOpRefract: return "refract";
+    case EOpDPdx: return "dFdx";
+    case EOpDPdy: return "dFdy";
+    case EOpFwidth: return "fwidth";
+    case EOpMul: return args == 2 ? "matrixCompMult" : nullptr;
+    case EOpOuterProduct: return "outerProduct";
+    case EOpDeterminant: return "determinant";
+    case EOpMatrixInverse: return "inverse";
+    case EOpTranspose: return "transpose";
+    case EOpLessThan: return "lessThan";
+    case EOpGreaterThan: return "greaterThan";
+    case EOpLessThanEqual: return "lessThanEqual";
+    case EOpGreaterThanEqual: return "greaterThanEqual";
+    case EOpVectorEqual: return "equal";
+    case EOpVectorNotEqual: return "notEqual";
+    case EOpAny: return "any";
+    case EOpAll: return "all";
+    case EOpBarrier: return "barrier";
+    case EOpMemoryBarrier: return "memoryBarrier";
+    case EOpMemoryBarrierBuffer: return "memoryBarrierBuffer";
+    case EOpMemoryBarrierShared: return "memoryBarrierShared";
+    case EOpMemoryBarrierImage: return "memoryBarrierImage";
+    case EOpGroupMemoryBarrier: return "groupMemoryBarrier";
+    case EOpBitfieldExtract: return "bitfieldExtract";
+    case EOpBitfieldInsert: return "bitfieldInsert";
+    case EOpBitFieldReverse: return "bitfieldReverse";
+    case EOpBitCount: return "bitCount";
+    case EOpFindLSB: return "findLSB";
+    case EOpFindMSB: return "findMSB";
+    case EOpUMulExtended: return "umulExtended";
+    case EOpIMulExtended: return "imulExtended";
+    case EOpAddCarry: return "uaddCarry";
+    case EOpSubBorrow: return "usubBorrow";
+    case EOpTexture: return "texture";
+    case EOpTextureProj: return "textureProj";
+    case EOpTextureLod: return "textureLod";
+    case EOpTextureOffset: return "textureOffset";
+    case EOpTextureFetch: return "texelFetch";
+    case EOpTextureFetchOffset: return "texelFetchOffset";
+    case EOpTextureProjOffset: return "textureProjOffset";
+    case EOpTextureLodOffset: return "textureLodOffset";
+    case EOpTextureProjLod: return "textureProjLod";
+    case EOpTextureGrad: return "textureGrad";
+    case EOpTextureGradOffset: return "textureGradOffset";
+    case EOpTextureProjGrad: return "textureProjGrad";
+    case EOpTextureGather: return "textureGather";
+    case EOpTextureGatherOffset: return "textureGatherOffset";
+    case EOpTextureQuerySize: return "textureSize";
+    case EOpTextureQueryLevels: return "textureQueryLevels";
+    case EOpAtomicAdd: return "atomicAdd";
+    case EOpAtomicMin: return "atomicMin";
+    case EOpAtomicMax: return "atomicMax";
+    case EOpAtomicAnd: return "atomicAnd";
+    case EOpAtomicOr: return "atomicOr";
+    case EOpAtomicXor: return "atomicXor";
+    case EOpAtomicExchange: return "atomicExchange";
+    case EOpAtomicCompSwap: return "atomicCompSwap";
+    default: return nullptr;
+  }
+}
+
+}  // namespace doublet::frontend

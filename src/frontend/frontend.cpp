@@ -1,0 +1,237 @@
+#include "frontend/frontend.hpp"
+
+#include <glslang/Include/ResourceLimits.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <regex>
+#include <sstream>
+
+namespace doublet::frontend {
+
+ParsedShader::ParsedShader() = default;
+ParsedShader::ParsedShader(ParsedShader&&) noexcept = default;
+ParsedShader::~ParsedShader() = default;
+
+void ensure_glslang_initialized() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+SourceInfo scan_version(std::string_view source) {
+  SourceInfo info;
+  static const std::regex version_re(R"(^\s*#\s*version\s+(\d+)\s*(\w*))");
+  std::string text(source);
+  std::istringstream lines(text);
+  std::string line;
+  bool in_comment = false;
+  while (std::getline(lines, line)) {
+    // Skip blank lines and comments before the directive.
+    std::string_view rest = line;
+    while (!rest.empty()) {
+      if (in_comment) {
+        auto end = rest.find("*/");
+        if (end == std::string_view::npos) { rest = {}; break; }
+        rest.remove_prefix(end + 2);
+        in_comment = false;
+        continue;
+      }
+      auto first = rest.find_first_not_of(" \t\r");
+      if (first == std::string_view::npos) { rest = {}; break; }
+      rest.remove_prefix(first);
+      if (rest.substr(0, 2) == "//") { rest = {}; break; }
+      if (rest.substr(0, 2) == "/*") { in_comment = true; rest.remove_prefix(2); continue; }
+      break;
+    }
+    if (rest.empty()) continue;
+    std::smatch m;
+    std::string s(rest);
+    if (std::regex_search(s, m, version_re)) {
+      info.version = std::stoi(m[1].str());
+      std::string profile = m[2].str();
+      info.es = profile == "es" || info.version == 100;
+    }
+    return info;
+  }
+  return info;
+}
+
+int recover_column(std::string_view text, int line, std::string_view token) {
+  int current = 1;
+  size_t start = 0;
+  while (current < line && start < text.size()) {
+    size_t nl = text.find('\n', start);
+    if (nl == std::string_view::npos) return 1;
+    start = nl + 1;
+    ++current;
+  }
+  size_t end = text.find('\n', start);
+  std::string_view row = text.substr(start, end == std::string_view::npos ? text.size() - start : end - start);
+  auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  if (!token.empty()) {
+    for (size_t pos = row.find(token); pos != std::string_view::npos; pos = row.find(token, pos + 1)) {
+      bool left_ok = pos == 0 || !is_word(row[pos - 1]) || !is_word(token.front());
+      size_t after = pos + token.size();
+      bool right_ok = after >= row.size() || !is_word(row[after]) || !is_word(token.back());
+      if (left_ok && right_ok) return static_cast<int>(pos) + 1;
+    }
+  }
+  size_t first = row.find_first_not_of(" \t\r");
+  return first == std::string_view::npos ? 1 : static_cast<int>(first) + 1;
+}
+
+void append_glslang_log(std::string_view log, const std::string& main_name,
+                        const std::vector<std::pair<std::string, std::string>>& files,
+                        std::vector<Diagnostic>& out) {
+  static const std::regex line_re(R"(^(ERROR|WARNING): (.*?):(\d+): (.*)$)");
+  static const std::regex token_re(R"(^\s*'([^']*)'\s*:\s*(.*?)\s*$)");
+  std::istringstream lines{std::string(log)};
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::smatch m;
+    if (!std::regex_match(line, m, line_re)) continue;
+    Diagnostic d;
+    d.severity = m[1] == "ERROR" ? Severity::Error : Severity::Warning;
+    d.file = m[2].str();
+    if (d.file == "0" || d.file.empty()) d.file = main_name;
+    d.line = std::stoi(m[3].str());
+    std::string message = m[4].str();
+    std::string token;
+    std::smatch t;
+    if (std::regex_match(message, t, token_re)) {
+      token = t[1].str();
+      message = t[2].str();
+      if (!token.empty()) message += " '" + token + "'";
+    }
+    if (message.find("compilation terminated") != std::string::npos) continue;
+    while (!message.empty() && message.front() == ' ') message.erase(message.begin());
+    d.message = message;
+    d.column = 1;
+    for (const auto& [name, text] : files)
+      if (name == d.file) d.column = recover_column(text, d.line, token);
+    out.push_back(std::move(d));
+  }
+}
+
+namespace {
+
+EShLanguage to_glslang(Stage s) {
+  switch (s) {
+    case Stage::Vertex: return EShLangVertex;
+    case Stage::Fragment: return EShLangFragment;
+    case Stage::Compute: return EShLangCompute;
+  }
+  return EShLangVertex;
+}
+
+// Resolves #include for glslang via the user's Includer or -I directories, and
+// remembers every file read (for depfiles and for column recovery).
+class IncludeAdapter : public glslang::TShader::Includer {
+ public:
+  IncludeAdapter(const Options& options, std::vector<std::pair<std::string, std::string>>& files,
+                 std::vector<std::string>& included)
+      : options_(options), files_(files), included_(included) {}
+
+  IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
+    return resolve(header, includer, true);
+  }
+  IncludeResult* includeSystem(const char* header, const char* includer, size_t) override {
+    return resolve(header, includer, false);
+  }
+  void releaseInclude(IncludeResult* result) override {
+    if (!result) return;
+    delete static_cast<std::string*>(result->userData);
+    delete result;
+  }
+
+ private:
+  IncludeResult* resolve(const char* header, const char* includer, bool local) {
+    std::optional<doublet::IncludeResult> found;
+    if (options_.includer) {
+      found = options_.includer->include(header, includer ? includer : "");
+    } else {
+      namespace fs = std::filesystem;
+      std::vector<fs::path> dirs;
+      if (local) {
+        fs::path from = includer && *includer ? fs::path(includer) : fs::path(options_.file_name);
+        dirs.push_back(from.parent_path());
+      }
+      for (const auto& d : options_.include_dirs) dirs.emplace_back(d);
+      for (const auto& dir : dirs) {
+        fs::path candidate = dir / header;
+        std::error_code ec;
+        if (!fs::is_regular_file(candidate, ec)) continue;
+        std::ifstream in(candidate, std::ios::binary);
+        std::stringstream buffer;
+        buffer << in.rdbuf();
+        found = doublet::IncludeResult{candidate.lexically_normal().string(), buffer.str()};
+        break;
+      }
+    }
+    if (!found) return nullptr;
+    included_.push_back(found->resolved_path);
+    files_.emplace_back(found->resolved_path, found->contents);
+    auto* text = new std::string(std::move(found->contents));
+    return new IncludeResult(found->resolved_path, text->data(), text->size(), text);
+  }
+
+  const Options& options_;
+  std::vector<std::pair<std::string, std::string>>& files_;
+  std::vector<std::string>& included_;
+};
+
+}  // namespace
+
+bool parse(std::string_view source, const Options& options, ParsedShader& out,
+           std::vector<Diagnostic>& diagnostics) {
+  ensure_glslang_initialized();
+  out.info = scan_version(source);
+  auto first_non_blank = source.find_first_not_of(" \t\r\n");
+  if (first_non_blank == std::string_view::npos) {
+    diagnostics.push_back({options.file_name, 1, 1, Severity::Error, "empty shader: no code to lower"});
+    return false;
+  }
+  if (source.find('\0') != std::string_view::npos) {
+    int line = 1 + static_cast<int>(std::count(source.begin(), source.begin() + source.find('\0'), '\n'));
+    diagnostics.push_back({options.file_name, line, 1, Severity::Error,
+                           "input is not GLSL text (it contains a NUL byte)"});
+    return false;
+  }
+
+  std::string preamble = "#extension GL_GOOGLE_include_directive : enable\n";
+  for (const auto& [name, value] : options.defines)
+    preamble += "#define " + name + " " + (value.empty() ? "1" : value) + "\n";
+
+  out.shader = std::make_unique<glslang::TShader>(to_glslang(*options.stage));
+  std::string text(source);
+  const char* strings[] = {text.c_str()};
+  const int lengths[] = {static_cast<int>(text.size())};
+  const char* names[] = {options.file_name.c_str()};
+  out.shader->setStringsWithLengthsAndNames(strings, lengths, names, 1);
+  out.shader->setPreamble(preamble.c_str());
+  out.shader->setEnvInput(glslang::EShSourceGlsl, to_glslang(*options.stage), glslang::EShClientNone, 100);
+  out.shader->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
+  out.shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+
+  std::vector<std::pair<std::string, std::string>> files{{options.file_name, text}};
+  IncludeAdapter includer(options, files, out.included_files);
+  auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
+  // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
+  bool ok = out.shader->parse(GetDefaultResources(), 450, ECompatibilityProfile, true, false, messages, includer);
+  append_glslang_log(out.shader->getInfoLog(), options.file_name, files, diagnostics);
+  if (!ok) {
+    bool any_error = false;
+    for (const auto& d : diagnostics) any_error |= d.severity == Severity::Error;
+    if (!any_error)
+      diagnostics.push_back({options.file_name, 1, 1, Severity::Error, "the shader does not compile"});
+    return false;
+  }
+  out.intermediate = out.shader->getIntermediate();
+  return true;
+}
+
+}  // namespace doublet::frontend

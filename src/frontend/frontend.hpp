@@ -1,0 +1,57 @@
+// Front end: runs glslang over the user's source and keeps the typed AST alive.
+//
+// GLSL ES reserves `double`, so every input (ES 1.00–3.20 or desktop) is parsed
+// as desktop GLSL 4.50 compatibility: the compatibility profile still knows
+// `attribute`, `varying`, `gl_FragColor` and `texture2D`. Line numbers are the
+// user's; glslang prints no column, so diagnostics recover it from the source.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+
+namespace glslang {
+class TShader;
+class TIntermediate;
+}  // namespace glslang
+
+namespace doublet::frontend {
+
+struct SourceInfo {
+  int version = 100;  // the user's #version (100 when absent)
+  bool es = true;     // user wrote an ES version (or none)
+};
+
+struct ParsedShader {
+  std::unique_ptr<glslang::TShader> shader;  // owns the AST's memory pool
+  glslang::TIntermediate* intermediate = nullptr;
+  SourceInfo info;
+  std::vector<std::string> included_files;
+  ParsedShader();
+  ParsedShader(ParsedShader&&) noexcept;
+  ~ParsedShader();
+};
+
+// Reads the #version line the way the GLSL specs define it.
+SourceInfo scan_version(std::string_view source);
+
+// Parses `source`; appends diagnostics (with file:line:col) on failure.
+bool parse(std::string_view source, const Options& options, ParsedShader& out,
+           std::vector<Diagnostic>& diagnostics);
+
+// Turns glslang's info log into diagnostics. `files` maps names used in the log
+// to their text, for recovering columns.
+void append_glslang_log(std::string_view log, const std::string& main_name,
+                        const std::vector<std::pair<std::string, std::string>>& files,
+                        std::vector<Diagnostic>& out);
+
+// Column (1-based) of `token` as a whole word in line `line` of `text`, or of
+// the line's first non-blank character when absent.
+int recover_column(std::string_view text, int line, std::string_view token);
+
+void ensure_glslang_initialized();
+
+}  // namespace doublet::frontend

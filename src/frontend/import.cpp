@@ -1,0 +1,562 @@
+#include "frontend/import.hpp"
+
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <map>
+#include <set>
+
+#include "frontend/builtin_names.hpp"
+#include "frontend/declarations.hpp"
+
+namespace doublet::frontend {
+namespace {
+
+using namespace glslang;
+
+std::string demangle(const TString& mangled) {
+  std::string s(mangled.c_str());
+  auto paren = s.find('(');
+  return paren == std::string::npos ? s : s.substr(0, paren);
+}
+
+ir::Loc loc_of(const TSourceLoc& l) { return {l.line, l.column}; }
+
+class Importer {
+ public:
+  Importer(const Options& options, ir::Module& module, std::vector<Diagnostic>& diags)
+      : options_(options), module_(module), diags_(diags) {}
+
+  bool run(TIntermediate& intermediate);
+
+ private:
+  // ---- diagnostics -------------------------------------------------------
+  void error(const TSourceLoc& loc, const std::string& message) {
+    std::string file = loc.name && !loc.name->empty() ? loc.name->c_str() : options_.file_name;
+    if (file == "0") file = options_.file_name;
+    diags_.push_back({file, loc.line, loc.column, Severity::Error, message});
+    failed_ = true;
+  }
+
+  // ---- types -------------------------------------------------------------
+  ir::Type import_type(const TType& t, const TSourceLoc& loc) {
+    ir::Type out;
+    switch (t.getBasicType()) {
+      case EbtVoid: out.base = ir::Base::Void; break;
+      case EbtBool: out.base = ir::Base::Bool; break;
+      case EbtInt: out.base = ir::Base::Int; break;
+      case EbtUint: out.base = ir::Base::Uint; break;
+      case EbtFloat: out.base = ir::Base::Float; break;
+      case EbtDouble: out.base = ir::Base::Double; break;
+      case EbtSampler:
+        out.base = ir::Base::Opaque;
+        out.name = t.getSampler().getString().c_str();
+        break;
+      case EbtStruct:
+      case EbtBlock: {
+        out.base = t.getBasicType() == EbtStruct ? ir::Base::Struct : ir::Base::Block;
+        out.name = t.getTypeName().c_str();
+        out.fields = struct_fields(t, loc, out.base == ir::Base::Struct);
+        break;
+      }
+      default:
+        error(loc, std::string("type '") + t.getCompleteString().c_str() + "' is not supported by doublet");
+        out.base = ir::Base::Void;
+    }
+    if (t.isMatrix()) {
+      out.cols = t.getMatrixCols();
+      out.vec = t.getMatrixRows();
+    } else if (t.isVector()) {
+      out.vec = t.getVectorSize();
+    }
+    if (t.isArray()) {
+      const TArraySizes* sizes = t.getArraySizes();
+      for (int i = 0; i < sizes->getNumDims(); ++i) out.array_dims.push_back(sizes->getDimSize(i));
+    }
+    return out;
+  }
+
+  std::shared_ptr<std::vector<ir::Field>> struct_fields(const TType& t, const TSourceLoc& loc, bool is_struct) {
+    std::string name = t.getTypeName().c_str();
+    if (is_struct) {
+      auto it = structs_.find(name);
+      if (it != structs_.end()) return it->second;
+    }
+    auto fields = std::make_shared<std::vector<ir::Field>>();
+    for (const TTypeLoc& member : *t.getStruct()) {
+      ir::Field f;
+      f.name = member.type->getFieldName().c_str();
+      f.type = import_type(*member.type, member.loc);
+      f.layout = import_layout(member.type->getQualifier());
+      fields->push_back(std::move(f));
+    }
+    if (is_struct) {
+      structs_[name] = fields;
+      ir::Type st;
+      st.base = ir::Base::Struct;
+      st.name = name;
+      st.fields = fields;
+      module_.structs.push_back(st);  // after its member structs: declaration order is valid
+    }
+    return fields;
+  }
+
+  static ir::Layout import_layout(const TQualifier& q) {
+    ir::Layout l;
+    if (q.hasLocation()) l.location = static_cast<int>(q.layoutLocation);
+    if (q.hasBinding()) l.binding = static_cast<int>(q.layoutBinding);
+    if (q.hasSet()) l.set = static_cast<int>(q.layoutSet);
+    if (q.hasOffset()) l.offset = q.layoutOffset;
+    switch (q.layoutPacking) {
+      case ElpStd140: l.packing = "std140"; break;
+      case ElpStd430: l.packing = "std430"; break;
+      case ElpShared: l.packing = "shared"; break;
+      case ElpPacked: l.packing = "packed"; break;
+      default: break;
+    }
+    if (q.layoutMatrix == ElmRowMajor) l.matrix = "row_major";
+    return l;
+  }
+
+  static ir::Storage import_storage(const TQualifier& q, const std::string& name) {
+    if (name.rfind("gl_", 0) == 0) return ir::Storage::BuiltIn;
+    switch (q.storage) {
+      case EvqTemporary: return ir::Storage::Local;
+      case EvqGlobal: return ir::Storage::Global;
+      case EvqConst: return ir::Storage::Const;
+      case EvqVaryingIn: return ir::Storage::In;
+      case EvqVaryingOut: return ir::Storage::Out;
+      case EvqUniform: return ir::Storage::Uniform;
+      case EvqBuffer: return ir::Storage::Buffer;
+      case EvqShared: return ir::Storage::Shared;
+      case EvqIn:
+      case EvqConstReadOnly: return ir::Storage::ParamIn;
+      case EvqOut: return ir::Storage::ParamOut;
+      case EvqInOut: return ir::Storage::ParamInOut;
+      default: return ir::Storage::BuiltIn;
+    }
+  }
+
+  // ---- variables ---------------------------------------------------------
+  ir::VarPtr var_for(const TIntermSymbol& sym) {
+    auto it = vars_.find(sym.getId());
+    if (it != vars_.end()) return it->second;
+    auto v = std::make_shared<ir::Var>();
+    v->id = next_id_++;
+    v->name = sym.getName().c_str();
+    v->type = import_type(sym.getType(), sym.getLoc());
+    v->declared_type = v->type;
+    const TQualifier& q = sym.getQualifier();
+    v->storage = import_storage(q, v->name);
+    v->layout = import_layout(q);
+    if (q.flat) v->interp = ir::Interp::Flat;
+    else if (q.nopersp) v->interp = ir::Interp::NoPerspective;
+    else if (q.centroid) v->interp = ir::Interp::Centroid;
+    else if (q.smooth) v->interp = ir::Interp::Smooth;
+    v->invariant = q.invariant;
+    v->precise = q.isNoContraction();
+    v->readonly = q.readonly;
+    v->writeonly = q.writeonly;
+    v->coherent = q.coherent;
+    v->volatile_ = q.volatil;
+    v->restrict_ = q.restrict;
+    v->loc = loc_of(sym.getLoc());
+    vars_[sym.getId()] = v;
+    if (v->storage == ir::Storage::Const && sym.getConstArray().size() > 0 && !declared_.count(v.get())) {
+      // A constant array/struct indexed dynamically: glslang keeps the symbol
+      // but not the declaration; declare it from its folded value.
+      declared_.insert(v.get());
+      module_.globals.push_back(v);
+      module_.global_inits.push_back(constant(sym.getConstArray(), sym.getType(), sym.getLoc()));
+    }
+    return v;
+  }
+
+  ir::VarPtr block_member(const TIntermSymbol& block, int index, const TSourceLoc& loc) {
+    auto key = std::make_pair(block.getId(), index);
+    auto it = members_.find(key);
+    if (it != members_.end()) return it->second;
+    ir::VarPtr block_var = var_for(block);
+    const TTypeLoc& member = (*block.getType().getStruct())[index];
+    auto v = std::make_shared<ir::Var>();
+    v->id = next_id_++;
+    v->name = member.type->getFieldName().c_str();
+    v->type = import_type(*member.type, loc);
+    v->declared_type = v->type;
+    v->storage = v->name.rfind("gl_", 0) == 0 ? ir::Storage::BuiltIn : block_var->storage;
+    v->layout = import_layout(member.type->getQualifier());
+    v->block = block_var;
+    members_[key] = v;
+    return v;
+  }
+
+  // ---- expressions -------------------------------------------------------
+  ir::ExprPtr constant(const TConstUnionArray& values, const TType& type, const TSourceLoc& loc) {
+    auto e = ir::Expr::make(ir::Expr::Kind::Const, import_type(type, loc), loc_of(loc));
+    if (type.getBasicType() == EbtStruct || type.getBasicType() == EbtBlock) {
+      error(loc, "constant structures are not supported yet; use a constructor");
+      return e;
+    }
+    for (int i = 0; i < values.size(); ++i) {
+      ir::Scalar s;
+      const TConstUnion& c = values[i];
+      // glslang stores float constants as EbtDouble unions: the node's type decides.
+      TBasicType kind = c.getType() == EbtDouble ? type.getBasicType() : c.getType();
+      switch (kind) {
+        case EbtDouble:
+          s.base = ir::Base::Double;
+          s.d = c.getDConst();
+          break;
+        case EbtFloat:
+          // glslang folds float expressions in double; the driver works in float.
+          s.base = ir::Base::Float;
+          s.d = static_cast<double>(static_cast<float>(c.getDConst()));
+          break;
+        case EbtInt: s.base = ir::Base::Int; s.i = c.getIConst(); break;
+        case EbtUint: s.base = ir::Base::Uint; s.i = c.getUConst(); break;
+        case EbtBool: s.base = ir::Base::Bool; s.b = c.getBConst(); break;
+        default: error(loc, "unsupported constant type"); break;
+      }
+      e->values.push_back(s);
+    }
+    return e;
+  }
+
+  ir::ExprPtr make(ir::Expr::Kind k, TIntermTyped* node) {
+    return ir::Expr::make(k, import_type(node->getType(), node->getLoc()), loc_of(node->getLoc()));
+  }
+
+  ir::ExprPtr expr(TIntermNode* node) {
+    if (auto* s = node->getAsSymbolNode()) {
+      if (s->getBasicType() == EbtBlock && std::string(s->getName().c_str()).rfind("anon@", 0) == 0) {
+        error(s->getLoc(), "an anonymous block cannot be used as a value");
+      }
+      auto e = make(ir::Expr::Kind::Sym, s);
+      e->var = var_for(*s);
+      return e;
+    }
+    if (auto* c = node->getAsConstantUnion()) return constant(c->getConstArray(), c->getType(), c->getLoc());
+    if (auto* b = node->getAsBinaryNode()) return binary(b);
+    if (auto* u = node->getAsUnaryNode()) return unary(u);
+    if (auto* a = node->getAsAggregate()) return aggregate(a);
+    if (auto* sel = node->getAsSelectionNode()) {
+      auto e = make(ir::Expr::Kind::Ternary, sel);
+      if (!sel->getFalseBlock() || !sel->getTrueBlock()) {
+        error(sel->getLoc(), "malformed conditional expression");
+        return e;
+      }
+      e->args = {expr(sel->getCondition()), expr(sel->getTrueBlock()), expr(sel->getFalseBlock())};
+      return e;
+    }
+    auto* typed = node->getAsTyped();
+    error(typed ? typed->getLoc() : TSourceLoc{}, "unsupported expression");
+    return ir::Expr::make(ir::Expr::Kind::Const, ir::scalar_type(ir::Base::Int));
+  }
+
+  ir::ExprPtr binary(TIntermBinary* b) {
+    TOperator op = b->getOp();
+    if (op == EOpIndexDirectStruct) {
+      int index = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+      auto* sym = b->getLeft()->getAsSymbolNode();
+      if (sym && sym->getBasicType() == EbtBlock && std::string(sym->getName().c_str()).rfind("anon@", 0) == 0) {
+        auto e = make(ir::Expr::Kind::Sym, b);
+        e->var = block_member(*sym, index, b->getLoc());
+        return e;
+      }
+      auto e = make(ir::Expr::Kind::Member, b);
+      e->name = (*b->getLeft()->getType().getStruct())[index].type->getFieldName().c_str();
+      e->args = {expr(b->getLeft())};
+      return e;
+    }
+    if (op == EOpVectorSwizzle) {
+      auto e = make(ir::Expr::Kind::Member, b);
+      static const char* letters = "xyzw";
+      for (TIntermNode* n : b->getRight()->getAsAggregate()->getSequence())
+        e->name += letters[n->getAsConstantUnion()->getConstArray()[0].getIConst()];
+      e->args = {expr(b->getLeft())};
+      return e;
+    }
+    if (op == EOpIndexDirect || op == EOpIndexIndirect) {
+      auto e = make(ir::Expr::Kind::Index, b);
+      e->args = {expr(b->getLeft()), expr(b->getRight())};
+      return e;
+    }
+    if (op == EOpMatrixSwizzle) {
+      error(b->getLoc(), "matrix swizzles are not supported");
+      return make(ir::Expr::Kind::Const, b);
+    }
+    const char* spelling = binary_operator_spelling(op);
+    if (!spelling) {
+      error(b->getLoc(), "unsupported binary operation");
+      return make(ir::Expr::Kind::Const, b);
+    }
+    auto e = make(op == EOpComma ? ir::Expr::Kind::Comma : ir::Expr::Kind::Binary, b);
+    e->op = spelling;
+    e->args = {expr(b->getLeft()), expr(b->getRight())};
+    return e;
+  }
+
+  ir::ExprPtr unary(TIntermUnary* u) {
+    TOperator op = u->getOp();
+    if (is_conversion(op) || op == EOpCopyObject) {
+      auto e = make(ir::Expr::Kind::Construct, u);
+      e->args = {expr(u->getOperand())};
+      return e;
+    }
+    if (const char* spelling = unary_operator_spelling(op)) {
+      auto e = make(ir::Expr::Kind::Unary, u);
+      e->op = spelling;
+      e->args = {expr(u->getOperand())};
+      return e;
+    }
+    if (const char* name = builtin_function_name(op, 1)) {
+      auto e = make(ir::Expr::Kind::Builtin, u);
+      e->name = name;
+      e->args = {expr(u->getOperand())};
+      return e;
+    }
+    error(u->getLoc(), "unsupported operation");
+    return make(ir::Expr::Kind::Const, u);
+  }
+
+  ir::ExprPtr aggregate(TIntermAggregate* a) {
+    TOperator op = a->getOp();
+    std::vector<ir::ExprPtr> args;
+    for (TIntermNode* n : a->getSequence()) args.push_back(expr(n));
+    if (op == EOpFunctionCall) {
+      auto e = make(ir::Expr::Kind::Call, a);
+      e->name = demangle(a->getName());
+      e->args = std::move(args);
+      return e;
+    }
+    if (op > EOpConstructGuardStart && op < EOpConstructGuardEnd) {
+      auto e = make(ir::Expr::Kind::Construct, a);
+      e->args = std::move(args);
+      return e;
+    }
+    if (op == EOpComma || op == EOpSequence) {
+      auto e = make(ir::Expr::Kind::Comma, a);
+      e->args = std::move(args);
+      return e;
+    }
+    const char* name = builtin_function_name(op, static_cast<int>(args.size()));
+    if (!name) {
+      std::string mangled = a->getName().c_str();
+      error(a->getLoc(), mangled.empty() ? std::string("unsupported built-in operation")
+                                         : "built-in function '" + demangle(a->getName()) + "' is not supported");
+      return make(ir::Expr::Kind::Const, a);
+    }
+    auto e = make(ir::Expr::Kind::Builtin, a);
+    e->name = name;
+    e->args = std::move(args);
+    return e;
+  }
+
+  // ---- statements --------------------------------------------------------
+  static bool is_assignment_list(TIntermAggregate* a) {
+    if (a->getSequence().empty()) return false;
+    for (TIntermNode* n : a->getSequence()) {
+      auto* b = n->getAsBinaryNode();
+      if (!b || b->getOp() != EOpAssign || !b->getLeft()->getAsSymbolNode()) return false;
+    }
+    return true;
+  }
+
+  ir::StmtPtr block(TIntermNode* node) {
+    auto blk = ir::Stmt::make(ir::Stmt::Kind::Block);
+    if (!node) return blk;
+    auto* a = node->getAsAggregate();
+    if (a && a->getOp() == EOpSequence && !is_for_loop(a)) {
+      blk->loc = loc_of(a->getLoc());
+      for (TIntermNode* n : a->getSequence()) stmt(n, blk->body);
+    } else {
+      stmt(node, blk->body);
+    }
+    return blk;
+  }
+
+  static bool is_for_loop(TIntermAggregate* a) {
+    auto& seq = a->getSequence();
+    return !seq.empty() && seq.size() <= 2 && seq.back()->getAsLoopNode() && seq.back()->getAsLoopNode()->testFirst() &&
+           (seq.size() == 1 || !seq.front()->getAsLoopNode());
+  }
+
+  void stmt(TIntermNode* node, std::vector<ir::StmtPtr>& out) {
+    if (!node) return;
+    if (auto* a = node->getAsAggregate(); a && a->getOp() == EOpSequence) {
+      if (is_for_loop(a)) {
+        auto loop = loop_stmt(a->getSequence().back()->getAsLoopNode());
+        if (a->getSequence().size() == 2) {
+          std::vector<ir::StmtPtr> init;
+          stmt(a->getSequence().front(), init);
+          if (init.size() == 1 && init[0]->kind == ir::Stmt::Kind::Expr) {
+            loop->body[0] = init[0];
+          } else {
+            for (auto& s : init) out.push_back(s);
+          }
+        }
+        out.push_back(loop);
+        return;
+      }
+      if (is_assignment_list(a)) {  // `float a = 1.0, b = 2.0;` is not a scope
+        for (TIntermNode* n : a->getSequence()) stmt(n, out);
+        return;
+      }
+      out.push_back(block(a));
+      return;
+    }
+    if (auto* br = node->getAsBranchNode()) {
+      ir::Stmt::Kind k;
+      switch (br->getFlowOp()) {
+        case EOpKill: k = ir::Stmt::Kind::Discard; break;
+        case EOpReturn: k = ir::Stmt::Kind::Return; break;
+        case EOpBreak: k = ir::Stmt::Kind::Break; break;
+        case EOpContinue: k = ir::Stmt::Kind::Continue; break;
+        case EOpCase: k = ir::Stmt::Kind::Case; break;
+        case EOpDefault: k = ir::Stmt::Kind::Default; break;
+        default: error(br->getLoc(), "unsupported jump statement"); return;
+      }
+      auto s = ir::Stmt::make(k, loc_of(br->getLoc()));
+      if (br->getExpression()) s->expr = expr(br->getExpression());
+      out.push_back(s);
+      return;
+    }
+    if (auto* sel = node->getAsSelectionNode(); sel && sel->getBasicType() == EbtVoid) {
+      auto s = ir::Stmt::make(ir::Stmt::Kind::If, loc_of(sel->getLoc()));
+      s->expr = expr(sel->getCondition());
+      s->body.push_back(block(sel->getTrueBlock()));
+      if (sel->getFalseBlock()) s->body.push_back(block(sel->getFalseBlock()));
+      out.push_back(s);
+      return;
+    }
+    if (auto* loop = node->getAsLoopNode()) {
+      out.push_back(loop_stmt(loop));
+      return;
+    }
+    if (auto* sw = node->getAsSwitchNode()) {
+      auto s = ir::Stmt::make(ir::Stmt::Kind::Switch, loc_of(sw->getLoc()));
+      s->expr = expr(sw->getCondition());
+      s->body.push_back(block(sw->getBody()));
+      out.push_back(s);
+      return;
+    }
+    if (auto* typed = node->getAsTyped()) {
+      auto s = ir::Stmt::make(ir::Stmt::Kind::Expr, loc_of(typed->getLoc()));
+      s->expr = expr(typed);
+      out.push_back(s);
+      return;
+    }
+    error(TSourceLoc{}, "unsupported statement");
+  }
+
+  ir::StmtPtr loop_stmt(TIntermLoop* loop) {
+    auto s = ir::Stmt::make(ir::Stmt::Kind::Loop, loc_of(loop->getLoc()));
+    s->test_first = loop->testFirst();
+    if (loop->getTest()) s->expr = expr(loop->getTest());
+    if (loop->getTerminal()) s->step = expr(loop->getTerminal());
+    s->body = {nullptr, block(loop->getBody())};
+    return s;
+  }
+
+  // ---- functions and globals ---------------------------------------------
+  void function(TIntermAggregate* a) {
+    auto f = std::make_shared<ir::Function>();
+    f->name = demangle(a->getName());
+    f->return_type = import_type(a->getType(), a->getLoc());
+    f->loc = loc_of(a->getLoc());
+    auto& seq = a->getSequence();
+    if (!seq.empty())
+      if (auto* params = seq[0]->getAsAggregate())
+        for (TIntermNode* p : params->getSequence())
+          if (auto* sym = p->getAsSymbolNode()) f->params.push_back(var_for(*sym));
+    f->body = seq.size() > 1 ? block(seq[1]) : ir::Stmt::make(ir::Stmt::Kind::Block);
+    module_.functions.push_back(f);
+  }
+
+  void global_symbol(TIntermSymbol* sym) {
+    std::string name = sym->getName().c_str();
+    if (name.rfind("gl_", 0) == 0) return;
+    if (sym->getBasicType() == EbtBlock && std::string(sym->getType().getTypeName().c_str()).rfind("gl_", 0) == 0)
+      return;  // built-in blocks (gl_PerVertex)
+    ir::VarPtr v = var_for(*sym);
+    if (!declared_.insert(v.get()).second) return;
+    module_.globals.push_back(v);
+    module_.global_inits.push_back(nullptr);
+  }
+
+  void global_initializer(TIntermBinary* assign) {
+    auto* sym = assign->getLeft()->getAsSymbolNode();
+    global_symbol(sym);
+    ir::VarPtr v = var_for(*sym);
+    for (size_t i = 0; i < module_.globals.size(); ++i)
+      if (module_.globals[i] == v) module_.global_inits[i] = expr(assign->getRight());
+  }
+
+  void top_level(TIntermNode* node) {
+    if (auto* a = node->getAsAggregate()) {
+      switch (a->getOp()) {
+        case EOpFunction: function(a); return;
+        case EOpLinkerObjects: return;  // handled first, for declaration order
+        case EOpSequence:
+          for (TIntermNode* n : a->getSequence()) top_level(n);
+          return;
+        default: break;
+      }
+    }
+    if (auto* b = node->getAsBinaryNode(); b && b->getOp() == EOpAssign && b->getLeft()->getAsSymbolNode()) {
+      global_initializer(b);
+      return;
+    }
+    auto* typed = node->getAsTyped();
+    error(typed ? typed->getLoc() : TSourceLoc{}, "unsupported global statement");
+  }
+
+  const Options& options_;
+  ir::Module& module_;
+  std::vector<Diagnostic>& diags_;
+  bool failed_ = false;
+  int next_id_ = 1;
+  std::map<long long, ir::VarPtr> vars_;
+  std::map<std::pair<long long, int>, ir::VarPtr> members_;
+  std::map<std::string, std::shared_ptr<std::vector<ir::Field>>> structs_;
+  std::set<const ir::Var*> declared_;
+
+ public:
+  bool failed() const { return failed_; }
+  void linker_objects(TIntermAggregate* root) {
+    for (TIntermNode* n : root->getSequence())
+      if (auto* a = n->getAsAggregate(); a && a->getOp() == EOpLinkerObjects)
+        for (TIntermNode* obj : a->getSequence())
+          if (auto* sym = obj->getAsSymbolNode()) global_symbol(sym);
+  }
+  void top(TIntermNode* node) { top_level(node); }
+};
+
+bool Importer::run(TIntermediate& intermediate) {
+  auto* root = intermediate.getTreeRoot() ? intermediate.getTreeRoot()->getAsAggregate() : nullptr;
+  if (!root) {
+    diags_.push_back({options_.file_name, 1, 1, Severity::Error, "the shader has no code"});
+    return false;
+  }
+  linker_objects(root);
+  top_level(root);
+  if (module_.stage == ir::StageKind::Compute)
+    for (int i = 0; i < 3; ++i) module_.local_size[i] = static_cast<int>(intermediate.getLocalSize(i));
+  return !failed_;
+}
+
+}  // namespace
+
+bool import_module(const ParsedShader& parsed, const Options& options, ir::Module& out,
+                   std::vector<Diagnostic>& diagnostics) {
+  out.stage = *options.stage == Stage::Vertex     ? ir::StageKind::Vertex
+              : *options.stage == Stage::Fragment ? ir::StageKind::Fragment
+                                                  : ir::StageKind::Compute;
+  out.source_version = parsed.info.version;
+  out.source_es = parsed.info.es;
+  Importer importer(options, out, diagnostics);
+  if (!importer.run(*parsed.intermediate)) return false;
+  return place_declarations(out, options, diagnostics);
+}
+
+}  // namespace doublet::frontend

@@ -1,0 +1,59 @@
+#include "ir/ir.hpp"
+
+namespace doublet::ir {
+
+bool Type::contains_double() const {
+  if (base == Base::Double) return true;
+  if (fields)
+    for (const Field& f : *fields)
+      if (f.type.contains_double()) return true;
+  return false;
+}
+
+Type Type::element() const {
+  Type t = *this;
+  if (!t.array_dims.empty()) t.array_dims.erase(t.array_dims.begin());
+  return t;
+}
+
+Type Type::with_base(Base b) const {
+  Type t = *this;
+  t.base = b;
+  return t;
+}
+
+Type scalar_type(Base b, int vec) {
+  Type t;
+  t.base = b;
+  t.vec = vec;
+  return t;
+}
+
+std::string type_name(const Type& t) {
+  if (!t.name.empty()) return t.name;
+  if (t.is_matrix()) {
+    std::string prefix = t.base == Base::Double ? "dmat" : "mat";
+    if (t.cols == t.vec) return prefix + std::to_string(t.cols);
+    return prefix + std::to_string(t.cols) + "x" + std::to_string(t.vec);
+  }
+  const char* scalar = "void";
+  const char* vecp = "";
+  switch (t.base) {
+    case Base::Bool: scalar = "bool"; vecp = "bvec"; break;
+    case Base::Int: scalar = "int"; vecp = "ivec"; break;
+    case Base::Uint: scalar = "uint"; vecp = "uvec"; break;
+    case Base::Float: scalar = "float"; vecp = "vec"; break;
+    case Base::Double: scalar = "double"; vecp = "dvec"; break;
+    default: return "void";
+  }
+  if (t.vec == 1) return scalar;
+  return std::string(vecp) + std::to_string(t.vec);
+}
+
+std::string array_suffix(const Type& t) {
+  std::string s;
+  for (int d : t.array_dims) s += d > 0 ? "[" + std::to_string(d) + "]" : "[]";
+  return s;
+}
+
+}  // namespace doublet::ir

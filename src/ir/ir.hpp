@@ -1,0 +1,195 @@
+// doublet's own small GLSL IR. The front end imports glslang's typed AST into
+// it; the lowering passes rewrite it; the printer turns it back into text.
+// Keeping glslang types out of the passes means glslang's unstable AST headers
+// are confined to src/frontend/.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace doublet::ir {
+
+struct Loc {
+  int line = 0;
+  int column = 0;
+};
+
+enum class Base { Void, Bool, Int, Uint, Float, Double, Struct, Block, Opaque };
+
+struct Type;
+struct Field;
+
+struct Type {
+  Base base = Base::Void;
+  int vec = 1;                   // vector size (1 = scalar); for matrices: rows
+  int cols = 0;                  // matrix columns; 0 = not a matrix
+  std::vector<int> array_dims;   // outermost first; 0 = unsized
+  std::string name;              // struct/block/opaque (sampler2D) type name
+  std::shared_ptr<std::vector<Field>> fields;  // struct/block members
+
+  bool is_array() const { return !array_dims.empty(); }
+  bool is_matrix() const { return cols > 0; }
+  bool is_double() const { return base == Base::Double; }
+  // True when this type or any member/element holds doubles.
+  bool contains_double() const;
+  Type element() const;  // type with the outermost array dimension removed
+  Type with_base(Base b) const;
+};
+
+struct Layout {
+  int location = -1;
+  int binding = -1;
+  int set = -1;
+  int offset = -1;
+  std::string packing;  // "std140", "std430", "shared", "packed" or empty
+  std::string matrix;   // "row_major", "column_major" or empty
+};
+
+struct Field {
+  std::string name;
+  Type type;
+  Layout layout;
+};
+
+enum class Storage {
+  Local,     // function-local temporary
+  Global,    // private global
+  Const,     // compile-time constant (only survives for arrays/structs)
+  In,        // stage input (attribute / varying in)
+  Out,       // stage output
+  Uniform,
+  Buffer,    // storage block
+  Shared,    // compute shared
+  ParamIn,
+  ParamOut,
+  ParamInOut,
+  BuiltIn,   // gl_* variables; printed by name, never declared
+};
+
+enum class Interp { Default, Smooth, Flat, NoPerspective, Centroid };
+
+struct Var {
+  int id = 0;
+  std::string name;
+  Type type;           // current type (lowered once the passes have run)
+  Type declared_type;  // the type the user wrote
+  Storage storage = Storage::Local;
+  Layout layout;
+  Interp interp = Interp::Default;
+  bool invariant = false;
+  bool precise = false;
+  bool readonly = false, writeonly = false, coherent = false, restrict_ = false, volatile_ = false;
+  std::shared_ptr<Var> block;  // for members of an anonymous block: the block
+  Loc loc;
+};
+using VarPtr = std::shared_ptr<Var>;
+
+struct Expr;
+using ExprPtr = std::shared_ptr<Expr>;
+
+// One scalar of a constant. Doubles are kept exactly; floats are rounded to
+// float on import so the lowering sees what the driver would.
+struct Scalar {
+  Base base = Base::Float;
+  double d = 0;        // Float, Double
+  long long i = 0;     // Int, Uint
+  bool b = false;      // Bool
+};
+
+struct Expr {
+  enum class Kind {
+    Sym,        // var
+    Const,      // values (type.vec scalars, or flattened for arrays)
+    Unary,      // op: "-", "!", "~", "++x", "--x", "x++", "x--"
+    Binary,     // op: arithmetic, comparison, logical, bitwise, assignment ("=", "+=", ...)
+    Ternary,    // args: cond, then, else
+    Call,       // user function: name
+    Builtin,    // GLSL builtin function: name
+    Construct,  // type constructor: type
+    Member,     // args[0].name: struct field or swizzle
+    Index,      // args[0][args[1]]
+    Comma,      // args joined by ','
+  };
+  Kind kind;
+  Type type;
+  Loc loc;
+  std::string op;    // Unary/Binary
+  std::string name;  // Call/Builtin/Member
+  VarPtr var;        // Sym
+  std::vector<Scalar> values;  // Const
+  std::vector<ExprPtr> args;
+
+  static ExprPtr make(Kind k, Type t, Loc l = {}) {
+    auto e = std::make_shared<Expr>();
+    e->kind = k;
+    e->type = std::move(t);
+    e->loc = l;
+    return e;
+  }
+};
+
+struct Stmt;
+using StmtPtr = std::shared_ptr<Stmt>;
+
+struct Stmt {
+  enum class Kind {
+    Expr,      // expr;
+    Decl,      // var [= expr];
+    Block,     // { body }
+    If,        // if (expr) body[0] [else body[1]]
+    Loop,      // for/while/do: init (body[0] may be null), expr = cond, step, body[1]
+    Switch,    // switch (expr) body[0] (a Block with Case/Default labels)
+    Case,      // case expr:
+    Default,
+    Break,
+    Continue,
+    Return,    // [expr]
+    Discard,
+  };
+  Kind kind;
+  Loc loc;
+  ExprPtr expr;
+  VarPtr var;                 // Decl
+  ExprPtr step;               // Loop
+  bool test_first = true;     // Loop: false = do-while
+  std::vector<StmtPtr> body;  // Block contents; If: then/else; Loop: init, body
+
+  static StmtPtr make(Kind k, Loc l = {}) {
+    auto s = std::make_shared<Stmt>();
+    s->kind = k;
+    s->loc = l;
+    return s;
+  }
+};
+
+struct Function {
+  std::string name;
+  Type return_type;
+  std::vector<VarPtr> params;
+  StmtPtr body;  // a Block
+  Loc loc;
+};
+using FunctionPtr = std::shared_ptr<Function>;
+
+enum class StageKind { Vertex, Fragment, Compute };
+
+struct Module {
+  StageKind stage = StageKind::Vertex;
+  int source_version = 0;        // the user's #version number
+  bool source_es = false;
+  std::vector<Type> structs;     // user struct types, in declaration order
+  std::vector<VarPtr> globals;   // in declaration order, with initialisers in `global_inits`
+  std::vector<ExprPtr> global_inits;  // parallel to globals; null when none
+  std::vector<FunctionPtr> functions;
+  int local_size[3] = {0, 0, 0};  // compute: 0 = not declared
+  bool early_fragment_tests = false;
+};
+
+// Spelling of a type in GLSL (no array suffix).
+std::string type_name(const Type& t);
+// "[3][2]" etc.
+std::string array_suffix(const Type& t);
+Type scalar_type(Base b, int vec = 1);
+
+}  // namespace doublet::ir

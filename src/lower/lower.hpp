@@ -1,0 +1,44 @@
+// Lowering passes over the IR. Each has one job:
+//   lower_doubles     every double value becomes a df_* struct (hi + lo), every
+//                     operation on one a call into the float-float runtime;
+//   split_interfaces  a double in/out/uniform X becomes X_hi + X_lo of the
+//                     same-shaped float type, joined/split at main's edges.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+#include "ir/ir.hpp"
+#include "rules/rule_library.hpp"
+
+namespace doublet::passes {
+
+struct Context {
+  const Options& options;
+  std::vector<Diagnostic>& diagnostics;
+  std::vector<rules::RuleRef> rules_used;        // runtime functions called
+  std::vector<std::string> helper_order;         // generated helpers, in dependency order
+  std::map<std::string, std::string> helpers;    // name → GLSL definition
+  std::vector<int> widths_used;                  // df struct widths referenced
+  bool failed = false;
+
+  void error(ir::Loc loc, const std::string& message);
+  void warning(ir::Loc loc, const std::string& message);
+  void use_rule(const std::string& name, int width);
+  void use_width(int width);
+  // Adds a generated helper once; `definition` is its full GLSL text.
+  void add_helper(const std::string& name, const std::string& definition);
+};
+
+// Name of the float-float struct for a vector width: df_double, df_dvec2...
+std::string df_type_name(int width);
+ir::Type df_type(int width);
+bool is_df(const ir::Type& t);  // a df_* struct (not an array of them)
+int df_width(const ir::Type& t);
+
+bool lower_doubles(ir::Module& module, Context& context);
+bool split_interfaces(ir::Module& module, Context& context, Manifest& manifest);
+
+}  // namespace doublet::passes

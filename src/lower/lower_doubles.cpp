@@ -1,0 +1,484 @@
+// lower_doubles: rewrites every double-typed value and operation into the
+// float-float runtime (rules/*.glsl). A double literal is split exactly into
+// hi = float(x), lo = float(x - hi) at compile time.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "emit/printer.hpp"
+#include "ir/walk.hpp"
+#include "lower/lower.hpp"
+
+namespace doublet::passes {
+
+void Context::error(ir::Loc loc, const std::string& message) {
+  diagnostics.push_back({options.file_name, loc.line, loc.column, Severity::Error, message});
+  failed = true;
+}
+void Context::warning(ir::Loc loc, const std::string& message) {
+  diagnostics.push_back({options.file_name, loc.line, loc.column, Severity::Warning, message});
+}
+void Context::use_rule(const std::string& name, int width) {
+  rules::RuleRef ref{name, width};
+  if (std::find(rules_used.begin(), rules_used.end(), ref) == rules_used.end()) rules_used.push_back(ref);
+  use_width(width);
+}
+void Context::use_width(int width) {
+  if (std::find(widths_used.begin(), widths_used.end(), width) == widths_used.end()) widths_used.push_back(width);
+}
+void Context::add_helper(const std::string& name, const std::string& definition) {
+  if (helpers.count(name)) return;
+  helpers[name] = definition;
+  helper_order.push_back(name);
+}
+
+std::string df_type_name(int width) { return width == 1 ? "df_double" : "df_dvec" + std::to_string(width); }
+
+ir::Type df_type(int width) {
+  ir::Type t;
+  t.base = ir::Base::Struct;
+  t.name = df_type_name(width);
+  return t;
+}
+
+bool is_df(const ir::Type& t) { return t.base == ir::Base::Struct && !t.is_array() && t.name.rfind("df_d", 0) == 0; }
+
+int df_width(const ir::Type& t) { return t.name == "df_double" ? 1 : t.name.back() - '0'; }
+
+namespace {
+
+using ir::Expr;
+using ir::ExprPtr;
+using Kind = ir::Expr::Kind;
+
+std::string float_type_name(int width) { return width == 1 ? "float" : "vec" + std::to_string(width); }
+
+bool is_pure(const ExprPtr& e) {
+  switch (e->kind) {
+    case Kind::Sym:
+    case Kind::Const: return true;
+    case Kind::Member: return is_pure(e->args[0]);
+    case Kind::Index: return is_pure(e->args[0]) && is_pure(e->args[1]);
+    default: return false;
+  }
+}
+
+ExprPtr call(Kind kind, const std::string& name, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
+  auto e = Expr::make(kind, std::move(type), loc);
+  e->name = name;
+  e->args = std::move(args);
+  return e;
+}
+
+ExprPtr member(const ExprPtr& base, const std::string& name, ir::Type type) {
+  auto e = Expr::make(Kind::Member, std::move(type), base->loc);
+  e->name = name;
+  e->args = {base};
+  return e;
+}
+
+ExprPtr float_const(float v, ir::Loc loc) {
+  auto e = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Float), loc);
+  ir::Scalar s;
+  s.base = ir::Base::Float;
+  s.d = v;
+  e->values = {s};
+  return e;
+}
+
+class DoubleLowering {
+ public:
+  DoubleLowering(ir::Module& m, Context& c) : module_(m), ctx_(c) {}
+
+  void run() {
+    for (auto& t : module_.structs)
+      for (auto& f : *t.fields) f.type = lower_type(f.type, {});
+    for (size_t i = 0; i < module_.globals.size(); ++i) {
+      auto& g = module_.globals[i];
+      if (g->type.base == ir::Base::Block && g->type.contains_double()) {
+        ctx_.error(g->loc, "double members of interface blocks are not supported yet; declare '" + g->name +
+                               "' members as loose uniforms or split them by hand");
+        continue;
+      }
+      lower_var(*g);
+      if (module_.global_inits[i]) module_.global_inits[i] = lower(module_.global_inits[i]);
+    }
+    for (auto& f : module_.functions) {
+      if (f->return_type.is_matrix() && f->return_type.is_double()) ctx_.error(f->loc, "double matrices are not supported yet");
+      f->return_type = lower_type(f->return_type, f->loc);
+      for (auto& p : f->params) lower_var(*p);
+      lower_statement(f->body);
+    }
+  }
+
+ private:
+  // ---- types ---------------------------------------------------------------
+  ir::Type lower_type(const ir::Type& t, ir::Loc loc) {
+    if (t.base != ir::Base::Double) return t;
+    if (t.is_matrix()) {
+      ctx_.error(loc, "double matrices (" + ir::type_name(t) + ") are not supported yet");
+      return t.with_base(ir::Base::Float);
+    }
+    ir::Type out = df_type(t.vec);
+    out.array_dims = t.array_dims;
+    ctx_.use_width(t.vec);
+    return out;
+  }
+
+  void lower_var(ir::Var& v) { v.type = lower_type(v.type, v.loc); }
+
+  void lower_statement(const ir::StmtPtr& s) {
+    if (!s) return;
+    if (s->kind == ir::Stmt::Kind::Decl) lower_var(*s->var);
+    if (s->expr) s->expr = lower(s->expr);
+    if (s->step) s->step = lower(s->step);
+    for (auto& b : s->body) lower_statement(b);
+  }
+
+  // ---- helpers ---------------------------------------------------------------
+  ExprPtr rule(const std::string& name, int width, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
+    ctx_.use_rule(name, width);
+    return call(Kind::Call, name, std::move(type), std::move(args), loc);
+  }
+
+  ExprPtr splat(const ExprPtr& scalar, int width) {
+    if (width == 1) return scalar;
+    std::string name = "df_splat_" + df_type_name(width).substr(3);
+    ctx_.add_helper(name, df_type_name(width) + " " + name + "(df_double s) {\n  return " + df_type_name(width) + "(" +
+                              float_type_name(width) + "(s.hi), " + float_type_name(width) + "(s.lo));\n}\n");
+    return call(Kind::Call, name, df_type(width), {scalar}, scalar->loc);
+  }
+
+  // Component selection (swizzle letters) of a df vector, as a new df value.
+  ExprPtr select(const ExprPtr& base, const std::string& letters, ir::Loc loc) {
+    int width = static_cast<int>(letters.size());
+    int src = df_width(base->type);
+    if (is_pure(base)) {
+      auto hi = member(member(base, "hi", ir::scalar_type(ir::Base::Float, src)), letters,
+                       ir::scalar_type(ir::Base::Float, width));
+      auto lo = member(member(base, "lo", ir::scalar_type(ir::Base::Float, src)), letters,
+                       ir::scalar_type(ir::Base::Float, width));
+      return call(Kind::Construct, "", df_type(width), {hi, lo}, loc);
+    }
+    std::string name = "df_swizzle_" + df_type_name(src).substr(3) + "_" + letters;
+    ctx_.add_helper(name, df_type_name(width) + " " + name + "(" + df_type_name(src) + " v) {\n  return " +
+                              df_type_name(width) + "(v.hi." + letters + ", v.lo." + letters + ");\n}\n");
+    return call(Kind::Call, name, df_type(width), {base}, loc);
+  }
+
+  // Converts any scalar/vector value to the df type of the same width.
+  ExprPtr to_df(const ExprPtr& e) {
+    if (is_df(e->type)) return e;
+    int width = e->type.vec;
+    const char* rule_name = nullptr;
+    switch (e->type.base) {
+      case ir::Base::Float: rule_name = "df_from_float"; break;
+      case ir::Base::Int: rule_name = "df_from_int"; break;
+      case ir::Base::Uint: rule_name = "df_from_uint"; break;
+      case ir::Base::Bool: rule_name = "df_from_bool"; break;
+      default:
+        ctx_.error(e->loc, "cannot convert " + ir::type_name(e->type) + " to a double type");
+        return e;
+    }
+    return rule(rule_name, width, df_type(width), {e}, e->loc);
+  }
+
+  // Converts a df value to scalar/vector type `base` of the same width.
+  ExprPtr from_df(const ExprPtr& e, ir::Base base) {
+    int width = df_width(e->type);
+    const char* rule_name = nullptr;
+    switch (base) {
+      case ir::Base::Float: rule_name = "df_to_float"; break;
+      case ir::Base::Int: rule_name = "df_to_int"; break;
+      case ir::Base::Uint: rule_name = "df_to_uint"; break;
+      case ir::Base::Bool: rule_name = "df_to_bool"; break;
+      default:
+        ctx_.error(e->loc, "cannot convert a double to this type");
+        return e;
+    }
+    return rule(rule_name, width, ir::scalar_type(base, width), {e}, e->loc);
+  }
+
+  // ---- expressions ---------------------------------------------------------
+  ExprPtr lower(const ExprPtr& e) {
+    if (is_component_lvalue_write(e)) return lower_component_write(e);
+    if (e->kind == Kind::Binary && is_compound(e->op) && e->args[0]->type.is_double()) return lower_compound(e);
+    if (e->kind == Kind::Unary && e->op.find("++") + e->op.find("--") != 2 * std::string::npos &&
+        e->args[0]->type.is_double())
+      return lower_step(e);
+    const bool was_double = e->type.base == ir::Base::Double;
+    for (auto& a : e->args) a = lower(a);
+    e->type = lower_type(e->type, e->loc);
+    switch (e->kind) {
+      case Kind::Sym: e->type = e->var->type; return e;
+      case Kind::Const: return was_double ? split_constant(e) : e;
+      case Kind::Unary:
+        if (was_double && e->op == "-") return rule("df_neg", df_width(e->type), e->type, e->args, e->loc);
+        return e;
+      case Kind::Binary: return lower_binary(e);
+      case Kind::Builtin: return lower_builtin(e);
+      case Kind::Construct: return lower_construct(e, was_double);
+      case Kind::Member:
+        if (is_df(e->args[0]->type)) return select(e->args[0], e->name, e->loc);
+        return e;
+      case Kind::Index:
+        if (is_df(e->args[0]->type)) return component(e->args[0], e->args[1], e->loc);
+        return e;
+      case Kind::Call:
+        check_out_arguments(e);
+        return e;
+      default: return e;
+    }
+  }
+
+  ExprPtr split_constant(const ExprPtr& e) {
+    int width = e->type.is_array() ? df_width(e->type.element()) : df_width(e->type);
+    auto element = [&](size_t start) {
+      ir::Scalar hi, lo;
+      hi.base = lo.base = ir::Base::Float;
+      std::vector<ir::Scalar> his, los;
+      for (int i = 0; i < width; ++i) {
+        double x = e->values[start + static_cast<size_t>(i)].d;
+        float h = static_cast<float>(x);
+        float l = std::isfinite(h) ? static_cast<float>(x - static_cast<double>(h)) : 0.0f;
+        if (std::isfinite(x) && !std::isfinite(h))
+          ctx_.error(e->loc, "the double constant " + std::to_string(x) + " is outside float-float range (|x| > 3.4e38)");
+        hi.d = h;
+        lo.d = l;
+        his.push_back(hi);
+        los.push_back(lo);
+      }
+      auto h = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Float, width), e->loc);
+      h->values = his;
+      auto l = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Float, width), e->loc);
+      l->values = los;
+      return call(Kind::Construct, "", df_type(width), {h, l}, e->loc);
+    };
+    if (!e->type.is_array()) return element(0);
+    auto arr = Expr::make(Kind::Construct, e->type, e->loc);
+    for (size_t i = 0; i < e->values.size(); i += static_cast<size_t>(width)) arr->args.push_back(element(i));
+    return arr;
+  }
+
+  static bool is_compound(const std::string& op) {
+    return op == "+=" || op == "-=" || op == "*=" || op == "/=";
+  }
+
+  static bool is_assignment(const ExprPtr& e) {
+    return (e->kind == Kind::Binary && (e->op == "=" || is_compound(e->op)));
+  }
+
+  // `v.xz = e`, `v[i] += e`: a write to part of a double vector.
+  static bool is_component_lvalue(const ExprPtr& lhs) {
+    if (lhs->kind != Kind::Member && lhs->kind != Kind::Index) return false;
+    const auto& base = lhs->args[0]->type;
+    return base.is_double() && !base.is_array() && !base.is_matrix() && base.vec > 1;
+  }
+  static bool is_component_lvalue_write(const ExprPtr& e) {
+    return is_assignment(e) && is_component_lvalue(e->args[0]);
+  }
+
+  ExprPtr arithmetic(const std::string& op, ExprPtr a, ExprPtr b, ir::Loc loc) {
+    int wa = df_width(a->type), wb = df_width(b->type);
+    int width = std::max(wa, wb);
+    if (wa < width) a = splat(a, width);
+    if (wb < width) b = splat(b, width);
+    static const std::map<std::string, std::string> names{{"+", "df_add"}, {"-", "df_sub"}, {"*", "df_mul"}, {"/", "df_div"}};
+    auto it = names.find(op);
+    if (it == names.end()) {
+      ctx_.error(loc, "operator '" + op + "' is not defined on doubles");
+      return a;
+    }
+    return rule(it->second, width, df_type(width), {a, b}, loc);
+  }
+
+  ExprPtr lower_component_write(const ExprPtr& e) {
+    ExprPtr lhs = e->args[0];
+    ExprPtr base = lower(lhs->args[0]);
+    ExprPtr rhs = lower(e->args[1]);
+    int src = df_width(base->type);
+    int width = lhs->kind == Kind::Member ? static_cast<int>(lhs->name.size()) : 1;
+    if (e->op != "=") {
+      ExprPtr current = lhs->kind == Kind::Member ? select(base, lhs->name, lhs->loc)
+                                                  : component(base, lower(lhs->args[1]), lhs->loc);
+      rhs = arithmetic(e->op.substr(0, 1), current, rhs, e->loc);
+    }
+    if (!is_df(rhs->type)) rhs = to_df(rhs);
+    if (df_width(rhs->type) < width) rhs = splat(rhs, width);
+    std::string src_name = df_type_name(src), dst_name = df_type_name(width);
+    if (lhs->kind == Kind::Member) {
+      std::string name = "df_assign_" + src_name.substr(3) + "_" + lhs->name;
+      ctx_.add_helper(name, dst_name + " " + name + "(inout " + src_name + " v, " + dst_name + " x) {\n  v.hi." +
+                                lhs->name + " = x.hi;\n  v.lo." + lhs->name + " = x.lo;\n  return x;\n}\n");
+      return call(Kind::Call, name, df_type(width), {base, rhs}, e->loc);
+    }
+    std::string name = "df_assign_component_" + src_name.substr(3);
+    ctx_.add_helper(name, "df_double " + name + "(inout " + src_name +
+                              " v, int i, df_double x) {\n  v.hi[i] = x.hi;\n  v.lo[i] = x.lo;\n  return x;\n}\n");
+    return call(Kind::Call, name, df_type(1), {base, lower(lhs->args[1]), rhs}, e->loc);
+  }
+
+  ExprPtr lower_compound(const ExprPtr& e) {
+    // x op= y  →  x = df_op(x, y); x is read twice, so it must have no side effects.
+    ExprPtr target = lower(e->args[0]);
+    if (!is_pure(target))
+      ctx_.error(e->loc, "compound assignment to a double through an expression with side effects is not supported; "
+                         "use a temporary");
+    ExprPtr value = lower(e->args[1]);
+    if (!is_df(value->type)) value = to_df(value);
+    auto assign = Expr::make(Kind::Binary, target->type, e->loc);
+    assign->op = "=";
+    assign->args = {target, arithmetic(e->op.substr(0, 1), target, value, e->loc)};
+    return assign;
+  }
+
+  ExprPtr lower_step(const ExprPtr& e) {
+    // ++x, x--, ...: a generated inout helper keeps x evaluated once.
+    if (is_component_lvalue(e->args[0])) {
+      if (e->op == "++x" || e->op == "--x") {
+        auto compound = Expr::make(Kind::Binary, e->type, e->loc);
+        compound->op = e->op == "++x" ? "+=" : "-=";
+        auto one = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Double), e->loc);
+        ir::Scalar s;
+        s.base = ir::Base::Double;
+        s.d = 1.0;
+        one->values = {s};
+        compound->args = {e->args[0], one};
+        return lower(compound);
+      }
+      ctx_.error(e->loc, "post-increment/decrement of one component of a double vector is not supported; use +=");
+      return e;
+    }
+    ExprPtr target = lower(e->args[0]);
+    int width = df_width(target->type);
+    bool pre = e->op[0] == e->op[1];
+    bool inc = e->op.find("++") != std::string::npos;
+    std::string type = df_type_name(width), f = float_type_name(width);
+    std::string name = std::string("df_") + (pre ? "pre_" : "post_") + (inc ? "increment" : "decrement") + "_" + type.substr(3);
+    ctx_.use_rule(inc ? "df_add" : "df_sub", width);
+    std::string update = "  x = " + std::string(inc ? "df_add" : "df_sub") + "(x, " + type + "(" + f + "(1.0), " + f + "(0.0)));\n";
+    ctx_.add_helper(name, type + " " + name + "(inout " + type + " x) {\n" +
+                              (pre ? update + "  return x;\n" : "  " + type + " old = x;\n" + update + "  return old;\n") +
+                              "}\n");
+    return call(Kind::Call, name, target->type, {target}, e->loc);
+  }
+
+  ExprPtr component(const ExprPtr& base, const ExprPtr& index, ir::Loc loc) {
+    if (index->kind == Kind::Const && !index->values.empty()) {
+      static const char* letters = "xyzw";
+      return select(base, std::string(1, letters[index->values[0].i & 3]), loc);
+    }
+    int src = df_width(base->type);
+    std::string name = "df_component_" + df_type_name(src).substr(3);
+    ctx_.add_helper(name, "df_double " + name + "(" + df_type_name(src) +
+                              " v, int i) {\n  return df_double(v.hi[i], v.lo[i]);\n}\n");
+    return call(Kind::Call, name, df_type(1), {base, index}, loc);
+  }
+
+  ExprPtr lower_binary(const ExprPtr& e) {
+    if (e->args.size() != 2) return e;
+    const ExprPtr& a = e->args[0];
+    const ExprPtr& b = e->args[1];
+    if (!is_df(a->type) && !is_df(b->type)) return e;
+    const std::string& op = e->op;
+    if (op == "=") return e;
+    if (op == "+" || op == "-" || op == "*" || op == "/") return arithmetic(op, a, b, e->loc);
+    static const std::map<std::string, std::string> compare{{"<", "df_lt"}, {"<=", "df_le"}, {">", "df_gt"},
+                                                             {">=", "df_ge"}, {"==", "df_equal"}, {"!=", "df_not_equal"}};
+    if (auto it = compare.find(op); it != compare.end())
+      return rule(it->second, df_width(a->type), ir::scalar_type(ir::Base::Bool), {a, b}, e->loc);
+    ctx_.error(e->loc, "operator '" + op + "' is not supported on doubles");
+    return e;
+  }
+
+  ExprPtr lower_builtin(const ExprPtr& e) {
+    bool any_df = std::any_of(e->args.begin(), e->args.end(), [](const ExprPtr& a) { return is_df(a->type); });
+    if (!any_df) return e;
+    const std::string& n = e->name;
+    if (n == "abs" || n == "sqrt") return rule("df_" + n, df_width(e->args[0]->type), e->args[0]->type, e->args, e->loc);
+    if (n == "min" || n == "max") {
+      int width = df_width(e->args[0]->type);
+      ExprPtr b = df_width(e->args[1]->type) < width ? splat(e->args[1], width) : e->args[1];
+      return rule("df_" + n, width, e->args[0]->type, {e->args[0], b}, e->loc);
+    }
+    if (n == "dot") return rule("df_dot", df_width(e->args[0]->type), df_type(1), e->args, e->loc);
+    if (n == "length") return rule("df_length", df_width(e->args[0]->type), df_type(1), e->args, e->loc);
+    ctx_.error(e->loc, "built-in function '" + n + "' on doubles is not supported yet");
+    return e;
+  }
+
+  ExprPtr lower_construct(const ExprPtr& e, bool was_double) {
+    if (e->type.is_array() || (e->type.base == ir::Base::Struct && !is_df(e->type))) return e;  // arrays, user structs
+    if (was_double) {
+      int width = df_width(e->type);
+      std::vector<ExprPtr> parts;
+      for (const auto& a : e->args) {
+        if (a->type.is_matrix()) {
+          ctx_.error(a->loc, "constructing a double vector from a matrix is not supported yet");
+          return e;
+        }
+        parts.push_back(to_df(a));
+      }
+      if (parts.size() == 1) {
+        int have = df_width(parts[0]->type);
+        if (have == width) return parts[0];
+        if (have == 1) return splat(parts[0], width);
+        return select(parts[0], std::string("xyzw").substr(0, static_cast<size_t>(width)), e->loc);
+      }
+      return concatenate(parts, width, e->loc);
+    }
+    bool any_df = std::any_of(e->args.begin(), e->args.end(), [](const ExprPtr& a) { return is_df(a->type); });
+    if (!any_df) return e;
+    for (auto& a : e->args)
+      if (is_df(a->type)) a = from_df(a, e->type.base);
+    if (e->args.size() == 1 && e->args[0]->type.vec == e->type.vec && !e->type.is_matrix()) return e->args[0];
+    return e;
+  }
+
+  // dvec3(double, dvec2) and friends: one generated helper per argument shape.
+  ExprPtr concatenate(const std::vector<ExprPtr>& parts, int width, ir::Loc loc) {
+    std::string name = "df_make_" + df_type_name(width).substr(3);
+    std::string params, hi, lo;
+    int taken = 0;
+    for (size_t i = 0; i < parts.size(); ++i) {
+      int w = df_width(parts[i]->type);
+      name += "_" + std::to_string(w);
+      std::string p = "a" + std::to_string(i);
+      params += (i ? ", " : "") + df_type_name(w) + " " + p;
+      for (int c = 0; c < w && taken < width; ++c, ++taken) {
+        std::string suffix = w == 1 ? "" : std::string(".") + "xyzw"[c];
+        hi += (taken ? ", " : "") + p + ".hi" + suffix;
+        lo += (taken ? ", " : "") + p + ".lo" + suffix;
+      }
+    }
+    std::string f = float_type_name(width);
+    ctx_.add_helper(name, df_type_name(width) + " " + name + "(" + params + ") {\n  return " + df_type_name(width) + "(" +
+                              f + "(" + hi + "), " + f + "(" + lo + "));\n}\n");
+    return call(Kind::Call, name, df_type(width), parts, loc);
+  }
+
+  void check_out_arguments(const ExprPtr& e) {
+    for (const auto& f : module_.functions) {
+      if (f->name != e->name || f->params.size() != e->args.size()) continue;
+      for (size_t i = 0; i < f->params.size(); ++i) {
+        bool writes = f->params[i]->storage == ir::Storage::ParamOut || f->params[i]->storage == ir::Storage::ParamInOut;
+        if (writes && is_df(f->params[i]->type) && e->args[i]->kind == Kind::Construct)
+          ctx_.error(e->args[i]->loc, "passing one component of a double vector as an out/inout argument is not "
+                                      "supported; use a temporary");
+      }
+    }
+  }
+
+  ir::Module& module_;
+  Context& ctx_;
+};
+
+}  // namespace
+
+bool lower_doubles(ir::Module& module, Context& context) {
+  DoubleLowering(module, context).run();
+  return !context.failed;
+}
+
+}  // namespace doublet::passes
