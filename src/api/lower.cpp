@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <exception>
 #include <regex>
+#include <set>
 
 #include "doublet/doublet.hpp"
 #include "emit/printer.hpp"
@@ -122,8 +123,10 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     // Quote the emitted lines glslang names, so the report is actionable.
     static const std::regex where(R"(ERROR: 0:(\d+):)");
     std::string quoted;
+    std::set<int> seen;
     for (std::sregex_iterator it(log.begin(), log.end(), where), end; it != end; ++it) {
       int line = std::stoi((*it)[1].str());
+      if (!seen.insert(line).second) continue;
       size_t start = 0;
       for (int l = 1; l < line && start != std::string::npos; ++l) start = printed.text.find('\n', start) + 1;
       if (start == std::string::npos || start == 0 && line > 1) continue;

@@ -140,7 +140,10 @@ class Importer {
   // ---- variables ---------------------------------------------------------
   ir::VarPtr var_for(const TIntermSymbol& sym) {
     auto it = vars_.find(sym.getId());
-    if (it != vars_.end()) return it->second;
+    if (it != vars_.end()) {
+      if (it->second->loc.line == 0) it->second->loc = loc_of(sym.getLoc());  // linker objects carry no place
+      return it->second;
+    }
     auto v = std::make_shared<ir::Var>();
     v->id = next_id_++;
     v->name = sym.getName().c_str();

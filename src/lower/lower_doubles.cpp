@@ -117,7 +117,8 @@ class DoubleLowering {
   ir::Type lower_type(const ir::Type& t, ir::Loc loc) {
     if (t.base != ir::Base::Double) return t;
     if (t.is_matrix()) {
-      ctx_.error(loc, "double matrices (" + ir::type_name(t) + ") are not supported yet");
+      if (reported_.insert(ir::type_name(t)).second)
+        ctx_.error(loc, "double matrices (" + ir::type_name(t) + ") are not supported yet");
       return t.with_base(ir::Base::Float);
     }
     ir::Type out = df_type(t.vec);
@@ -472,6 +473,7 @@ class DoubleLowering {
 
   ir::Module& module_;
   Context& ctx_;
+  std::set<std::string> reported_;  // unsupported types already diagnosed
 };
 
 }  // namespace
