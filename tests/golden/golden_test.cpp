@@ -39,7 +39,15 @@
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kGoldenDir = DOUBLET_GOLDEN_DIR;
+// DOUBLET_GOLDEN_DIR (environment) points the binary at another copy of the
+// cases/expected tree, e.g. to try an update without touching the source tree:
+//   DOUBLET_GOLDEN_DIR=/tmp/golden DOUBLET_UPDATE_GOLDEN=1 build/tests/golden/golden_tests
+// (CTest's test list is always the one of the source tree.)
+fs::path golden_dir() {
+  const char* env = std::getenv("DOUBLET_GOLDEN_DIR");
+  return env != nullptr && *env != '\0' ? fs::path(env) : fs::path(DOUBLET_GOLDEN_DIR);
+}
+const fs::path kGoldenDir = golden_dir();
 const fs::path kCasesDir = kGoldenDir / "cases";
 const fs::path kExpectedDir = kGoldenDir / "expected";
 const std::vector<std::string> kDefaultTargets = {"es300", "es310", "es320", "glsl450"};
