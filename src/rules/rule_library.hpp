@@ -9,11 +9,15 @@
 //   $I   int   | ivec2 | ivec3 | ivec4
 //   $U   uint  | uvec2 | uvec3 | uvec4
 //   $W   1 | 2 | 3 | 4
-//   $PRECISE   `precise ` when the guard is Precise, empty otherwise
+//   $PRECISE   `precise` when the guard is Precise; otherwise empty, and the space after it is dropped
 //   $G(expr)   `(expr)` when Precise or None, `((expr) + df_guard)` when Uniform
 // Annotations in the chunk's header comment:
 //   // @widths 1 2 3 4        widths this chunk is instantiated for (default: 1)
 //   // @min-es 300            lowest ES version that may use it (default 100)
+//   // @per-component         widths > 1 are generated: the width-1 rule applied to
+//                             each component (for rules that need a per-component branch)
+//   // @uses df_add:1         callee widths, when not the chunk's own width
+// Required header lines: "Algorithm:", "Source:", "Bound:", "Flops:".
 #pragma once
 
 #include <memory>
@@ -44,6 +48,20 @@ struct EmitResult {
   std::string error;           // e.g. "df_to_uint is not available on ES 1.00"
 };
 
+// What one chunk's header says (for documentation and tests).
+struct RuleInfo {
+  std::string name;
+  std::vector<int> widths;
+  int min_es = 100;
+  bool per_component = false;
+  std::string file;       // e.g. "arith.glsl"
+  std::string algorithm;  // the "Algorithm:" line
+  std::string source;     // the "Source:" line
+  std::string bound;      // the "Bound:" line, e.g. "3u^2 + 13u^3" or "exact"
+  std::string flops;      // the "Flops:" line
+  std::string header;     // the whole header comment, annotations removed
+};
+
 class RuleLibrary {
  public:
   // The library built from the embedded rules/ files (parsed once, thread-safe).
@@ -58,6 +76,8 @@ class RuleLibrary {
   EmitResult emit(const EmitRequest& request) const;
   // Every {name,width} the library defines (for tests that instantiate all).
   std::vector<RuleRef> all() const;
+  // One entry per chunk, in file order.
+  std::vector<RuleInfo> info() const;
 
   RuleLibrary();
   ~RuleLibrary();

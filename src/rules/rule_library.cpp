@@ -1,0 +1,704 @@
+// RuleLibrary: parses the rules/*.glsl chunk format (docs/rules-format.md), instantiates chunks
+// per width and guard style, and emits the transitive closure of what a shader uses.
+#include "rules/rule_library.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string_view>
+#include <utility>
+
+#include "embedded_rules.hpp"
+
+namespace doublet::rules {
+
+namespace {
+
+constexpr int kMaxWidth = 4;
+constexpr const char* kComponents[] = {"x", "y", "z", "w"};
+
+struct Param {
+  std::string type;  // template text, e.g. "$DF" or "float"
+  std::string name;
+};
+
+struct Chunk {
+  std::string name;
+  std::string file;
+  int line = 0;
+  std::vector<std::string> comment;  // header lines ("// ..."), annotations removed
+  std::string definition;            // template text of the function definition
+  std::string ret_type;              // template text
+  std::vector<Param> params;
+  std::vector<int> widths;
+  int min_es = 100;
+  bool per_component = false;
+  std::vector<std::pair<std::string, std::vector<std::string>>> uses;  // callee -> widths ("2", "W")
+  std::vector<std::string> callees;  // chunk names referenced by the definition, first use order
+  std::map<std::string, std::string> fields;  // Algorithm, Source, Bound, Flops
+};
+
+std::string trim(std::string_view s) {
+  size_t b = 0, e = s.size();
+  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+  return std::string(s.substr(b, e - b));
+}
+
+bool is_ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool is_ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+bool is_identifier(std::string_view s) {
+  if (s.empty() || !is_ident_start(s[0])) return false;
+  return std::all_of(s.begin(), s.end(), is_ident_char);
+}
+
+std::vector<std::string> split_ws(std::string_view s) {
+  std::vector<std::string> out;
+  std::istringstream in{std::string(s)};
+  std::string w;
+  while (in >> w) out.push_back(w);
+  return out;
+}
+
+// Identifiers of `text` outside comments, in order of first appearance.
+std::vector<std::string> identifiers(std::string_view text) {
+  std::vector<std::string> out;
+  std::set<std::string> seen;
+  for (size_t i = 0; i < text.size();) {
+    if (text[i] == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+      while (i < text.size() && text[i] != '\n') ++i;
+      continue;
+    }
+    if (text[i] == '$') {  // placeholder name: skip
+      ++i;
+      while (i < text.size() && std::isupper(static_cast<unsigned char>(text[i]))) ++i;
+      continue;
+    }
+    if (is_ident_start(text[i]) && (i == 0 || !is_ident_char(text[i - 1]))) {
+      size_t j = i;
+      while (j < text.size() && is_ident_char(text[j])) ++j;
+      std::string id(text.substr(i, j - i));
+      if (seen.insert(id).second) out.push_back(id);
+      i = j;
+      continue;
+    }
+    ++i;
+  }
+  return out;
+}
+
+std::string es_name(int es) {
+  std::ostringstream o;
+  o << "ES " << es / 100 << '.' << (es % 100 < 10 ? "0" : "") << es % 100;
+  return o.str();
+}
+
+std::string df_type(int w) { return w == 1 ? "df_double" : "df_dvec" + std::to_string(w); }
+std::string vec_type(const char* scalar, const char* vec, int w) {
+  return w == 1 ? std::string(scalar) : std::string(vec) + std::to_string(w);
+}
+
+struct Subst {
+  int width = 1;
+  GuardStyle guard = GuardStyle::None;
+  std::string guard_uniform = "df_guard";
+};
+
+// Replaces the placeholders of docs/rules-format.md. Returns false (and sets *error) on an
+// unknown placeholder or an unbalanced $G(.
+bool substitute(std::string_view in, const Subst& s, std::string& out, std::string* error) {
+  for (size_t i = 0; i < in.size(); ++i) {
+    if (in[i] != '$') {
+      out += in[i];
+      continue;
+    }
+    size_t j = i + 1;
+    while (j < in.size() && std::isupper(static_cast<unsigned char>(in[j]))) ++j;
+    std::string key(in.substr(i + 1, j - i - 1));
+    if (key == "G") {
+      if (j >= in.size() || in[j] != '(') {
+        *error = "$G must be followed by '('";
+        return false;
+      }
+      int depth = 0;
+      size_t k = j;
+      for (; k < in.size(); ++k) {
+        if (in[k] == '(') ++depth;
+        if (in[k] == ')' && --depth == 0) break;
+      }
+      if (k >= in.size()) {
+        *error = "unbalanced parentheses in $G(...)";
+        return false;
+      }
+      std::string inner;
+      if (!substitute(in.substr(j + 1, k - j - 1), s, inner, error)) return false;
+      if (s.guard == GuardStyle::Uniform)
+        out += "((" + inner + ") + " + s.guard_uniform + ")";
+      else
+        out += "(" + inner + ")";
+      i = k;
+      continue;
+    }
+    const int w = s.width;
+    if (key == "DF") out += df_type(w);
+    else if (key == "F") out += vec_type("float", "vec", w);
+    else if (key == "B") out += vec_type("bool", "bvec", w);
+    else if (key == "I") out += vec_type("int", "ivec", w);
+    else if (key == "U") out += vec_type("uint", "uvec", w);
+    else if (key == "W") out += std::to_string(w);
+    else if (key == "PRECISE") {
+      // "$PRECISE $F x" -> "precise float x" or "float x".
+      if (s.guard == GuardStyle::Precise) out += "precise";
+      else if (j < in.size() && in[j] == ' ') ++j;
+    }
+    else {
+      *error = "unknown placeholder $" + key;
+      return false;
+    }
+    i = j - 1;
+  }
+  return true;
+}
+
+std::string subst_or_empty(std::string_view in, const Subst& s) {
+  std::string out, err;
+  if (!substitute(in, s, out, &err)) return {};
+  return out;
+}
+
+bool is_width_placeholder(const std::string& t) {
+  return t == "$DF" || t == "$F" || t == "$B" || t == "$I" || t == "$U";
+}
+
+}  // namespace
+
+struct RuleLibrary::Impl {
+  std::vector<Chunk> chunks;
+  std::map<std::pair<std::string, int>, size_t> index;  // (name, width) -> chunk
+  std::set<std::string> names;
+  std::string init_error;  // builtin() only: the embedded rules failed to parse
+
+  const Chunk* find(const std::string& name, int width) const {
+    auto it = index.find({name, width});
+    return it == index.end() ? nullptr : &chunks[it->second];
+  }
+
+  // Direct dependencies of one instance.
+  bool deps(const Chunk& c, int width, std::vector<RuleRef>& out, std::string* error) const {
+    if (c.per_component && width > 1) {
+      out.push_back({c.name, 1});
+      return true;
+    }
+    for (const auto& callee : c.callees) {
+      auto u = std::find_if(c.uses.begin(), c.uses.end(), [&](const auto& p) { return p.first == callee; });
+      if (u != c.uses.end()) {
+        for (const auto& spec : u->second) out.push_back({callee, spec == "W" ? width : std::stoi(spec)});
+      } else if (find(callee, width)) {
+        out.push_back({callee, width});
+      } else {
+        *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " (width " + std::to_string(width) +
+                 ") calls " + callee + ", which has no width " + std::to_string(width) +
+                 "; name the width with @uses " + callee + ":N";
+        return false;
+      }
+    }
+    for (const auto& [callee, specs] : c.uses) {
+      if (std::find(c.callees.begin(), c.callees.end(), callee) != c.callees.end()) continue;
+      for (const auto& spec : specs) out.push_back({callee, spec == "W" ? width : std::stoi(spec)});
+    }
+    return true;
+  }
+
+  // The function text of one instance, header comment included.
+  bool instantiate(const Chunk& c, int width, const Subst& s, std::string& out, std::string* error) const {
+    {
+      Subst sw = s;
+      sw.width = width;
+      for (const auto& line : c.comment)
+        if (!substitute(line, sw, out, error)) {
+          *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " header: " + *error;
+          return false;
+        } else {
+          out += "\n";
+        }
+    }
+    if (!(c.per_component && width > 1)) {
+      Subst sw = s;
+      sw.width = width;
+      if (!substitute(c.definition, sw, out, error)) {
+        *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + ": " + *error;
+        return false;
+      }
+      out += "\n";
+      return true;
+    }
+    // @per-component: the width-1 rule applied to each component.
+    Subst sw = s, s1 = s;
+    sw.width = width;
+    s1.width = 1;
+    out += "// (width " + std::to_string(width) + ": the width-1 " + c.name + " applied to each component)\n";
+    const std::string ret_w = subst_or_empty(c.ret_type, sw), ret_1 = subst_or_empty(c.ret_type, s1);
+    out += ret_w + " " + c.name + "(";
+    for (size_t i = 0; i < c.params.size(); ++i)
+      out += (i ? ", " : "") + subst_or_empty(c.params[i].type, sw) + " " + c.params[i].name;
+    out += ") {\n";
+    for (int k = 0; k < width; ++k) {
+      out += "  " + ret_1 + " r" + std::to_string(k) + " = " + c.name + "(";
+      for (size_t i = 0; i < c.params.size(); ++i) {
+        const auto& p = c.params[i];
+        out += i ? ", " : "";
+        if (p.type == "$DF")
+          out += "df_double(" + p.name + ".hi." + kComponents[k] + ", " + p.name + ".lo." + kComponents[k] + ")";
+        else if (is_width_placeholder(p.type))
+          out += p.name + "." + kComponents[k];
+        else
+          out += p.name;
+      }
+      out += ");\n";
+    }
+    auto list = [&](const std::string& suffix) {
+      std::string l;
+      for (int k = 0; k < width; ++k) l += (k ? ", r" : "r") + std::to_string(k) + suffix;
+      return l;
+    };
+    if (c.ret_type == "$DF") {
+      const std::string v = vec_type("float", "vec", width);
+      out += "  return " + ret_w + "(" + v + "(" + list(".hi") + "), " + v + "(" + list(".lo") + "));\n";
+    } else {
+      out += "  return " + ret_w + "(" + list("") + ");\n";
+    }
+    out += "}\n";
+    return true;
+  }
+};
+
+namespace {
+
+// Splits one rule file into chunks.
+bool parse_file(const std::string& file, const std::string& text, std::vector<Chunk>& out, std::string* error) {
+  std::vector<std::string> lines;
+  {
+    std::string cur;
+    for (char ch : text) {
+      if (ch == '\n') {
+        lines.push_back(cur);
+        cur.clear();
+      } else if (ch != '\r') {
+        cur += ch;
+      }
+    }
+    if (!cur.empty()) lines.push_back(cur);
+  }
+  auto fail = [&](size_t line, const std::string& msg) {
+    *error = file + ":" + std::to_string(line + 1) + ": " + msg;
+    return false;
+  };
+  std::vector<std::string> pending;
+  for (size_t i = 0; i < lines.size();) {
+    const std::string t = trim(lines[i]);
+    if (t.empty()) {
+      pending.clear();
+      ++i;
+      continue;
+    }
+    if (t.rfind("//", 0) == 0) {
+      pending.push_back(t);
+      ++i;
+      continue;
+    }
+    if (t.rfind("/*", 0) == 0) return fail(i, "block comments are not supported in rule files; use //");
+    if (t[0] == '#') return fail(i, "preprocessor lines are not supported in rule files");
+    // A definition: up to the brace that closes the first '{'.
+    const size_t start = i;
+    std::string def;
+    int depth = 0;
+    bool opened = false;
+    for (; i < lines.size(); ++i) {
+      std::string code = lines[i];
+      if (auto c = code.find("//"); c != std::string::npos) code.resize(c);
+      if (code.find("/*") != std::string::npos) return fail(i, "block comments are not supported in rule files");
+      def += lines[i] + "\n";
+      if (!opened && code.find(';') != std::string::npos)
+        return fail(i, "only function definitions may appear at top level");
+      for (char ch : code) {
+        if (ch == '{') {
+          ++depth;
+          opened = true;
+        } else if (ch == '}') {
+          if (--depth < 0) return fail(i, "unbalanced '}'");
+        }
+      }
+      if (opened && depth == 0) {
+        ++i;
+        break;
+      }
+    }
+    if (!opened || depth != 0) return fail(start, "definition is not closed (missing '}')");
+    while (!def.empty() && (def.back() == '\n' || def.back() == ' ')) def.pop_back();
+
+    Chunk c;
+    c.file = file;
+    c.line = static_cast<int>(start + 1);
+    c.definition = def;
+    // Signature: <return type> <name>(<params>) {
+    const std::string sig = def.substr(0, def.find('{'));
+    const size_t open = sig.find('('), close = sig.rfind(')');
+    if (open == std::string::npos || close == std::string::npos || close < open)
+      return fail(start, "only function definitions may appear at top level");
+    auto head = split_ws(sig.substr(0, open));
+    if (head.size() < 2) return fail(start, "expected '<return type> <name>(...)'");
+    c.name = head.back();
+    head.pop_back();
+    for (size_t k = 0; k < head.size(); ++k) c.ret_type += (k ? " " : "") + head[k];
+    if (!is_identifier(c.name)) return fail(start, "bad function name '" + c.name + "'");
+    const std::string plist = trim(sig.substr(open + 1, close - open - 1));
+    if (!plist.empty() && plist != "void") {
+      std::string cur;
+      std::vector<std::string> parts;
+      for (char ch : plist) {
+        if (ch == ',') {
+          parts.push_back(cur);
+          cur.clear();
+        } else {
+          cur += ch;
+        }
+      }
+      parts.push_back(cur);
+      for (const auto& p : parts) {
+        auto w = split_ws(p);
+        if (w.size() < 2) return fail(start, c.name + ": bad parameter '" + trim(p) + "'");
+        Param prm;
+        prm.name = w.back();
+        w.pop_back();
+        for (size_t k = 0; k < w.size(); ++k) prm.type += (k ? " " : "") + w[k];
+        c.params.push_back(prm);
+      }
+    }
+    if (pending.empty()) return fail(start, c.name + " has no header comment (see docs/rules-format.md)");
+    bool widths_given = false;
+    for (const auto& raw : pending) {
+      const std::string body = trim(std::string_view(raw).substr(2));
+      if (!body.empty() && body[0] == '@') {
+        auto w = split_ws(body);
+        const std::string key = w[0];
+        w.erase(w.begin());
+        if (key == "@widths") {
+          widths_given = true;
+          for (const auto& v : w) {
+            if (v.size() != 1 || v[0] < '1' || v[0] > '4') return fail(start, c.name + ": @widths takes 1..4, got '" + v + "'");
+            c.widths.push_back(v[0] - '0');
+          }
+          if (c.widths.empty()) return fail(start, c.name + ": @widths is empty");
+        } else if (key == "@min-es") {
+          if (w.size() != 1 || (w[0] != "100" && w[0] != "300" && w[0] != "310" && w[0] != "320"))
+            return fail(start, c.name + ": @min-es takes one of 100 300 310 320");
+          c.min_es = std::stoi(w[0]);
+        } else if (key == "@per-component") {
+          if (!w.empty()) return fail(start, c.name + ": @per-component takes no value");
+          c.per_component = true;
+        } else if (key == "@uses") {
+          for (const auto& v : w) {
+            const auto colon = v.find(':');
+            if (colon == std::string::npos || colon == 0) return fail(start, c.name + ": @uses wants NAME:WIDTH[,WIDTH], got '" + v + "'");
+            std::vector<std::string> specs;
+            std::string spec;
+            for (char ch : v.substr(colon + 1) + ",") {
+              if (ch == ',') {
+                if (spec != "W" && !(spec.size() == 1 && spec[0] >= '1' && spec[0] <= '4'))
+                  return fail(start, c.name + ": @uses width must be 1..4 or W, got '" + spec + "'");
+                specs.push_back(spec);
+                spec.clear();
+              } else {
+                spec += ch;
+              }
+            }
+            c.uses.push_back({v.substr(0, colon), specs});
+          }
+        } else {
+          return fail(start, c.name + ": unknown annotation " + key);
+        }
+        continue;
+      }
+      for (const char* f : {"Algorithm", "Source", "Bound", "Flops"}) {
+        const std::string key = std::string(f) + ":";
+        if (body.rfind(key, 0) == 0) c.fields[f] = trim(body.substr(key.size()));
+      }
+      c.comment.push_back(raw);
+    }
+    if (!widths_given) c.widths = {1};
+    for (const char* f : {"Algorithm", "Source", "Bound", "Flops"})
+      if (c.fields[f].empty()) return fail(start, c.name + ": header lacks a non-empty '" + std::string(f) + ":' line");
+    if (c.per_component) {
+      if (!is_width_placeholder(c.ret_type))
+        return fail(start, c.name + ": @per-component needs a $DF/$F/$B/$I/$U return type");
+      for (const auto& p : c.params)
+        if (p.type.find('$') != std::string::npos && !is_width_placeholder(p.type))
+          return fail(start, c.name + ": @per-component parameter type '" + p.type + "' is not supported");
+    }
+    out.push_back(std::move(c));
+    pending.clear();
+  }
+  return true;
+}
+
+}  // namespace
+
+RuleLibrary::RuleLibrary() : impl_(std::make_unique<Impl>()) {}
+RuleLibrary::~RuleLibrary() = default;
+RuleLibrary::RuleLibrary(RuleLibrary&&) noexcept = default;
+RuleLibrary& RuleLibrary::operator=(RuleLibrary&&) noexcept = default;
+
+std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::string, std::string>>& files,
+                                              std::string* error) {
+  std::string local_error;
+  if (!error) error = &local_error;
+  try {
+    RuleLibrary lib;
+    Impl& im = *lib.impl_;
+    for (const auto& [name, text] : files)
+      if (!parse_file(name, text, im.chunks, error)) return std::nullopt;
+    for (size_t i = 0; i < im.chunks.size(); ++i) {
+      const Chunk& c = im.chunks[i];
+      im.names.insert(c.name);
+      for (int w : c.widths) {
+        if (!im.index.emplace(std::make_pair(c.name, w), i).second) {
+          *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(w) +
+                   " is defined twice";
+          return std::nullopt;
+        }
+      }
+    }
+    for (auto& c : im.chunks) {
+      for (const auto& id : identifiers(c.definition))
+        if (id != c.name && im.names.count(id)) c.callees.push_back(id);
+      for (const auto& [callee, specs] : c.uses) {
+        if (!im.names.count(callee)) {
+          *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + ": @uses names unknown rule " + callee;
+          return std::nullopt;
+        }
+        if (callee == c.name && std::find(specs.begin(), specs.end(), "W") != specs.end()) {
+          *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " @uses itself at its own width";
+          return std::nullopt;
+        }
+      }
+      if (c.per_component && std::find(c.widths.begin(), c.widths.end(), 1) == c.widths.end()) {
+        *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + ": @per-component needs width 1";
+        return std::nullopt;
+      }
+    }
+    // Every instance: dependencies exist, placeholders substitute, no cycles.
+    std::map<std::pair<std::string, int>, int> state;  // 1 visiting, 2 done
+    std::vector<RuleRef> stack;
+    std::function<bool(const RuleRef&)> visit = [&](const RuleRef& r) -> bool {
+      auto key = std::make_pair(r.name, r.width);
+      if (state[key] == 2) return true;
+      const Chunk* c = im.find(r.name, r.width);
+      if (!c) {
+        *error = "rule " + r.name + " has no width " + std::to_string(r.width);
+        return false;
+      }
+      if (state[key] == 1) {
+        *error = c->file + ":" + std::to_string(c->line) + ": dependency cycle through " + r.name + " (width " +
+                 std::to_string(r.width) + ")";
+        return false;
+      }
+      state[key] = 1;
+      std::vector<RuleRef> ds;
+      if (!im.deps(*c, r.width, ds, error)) return false;
+      for (const auto& d : ds)
+        if (!visit(d)) return false;
+      for (GuardStyle g : {GuardStyle::Precise, GuardStyle::Uniform, GuardStyle::None}) {
+        std::string text;
+        if (!im.instantiate(*c, r.width, Subst{r.width, g, "df_guard"}, text, error)) return false;
+      }
+      state[key] = 2;
+      return true;
+    };
+    for (const auto& [key, idx] : im.index)
+      if (!visit({key.first, key.second})) return std::nullopt;
+    return lib;
+  } catch (const std::exception& e) {
+    *error = std::string("rule library: ") + e.what();
+  } catch (...) {
+    *error = "rule library: unknown error";
+  }
+  return std::nullopt;
+}
+
+const RuleLibrary& RuleLibrary::builtin() {
+  static const RuleLibrary lib = [] {
+    std::vector<std::pair<std::string, std::string>> files;
+    for (std::size_t i = 0; i < detail::kEmbeddedRuleFileCount; ++i)
+      files.emplace_back(detail::kEmbeddedRuleFiles[i].name, detail::kEmbeddedRuleFiles[i].text);
+    std::string error;
+    auto parsed = parse(files, &error);
+    if (parsed) return std::move(*parsed);
+    RuleLibrary empty;
+    empty.impl_->init_error = "the built-in rules failed to parse: " + error;
+    return empty;
+  }();
+  return lib;
+}
+
+bool RuleLibrary::has(const RuleRef& ref) const { return impl_ && impl_->find(ref.name, ref.width) != nullptr; }
+
+std::vector<RuleRef> RuleLibrary::all() const {
+  // Names in order of first appearance in the files, each name's widths ascending.
+  std::vector<RuleRef> out;
+  if (!impl_) return out;
+  std::set<std::string> done;
+  for (const auto& c : impl_->chunks) {
+    if (!done.insert(c.name).second) continue;
+    for (int w = 1; w <= kMaxWidth; ++w)
+      if (impl_->find(c.name, w)) out.push_back({c.name, w});
+  }
+  return out;
+}
+
+std::vector<RuleInfo> RuleLibrary::info() const {
+  std::vector<RuleInfo> out;
+  if (!impl_) return out;
+  for (const auto& c : impl_->chunks) {
+    RuleInfo r;
+    r.name = c.name;
+    r.widths = c.widths;
+    r.min_es = c.min_es;
+    r.per_component = c.per_component;
+    r.file = c.file;
+    r.algorithm = c.fields.at("Algorithm");
+    r.source = c.fields.at("Source");
+    r.bound = c.fields.at("Bound");
+    r.flops = c.fields.at("Flops");
+    for (const auto& l : c.comment) r.header += l + "\n";
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+EmitResult RuleLibrary::emit(const EmitRequest& request) const {
+  EmitResult result;
+  try {
+    if (!impl_) {
+      result.error = "rule library is empty (moved-from)";
+      return result;
+    }
+    const Impl& im = *impl_;
+    if (!im.init_error.empty()) {
+      result.error = im.init_error;
+      return result;
+    }
+    if (request.guard == GuardStyle::Uniform && !is_identifier(request.guard_uniform)) {
+      result.error = "guard uniform name '" + request.guard_uniform + "' is not a GLSL identifier";
+      return result;
+    }
+    for (const auto& r : request.used) {
+      if (!im.names.count(r.name)) {
+        result.error = "unknown rule " + r.name;
+        return result;
+      }
+      if (!im.find(r.name, r.width)) {
+        std::string ws;
+        for (const auto& c : im.chunks)
+          if (c.name == r.name)
+            for (int w : c.widths) ws += (ws.empty() ? "" : " ") + std::to_string(w);
+        result.error = "rule " + r.name + " has no width " + std::to_string(r.width) + " (widths: " + ws + ")";
+        return result;
+      }
+    }
+    // Post-order DFS: callees before callers, each instance once.
+    std::vector<RuleRef> order;
+    std::map<std::pair<std::string, int>, int> state;
+    std::map<std::pair<std::string, int>, RuleRef> parent;
+    std::string error;
+    std::function<bool(const RuleRef&)> visit = [&](const RuleRef& r) -> bool {
+      auto key = std::make_pair(r.name, r.width);
+      if (state[key] == 2) return true;
+      if (state[key] == 1) {
+        error = "dependency cycle through " + r.name;
+        return false;
+      }
+      state[key] = 1;
+      const Chunk* c = im.find(r.name, r.width);
+      std::vector<RuleRef> ds;
+      if (!c || !im.deps(*c, r.width, ds, &error)) {
+        if (error.empty()) error = "rule " + r.name + " has no width " + std::to_string(r.width);
+        return false;
+      }
+      for (const auto& d : ds) {
+        parent.emplace(std::make_pair(d.name, d.width), r);
+        if (!visit(d)) return false;
+      }
+      state[key] = 2;
+      order.push_back(r);
+      return true;
+    };
+    for (const auto& r : request.used)
+      if (!visit(r)) {
+        result.error = error;
+        return result;
+      }
+    for (const auto& r : order) {
+      const Chunk* c = im.find(r.name, r.width);
+      if (c->min_es > request.es_version) {
+        std::string msg = r.name + " is not available on " + es_name(request.es_version) + " (it needs " +
+                          es_name(c->min_es) + " or later)";
+        // Name the rule the shader asked for when this one is only a dependency.
+        RuleRef root = r;
+        for (auto it = parent.find({root.name, root.width}); it != parent.end();
+             it = parent.find({root.name, root.width}))
+          root = it->second;
+        if (!(root == r)) msg += ", needed by " + root.name;
+        result.error = msg;
+        return result;
+      }
+    }
+    Subst s;
+    s.guard = request.guard;
+    s.guard_uniform = request.guard_uniform;
+    std::vector<std::string> functions;
+    std::set<int> struct_widths;
+    for (const auto& r : order) {
+      std::string text;
+      if (!im.instantiate(*im.find(r.name, r.width), r.width, s, text, &error)) {
+        result.error = error;
+        return result;
+      }
+      for (const auto& id : identifiers(text))
+        for (int w = 1; w <= kMaxWidth; ++w)
+          if (id == df_type(w)) struct_widths.insert(w);
+      functions.push_back(std::move(text));
+    }
+    std::string out;
+    if (!order.empty()) {
+      out += "// doublet float-float runtime: " + std::to_string(order.size()) + " functions from rules/*.glsl, guard: ";
+      out += request.guard == GuardStyle::Precise   ? "precise"
+             : request.guard == GuardStyle::Uniform ? "uniform " + request.guard_uniform
+                                                    : "none (unprotected)";
+      out += "\n";
+      for (int w : struct_widths) {
+        const std::string f = vec_type("float", "vec", w);
+        out += "struct " + df_type(w) + " { " + f + " hi; " + f + " lo; };\n";
+      }
+      if (request.guard == GuardStyle::Uniform)
+        out += "uniform highp float " + request.guard_uniform + ";  // never set: GL zero-fills it at link\n";
+      for (const auto& f : functions) out += "\n" + f;
+    }
+    result.text = std::move(out);
+    result.ok = true;
+  } catch (const std::exception& e) {
+    result.ok = false;
+    result.text.clear();
+    result.error = std::string("rule library: ") + e.what();
+  } catch (...) {
+    result.ok = false;
+    result.text.clear();
+    result.error = "rule library: unknown error";
+  }
+  return result;
+}
+
+}  // namespace doublet::rules
