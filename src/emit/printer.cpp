@@ -355,7 +355,16 @@ class Printer {
       case Expr::Kind::Builtin: return call(builtin_name(*e), e->args);
       case Expr::Kind::Construct: return call(ir::type_name(e->type) + ir::array_suffix(e->type), e->args);
       case Expr::Kind::Member: return operand(e->args[0]) + "." + e->name;
-      case Expr::Kind::Index: return operand(e->args[0]) + "[" + expr(e->args[1]) + "]";
+      case Expr::Kind::Index: {
+        // glslang turns `.y` into `[1]`; give vectors their swizzle back.
+        const ir::Type& base = e->args[0]->type;
+        const ir::ExprPtr& index = e->args[1];
+        if (!base.is_array() && !base.is_matrix() && base.vec > 1 && base.name.empty() &&
+            index->kind == Expr::Kind::Const && index->values.size() == 1 && index->values[0].i >= 0 &&
+            index->values[0].i < 4)
+          return operand(e->args[0]) + "." + "xyzw"[index->values[0].i];
+        return operand(e->args[0]) + "[" + expr(index) + "]";
+      }
       case Expr::Kind::Comma: {
         std::string s;
         for (size_t i = 0; i < e->args.size(); ++i) s += (i ? ", " : "") + operand(e->args[i]);

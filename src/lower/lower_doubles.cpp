@@ -358,7 +358,8 @@ class DoubleLowering {
     std::string type = df_type_name(width), f = float_type_name(width);
     std::string name = std::string("df_") + (pre ? "pre_" : "post_") + (inc ? "increment" : "decrement") + "_" + type.substr(3);
     ctx_.use_rule(inc ? "df_add" : "df_sub", width);
-    std::string update = "  x = " + std::string(inc ? "df_add" : "df_sub") + "(x, " + type + "(" + f + "(1.0), " + f + "(0.0)));\n";
+    std::string one = width == 1 ? type + "(1.0, 0.0)" : type + "(" + f + "(1.0), " + f + "(0.0))";
+    std::string update = "  x = " + std::string(inc ? "df_add" : "df_sub") + "(x, " + one + ");\n";
     ctx_.add_helper(name, type + " " + name + "(inout " + type + " x) {\n" +
                               (pre ? update + "  return x;\n" : "  " + type + " old = x;\n" + update + "  return old;\n") +
                               "}\n");

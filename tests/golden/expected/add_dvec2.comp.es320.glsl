@@ -1,0 +1,84 @@
+#version 320 es
+precision highp float;
+precision highp int;
+layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;
+
+// doublet float-float runtime: 4 functions from rules/*.glsl, guard: precise
+struct df_dvec2 { vec2 hi; vec2 lo; };
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec2 df_two_sum(vec2 a, vec2 b) {
+  precise vec2 s = (a + b);
+  precise vec2 bb = (s - a);
+  precise vec2 ab = (s - bb);
+  precise vec2 da = (a - ab);
+  precise vec2 db = (b - bb);
+  precise vec2 e = (da + db);
+  return df_dvec2(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
+  precise vec2 s = (a + b);
+  precise vec2 z = (s - a);
+  precise vec2 e = (b - z);
+  return df_dvec2(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 s = df_two_sum(a.hi, b.hi);
+  df_dvec2 t = df_two_sum(a.lo, b.lo);
+  precise vec2 c = (s.lo + t.hi);
+  df_dvec2 v = df_fast_two_sum(s.hi, c);
+  precise vec2 w = (t.lo + v.lo);
+  df_dvec2 z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Algorithm: RN(hi + lo)
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 1
+vec2 df_to_float(df_dvec2 a) {
+  precise vec2 f = (a.hi + a.lo);
+  return f;
+}
+
+uniform vec2 a_hi;
+uniform vec2 a_lo;
+df_dvec2 a;
+uniform vec2 b_hi;
+uniform vec2 b_lo;
+df_dvec2 b;
+layout(std430, binding = 0) buffer Result {
+  vec2 result;
+};
+
+
+void main()
+{
+  a = df_dvec2(a_hi, a_lo);
+  b = df_dvec2(b_hi, b_lo);
+  result = df_to_float(df_add(a, b));
+}

@@ -1,0 +1,322 @@
+#version 310 es
+precision highp float;
+precision highp int;
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
+
+struct df_dvec2 {
+  vec2 hi;
+  vec2 lo;
+};
+struct df_dvec3 {
+  vec3 hi;
+  vec3 lo;
+};
+// doublet float-float runtime: 16 functions from rules/*.glsl, guard: uniform df_guard
+struct df_double { float hi; float lo; };
+struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard;  // never set: GL zero-fills it at link
+
+// df_from_float: the exact double-word (f, 0).
+// Algorithm: hi = f, lo = 0
+// Source: JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0
+df_dvec4 df_from_float(vec4 f) {
+  return df_dvec4(f, vec4(0.0));
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  float s = ((a + b) + df_guard);
+  float bb = ((s - a) + df_guard);
+  float ab = ((s - bb) + df_guard);
+  float da = ((a - ab) + df_guard);
+  float db = ((b - bb) + df_guard);
+  float e = ((da + db) + df_guard);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  float s = ((a + b) + df_guard);
+  float z = ((s - a) + df_guard);
+  float e = ((b - z) + df_guard);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  float c = ((s.lo + t.hi) + df_guard);
+  df_double v = df_fast_two_sum(s.hi, c);
+  float w = ((t.lo + v.lo) + df_guard);
+  df_double z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_double df_neg(df_double a) {
+  float h = ((-a.hi) + df_guard);
+  float l = ((-a.lo) + df_guard);
+  return df_double(h, l);
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 22
+df_double df_sub(df_double a, df_double b) {
+  df_double nb = df_neg(b);
+  df_double z = df_add(a, nb);
+  return z;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_double df_split(float a) {
+  float g = ((a * 4097.0) + df_guard);
+  float d = ((a - g) + df_guard);
+  float hi = ((g + d) + df_guard);
+  float lo = ((a - hi) + df_guard);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  float p = ((a * b) + df_guard);
+  df_double sa = df_split(a);
+  df_double sb = df_split(b);
+  float hh = ((sa.hi * sb.hi) + df_guard);
+  float hl = ((sa.hi * sb.lo) + df_guard);
+  float lh = ((sa.lo * sb.hi) + df_guard);
+  float ll = ((sa.lo * sb.lo) + df_guard);
+  float t1 = ((hh - p) + df_guard);
+  float t2 = ((t1 + hl) + df_guard);
+  float t3 = ((t2 + lh) + df_guard);
+  float e = ((t3 + ll) + df_guard);
+  return df_double(p, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_double df_mul(df_double a, df_double b) {
+  df_double c = df_two_prod(a.hi, b.hi);
+  float tl = ((a.hi * b.lo) + df_guard);
+  float th = ((a.lo * b.hi) + df_guard);
+  float cl2 = ((th + tl) + df_guard);
+  float cl3 = ((c.lo + cl2) + df_guard);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 25
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2).
+// Range: |ah|, |b| <= 8.3e34 (split).
+df_double df_mul_f(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  float cl2 = ((a.lo * b) + df_guard);
+  df_double t = df_fast_two_sum(c.hi, cl2);
+  float tl2 = ((t.lo + c.lo) + df_guard);
+  df_double z = df_fast_two_sum(t.hi, tl2);
+  return z;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 33
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error). b == 0 gives NaN (the split of Inf), not Inf.
+// Range: |th| and |bh| <= 8.3e34 (split).
+df_double df_div(df_double a, df_double b) {
+  float th = ((a.hi / b.hi) + df_guard);
+  df_double r = df_mul_f(b, th);
+  float pih = ((a.hi - r.hi) + df_guard);
+  float dl = ((a.lo - r.lo) + df_guard);
+  float d = ((pih + dl) + df_guard);
+  float tl = ((d / b.hi) + df_guard);
+  df_double z = df_fast_two_sum(th, tl);
+  return z;
+}
+
+// df_lt: a < b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_lt(df_double a, df_double b) {
+  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+}
+
+// df_ge: a >= b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_ge(df_double a, df_double b) {
+  return a.hi > b.hi || (a.hi == b.hi && a.lo >= b.lo);
+}
+
+// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_dvec4 df_neg(df_dvec4 a) {
+  vec4 h = ((-a.hi) + df_guard);
+  vec4 l = ((-a.lo) + df_guard);
+  return df_dvec4(h, l);
+}
+
+// df_equal: a == b for the whole value (all components), like GLSL == on dvecN.
+// Algorithm: word-wise equality (GLSL vector == is already whole-vector)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 vector comparisons)
+bool df_equal(df_dvec4 a, df_dvec4 b) {
+  return a.hi == b.hi && a.lo == b.lo;
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Algorithm: RN(hi + lo)
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 1
+vec4 df_to_float(df_dvec4 a) {
+  vec4 f = ((a.hi + a.lo) + df_guard);
+  return f;
+}
+
+df_double df_post_increment_double(inout df_double x) {
+  df_double old = x;
+  x = df_add(x, df_double(1.0, 0.0));
+  return old;
+}
+
+df_double df_pre_decrement_double(inout df_double x) {
+  x = df_sub(x, df_double(1.0, 0.0));
+  return x;
+}
+
+df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
+  return df_dvec2(vec2(a0.hi, a1.hi), vec2(a0.lo, a1.lo));
+}
+
+df_dvec2 df_assign_dvec3_xz(inout df_dvec3 v, df_dvec2 x) {
+  v.hi.xz = x.hi;
+  v.lo.xz = x.lo;
+  return x;
+}
+
+df_double df_assign_component_dvec3(inout df_dvec3 v, int i, df_double x) {
+  v.hi[i] = x.hi;
+  v.lo[i] = x.lo;
+  return x;
+}
+
+df_double df_component_dvec3(df_dvec3 v, int i) {
+  return df_double(v.hi[i], v.lo[i]);
+}
+
+df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
+  return df_dvec4(vec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), vec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
+}
+
+df_double df_component_dvec4(df_dvec4 v, int i) {
+  return df_double(v.hi[i], v.lo[i]);
+}
+
+df_double df_assign_component_dvec4(inout df_dvec4 v, int i, df_double x) {
+  v.hi[i] = x.hi;
+  v.lo[i] = x.lo;
+  return x;
+}
+
+layout(std430, binding = 0) buffer Data {
+  vec4 values[];
+};
+uniform int k;
+
+
+void main()
+{
+  uint i = gl_GlobalInvocationID.x;
+  df_dvec4 v = df_from_float(values[i]);
+  df_double a = df_double(v.hi.x, v.lo.x);
+  df_double b = df_double(v.hi.y, v.lo.y);
+  a = df_add(a, b);
+  a = df_sub(a, df_double(0.5, 0.0));
+  a = df_mul(a, df_neg(b));
+  a = df_div(a, df_double(3.0, 0.0));
+  df_double c = df_post_increment_double(a);
+  df_pre_decrement_double(b);
+  df_dvec3 w = df_dvec3(v.hi.xyz, v.lo.xyz);
+  df_assign_dvec3_xz(w, df_make_dvec2_1_1(a, b));
+  df_assign_component_dvec3(w, 1, c);
+  df_assign_component_dvec3(w, k, df_add(df_component_dvec3(w, k), df_double(1.0, 0.0)));
+  df_assign_component_dvec3(w, 1, df_mul(df_double(w.hi.y, w.lo.y), df_double(2.0, 0.0)));
+  bool less = df_lt(a, b);
+  bool ge = df_ge(a, b);
+  df_double m = less ? a : (ge ? b : c);
+  v = df_neg(df_make_dvec4_3_1(w, m));
+  if (df_equal(v, df_dvec4(vec4(0.0), vec4(0.0))))
+  {
+    df_assign_component_dvec4(v, 3, df_component_dvec4(v, k));
+  }
+  values[i] = df_to_float(v);
+}
