@@ -1,0 +1,80 @@
+// Host-side helpers: split doubles into the hi/lo floats a lowered shader
+// expects (X_hi, X_lo in the manifest), and join them back.
+//
+// split(x) gives hi = float(x) (round to nearest) and lo = float(x - hi); the
+// pair carries about 48 bits. Values outside float range have no float-float
+// representation: split_checked() reports them instead of silently producing
+// Inf or 0. Header-only, no dependencies; loops are written to vectorise.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <span>
+
+namespace doublet {
+
+struct FloatPair {
+  float hi = 0;
+  float lo = 0;
+};
+
+inline FloatPair split(double x) {
+  float hi = static_cast<float>(x);
+  // Inf/NaN: lo = 0 keeps hi + lo == hi (x - Inf would be NaN).
+  float lo = std::isfinite(hi) ? static_cast<float>(x - static_cast<double>(hi)) : 0.0f;
+  return {hi, lo};
+}
+
+inline double join(FloatPair p) { return static_cast<double>(p.hi) + static_cast<double>(p.lo); }
+inline double join(float hi, float lo) { return static_cast<double>(hi) + static_cast<double>(lo); }
+
+enum class SplitStatus {
+  Exact,      // hi + lo == x
+  Rounded,    // |x| is representable but needs more than ~48 bits (normal: a double has 53)
+  Overflow,   // |x| > FLT_MAX: hi is ±Inf
+  Underflow,  // 0 < |x| below float's range: hi is 0 or subnormal, precision lost
+};
+
+// Like split(), and says whether the value survived.
+inline SplitStatus split_checked(double x, FloatPair& out) {
+  out = split(x);
+  if (std::isnan(x) || std::isinf(x)) return SplitStatus::Exact;  // NaN/Inf carry over as themselves
+  if (std::isinf(out.hi)) return SplitStatus::Overflow;
+  if (x != 0 && std::fabs(x) < static_cast<double>(std::numeric_limits<float>::min())) return SplitStatus::Underflow;
+  return join(out) == x ? SplitStatus::Exact : SplitStatus::Rounded;
+}
+
+// Bulk: x[i] → hi[i], lo[i]. The spans must have equal sizes.
+inline void split(std::span<const double> x, std::span<float> hi, std::span<float> lo) {
+  const std::size_t n = x.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    float h = static_cast<float>(x[i]);
+    hi[i] = h;
+    lo[i] = static_cast<float>(x[i] - static_cast<double>(h));
+  }
+  for (std::size_t i = 0; i < n; ++i)  // rare fix-up kept out of the hot loop
+    if (!std::isfinite(hi[i])) lo[i] = 0.0f;
+}
+
+// Bulk into interleaved vertex data: for each element of `components` doubles
+// (e.g. 3 for dvec3), writes `components` hi floats then `components` lo floats
+// at `stride_floats` apart (the attribute pair X_hi, X_lo in one buffer).
+inline void split_interleaved(std::span<const double> x, std::size_t components, std::span<float> out,
+                              std::size_t stride_floats) {
+  const std::size_t count = components ? x.size() / components : 0;
+  for (std::size_t v = 0; v < count; ++v) {
+    float* dst = out.data() + v * stride_floats;
+    for (std::size_t c = 0; c < components; ++c) {
+      FloatPair p = split(x[v * components + c]);
+      dst[c] = p.hi;
+      dst[components + c] = p.lo;
+    }
+  }
+}
+
+inline void join(std::span<const float> hi, std::span<const float> lo, std::span<double> x) {
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(hi[i]) + static_cast<double>(lo[i]);
+}
+
+}  // namespace doublet
