@@ -1,27 +1,28 @@
-// `doublet lower IN [-o OUT] ...`: lower one shader and write the result (and
-// optionally its interface manifest). Outputs are replaced atomically and only
-// when the whole run succeeds.
-#include <cerrno>
-#include <cstring>
+// `doublet lower IN... [-o OUT | --out-dir DIR] ...`: lower shaders and write the results
+// (and optionally manifests and depfiles). One input goes to -o (or stdout); several go to
+// --out-dir, lowered in parallel. Outputs are replaced atomically and only when the
+// shader lowered without errors.
+#include <filesystem>
 #include <iostream>
-#include <memory>
 #include <optional>
+#include <map>
+#include <memory>
 #include <string>
-#include <utility>
+#include <system_error>
+#include <thread>
 #include <vector>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
-#include "atomic_file.hpp"
 #include "commands.hpp"
+#include "diagnostic_printer.hpp"
 #include "doublet/doublet.hpp"
+#include "job_runner.hpp"
+#include "lower_job.hpp"
 
 namespace doublet::cli {
 namespace {
+namespace fs = std::filesystem;
 
 constexpr Target kAllTargets[] = {Target::Es100, Target::Es300,   Target::Es310,
                                   Target::Es320, Target::Glsl330, Target::Glsl450};
@@ -35,186 +36,186 @@ std::string target_names(std::string_view sep) {
   return s;
 }
 
-bool is_identifier(std::string_view s) {
-  if (s.empty() || (s[0] >= '0' && s[0] <= '9')) return false;
-  for (char c : s)
-    if (!(c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')))
-      return false;
-  return true;
+bool is_identifier_char(char c) {
+  return c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
 }
 
 bool is_identifier_tail(std::string_view s) {
   if (s.empty()) return false;
   for (char c : s)
-    if (!(c == '_' || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')))
-      return false;
+    if (!is_identifier_char(c)) return false;
   return true;
 }
 
+bool is_identifier(std::string_view s) { return is_identifier_tail(s) && !(s[0] >= '0' && s[0] <= '9'); }
+
 struct LowerArgs {
-  std::string input;
+  std::vector<std::string> inputs;
   std::string output;  // empty or "-": stdout
+  std::string out_dir;
+  unsigned jobs = 0;   // 0: one per core
   std::string stage;
   std::string target = "es300";
   std::vector<std::string> defines;
   std::vector<std::string> include_dirs;
   std::string manifest;
+  bool depfile = false;         // -MD
+  std::string depfile_path;     // -MF
+  std::string depfile_target;   // -MT
   std::string guard = "auto";
   std::string hi_suffix = "_hi";
   std::string lo_suffix = "_lo";
+  std::string color = "auto";
 };
 
-// Reads a whole file (or stdin for fd 0). Returns errno on failure.
-int read_fd(int fd, std::string& out) {
-  struct stat st {};
-  if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) return EISDIR;
-  char buf[1 << 16];
-  for (;;) {
-    ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n == 0) return 0;
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return errno;
-    }
-    out.append(buf, static_cast<size_t>(n));
-  }
-}
-
-int read_input(const std::string& path, std::string& out) {
-  if (path == "-") return read_fd(STDIN_FILENO, out);
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return errno;
-  int err = read_fd(fd, out);
-  ::close(fd);
-  return err;
-}
-
-void print_diagnostic(const Diagnostic& d) {
-  std::string text = format_diagnostic(d);
-  if (text.empty() || text.back() != '\n') text += '\n';
-  std::cerr << text;
-}
-
-bool write_stdout(std::string_view text) {
-  std::cout.write(text.data(), static_cast<std::streamsize>(text.size()));
-  std::cout.flush();
-  return static_cast<bool>(std::cout);
-}
-
-int run_lower(const CLI::App& cmd, const LowerArgs& a) {
-  const bool from_stdin = a.input == "-";
-  const bool out_to_stdout = a.output.empty() || a.output == "-";
-  const bool manifest_to_stdout = a.manifest == "-";
-
-  // --- Usage checks (exit 1) -------------------------------------------------
+// Options shared by every input; the usage error, if any, in `error`.
+Options common_options(const LowerArgs& a, std::string& error) {
+  auto problem = [&](std::string message) {  // the first problem is reported
+    if (error.empty()) error = std::move(message);
+  };
   Options opt;
-  if (auto t = parse_target(a.target)) {
+  if (auto t = parse_target(a.target))
     opt.target = *t;
-  } else {
-    return usage_error(cmd, "unknown target '" + a.target + "' (expected one of " +
-                                target_names(", ") + ")");
-  }
+  else
+    problem("unknown target '" + a.target + "' (expected one of " + target_names(", ") + ")");
   if (!a.stage.empty()) {
     opt.stage = parse_stage(a.stage);
-    if (!opt.stage) return usage_error(cmd, "unknown stage '" + a.stage + "' (expected vert, frag or comp)");
-  } else if (from_stdin) {
-    return usage_error(cmd, "reading the shader from stdin requires -S vert|frag|comp");
-  } else {
-    opt.stage = stage_from_path(a.input);
-    if (!opt.stage)
-      return usage_error(cmd, "cannot tell the shader stage from the file name '" + a.input +
-                                  "' (expected .vert, .frag, .comp, optionally followed by .glsl); use -S");
+    if (!opt.stage) problem("unknown stage '" + a.stage + "' (expected vert, frag or comp)");
   }
-  if (manifest_to_stdout && out_to_stdout)
-    return usage_error(cmd, "--manifest - needs -o FILE: the shader already goes to stdout");
-  if (!out_to_stdout && !a.manifest.empty() && !manifest_to_stdout && a.manifest == a.output)
-    return usage_error(cmd, "-o and --manifest name the same file");
   for (const std::string& d : a.defines) {
     auto eq = d.find('=');
     std::string name = d.substr(0, eq);
-    if (!is_identifier(name)) return usage_error(cmd, "-D: '" + name + "' is not a valid macro name");
+    if (!is_identifier(name)) problem("-D: '" + name + "' is not a valid macro name");
     opt.defines.emplace_back(name, eq == std::string::npos ? std::string() : d.substr(eq + 1));
   }
   if (!is_identifier_tail(a.hi_suffix) || !is_identifier_tail(a.lo_suffix))
-    return usage_error(cmd, "--hi-suffix/--lo-suffix must be non-empty and contain only letters, digits and _");
-  if (a.hi_suffix == a.lo_suffix) return usage_error(cmd, "--hi-suffix and --lo-suffix must differ");
-
-  opt.file_name = from_stdin ? "<stdin>" : a.input;
+    problem("--hi-suffix/--lo-suffix must be non-empty and contain only letters, digits and _");
+  else if (a.hi_suffix == a.lo_suffix)
+    problem("--hi-suffix and --lo-suffix must differ");
   opt.include_dirs = a.include_dirs;
   opt.hi_suffix = a.hi_suffix;
   opt.lo_suffix = a.lo_suffix;
-  opt.guard = a.guard == "precise"   ? GuardKind::Precise
-              : a.guard == "uniform" ? GuardKind::Uniform
-                                     : GuardKind::Auto;
+  opt.guard = a.guard == "precise" ? GuardKind::Precise : a.guard == "uniform" ? GuardKind::Uniform : GuardKind::Auto;
+  return opt;
+}
 
-  // --- Input (exit 2) --------------------------------------------------------
-  std::string source;
-  if (int err = read_input(a.input, source); err != 0) {
-    print_diagnostic({opt.file_name, 0, 0, Severity::Error, std::string("cannot read file: ") + std::strerror(err)});
-    return kExitInput;
-  }
+// The stage for `input`: -S, else from the file name. Empty string on success.
+std::string resolve_stage(const std::string& input, Options& opt) {
+  if (opt.stage) return {};
+  if (input == "-") return "reading the shader from stdin requires -S vert|frag|comp";
+  opt.stage = stage_from_path(input);
+  if (opt.stage) return {};
+  return "cannot tell the shader stage from the file name '" + input +
+         "' (expected .vert, .frag, .comp, optionally followed by .glsl); use -S";
+}
 
-  Result result = lower(source, opt);
-  bool has_error = !result.ok;
-  for (const Diagnostic& d : result.diagnostics) {
-    print_diagnostic(d);
-    if (d.severity == Severity::Error) has_error = true;
+// One input, output to -o FILE or stdout.
+std::string plan_single(const LowerArgs& a, const Options& common, std::vector<LowerJob>& jobs) {
+  LowerJob job;
+  job.input = a.inputs.front();
+  job.options = common;
+  if (std::string e = resolve_stage(job.input, job.options); !e.empty()) return e;
+  job.options.file_name = job.input == "-" ? "<stdin>" : job.input;
+  job.output = a.output == "-" ? std::string() : a.output;
+  job.manifest = a.manifest;
+  if (job.manifest == "-" && job.output.empty())
+    return "--manifest - needs -o FILE: the shader already goes to stdout";
+  if (!job.output.empty() && !job.manifest.empty() && job.manifest == job.output)
+    return "-o and --manifest name the same file";
+  if (a.depfile || !a.depfile_path.empty()) {
+    job.depfile = !a.depfile_path.empty() ? a.depfile_path : job.output.empty() ? "" : job.output + ".d";
+    job.depfile_target = !a.depfile_target.empty() ? a.depfile_target : job.output;
+    if (job.depfile.empty() || job.depfile_target.empty())
+      return "-MD with the shader on stdout needs -MF FILE and -MT TARGET (the depfile names the output)";
+    if (job.depfile == job.output || job.depfile == job.manifest)
+      return "-MF names the same file as -o or --manifest";
   }
-  if (has_error) {
-    if (result.ok) std::cerr << "doublet: error: compilation reported errors; nothing written\n";
-    return kExitInput;
-  }
+  jobs.push_back(std::move(job));
+  return {};
+}
 
-  // --- Output: all files prepared first, then renamed into place --------------
-  std::string manifest_json;
-  if (!a.manifest.empty()) {
-    manifest_json = result.manifest.to_json();
-    if (manifest_json.empty() || manifest_json.back() != '\n') manifest_json += '\n';
+// Inputs lowered into --out-dir: DIR/NAME, DIR/NAME.json and, with -MD, DIR/NAME.d.
+std::string plan_batch(const LowerArgs& a, const Options& common, std::vector<LowerJob>& jobs) {
+  if (a.out_dir.empty()) return "several inputs need --out-dir DIR";
+  if (!a.output.empty()) return "-o and --out-dir cannot be combined (use --out-dir alone)";
+  if (!a.manifest.empty()) return "--manifest is for one input; --out-dir writes DIR/NAME.json for each";
+  if (!a.depfile_path.empty() || !a.depfile_target.empty())
+    return "-MF/-MT are for one input; with --out-dir, -MD writes DIR/NAME.d for each";
+  std::map<std::string, std::string> seen;  // output name → input
+  for (const std::string& input : a.inputs) {
+    if (input == "-") return "stdin ('-') cannot be used with --out-dir";
+    LowerJob job;
+    job.input = input;
+    job.options = common;
+    job.options.file_name = input;
+    if (std::string e = resolve_stage(input, job.options); !e.empty()) return e;
+    std::string name = fs::path(input).filename().string();
+    if (auto [it, fresh] = seen.emplace(name, input); !fresh)
+      return "'" + it->second + "' and '" + input + "' would both be written to " + a.out_dir + "/" + name;
+    job.output = (fs::path(a.out_dir) / name).string();
+    job.manifest = job.output + ".json";
+    if (a.depfile) {
+      job.depfile = job.output + ".d";
+      job.depfile_target = job.output;
+    }
+    jobs.push_back(std::move(job));
   }
-  AtomicFile out_file, manifest_file;
-  if (!out_to_stdout && !out_file.prepare(a.output, result.output)) {
-    std::cerr << "doublet: error: " << out_file.error() << "\n";
-    return kExitInput;
+  return {};
+}
+
+int run_lower(const CLI::App& cmd, const LowerArgs& a) {
+  std::string error;
+  Options common = common_options(a, error);
+  if (!error.empty()) return usage_error(cmd, error);
+  std::optional<ColorChoice> color = parse_color_choice(a.color);
+  if (!color) return usage_error(cmd, "--color must be auto, always or never");
+
+  std::vector<LowerJob> jobs;
+  const bool batch = a.inputs.size() > 1 || !a.out_dir.empty();
+  error = batch ? plan_batch(a, common, jobs) : plan_single(a, common, jobs);
+  if (!error.empty()) return usage_error(cmd, error);
+
+  const bool use_color = stderr_wants_color(*color);
+  if (batch) {
+    std::error_code ec;
+    fs::create_directories(a.out_dir, ec);
+    if (ec) {
+      std::cerr << render_diagnostic(tool_error("cannot create '" + a.out_dir + "': " + ec.message()), use_color);
+      return kExitInput;
+    }
   }
-  if (!a.manifest.empty() && !manifest_to_stdout && !manifest_file.prepare(a.manifest, manifest_json)) {
-    std::cerr << "doublet: error: " << manifest_file.error() << "\n";
-    return kExitInput;  // out_file's temporary is removed by its destructor
-  }
-  if (!out_to_stdout && !out_file.commit()) {
-    std::cerr << "doublet: error: " << out_file.error() << "\n";
-    return kExitInput;
-  }
-  if (!a.manifest.empty() && !manifest_to_stdout && !manifest_file.commit()) {
-    std::cerr << "doublet: error: " << manifest_file.error() << "\n";
-    return kExitInput;
-  }
-  if (out_to_stdout && !write_stdout(result.output)) {
-    std::cerr << "doublet: error: cannot write to stdout\n";
-    return kExitInput;
-  }
-  if (manifest_to_stdout && !write_stdout(manifest_json)) {
-    std::cerr << "doublet: error: cannot write to stdout\n";
-    return kExitInput;
-  }
-  return kExitOk;
+  unsigned threads = a.jobs != 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+  return run_jobs(jobs, threads, use_color);
 }
 
 }  // namespace
 
 Command add_lower_command(CLI::App& app) {
   auto args = std::make_shared<LowerArgs>();
-  CLI::App* cmd = app.add_subcommand("lower", "Lower a shader that uses doubles to float-float GLSL");
+  CLI::App* cmd = app.add_subcommand("lower", "Lower shaders that use doubles to float-float GLSL");
   cmd->footer(
       "Examples:\n"
-      "  doublet lower examples/rte.vert -o rte.es300.vert --manifest rte.json\n"
-      "  cat shader.glsl | doublet lower - -S frag --target es320");
+      "  doublet lower globe.vert -o globe.es300.vert --manifest globe.json\n"
+      "  doublet lower mandelbrot.frag --target es320 -o out/mandelbrot.frag -MD -MF out/mandelbrot.d\n"
+      "  doublet lower shaders/*.vert shaders/*.comp --out-dir lowered -j 8 -MD\n"
+      "      (writes lowered/NAME, lowered/NAME.json and lowered/NAME.d for each input)\n"
+      "  cat shader.glsl | doublet lower - -S frag --target es320\n"
+      "\n"
+      "-MD writes a Make-style depfile listing the input and every #include'd file (as GCC\n"
+      "does); -MF FILE names it (default: OUT.d) and implies -MD; -MT TARGET names the rule's\n"
+      "target (default: OUT). Diagnostics are coloured on a terminal unless NO_COLOR is set.");
 
-  cmd->add_option("IN", args->input, "Input shader; '-' reads stdin (then -S is required)")
+  cmd->add_option("IN", args->inputs, "Input shaders; '-' reads stdin (then -S is required)")
       ->required()
-      ->type_name("FILE");
-  cmd->add_option("-o,--output", args->output, "Output file; '-' or absent: stdout")->type_name("OUT");
-  cmd->add_option("-S,--stage", args->stage,
-                  "Shader stage: vert, frag or comp (default: from IN's extension)")
+      ->type_name("FILE...");
+  cmd->add_option("-o,--output", args->output, "Output file (one input); '-' or absent: stdout")->type_name("OUT");
+  cmd->add_option("--out-dir", args->out_dir,
+                  "Write DIR/NAME and DIR/NAME.json for each input (created if missing)")
+      ->type_name("DIR");
+  cmd->add_option("-j,--jobs", args->jobs, "Lower N shaders at a time (default: one per core)")
+      ->type_name("N")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("-S,--stage", args->stage, "Shader stage: vert, frag or comp (default: from IN's extension)")
       ->type_name("STAGE");
   cmd->add_option("--target", args->target, "Output dialect: " + target_names("|") + " (default es300)")
       ->type_name("TARGET");
@@ -224,9 +225,12 @@ Command add_lower_command(CLI::App& app) {
   cmd->add_option("-I,--include-dir", args->include_dirs, "Add a directory searched by #include")
       ->type_name("DIR")
       ->allow_extra_args(false);
-  cmd->add_option("--manifest", args->manifest,
-                  "Write the interface manifest (JSON) to FILE; '-' with -o FILE: stdout")
+  cmd->add_option("--manifest", args->manifest, "Write the interface manifest (JSON) to FILE; '-' with -o FILE: stdout")
       ->type_name("FILE");
+  cmd->add_flag("--MD", args->depfile, "(-MD) Write a depfile: OUT.d, or DIR/NAME.d with --out-dir");
+  cmd->add_option("--MF", args->depfile_path, "(-MF FILE) Write the depfile to FILE (implies -MD)")->type_name("FILE");
+  cmd->add_option("--MT", args->depfile_target, "(-MT TARGET) The depfile's target (default: OUT)")
+      ->type_name("TARGET");
   cmd->add_option("--guard", args->guard,
                   "How error terms are protected from the driver's optimizer: auto (precise where the "
                   "target has it, else uniform), precise or uniform (default auto)")
@@ -236,6 +240,8 @@ Command add_lower_command(CLI::App& app) {
       ->type_name("S");
   cmd->add_option("--lo-suffix", args->lo_suffix, "Suffix of the low part of split variables (default _lo)")
       ->type_name("S");
+  cmd->add_option("--color", args->color, "Colour diagnostics: auto (terminal, no NO_COLOR), always, never")
+      ->type_name("WHEN");
 
   return {cmd, [cmd, args] { return run_lower(*cmd, *args); }};
 }

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "gcc_style_args.hpp"
 
 #ifndef DOUBLET_VERSION
 #define DOUBLET_VERSION "unknown"
@@ -30,14 +31,24 @@ int main(int argc, char** argv) {
                "doublet"};
   app.set_version_flag("--version", "doublet " DOUBLET_VERSION);
   app.require_subcommand(1);
-  app.footer("Exit status: 0 success, 1 usage error, 2 input/output or compile error.");
+  app.footer(
+      "Examples:\n"
+      "  doublet lower globe.vert -o globe.es300.vert --manifest globe.json\n"
+      "  doublet lower a.vert b.frag c.comp --out-dir lowered -MD\n"
+      "  doublet lower --help\n"
+      "\n"
+      "Exit status: 0 success, 1 usage error, 2 input/output or compile error.");
 
   std::vector<Command> commands;
   commands.push_back(add_lower_command(app));
   // Later: verify, bench, plan.
 
   try {
-    app.parse(argc, argv);
+    // -MD/-MF/-MT (GCC's spelling) become --MD/--MF/--MT for CLI11.
+    std::vector<std::string> args = rewrite_gcc_style_args(argc, argv);
+    std::vector<const char*> arg_ptrs;
+    for (const std::string& a : args) arg_ptrs.push_back(a.c_str());
+    app.parse(static_cast<int>(arg_ptrs.size()), arg_ptrs.data());
   } catch (const CLI::ParseError& e) {
     // --help / --version exit 0; every real parse error is a usage error.
     int rc = app.exit(e);
