@@ -101,7 +101,7 @@ std::string info_log(GLuint object, bool is_program) {
   return log;
 }
 
-// GL objects of one job, deleted whatever happens.
+// GL objects of one batch, deleted whatever happens.
 struct GlObjects {
   GLuint shader = 0, program = 0;
   std::vector<GLuint> buffers;
@@ -113,37 +113,64 @@ struct GlObjects {
   }
 };
 
-std::string set_uniforms(GLuint program, const ComputeJob& job) {
-  for (const auto& [name, value] : job.float_uniforms) {
-    GLuint index = GL_INVALID_INDEX;
-    const char* cname = name.c_str();
-    glGetUniformIndices(program, 1, &cname, &index);
-    if (index == GL_INVALID_INDEX) continue;  // inactive or absent: GL ignores it too
-    GLint size = 0;
-    GLenum type = 0;
-    char dummy[1];
-    glGetActiveUniform(program, index, 0, nullptr, &size, &type, dummy);
+std::string set_uniform(GLuint program, const std::string& name, const std::vector<double>* values, float value) {
+  GLuint index = GL_INVALID_INDEX;
+  const char* cname = name.c_str();
+  glGetUniformIndices(program, 1, &cname, &index);
+  if (index == GL_INVALID_INDEX) return {};  // inactive or absent: GL ignores it too
+  GLint size = 0;
+  GLenum type = 0;
+  char dummy[1];
+  glGetActiveUniform(program, index, 0, nullptr, &size, &type, dummy);
+  const GLint location = glGetUniformLocation(program, cname);
+  if (!values) {
     if (type != GL_FLOAT) return "uniform '" + name + "' is not a float; float_uniforms can only set floats";
-    glUniform1f(glGetUniformLocation(program, cname), value);
+    glUniform1f(location, value);
+    return {};
   }
-  return gl_error("glUniform1f");
+  const size_t components = type == GL_FLOAT ? 1 : type == GL_FLOAT_VEC2 ? 2 : type == GL_FLOAT_VEC3 ? 3
+                            : type == GL_FLOAT_VEC4 ? 4 : 0;
+  if (components == 0 || size != 1) return "uniform '" + name + "' is not a float scalar or vector";
+  if (values->size() != components)
+    return "uniform '" + name + "' has " + std::to_string(components) + " component(s), job gives " +
+           std::to_string(values->size());
+  float f[4] = {};
+  for (size_t c = 0; c < components; ++c) f[c] = static_cast<float>((*values)[c]);
+  switch (components) {
+    case 1: glUniform1fv(location, 1, f); break;
+    case 2: glUniform2fv(location, 1, f); break;
+    case 3: glUniform3fv(location, 1, f); break;
+    default: glUniform4fv(location, 1, f); break;
+  }
+  return {};
 }
 
-std::string run_job(const ComputeJob& job, ComputeResult* result) {
-  glGetError();  // start clean
-  GlObjects gl;
+std::string set_uniforms(GLuint program, const ComputeJob& job) {
+  for (const auto& [name, value] : job.float_uniforms)
+    if (std::string e = set_uniform(program, name, nullptr, value); !e.empty()) return e;
+  for (const auto& [name, values] : job.uniforms)
+    if (std::string e = set_uniform(program, name, &values, 0); !e.empty()) return e;
+  return gl_error("glUniform*");
+}
+
+std::string build_program(const std::string& glsl, GlObjects& gl, const std::string& device) {
   gl.shader = glCreateShader(GL_COMPUTE_SHADER);
-  const char* text = job.glsl.c_str();
+  const char* text = glsl.c_str();
   glShaderSource(gl.shader, 1, &text, nullptr);
   glCompileShader(gl.shader);
   GLint status = 0;
   glGetShaderiv(gl.shader, GL_COMPILE_STATUS, &status);
-  if (!status) return "GLSL compile failed (GLES, " + result->device + "):\n" + info_log(gl.shader, false);
+  if (!status) return "GLSL compile failed (GLES, " + device + "):\n" + info_log(gl.shader, false);
   gl.program = glCreateProgram();
   glAttachShader(gl.program, gl.shader);
   glLinkProgram(gl.program);
   glGetProgramiv(gl.program, GL_LINK_STATUS, &status);
-  if (!status) return "GLSL link failed (GLES, " + result->device + "):\n" + info_log(gl.program, true);
+  if (!status) return "GLSL link failed (GLES, " + device + "):\n" + info_log(gl.program, true);
+  return {};
+}
+
+// One dispatch of an already linked program with the job's uniforms and buffers.
+std::string dispatch(GlObjects& gl, const ComputeJob& job, ComputeResult* result) {
   glUseProgram(gl.program);
   if (std::string e = set_uniforms(gl.program, job); !e.empty()) return e;
 
@@ -162,7 +189,8 @@ std::string run_job(const ComputeJob& job, ComputeResult* result) {
   glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &max_bindings);
   if (job.buffers.size() > static_cast<size_t>(max_bindings)) return "too many buffers for " + result->device;
 
-  gl.buffers.resize(job.buffers.size());
+  if (!gl.buffers.empty()) glDeleteBuffers(static_cast<GLsizei>(gl.buffers.size()), gl.buffers.data());
+  gl.buffers.assign(job.buffers.size(), 0);
   if (!gl.buffers.empty()) glGenBuffers(static_cast<GLsizei>(gl.buffers.size()), gl.buffers.data());
   for (size_t i = 0; i < job.buffers.size(); ++i) {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, gl.buffers[i]);
@@ -192,28 +220,42 @@ std::string run_job(const ComputeJob& job, ComputeResult* result) {
   return gl_error("reading buffers back");
 }
 
+std::vector<ComputeResult> run_jobs(const std::vector<ComputeJob>& jobs, const std::string& device) {
+  std::vector<ComputeResult> results;
+  glGetError();  // start clean
+  GlObjects gl;
+  std::string error = build_program(jobs[0].glsl, gl, device);
+  for (size_t i = 0; i < jobs.size() && (i == 0 || results.back().ok); ++i) {
+    ComputeResult result;
+    result.device = device;
+    result.error = error.empty() ? dispatch(gl, jobs[i], &result) : error;
+    result.ok = result.error.empty();
+    if (!result.ok) result.buffers.clear();
+    results.push_back(std::move(result));
+  }
+  return results;
+}
+
 }  // namespace
 
 std::string gles_unavailable_reason() { return shared_context().error; }
 
-ComputeResult gles_run(const ComputeJob& job) {
-  ComputeResult result;
+std::vector<ComputeResult> gles_run(const std::vector<ComputeJob>& jobs) {
   GlesContext& g = shared_context();
-  result.device = g.renderer;
+  ComputeResult failed;
+  failed.device = g.renderer;
   if (!g.error.empty()) {
-    result.error = "GLES unavailable: " + g.error;
-    return result;
+    failed.error = "GLES unavailable: " + g.error;
+    return {failed};
   }
   std::lock_guard<std::mutex> lock(g.mu);
   if (!eglMakeCurrent(g.display, EGL_NO_SURFACE, EGL_NO_SURFACE, g.context)) {
-    result.error = egl_error("eglMakeCurrent");
-    return result;
+    failed.error = egl_error("eglMakeCurrent");
+    return {failed};
   }
-  result.error = run_job(job, &result);
+  std::vector<ComputeResult> results = run_jobs(jobs, g.renderer);
   eglMakeCurrent(g.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);  // let other threads use it
-  result.ok = result.error.empty();
-  if (!result.ok) result.buffers.clear();
-  return result;
+  return results;
 }
 
 }  // namespace doublet::runner::detail

@@ -13,7 +13,9 @@ namespace doublet::runner::detail {
 // Where a live loose uniform sits in the global uniform block (std140, from glslang reflection).
 struct UniformSlot {
   uint32_t offset = 0;
-  bool is_float = false;  // only `float` can be set through ComputeJob::float_uniforms
+  bool is_float = false;   // only `float` can be set through ComputeJob::float_uniforms
+  bool is_double = false;  // double/dvecN (else float/vecN when components > 0)
+  int components = 0;      // 1..4 for float/double scalars and vectors, 0 for anything else
 };
 
 struct SpirvProgram {
@@ -29,9 +31,9 @@ bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error
 // True if the module declares OpCapability Float64.
 bool spirv_uses_float64(const std::vector<uint32_t>& words);
 
-ComputeResult vulkan_run(const SpirvProgram& program, const ComputeJob& job);
+std::vector<ComputeResult> vulkan_run(const SpirvProgram& program, const std::vector<ComputeJob>& jobs);
 std::string vulkan_unavailable_reason();
-ComputeResult gles_run(const ComputeJob& job);
+std::vector<ComputeResult> gles_run(const std::vector<ComputeJob>& jobs);
 std::string gles_unavailable_reason();
 
 }  // namespace doublet::runner::detail

@@ -7,15 +7,24 @@ namespace doublet::runner {
 const char* backend_name(Backend b) { return b == Backend::Vulkan ? "Vulkan" : "GLES"; }
 
 ComputeResult run_compute(Backend backend, const ComputeJob& job) {
-  if (backend == Backend::Gles) return detail::gles_run(job);
+  return run_compute_batch(backend, {job}).back();
+}
+
+std::vector<ComputeResult> run_compute_batch(Backend backend, const std::vector<ComputeJob>& jobs) {
+  if (jobs.empty()) {
+    ComputeResult result;
+    result.error = "run_compute_batch: no jobs";
+    return {result};
+  }
+  if (backend == Backend::Gles) return detail::gles_run(jobs);
   detail::SpirvProgram program;
   std::string error;
-  if (!detail::compile_glsl(job.glsl, &program, &error)) {
+  if (!detail::compile_glsl(jobs[0].glsl, &program, &error)) {
     ComputeResult result;
     result.error = std::move(error);
-    return result;
+    return {result};
   }
-  return detail::vulkan_run(program, job);
+  return detail::vulkan_run(program, jobs);
 }
 
 ComputeResult run_spirv_compute(const std::vector<uint32_t>& spirv, const ComputeJob& job) {
@@ -31,7 +40,7 @@ ComputeResult run_spirv_compute(const std::vector<uint32_t>& spirv, const Comput
   detail::SpirvProgram program;
   program.words = spirv;
   // Without reflection the SSBO bindings are unknown; the layout still offers bindings 0..n-1.
-  return detail::vulkan_run(program, job);
+  return detail::vulkan_run(program, {job}).back();
 }
 
 std::string backend_unavailable_reason(Backend backend) {

@@ -29,6 +29,9 @@ struct ComputeJob {
   // Loose `uniform float` values by name. Unlisted uniforms stay 0. A name the compiler removed
   // (inactive) is ignored, as in GL; a name bound to a non-float uniform is an error.
   std::map<std::string, float> float_uniforms;
+  // Loose uniforms of float/vecN or double/dvecN type by name, one value per component, converted to
+  // the declared type (double types exist only on Vulkan). Set after float_uniforms; same rules.
+  std::map<std::string, std::vector<double>> uniforms;
   uint32_t groups_x = 1, groups_y = 1, groups_z = 1;
 };
 
@@ -40,6 +43,11 @@ struct ComputeResult {
 };
 
 ComputeResult run_compute(Backend, const ComputeJob&);
+
+// Runs every job with one compiled program (jobs[0].glsl; the others' glsl is ignored): many input
+// sets for one shader without paying for a compile and pipeline each time. Results in job order; on
+// the first failure it stops and the last result carries the error.
+std::vector<ComputeResult> run_compute_batch(Backend, const std::vector<ComputeJob>& jobs);
 
 // Runs an already-compiled SPIR-V compute module on Vulkan (validated first, like compiled text).
 // Loose-uniform offsets are unknown here, so job.float_uniforms must be empty; job.glsl is ignored.

@@ -17,6 +17,26 @@ namespace {
 constexpr const char* kGlobalBlockName = "doublet_GlobalUniforms";
 constexpr int kGlFloat = 0x1406;  // GL_FLOAT, glslang's reflection type code for `float`
 
+// Components of a float/double scalar or vector reflection type (GL type codes), 0 otherwise.
+int float_components(int gl_type, bool* is_double) {
+  *is_double = false;
+  switch (gl_type) {
+    case 0x1406: return 1;  // GL_FLOAT
+    case 0x8B50: return 2;  // GL_FLOAT_VEC2
+    case 0x8B51: return 3;
+    case 0x8B52: return 4;
+  }
+  *is_double = true;
+  switch (gl_type) {
+    case 0x140A: return 1;  // GL_DOUBLE
+    case 0x8FFC: return 2;  // GL_DOUBLE_VEC2
+    case 0x8FFD: return 3;
+    case 0x8FFE: return 4;
+  }
+  *is_double = false;
+  return 0;
+}
+
 // glslang keeps process-wide state (symbol tables); initialise it once and serialise compiles.
 std::mutex& glslang_mutex() {
   static std::mutex mu;
@@ -78,7 +98,9 @@ bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error
       *error = "unsupported: opaque uniform '" + u.name + "' (samplers/images are not fed by the runner)";
       return false;
     }
-    result.uniforms[u.name] = UniformSlot{static_cast<uint32_t>(u.offset), u.glDefineType == kGlFloat && u.size == 1};
+    UniformSlot slot{static_cast<uint32_t>(u.offset), u.glDefineType == kGlFloat && u.size == 1};
+    if (u.size == 1) slot.components = float_components(u.glDefineType, &slot.is_double);
+    result.uniforms[u.name] = slot;
   }
   for (int i = 0; i < program.getNumBufferBlocks(); ++i) result.ssbo_bindings.push_back(program.getBufferBlock(i).getBinding());
 

@@ -187,7 +187,7 @@ std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usa
   return {};
 }
 
-// Fills the global uniform block: zero everywhere, then each named float at its reflected offset.
+// Fills the global uniform block: zero everywhere, then each named value at its reflected offset.
 std::string uniform_block_bytes(const SpirvProgram& program, const ComputeJob& job, std::vector<uint8_t>* bytes) {
   bytes->assign(std::max<uint32_t>(program.uniform_block_size, 16), 0);
   for (const auto& [name, value] : job.float_uniforms) {
@@ -197,33 +197,39 @@ std::string uniform_block_bytes(const SpirvProgram& program, const ComputeJob& j
     if (it->second.offset + sizeof(float) > bytes->size()) return "uniform '" + name + "' lies outside its block";
     std::memcpy(bytes->data() + it->second.offset, &value, sizeof(float));
   }
+  for (const auto& [name, values] : job.uniforms) {
+    auto it = program.uniforms.find(name);
+    if (it == program.uniforms.end()) continue;
+    const UniformSlot& slot = it->second;
+    if (slot.components == 0) return "uniform '" + name + "' is not a float/double scalar or vector";
+    if (static_cast<int>(values.size()) != slot.components)
+      return "uniform '" + name + "' has " + std::to_string(slot.components) + " component(s), job gives " +
+             std::to_string(values.size());
+    const size_t width = slot.is_double ? sizeof(double) : sizeof(float);
+    if (slot.offset + width * values.size() > bytes->size()) return "uniform '" + name + "' lies outside its block";
+    for (size_t c = 0; c < values.size(); ++c) {  // std140 vectors are tightly packed
+      uint8_t* dst = bytes->data() + slot.offset + c * width;
+      if (slot.is_double) std::memcpy(dst, &values[c], width);
+      else {
+        const float f = static_cast<float>(values[c]);
+        std::memcpy(dst, &f, width);
+      }
+    }
+  }
   return {};
 }
 
-std::string run_job(VulkanDevice& d, const SpirvProgram& program, const ComputeJob& job, ComputeResult* result) {
-  if (spirv_uses_float64(program.words) && !d.float64)
-    return "shader uses double (Float64) but " + d.name + " lacks shaderFloat64";
-  for (int b : program.ssbo_bindings)
-    if (b < 0 || static_cast<size_t>(b) >= job.buffers.size())
-      return "shader declares an SSBO at binding " + std::to_string(b) + " but the job has " +
-             std::to_string(job.buffers.size()) + " buffer(s)";
-  if (job.buffers.size() > d.limits.maxPerStageDescriptorStorageBuffers)
-    return "too many buffers for " + d.name;
-  const uint32_t* maxg = d.limits.maxComputeWorkGroupCount;
-  if (job.groups_x > maxg[0] || job.groups_y > maxg[1] || job.groups_z > maxg[2])
-    return "group count exceeds maxComputeWorkGroupCount";
-  std::vector<uint8_t> ubo_data;
-  if (std::string e = uniform_block_bytes(program, job, &ubo_data); !e.empty()) return e;
+// What every job of a batch shares: layouts, the pipeline, the command pool.
+struct Pipeline {
+  VkDescriptorSetLayout layouts[2] = {};
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkCommandPool cmd_pool = VK_NULL_HANDLE;
+  uint32_t buffer_count = 0;
+};
 
-  JobObjects objs(d.device);
-  const auto n = static_cast<uint32_t>(job.buffers.size());
-  std::vector<HostBuffer> ssbos(n);
-  for (uint32_t i = 0; i < n; ++i)
-    if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, job.buffers[i], &ssbos[i]); !e.empty())
-      return e;
-  HostBuffer ubo;
-  if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, ubo_data, &ubo); !e.empty()) return e;
-
+std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, uint32_t n, JobObjects& objs, Pipeline* p) {
+  p->buffer_count = n;
   // Set 0: SSBO i at binding i. Set kUniformSet: the global uniform block.
   static_assert(kUniformSet == 1 && kUniformBinding == 0, "layout below assumes set 1, binding 0");
   std::vector<VkDescriptorSetLayoutBinding> ssbo_bindings(n);
@@ -231,23 +237,77 @@ std::string run_job(VulkanDevice& d, const SpirvProgram& program, const ComputeJ
     ssbo_bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   VkDescriptorSetLayoutBinding ubo_binding{kUniformBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
                                            VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-  VkDescriptorSetLayout layouts[2];
   for (int s = 0; s < 2; ++s) {
     VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     lci.bindingCount = s == 0 ? n : 1;
     lci.pBindings = s == 0 ? ssbo_bindings.data() : &ubo_binding;
-    if (VkResult r = vkCreateDescriptorSetLayout(d.device, &lci, nullptr, &layouts[s]); r != VK_SUCCESS)
+    if (VkResult r = vkCreateDescriptorSetLayout(d.device, &lci, nullptr, &p->layouts[s]); r != VK_SUCCESS)
       return vk_failed("vkCreateDescriptorSetLayout", r);
-    VkDescriptorSetLayout l = layouts[s];
+    VkDescriptorSetLayout l = p->layouts[s];
     objs.cleanup.push_back([&d, l] { vkDestroyDescriptorSetLayout(d.device, l, nullptr); });
   }
   VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   plci.setLayoutCount = 2;
-  plci.pSetLayouts = layouts;
-  VkPipelineLayout pipeline_layout;
-  if (VkResult r = vkCreatePipelineLayout(d.device, &plci, nullptr, &pipeline_layout); r != VK_SUCCESS)
+  plci.pSetLayouts = p->layouts;
+  if (VkResult r = vkCreatePipelineLayout(d.device, &plci, nullptr, &p->layout); r != VK_SUCCESS)
     return vk_failed("vkCreatePipelineLayout", r);
+  VkPipelineLayout pipeline_layout = p->layout;
   objs.cleanup.push_back([&d, pipeline_layout] { vkDestroyPipelineLayout(d.device, pipeline_layout, nullptr); });
+
+  VkShaderModuleCreateInfo smci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  smci.codeSize = program.words.size() * sizeof(uint32_t);
+  smci.pCode = program.words.data();
+  VkShaderModule module;
+  if (VkResult r = vkCreateShaderModule(d.device, &smci, nullptr, &module); r != VK_SUCCESS)
+    return vk_failed("vkCreateShaderModule", r);
+  objs.cleanup.push_back([&d, module] { vkDestroyShaderModule(d.device, module, nullptr); });
+  VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  cpci.stage.module = module;
+  cpci.stage.pName = "main";
+  cpci.layout = pipeline_layout;
+  if (VkResult r = vkCreateComputePipelines(d.device, VK_NULL_HANDLE, 1, &cpci, nullptr, &p->pipeline); r != VK_SUCCESS)
+    return vk_failed("vkCreateComputePipelines", r);
+  VkPipeline pipeline = p->pipeline;
+  objs.cleanup.push_back([&d, pipeline] { vkDestroyPipeline(d.device, pipeline, nullptr); });
+
+  VkCommandPoolCreateInfo cpool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  cpool.queueFamilyIndex = d.queue_family;
+  if (VkResult r = vkCreateCommandPool(d.device, &cpool, nullptr, &p->cmd_pool); r != VK_SUCCESS)
+    return vk_failed("vkCreateCommandPool", r);
+  VkCommandPool cmd_pool = p->cmd_pool;
+  objs.cleanup.push_back([&d, cmd_pool] { vkDestroyCommandPool(d.device, cmd_pool, nullptr); });
+  return {};
+}
+
+std::string check_job(VulkanDevice& d, const SpirvProgram& program, const ComputeJob& job, uint32_t n) {
+  if (job.buffers.size() != n) return "every job of a batch must have the same number of buffers";
+  for (int b : program.ssbo_bindings)
+    if (b < 0 || static_cast<size_t>(b) >= job.buffers.size())
+      return "shader declares an SSBO at binding " + std::to_string(b) + " but the job has " +
+             std::to_string(job.buffers.size()) + " buffer(s)";
+  const uint32_t* maxg = d.limits.maxComputeWorkGroupCount;
+  if (job.groups_x > maxg[0] || job.groups_y > maxg[1] || job.groups_z > maxg[2])
+    return "group count exceeds maxComputeWorkGroupCount";
+  return {};
+}
+
+// One dispatch with the job's buffers and uniforms; its objects die with the call.
+std::string dispatch(VulkanDevice& d, const SpirvProgram& program, const Pipeline& p, const ComputeJob& job,
+                     ComputeResult* result) {
+  const uint32_t n = p.buffer_count;
+  if (std::string e = check_job(d, program, job, n); !e.empty()) return e;
+  std::vector<uint8_t> ubo_data;
+  if (std::string e = uniform_block_bytes(program, job, &ubo_data); !e.empty()) return e;
+
+  JobObjects objs(d.device);
+  std::vector<HostBuffer> ssbos(n);
+  for (uint32_t i = 0; i < n; ++i)
+    if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, job.buffers[i], &ssbos[i]); !e.empty())
+      return e;
+  HostBuffer ubo;
+  if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, ubo_data, &ubo); !e.empty()) return e;
 
   std::vector<VkDescriptorPoolSize> pool_sizes{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}};
   if (n) pool_sizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, n});
@@ -262,7 +322,7 @@ std::string run_job(VulkanDevice& d, const SpirvProgram& program, const ComputeJ
   VkDescriptorSetAllocateInfo dsai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   dsai.descriptorPool = pool;
   dsai.descriptorSetCount = 2;
-  dsai.pSetLayouts = layouts;
+  dsai.pSetLayouts = p.layouts;
   VkDescriptorSet sets[2];
   if (VkResult r = vkAllocateDescriptorSets(d.device, &dsai, sets); r != VK_SUCCESS)
     return vk_failed("vkAllocateDescriptorSets", r);
@@ -281,43 +341,21 @@ std::string run_job(VulkanDevice& d, const SpirvProgram& program, const ComputeJ
   }
   vkUpdateDescriptorSets(d.device, n + 1, writes.data(), 0, nullptr);
 
-  VkShaderModuleCreateInfo smci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  smci.codeSize = program.words.size() * sizeof(uint32_t);
-  smci.pCode = program.words.data();
-  VkShaderModule module;
-  if (VkResult r = vkCreateShaderModule(d.device, &smci, nullptr, &module); r != VK_SUCCESS)
-    return vk_failed("vkCreateShaderModule", r);
-  objs.cleanup.push_back([&d, module] { vkDestroyShaderModule(d.device, module, nullptr); });
-  VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  cpci.stage.module = module;
-  cpci.stage.pName = "main";
-  cpci.layout = pipeline_layout;
-  VkPipeline pipeline;
-  if (VkResult r = vkCreateComputePipelines(d.device, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline); r != VK_SUCCESS)
-    return vk_failed("vkCreateComputePipelines", r);
-  objs.cleanup.push_back([&d, pipeline] { vkDestroyPipeline(d.device, pipeline, nullptr); });
-
-  VkCommandPoolCreateInfo cpool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  cpool.queueFamilyIndex = d.queue_family;
-  VkCommandPool cmd_pool;
-  if (VkResult r = vkCreateCommandPool(d.device, &cpool, nullptr, &cmd_pool); r != VK_SUCCESS)
-    return vk_failed("vkCreateCommandPool", r);
-  objs.cleanup.push_back([&d, cmd_pool] { vkDestroyCommandPool(d.device, cmd_pool, nullptr); });
   VkCommandBufferAllocateInfo cbai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  cbai.commandPool = cmd_pool;
+  cbai.commandPool = p.cmd_pool;
   cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   cbai.commandBufferCount = 1;
   VkCommandBuffer cmd;
   if (VkResult r = vkAllocateCommandBuffers(d.device, &cbai, &cmd); r != VK_SUCCESS)
     return vk_failed("vkAllocateCommandBuffers", r);
+  VkCommandPool cmd_pool = p.cmd_pool;
+  objs.cleanup.push_back([&d, cmd_pool, cmd] { vkFreeCommandBuffers(d.device, cmd_pool, 1, &cmd); });
 
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vkBeginCommandBuffer(cmd, &begin);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout, 0, 2, sets, 0, nullptr);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, 0, 2, sets, 0, nullptr);
   vkCmdDispatch(cmd, job.groups_x, job.groups_y, job.groups_z);
   // Make shader writes visible to the host mapping we read back from.
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -341,8 +379,8 @@ std::string run_job(VulkanDevice& d, const SpirvProgram& program, const ComputeJ
   }
   result->buffers.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
-    const auto* p = static_cast<const uint8_t*>(ssbos[i].mapped);
-    result->buffers[i].assign(p, p + job.buffers[i].size());
+    const auto* bytes = static_cast<const uint8_t*>(ssbos[i].mapped);
+    result->buffers[i].assign(bytes, bytes + job.buffers[i].size());
   }
   return {};
 }
@@ -351,19 +389,34 @@ std::string run_job(VulkanDevice& d, const SpirvProgram& program, const ComputeJ
 
 std::string vulkan_unavailable_reason() { return shared_device().error; }
 
-ComputeResult vulkan_run(const SpirvProgram& program, const ComputeJob& job) {
-  ComputeResult result;
+std::vector<ComputeResult> vulkan_run(const SpirvProgram& program, const std::vector<ComputeJob>& jobs) {
   VulkanDevice& d = shared_device();
-  result.device = d.name;
-  if (!d.error.empty()) {
-    result.error = "Vulkan unavailable: " + d.error;
-    return result;
-  }
+  std::vector<ComputeResult> results;
+  auto fail = [&](std::string error) {
+    results.emplace_back();
+    results.back().device = d.name;
+    results.back().error = std::move(error);
+    return results;
+  };
+  if (!d.error.empty()) return fail("Vulkan unavailable: " + d.error);
+  if (spirv_uses_float64(program.words) && !d.float64)
+    return fail("shader uses double (Float64) but " + d.name + " lacks shaderFloat64");
+  const auto n = static_cast<uint32_t>(jobs[0].buffers.size());
+  if (n > d.limits.maxPerStageDescriptorStorageBuffers) return fail("too many buffers for " + d.name);
   std::lock_guard<std::mutex> lock(d.mu);
-  result.error = run_job(d, program, job, &result);
-  result.ok = result.error.empty();
-  if (!result.ok) result.buffers.clear();
-  return result;
+  JobObjects shared(d.device);
+  Pipeline pipeline;
+  if (std::string e = make_pipeline(d, program, n, shared, &pipeline); !e.empty()) return fail(e);
+  for (const ComputeJob& job : jobs) {
+    ComputeResult result;
+    result.device = d.name;
+    result.error = dispatch(d, program, pipeline, job, &result);
+    result.ok = result.error.empty();
+    if (!result.ok) result.buffers.clear();
+    results.push_back(std::move(result));
+    if (!results.back().ok) break;
+  }
+  return results;
 }
 
 }  // namespace doublet::runner::detail
