@@ -1,0 +1,41 @@
+#include "api/big_stack.hpp"
+
+#include <pthread.h>
+
+#include <string_view>
+
+namespace doublet {
+namespace {
+void* trampoline(void* arg) {
+  (*static_cast<const std::function<void()>*>(arg))();
+  return nullptr;
+}
+}  // namespace
+
+bool run_with_big_stack(const std::function<void()>& work, std::size_t stack_bytes) {
+  pthread_attr_t attr;
+  if (pthread_attr_init(&attr) != 0) return false;
+  pthread_t thread;
+  bool started = pthread_attr_setstacksize(&attr, stack_bytes) == 0 &&
+                 pthread_create(&thread, &attr, trampoline, const_cast<std::function<void()>*>(&work)) == 0;
+  pthread_attr_destroy(&attr);
+  if (started) pthread_join(thread, nullptr);
+  return started;
+}
+
+std::size_t max_statement_operators(std::string_view source) {
+  std::size_t best = 0, current = 0;
+  for (char c : source) {
+    switch (c) {
+      case ';': case '{': case '}': current = 0; break;
+      case '+': case '-': case '*': case '/': case '%': case '(': case '[': case '?': case '&': case '|':
+      case '^': case '<': case '>': case '=': case '!': case ',': case '.':
+        if (++current > best) best = current;
+        break;
+      default: break;
+    }
+  }
+  return best;
+}
+
+}  // namespace doublet
