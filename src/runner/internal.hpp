@@ -26,7 +26,8 @@ struct SpirvProgram {
 };
 
 // glslang compile + link + IO mapping + reflection + SPIRV-Tools validation.
-bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error);
+// When `iface` is set it also receives the reflected interface.
+bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface = nullptr);
 
 // True if the module declares OpCapability Float64.
 bool spirv_uses_float64(const std::vector<uint32_t>& words);

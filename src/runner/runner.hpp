@@ -57,6 +57,37 @@ ComputeResult run_spirv_compute(const std::vector<uint32_t>& spirv, const Comput
 // *error (compile/link log, or "invalid SPIR-V: ...") on failure.
 bool compile_compute_to_spirv(const std::string& glsl, std::vector<uint32_t>* spirv, std::string* error);
 
+// The numeric interface of a compute shader as glslang reflects it (active variables only; names as
+// the shader spells them, without a trailing "[0]"). `doublet verify` feeds and reads shaders with it.
+struct ShaderInterface {
+  struct Uniform {
+    std::string name;
+    bool is_double = false;
+    int components = 0;  // 1..4 for float/double scalars and vectors, 0 for other types
+  };
+  struct Block {
+    std::string name;
+    int binding = -1;
+    bool readonly = false, writeonly = false;
+    uint32_t fixed_size = 0;  // bytes before a trailing runtime-sized array
+  };
+  struct Member {
+    std::string name;
+    int block = -1;           // index into blocks
+    uint32_t offset = 0;      // std430 byte offset in the block
+    bool is_double = false;
+    int components = 0;       // 1..4 for float/double scalars and vectors, 0 for other types
+    uint32_t array_size = 1;  // elements; 0 for a runtime-sized array
+    uint32_t array_stride = 0;
+  };
+  uint32_t local_size[3] = {1, 1, 1};
+  std::vector<Uniform> uniforms;
+  std::vector<Block> blocks;
+  std::vector<Member> members;
+};
+// Compiles like the Vulkan backend (so "#version 450" with doubles works) and reflects.
+bool reflect_compute(const std::string& glsl, ShaderInterface* out, std::string* error);
+
 // SPIRV-Tools validation for the Vulkan 1.1 environment. Empty when valid, else the messages.
 std::string validate_spirv(const std::vector<uint32_t>& spirv);
 

@@ -1,9 +1,11 @@
 // GLSL → SPIR-V with glslang, plus SPIRV-Tools validation, for the Vulkan backend.
+#include <glslang/Include/Types.h>  // TType qualifiers for readonly/writeonly blocks
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <spirv-tools/libspirv.hpp>
 
+#include <algorithm>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -47,7 +49,47 @@ std::mutex& glslang_mutex() {
 
 }  // namespace
 
-bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error) {
+namespace {
+
+std::string strip_array_suffix(std::string name) {
+  if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0) name.resize(name.size() - 3);
+  return name;
+}
+
+void reflect(const glslang::TProgram& program, ShaderInterface* iface) {
+  for (int d = 0; d < 3; ++d) iface->local_size[d] = program.getLocalSize(d);
+  for (int i = 0; i < program.getNumUniformVariables(); ++i) {
+    const glslang::TObjectReflection& u = program.getUniform(i);
+    ShaderInterface::Uniform out{u.name};
+    if (u.size == 1) out.components = float_components(u.glDefineType, &out.is_double);
+    iface->uniforms.push_back(out);
+  }
+  for (int i = 0; i < program.getNumBufferBlocks(); ++i) {
+    const glslang::TObjectReflection& b = program.getBufferBlock(i);
+    ShaderInterface::Block out{b.name, b.getBinding()};
+    if (const glslang::TType* t = b.getType()) {
+      out.readonly = t->getQualifier().readonly;
+      out.writeonly = t->getQualifier().writeonly;
+    }
+    out.fixed_size = static_cast<uint32_t>(std::max(b.size, 0));
+    iface->blocks.push_back(out);
+  }
+  for (int i = 0; i < program.getNumBufferVariables(); ++i) {
+    const glslang::TObjectReflection& v = program.getBufferVariable(i);
+    ShaderInterface::Member m{strip_array_suffix(v.name), v.index, static_cast<uint32_t>(v.offset)};
+    m.components = float_components(v.glDefineType, &m.is_double);
+    const glslang::TType* t = v.getType();
+    if (t && t->isArray()) {
+      m.array_size = t->isUnsizedArray() ? 0 : static_cast<uint32_t>(t->getOuterArraySize());
+      m.array_stride = static_cast<uint32_t>(v.arrayStride > 0 ? v.arrayStride : v.topLevelArrayStride);
+    }
+    iface->members.push_back(m);
+  }
+}
+
+}  // namespace
+
+bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface) {
   std::lock_guard<std::mutex> lock(glslang_mutex());
   const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
 
@@ -84,6 +126,7 @@ bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error
   }
 
   SpirvProgram result;
+  if (iface) reflect(program, iface);
   for (int i = 0; i < program.getNumUniformBlocks(); ++i) {
     const glslang::TObjectReflection& block = program.getUniformBlock(i);
     if (block.name != kGlobalBlockName) {
@@ -143,6 +186,12 @@ std::string validate_spirv(const std::vector<uint32_t>& spirv) {
   if (tools.Validate(spirv)) return {};
   std::string text = messages.str();
   return text.empty() ? "validator rejected the module without a message" : text;
+}
+
+bool reflect_compute(const std::string& glsl, ShaderInterface* out, std::string* error) {
+  detail::SpirvProgram program;
+  *out = ShaderInterface{};
+  return detail::compile_glsl(glsl, &program, error, out);
 }
 
 bool compile_compute_to_spirv(const std::string& glsl, std::vector<uint32_t>* spirv, std::string* error) {
