@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -308,11 +309,36 @@ class Printer {
     return s + ")";
   }
 
-  std::string operand(const ir::ExprPtr& e) {
+  // GLSL precedence, highest binds tightest (GLSL ES 3.00 §5.1):
+  // primary 17, postfix 16, prefix 15, * / % 14 … || 4, ?: 3, assignment 2, comma 1.
+  static int precedence(const Expr& e) {
+    switch (e.kind) {
+      case Expr::Kind::Comma: return 1;
+      case Expr::Kind::Ternary: return 3;
+      case Expr::Kind::Unary: return e.op == "x++" || e.op == "x--" ? 16 : 15;
+      case Expr::Kind::Const:  // a negative scalar literal prints as a prefix minus
+        return !e.values.empty() && e.values[0].d < 0 && e.type.vec == 1 && !e.type.is_array() ? 15 : 17;
+      case Expr::Kind::Binary: {
+        static const std::map<std::string, int> table{
+            {"*", 14}, {"/", 14}, {"%", 14}, {"+", 13}, {"-", 13}, {"<<", 12}, {">>", 12}, {"<", 11}, {">", 11},
+            {"<=", 11}, {">=", 11}, {"==", 10}, {"!=", 10}, {"&", 9}, {"^", 8}, {"|", 7}, {"&&", 6}, {"^^", 5}, {"||", 4}};
+        auto it = table.find(e.op);
+        return it == table.end() ? 2 : it->second;  // not in the table: an assignment
+      }
+      default: return 17;
+    }
+  }
+
+  // `e` printed as an operand of an operator of precedence `parent`;
+  // `tie_needs_parens` for the side where equal precedence changes meaning.
+  std::string operand(const ir::ExprPtr& e, int parent, bool tie_needs_parens = true, bool parent_binary = false) {
     std::string s = expr(e);
-    bool compound = e->kind == Expr::Kind::Binary || e->kind == Expr::Kind::Ternary || e->kind == Expr::Kind::Comma ||
-                    e->kind == Expr::Kind::Unary || (e->kind == Expr::Kind::Const && !s.empty() && s[0] == '-');
-    return compound ? "(" + s + ")" : s;
+    int p = precedence(*e);
+    bool parens = p < parent || (p == parent && tie_needs_parens);
+    // For the reader: group mixed operators unless both are arithmetic (a*b + c stays).
+    if (parent_binary && e->kind == Expr::Kind::Binary && p != parent && p > 2 && !(p >= 13 && parent >= 13))
+      parens = true;
+    return parens ? "(" + s + ")" : s;
   }
 
   std::string call(const std::string& name, const std::vector<ir::ExprPtr>& args) {
@@ -344,17 +370,22 @@ class Printer {
       case Expr::Kind::Const: return constant(*e);
       case Expr::Kind::Unary: {
         const std::string& op = e->op;
-        if (op == "x++" || op == "x--") return operand(e->args[0]) + op.substr(1);
-        if (op == "++x" || op == "--x") return op.substr(0, 2) + operand(e->args[0]);
-        return op + operand(e->args[0]);
+        if (op == "x++" || op == "x--") return operand(e->args[0], 16) + op.substr(1);
+        if (op == "++x" || op == "--x") return op.substr(0, 2) + operand(e->args[0], 15);
+        return op + operand(e->args[0], 15);  // `-(-x)`, never `--x`
       }
-      case Expr::Kind::Binary: return operand(e->args[0]) + " " + e->op + " " + operand(e->args[1]);
+      case Expr::Kind::Binary: {
+        int p = precedence(*e);
+        bool assignment = p == 2;  // right-associative; the others are left-associative
+        return operand(e->args[0], p, assignment, !assignment) + " " + e->op + " " +
+               operand(e->args[1], p, !assignment, !assignment);
+      }
       case Expr::Kind::Ternary:
-        return operand(e->args[0]) + " ? " + operand(e->args[1]) + " : " + operand(e->args[2]);
+        return operand(e->args[0], 4, false) + " ? " + operand(e->args[1], 4, false) + " : " + operand(e->args[2], 4, false);
       case Expr::Kind::Call: return call(e->name, e->args);
       case Expr::Kind::Builtin: return call(builtin_name(*e), e->args);
       case Expr::Kind::Construct: return call(ir::type_name(e->type) + ir::array_suffix(e->type), e->args);
-      case Expr::Kind::Member: return operand(e->args[0]) + "." + e->name;
+      case Expr::Kind::Member: return operand(e->args[0], 17, false) + "." + e->name;
       case Expr::Kind::Index: {
         // glslang turns `.y` into `[1]`; give vectors their swizzle back.
         const ir::Type& base = e->args[0]->type;
@@ -362,12 +393,12 @@ class Printer {
         if (!base.is_array() && !base.is_matrix() && base.vec > 1 && base.name.empty() &&
             index->kind == Expr::Kind::Const && index->values.size() == 1 && index->values[0].i >= 0 &&
             index->values[0].i < 4)
-          return operand(e->args[0]) + "." + "xyzw"[index->values[0].i];
-        return operand(e->args[0]) + "[" + expr(index) + "]";
+          return operand(e->args[0], 17, false) + "." + "xyzw"[index->values[0].i];
+        return operand(e->args[0], 17, false) + "[" + expr(index) + "]";
       }
       case Expr::Kind::Comma: {
         std::string s;
-        for (size_t i = 0; i < e->args.size(); ++i) s += (i ? ", " : "") + operand(e->args[i]);
+        for (size_t i = 0; i < e->args.size(); ++i) s += (i ? ", " : "") + operand(e->args[i], 2);
         return s;
       }
     }

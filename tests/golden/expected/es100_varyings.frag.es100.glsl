@@ -167,5 +167,5 @@ void main()
 {
   zoom = df_double(zoom_hi, zoom_lo);
   df_double u = df_mul(df_from_float(v_uv.x), zoom);
-  gl_FragColor = (texture2D(tex, v_uv) * df_to_float(df_sub(u, df_from_float(floor(df_to_float(u))))));
+  gl_FragColor = texture2D(tex, v_uv) * df_to_float(df_sub(u, df_from_float(floor(df_to_float(u)))));
 }

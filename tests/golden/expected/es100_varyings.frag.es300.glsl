@@ -168,5 +168,5 @@ void main()
 {
   zoom = df_double(zoom_hi, zoom_lo);
   df_double u = df_mul(df_from_float(v_uv.x), zoom);
-  df_frag_color = (texture(tex, v_uv) * df_to_float(df_sub(u, df_from_float(floor(df_to_float(u))))));
+  df_frag_color = texture(tex, v_uv) * df_to_float(df_sub(u, df_from_float(floor(df_to_float(u)))));
 }

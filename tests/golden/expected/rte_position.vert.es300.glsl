@@ -100,5 +100,5 @@ void main()
 {
   position = df_dvec3(position_hi, position_lo);
   eye = df_dvec3(eye_hi, eye_lo);
-  gl_Position = (viewProj * vec4(df_to_float(df_sub(position, eye)), 1.0));
+  gl_Position = viewProj * vec4(df_to_float(df_sub(position, eye)), 1.0);
 }
