@@ -30,5 +30,6 @@ struct Command {
 int usage_error(const CLI::App& command, std::string_view message);
 
 Command add_lower_command(CLI::App& app);
+Command add_verify_command(CLI::App& app);  // verify_command.cpp
 
 }  // namespace doublet::cli

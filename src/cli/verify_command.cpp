@@ -1,0 +1,118 @@
+// `doublet verify SHADER ...`: run the shader natively in fp64 and lowered on real drivers and
+// report per-output accuracy (docs/verify.md). The work is doublet::verify::verify(); this file
+// only turns the command line into VerifyOptions and the report into output and an exit code.
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+
+#include "atomic_file.hpp"
+#include "commands.hpp"
+#include "verify/report.hpp"
+#include "verify/verify.hpp"
+
+namespace doublet::cli {
+namespace {
+
+struct VerifyArgs {
+  std::string shader, stage, target = "es310", backend = "both", sabotage = "none";
+  std::string spec, json;
+  std::vector<std::string> ranges, defines, include_dirs;
+  uint64_t samples = 1024, seed = 1;
+  std::optional<double> min_bits;
+};
+
+// Exit codes of verify (docs/verify.md): 1 = accuracy below --min-bits; 3 = a driver failed.
+constexpr int kExitBelowMinBits = 1;
+constexpr int kExitDriver = 3;
+
+int input_error(const std::string& message) {
+  std::cerr << "doublet verify: error: " << message << "\n";
+  return kExitInput;
+}
+
+bool read_file(const std::string& path, std::string* out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  *out = ss.str();
+  return true;
+}
+
+int run_verify(const VerifyArgs& a) {
+  verify::VerifyOptions o;
+  o.lower.file_name = a.shader;
+  o.lower.stage = a.stage.empty() ? stage_from_path(a.shader) : parse_stage(a.stage);
+  if (!o.lower.stage) return input_error("cannot tell the stage of '" + a.shader + "': use -S vert|frag|comp");
+  const std::optional<Target> target = parse_target(a.target);
+  if (!target) return input_error("unknown target '" + a.target + "'");
+  o.lower.target = *target;
+  for (const std::string& d : a.defines) {
+    const size_t eq = d.find('=');
+    o.lower.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
+  }
+  o.lower.include_dirs = a.include_dirs;
+  o.samples = a.samples;
+  o.seed = a.seed;
+  o.min_bits = a.min_bits;
+  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
+  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
+  const std::optional<verify::Sabotage> sabotage = verify::parse_sabotage(a.sabotage);
+  o.sabotage = sabotage.value_or(verify::Sabotage::None);
+  if (!a.spec.empty()) {
+    std::string text;
+    if (!read_file(a.spec, &text)) return input_error("cannot read spec '" + a.spec + "'");
+    if (std::string e = verify::parse_spec(text, &o.spec); !e.empty()) return input_error(a.spec + ": " + e);
+  }
+  for (const std::string& r : a.ranges) {
+    std::string name;
+    verify::InputSpec in;
+    if (std::string e = verify::parse_range(r, &name, &in); !e.empty()) return input_error("--range: " + e);
+    o.spec.inputs[name].lo = in.lo;
+    o.spec.inputs[name].hi = in.hi;
+  }
+  std::string source;
+  if (!read_file(a.shader, &source)) return input_error("cannot read '" + a.shader + "'");
+
+  const verify::VerifyReport report = verify::verify(source, o);
+  const bool json_to_stdout = a.json == "-";
+  (json_to_stdout ? std::cerr : std::cout) << verify::format_table(report);
+  if (json_to_stdout) std::cout << verify::to_json(report);
+  else if (!a.json.empty()) {
+    AtomicFile file;
+    if (!file.prepare(a.json, verify::to_json(report)) || !file.commit())
+      return input_error("cannot write '" + a.json + "': " + file.error());
+  }
+  if (!report.input_error.empty()) return kExitInput;
+  if (report.driver_failed()) return kExitDriver;
+  return report.passed() ? kExitOk : kExitBelowMinBits;
+}
+
+}  // namespace
+
+Command add_verify_command(CLI::App& app) {
+  auto args = std::make_shared<VerifyArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "verify", "Run SHADER natively (fp64, lavapipe) and lowered (lavapipe / Mesa GLES); report accuracy per output");
+  cmd->add_option("SHADER", args->shader, "shader file (.comp)")->required();
+  cmd->add_option("-S", args->stage, "stage: vert|frag|comp (default: from the extension)");
+  cmd->add_option("--target", args->target, "target of the lowering (default es310)");
+  cmd->add_option("--samples", args->samples, "input sets (default 1024)")->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", args->seed, "random seed (default 1)");
+  cmd->add_option("--range", args->ranges, "NAME=LO:HI input range (repeatable)");
+  cmd->add_option("--spec", args->spec, "JSON spec: input values/ranges, output thresholds (docs/verify.md)");
+  cmd->add_option("--json", args->json, "write the report as JSON to this file ('-': stdout)");
+  cmd->add_option("--min-bits", args->min_bits, "exit 1 when any output keeps fewer correct bits");
+  cmd->add_option("--backend", args->backend, "vulkan|gles|both (default both)")
+      ->check(CLI::IsMember({"vulkan", "gles", "both"}));
+  cmd->add_option("--sabotage", args->sabotage, "drop-lo|drop-guard: break the lowering on purpose")
+      ->check(CLI::IsMember({"none", "drop-lo", "drop-guard"}));
+  cmd->add_option("-D", args->defines, "NAME[=VALUE] preprocessor define");
+  cmd->add_option("-I", args->include_dirs, "include directory");
+  cmd->footer("Exit status: 0 pass, 1 an output below its min bits, 2 input error, 3 driver failure.");
+  return Command{cmd, [args] { return run_verify(*args); }};
+}
+
+}  // namespace doublet::cli

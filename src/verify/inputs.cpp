@@ -1,0 +1,33 @@
+#include "verify/inputs.hpp"
+
+#include <cmath>
+
+#include "doublet/split.hpp"
+
+namespace doublet::verify {
+
+double representable(double x, bool is_double) {
+  return is_double ? join(split(x)) : static_cast<double>(static_cast<float>(x));
+}
+
+double InputGenerator::draw(const InputSpec& spec) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double lo = spec.lo.value_or(0x1p-20), hi = spec.hi.value_or(0x1p20);
+  if (!spec.lo) {  // default: magnitude log-uniform in [lo, hi], random sign
+    const double m = std::exp2(std::log2(lo) + unit(rng_) * (std::log2(hi) - std::log2(lo)));
+    return unit(rng_) < 0.5 ? -m : m;
+  }
+  if (lo > 0 || hi < 0) {
+    const double a = std::fabs(lo), b = std::fabs(hi);
+    const double m = std::exp2(std::log2(a) + unit(rng_) * (std::log2(b) - std::log2(a)));
+    return hi < 0 ? -m : m;
+  }
+  return lo + unit(rng_) * (hi - lo);
+}
+
+double InputGenerator::next(const InputSpec& spec, bool is_double, uint64_t index) {
+  const double x = spec.values.empty() ? draw(spec) : spec.values[index % spec.values.size()];
+  return representable(x, is_double);
+}
+
+}  // namespace doublet::verify

@@ -1,0 +1,30 @@
+// Input values for verify runs. Default: log-uniform magnitudes in [2^-20, 2^20] with random signs.
+// A range [LO, HI] with 0 < LO is log-uniform and positive, with HI < 0 log-uniform and negative;
+// one that contains 0 is uniform (linear). Exact values (spec "values") are cycled.
+// Every value is rounded to what both shaders can receive: a float-float pair (hi + lo) for a
+// double input, a float for a float input, so the native and the lowered shader see the same
+// numbers and the measured error is the arithmetic's (NUMERICS.md: separate representation loss).
+#pragma once
+
+#include <cstdint>
+#include <random>
+
+#include "verify/spec.hpp"
+
+namespace doublet::verify {
+
+class InputGenerator {
+ public:
+  explicit InputGenerator(uint64_t seed) : rng_(seed) {}
+  // Value number `index` of a variable (index counts samples × components, for cycling "values").
+  double next(const InputSpec& spec, bool is_double, uint64_t index);
+
+ private:
+  double draw(const InputSpec& spec);
+  std::mt19937_64 rng_;
+};
+
+// The value a double input keeps after the hi/lo split (or a float input after rounding).
+double representable(double x, bool is_double);
+
+}  // namespace doublet::verify

@@ -1,0 +1,52 @@
+// Error statistics of one output component: lowered result `got` against native fp64 `want`.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace doublet::verify {
+
+// Correct bits are capped here: the comparison cannot resolve more than fp64 gives.
+inline constexpr double kMaxBits = 60.0;
+
+// NaN, +-Inf, +-0 or an ordinary finite value.
+enum class ValueClass { Nan, PosInf, NegInf, PosZero, NegZero, Finite };
+ValueClass classify(double x);
+
+struct OutputStats {
+  std::string name;      // "r[].x", "result.y", "values[].xy (hi+lo)"
+  std::string type;      // "double", "float", "float hi+lo"
+  uint64_t samples = 0;
+  double max_rel_err = 0, p99_rel_err = 0, median_rel_err = 0, max_abs_err = 0;
+  double min_bits = kMaxBits, p1_bits = kMaxBits;
+  uint64_t class_mismatches = 0;  // samples whose got/want differ in class (a ±0 sign counts too)
+  uint64_t worst_sample = 0;      // sample index of min_bits
+  double worst_got = 0, worst_want = 0;
+  std::string worst_input;        // filled by the caller from worst_sample
+  double abs_floor = 0;
+  double min_bits_required = -1;  // < 0: no requirement
+  bool passed() const { return min_bits_required < 0 || min_bits >= min_bits_required; }
+};
+
+// Accumulates samples, then computes the order statistics once.
+class StatsBuilder {
+ public:
+  StatsBuilder(std::string name, std::string type, double abs_floor);
+  void add(double got, double want, uint64_t sample);
+  OutputStats finish();
+
+ private:
+  OutputStats stats_;
+  std::vector<double> rel_;   // per sample
+  std::vector<double> bits_;  // per sample
+};
+
+// -log2(relative error), with |want| below abs_floor measured as |got - want| / abs_floor; a NaN/Inf
+// class mismatch scores 0, an exact match kMaxBits.
+double correct_bits(double got, double want, double abs_floor, double* rel_err);
+
+std::string hex(double x);  // "%a" spelling, what the report prints for worst inputs
+
+}  // namespace doublet::verify

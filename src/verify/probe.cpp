@@ -1,0 +1,75 @@
+#include "verify/probe.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace doublet::verify {
+namespace {
+
+// Inputs come from a buffer so the compiler cannot fold them. Every invocation writes
+// (two_sum e, fma error, denormal) for its pair; the host checks against IEEE float arithmetic.
+constexpr const char* kProbeShader = R"(#version 320 es
+layout(local_size_x = 16) in;
+layout(std430, binding = 0) readonly buffer In { vec4 abd[]; };
+layout(std430, binding = 1) writeonly buffer Out { vec4 r[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  float a = abd[i].x, b = abd[i].y, d = abd[i].z;
+  float s = a + b;
+  float bb = s - a;
+  float e = (a - (s - bb)) + (b - bb);
+  precise float p = a * b;
+  precise float f = fma(a, b, -p);
+  r[i] = vec4(s, e, f, d * 0.5);
+}
+)";
+constexpr int kPairs = 64;
+
+}  // namespace
+
+Probe probe_compute(runner::Backend backend) {
+  Probe probe;
+  std::vector<float> in(4 * kPairs);
+  for (int i = 0; i < kPairs; ++i) {
+    // a = 1 + k·2^-12, b = a shifted: TwoSum and TwoProd errors are all non-zero.
+    const float a = 1.0f + static_cast<float>(i + 1) * 0x1p-12f;
+    in[4 * i] = a;
+    in[4 * i + 1] = a * 0x1p-20f;
+    in[4 * i + 2] = 0x1p-126f;  // FLT_MIN: half of it is a denormal
+  }
+  runner::ComputeJob job;
+  job.glsl = kProbeShader;
+  job.buffers = {std::vector<uint8_t>(in.size() * 4), std::vector<uint8_t>(in.size() * 4)};
+  std::memcpy(job.buffers[0].data(), in.data(), job.buffers[0].size());
+  job.groups_x = kPairs / 16;
+  const runner::ComputeResult r = runner::run_compute(backend, job);
+  if (!r.ok) {
+    probe.error = r.error;
+    return probe;
+  }
+  std::vector<float> out(4 * kPairs);
+  std::memcpy(out.data(), r.buffers[1].data(), r.buffers[1].size());
+  bool two_sum = true, fused = true, flushed = true;
+  for (int i = 0; i < kPairs; ++i) {
+    const float a = in[4 * i], b = in[4 * i + 1];
+    const float s = a + b, bb = s - a, e = (a - (s - bb)) + (b - bb);
+    const double exact_prod_err = static_cast<double>(a) * b - static_cast<double>(a * b);
+    two_sum &= out[4 * i + 1] == e;
+    fused &= static_cast<double>(out[4 * i + 2]) == exact_prod_err;
+    flushed &= out[4 * i + 3] == 0.0f;
+  }
+  probe.two_sum_survives = two_sum;
+  probe.fma_fused = fused;
+  probe.denormals_flushed = flushed;
+  return probe;
+}
+
+std::string describe(const Probe& p) {
+  if (!p.error.empty()) return "probe failed: " + p.error;
+  return std::string("stage ") + p.stage + ": unprotected TwoSum " +
+         (p.two_sum_survives ? "survives" : "DELETED (error term folded to 0)") + "; fma " +
+         (p.fma_fused ? "fused" : "NOT fused") + "; fp32 denormals " + (p.denormals_flushed ? "FLUSHED" : "kept");
+}
+
+}  // namespace doublet::verify
