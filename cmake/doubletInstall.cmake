@@ -49,5 +49,7 @@ install(FILES
 
 # pkg-config: `pkg-config --cflags --libs doublet` links libdoublet.so; with --static, the
 # static archive and glslang's archives.
+file(RELATIVE_PATH DOUBLET_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+string(REGEX REPLACE "/$" "" DOUBLET_PC_TO_PREFIX "${DOUBLET_PC_TO_PREFIX}")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/doublet.pc.in ${PROJECT_BINARY_DIR}/package/doublet.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/package/doublet.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -4,7 +4,7 @@
 # (and rebuilds the program embedding them); a build with nothing changed does nothing.
 # Usage: cmake_consumer_test.sh SOURCE_DIR PREFIX WORK_DIR
 set -euo pipefail
-src=$1 prefix=$2 work=$3
+src=$(cd "$1" && pwd) prefix=$(cd "$2" && pwd) work=$3
 rm -rf "$work" && mkdir -p "$work"
 cp -r "$src/examples/cmake-consumer" "$work/project"   # a copy: the test edits its files
 build=$work/build

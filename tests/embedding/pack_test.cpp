@@ -91,7 +91,7 @@ TEST(Pack, VertexLayoutInterleavesHiLoAndFloats) {
   ASSERT_EQ(vbo.size(), 16u);
   for (int v = 0; v < 2; ++v) {
     for (int c = 0; c < 3; ++c)
-      EXPECT_EQ(doublet::join(vbo[8 * v + c], vbo[8 * v + 3 + c]), positions[3 * v + c]);
+      EXPECT_EQ(doublet::join(vbo[8 * v + c], vbo[8 * v + 3 + c]), doublet::join(doublet::split(positions[3 * v + c])));
     EXPECT_EQ(vbo[8 * v + 6], static_cast<float>(uvs[2 * v]));
     EXPECT_EQ(vbo[8 * v + 7], static_cast<float>(uvs[2 * v + 1]));
   }
