@@ -69,3 +69,73 @@ bool df_equal($DF a, $DF b) {
 bool df_not_equal($DF a, $DF b) {
   return a.hi != b.hi || a.lo != b.lo;
 }
+
+// df_less_than: lessThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// @widths 1 2 3 4
+// @per-component
+// @uses df_lt:1
+$B df_less_than($DF a, $DF b) {
+  return df_lt(a, b);
+}
+
+// df_less_than_equal: lessThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// @widths 1 2 3 4
+// @per-component
+// @uses df_le:1
+$B df_less_than_equal($DF a, $DF b) {
+  return df_le(a, b);
+}
+
+// df_greater_than: greaterThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// @widths 1 2 3 4
+// @per-component
+// @uses df_gt:1
+$B df_greater_than($DF a, $DF b) {
+  return df_gt(a, b);
+}
+
+// df_greater_than_equal: greaterThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// @widths 1 2 3 4
+// @per-component
+// @uses df_ge:1
+$B df_greater_than_equal($DF a, $DF b) {
+  return df_ge(a, b);
+}
+
+// df_equal_components: equal(a, b) per component (word-wise).
+// Algorithm: word-wise equality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+// @widths 1 2 3 4
+// @per-component
+$B df_equal_components($DF a, $DF b) {
+  return a.hi == b.hi && a.lo == b.lo;
+}
+
+// df_not_equal_components: notEqual(a, b) per component (word-wise).
+// Algorithm: word-wise inequality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+// @widths 1 2 3 4
+// @per-component
+$B df_not_equal_components($DF a, $DF b) {
+  return a.hi != b.hi || a.lo != b.lo;
+}

@@ -65,6 +65,21 @@ struct Options {
   std::string guard_uniform_name = "df_guard";
 };
 
+// One member of a uniform or storage block after lowering (members of nested structs are listed
+// with dotted names, "s.v"): where its words live in the emitted std140/std430 layout. A double
+// member becomes a df_* struct with hi and lo side by side.
+struct BlockMember {
+  std::string name;          // "x", "s.v"
+  std::string type;          // original GLSL type, e.g. "dvec3", "double[4]"
+  std::string lowered_type;  // e.g. "df_dvec3", "df_double[4]"; the original type when unchanged
+  int offset = 0;            // byte offset in the lowered block
+  int size = 0;              // bytes, the whole array for arrays (0 for an unsized array)
+  int array_stride = 0;      // bytes between array elements; 0 when not an array
+  int hi_offset = -1;        // doubles: byte offset of hi (float/vecN/matCxR) inside one element
+  int lo_offset = -1;        // doubles: byte offset of lo inside one element
+  int matrix_stride = 0;     // matrices: bytes between columns (of hi and of lo)
+};
+
 // One original interface variable and what it became in the output.
 struct InterfaceVariable {
   std::string name;          // as the user wrote it
@@ -74,6 +89,9 @@ struct InterfaceVariable {
   std::string lowered_type;  // type of each emitted variable, e.g. "vec3"
   std::vector<std::string> lowered_names;  // {"X_hi","X_lo"} when split, else {"X"}
   std::vector<int> locations;              // explicit locations of lowered_names, if any
+  // Blocks only: the packing emitted ("std140"/"std430") and every member's new place.
+  std::string layout;
+  std::vector<BlockMember> members;
 };
 
 struct GuardInfo {

@@ -10,6 +10,7 @@
 #include "frontend/frontend.hpp"
 #include "frontend/import.hpp"
 #include "lower/lower.hpp"
+#include "lower/matrix_helpers.hpp"
 #include "rules/rule_library.hpp"
 
 namespace doublet {
@@ -61,12 +62,31 @@ std::string missing_struct_types(const std::vector<int>& widths, const std::stri
   return out;
 }
 
+// struct df_dmatCxR { matCxR hi; matCxR lo; } for every matrix shape the lowered code names.
+std::string matrix_struct_types(std::vector<std::pair<int, int>> shapes) {
+  std::sort(shapes.begin(), shapes.end());
+  std::string out;
+  for (auto [cols, rows] : shapes) {
+    std::string m = passes::matrix::float_type_name(cols, rows);
+    out += "struct " + passes::matrix::type_name(cols, rows) + " {\n  " + m + " hi;\n  " + m + " lo;\n};\n";
+  }
+  return out;
+}
+
 Result lower_unchecked(std::string_view source, const Options& options) {
   Result result;
   auto& diags = result.diagnostics;
   if (!options.stage) {
     diags.push_back({options.file_name, 0, 0, Severity::Error,
                      "the shader stage is unknown: name the file .vert/.frag/.comp or pass -S"});
+    return result;
+  }
+  if (*options.stage == Stage::Compute && (options.target == Target::Es100 || options.target == Target::Es300 ||
+                                            options.target == Target::Glsl330)) {
+    diags.push_back({options.file_name, 0, 0, Severity::Error,
+                     "target " + std::string(to_string(options.target)) +
+                         " has no compute shaders (they need ES 3.10 or desktop 4.30); use --target es310, es320 "
+                         "or glsl450"});
     return result;
   }
   GuardChoice guard;
@@ -102,7 +122,8 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     }
     std::string helpers;
     for (const auto& name : ctx.helper_order) helpers += "\n" + ctx.helpers[name];
-    print_options.runtime = missing_struct_types(ctx.widths_used, emitted.text) + emitted.text + helpers;
+    print_options.runtime = missing_struct_types(ctx.widths_used, emitted.text) +
+                            matrix_struct_types(ctx.matrices_used) + emitted.text + helpers;
     if (!ctx.rules_used.empty()) {
       if (guard.style == rules::GuardStyle::Precise) result.manifest.guard.kind = "precise";
       if (guard.style == rules::GuardStyle::Uniform) {

@@ -83,6 +83,25 @@ std::string Manifest::to_json() const {
     e["lowered_type"] = v.lowered_type;
     e["lowered_names"] = v.lowered_names;
     if (!v.locations.empty()) e["locations"] = v.locations;
+    if (!v.layout.empty()) e["layout"] = v.layout;
+    if (!v.members.empty()) {
+      e["members"] = nlohmann::ordered_json::array();
+      for (const auto& m : v.members) {
+        nlohmann::ordered_json jm;
+        jm["name"] = m.name;
+        jm["type"] = m.type;
+        jm["lowered_type"] = m.lowered_type;
+        jm["offset"] = m.offset;
+        jm["size"] = m.size;
+        if (m.array_stride) jm["array_stride"] = m.array_stride;
+        if (m.matrix_stride) jm["matrix_stride"] = m.matrix_stride;
+        if (m.hi_offset >= 0) {
+          jm["hi_offset"] = m.hi_offset;
+          jm["lo_offset"] = m.lo_offset;
+        }
+        e["members"].push_back(jm);
+      }
+    }
     j["variables"].push_back(e);
   }
   nlohmann::ordered_json g;

@@ -288,6 +288,13 @@ class Importer {
       error(b->getLoc(), "matrix swizzles are not supported");
       return make(ir::Expr::Kind::Const, b);
     }
+    if (op == EOpMul && b->getLeft()->getType().isMatrix() && b->getRight()->getType().isMatrix()) {
+      // glslang spells matrixCompMult(a, b) as a component-wise EOpMul; `*` would be the product.
+      auto e = make(ir::Expr::Kind::Builtin, b);
+      e->name = "matrixCompMult";
+      e->args = {expr(b->getLeft()), expr(b->getRight())};
+      return e;
+    }
     const char* spelling = binary_operator_spelling(op);
     if (!spelling) {
       error(b->getLoc(), "unsupported binary operation");

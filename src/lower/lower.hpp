@@ -7,6 +7,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "doublet/doublet.hpp"
@@ -22,12 +23,14 @@ struct Context {
   std::vector<std::string> helper_order;         // generated helpers, in dependency order
   std::map<std::string, std::string> helpers;    // name → GLSL definition
   std::vector<int> widths_used;                  // df struct widths referenced
+  std::vector<std::pair<int, int>> matrices_used;  // df_dmatCxR structs referenced: {cols, rows}
   bool failed = false;
 
   void error(ir::Loc loc, const std::string& message);
   void warning(ir::Loc loc, const std::string& message);
   void use_rule(const std::string& name, int width);
   void use_width(int width);
+  void use_matrix(int cols, int rows);
   // Adds a generated helper once; `definition` is its full GLSL text.
   void add_helper(const std::string& name, const std::string& definition);
 };
@@ -35,7 +38,7 @@ struct Context {
 // Name of the float-float struct for a vector width: df_double, df_dvec2...
 std::string df_type_name(int width);
 ir::Type df_type(int width);
-bool is_df(const ir::Type& t);  // a df_* struct (not an array of them)
+bool is_df(const ir::Type& t);  // a df_double/df_dvecN struct (not an array of them, not a matrix)
 int df_width(const ir::Type& t);
 
 bool lower_doubles(ir::Module& module, Context& context);

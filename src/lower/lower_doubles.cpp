@@ -9,6 +9,7 @@
 #include "emit/printer.hpp"
 #include "ir/walk.hpp"
 #include "lower/lower.hpp"
+#include "lower/matrix_helpers.hpp"
 
 namespace doublet::passes {
 
@@ -27,6 +28,10 @@ void Context::use_rule(const std::string& name, int width) {
 void Context::use_width(int width) {
   if (std::find(widths_used.begin(), widths_used.end(), width) == widths_used.end()) widths_used.push_back(width);
 }
+void Context::use_matrix(int cols, int rows) {
+  std::pair<int, int> shape{cols, rows};
+  if (std::find(matrices_used.begin(), matrices_used.end(), shape) == matrices_used.end()) matrices_used.push_back(shape);
+}
 void Context::add_helper(const std::string& name, const std::string& definition) {
   if (helpers.count(name)) return;
   helpers[name] = definition;
@@ -42,7 +47,9 @@ ir::Type df_type(int width) {
   return t;
 }
 
-bool is_df(const ir::Type& t) { return t.base == ir::Base::Struct && !t.is_array() && t.name.rfind("df_d", 0) == 0; }
+bool is_df(const ir::Type& t) {
+  return t.base == ir::Base::Struct && !t.is_array() && (t.name == "df_double" || t.name.rfind("df_dvec", 0) == 0);
+}
 
 int df_width(const ir::Type& t) { return t.name == "df_double" ? 1 : t.name.back() - '0'; }
 
@@ -96,16 +103,11 @@ class DoubleLowering {
       for (auto& f : *t.fields) f.type = lower_type(f.type, {});
     for (size_t i = 0; i < module_.globals.size(); ++i) {
       auto& g = module_.globals[i];
-      if (g->type.base == ir::Base::Block && g->type.contains_double()) {
-        ctx_.error(g->loc, "double members of interface blocks are not supported yet; declare '" + g->name +
-                               "' members as loose uniforms or split them by hand");
-        continue;
-      }
+      if (g->type.base == ir::Base::Block && g->type.contains_double()) lower_block(*g);
       lower_var(*g);
       if (module_.global_inits[i]) module_.global_inits[i] = lower(module_.global_inits[i]);
     }
     for (auto& f : module_.functions) {
-      if (f->return_type.is_matrix() && f->return_type.is_double()) ctx_.error(f->loc, "double matrices are not supported yet");
       f->return_type = lower_type(f->return_type, f->loc);
       for (auto& p : f->params) lower_var(*p);
       lower_statement(f->body);
@@ -117,9 +119,14 @@ class DoubleLowering {
   ir::Type lower_type(const ir::Type& t, ir::Loc loc) {
     if (t.base != ir::Base::Double) return t;
     if (t.is_matrix()) {
-      if (reported_.insert(ir::type_name(t)).second)
-        ctx_.error(loc, "double matrices (" + ir::type_name(t) + ") are not supported yet");
-      return t.with_base(ir::Base::Float);
+      if (t.cols != t.vec && ctx_.options.target == Target::Es100 && reported_.insert(ir::type_name(t)).second)
+        ctx_.error(loc, ir::type_name(t) + " is not available on es100: GLSL ES 1.00 has only square matrices; use "
+                        "dmat" + std::to_string(std::max(t.cols, t.vec)) + " or target es300 or later");
+      ir::Type out = matrix::type(t.cols, t.vec);
+      out.array_dims = t.array_dims;
+      ctx_.use_matrix(t.cols, t.vec);
+      ctx_.use_width(t.vec);
+      return out;
     }
     ir::Type out = df_type(t.vec);
     out.array_dims = t.array_dims;
@@ -128,6 +135,21 @@ class DoubleLowering {
   }
 
   void lower_var(ir::Var& v) { v.type = lower_type(v.type, v.loc); }
+
+  // A block's double members become df_* struct members in place (hi and lo side by side); their
+  // offsets change, so explicit member offsets are dropped, an explicit std140/std430 packing is
+  // emitted (shared/packed layouts could not be described), and split_interfaces reports the new
+  // layout in the manifest.
+  void lower_block(ir::Var& block) {
+    // A copy: declared_type keeps the user's members for the manifest.
+    block.type.fields = std::make_shared<std::vector<ir::Field>>(*block.type.fields);
+    if (block.layout.packing != "std140" && block.layout.packing != "std430")
+      block.layout.packing = block.storage == ir::Storage::Buffer ? "std430" : "std140";
+    for (auto& f : *block.type.fields) {
+      f.type = lower_type(f.type, block.loc);
+      f.layout.offset = -1;
+    }
+  }
 
   void lower_statement(const ir::StmtPtr& s) {
     if (!s) return;
@@ -203,18 +225,30 @@ class DoubleLowering {
 
   // ---- expressions ---------------------------------------------------------
   ExprPtr lower(const ExprPtr& e) {
+    if (is_matrix_lvalue_write(e)) return lower_matrix_write(e);
     if (is_component_lvalue_write(e)) return lower_component_write(e);
     if (e->kind == Kind::Binary && is_compound(e->op) && e->args[0]->type.is_double()) return lower_compound(e);
     if (e->kind == Kind::Unary && e->op.find("++") + e->op.find("--") != 2 * std::string::npos &&
-        e->args[0]->type.is_double())
+        e->args[0]->type.is_double()) {
+      if (e->args[0]->type.is_matrix() || (e->args[0]->kind == Kind::Index && e->args[0]->args[0]->type.is_matrix())) {
+        ctx_.error(e->loc, "++/-- on a double matrix or matrix column is not supported; use += 1.0lf");
+        return e;
+      }
       return lower_step(e);
+    }
     const bool was_double = e->type.base == ir::Base::Double;
     for (auto& a : e->args) a = lower(a);
     e->type = lower_type(e->type, e->loc);
     switch (e->kind) {
-      case Kind::Sym: e->type = e->var->type; return e;
+      case Kind::Sym:
+        if (e->var->block) lower_var(*e->var);  // a member of an anonymous block
+        e->type = e->var->type;
+        return e;
       case Kind::Const: return was_double ? split_constant(e) : e;
       case Kind::Unary:
+        if (was_double && e->op == "-" && matrix::is_matrix(e->type))
+          return call(Kind::Call, matrix::negate(ctx_, matrix::cols(e->type), matrix::rows(e->type)), e->type, e->args,
+                      e->loc);
         if (was_double && e->op == "-") return rule("df_neg", df_width(e->type), e->type, e->args, e->loc);
         return e;
       case Kind::Binary: return lower_binary(e);
@@ -225,6 +259,7 @@ class DoubleLowering {
         return e;
       case Kind::Index:
         if (is_df(e->args[0]->type)) return component(e->args[0], e->args[1], e->loc);
+        if (matrix::is_matrix(e->args[0]->type)) return matrix_column(e->args[0], e->args[1], e->loc);
         return e;
       case Kind::Call:
         check_out_arguments(e);
@@ -234,7 +269,10 @@ class DoubleLowering {
   }
 
   ExprPtr split_constant(const ExprPtr& e) {
-    int width = e->type.is_array() ? df_width(e->type.element()) : df_width(e->type);
+    ir::Type elem_type = e->type;
+    elem_type.array_dims.clear();
+    const bool is_matrix = matrix::is_matrix(elem_type);
+    int width = is_matrix ? matrix::cols(elem_type) * matrix::rows(elem_type) : df_width(elem_type);
     auto element = [&](size_t start) {
       ir::Scalar hi, lo;
       hi.base = lo.base = ir::Base::Float;
@@ -250,11 +288,13 @@ class DoubleLowering {
         his.push_back(hi);
         los.push_back(lo);
       }
-      auto h = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Float, width), e->loc);
+      ir::Type word_type = is_matrix ? float_matrix(matrix::cols(elem_type), matrix::rows(elem_type))
+                                     : ir::scalar_type(ir::Base::Float, width);
+      auto h = Expr::make(Kind::Const, word_type, e->loc);
       h->values = his;
-      auto l = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Float, width), e->loc);
+      auto l = Expr::make(Kind::Const, word_type, e->loc);
       l->values = los;
-      return call(Kind::Construct, "", df_type(width), {h, l}, e->loc);
+      return call(Kind::Construct, "", is_matrix ? elem_type : df_type(width), {h, l}, e->loc);
     };
     if (!e->type.is_array()) return element(0);
     auto arr = Expr::make(Kind::Construct, e->type, e->loc);
@@ -281,6 +321,7 @@ class DoubleLowering {
   }
 
   ExprPtr arithmetic(const std::string& op, ExprPtr a, ExprPtr b, ir::Loc loc) {
+    if (matrix::is_matrix(a->type) || matrix::is_matrix(b->type)) return matrix_arithmetic(op, a, b, loc);
     int wa = df_width(a->type), wb = df_width(b->type);
     int width = std::max(wa, wb);
     if (wa < width) a = splat(a, width);
@@ -382,9 +423,13 @@ class DoubleLowering {
     if (e->args.size() != 2) return e;
     const ExprPtr& a = e->args[0];
     const ExprPtr& b = e->args[1];
-    if (!is_df(a->type) && !is_df(b->type)) return e;
+    const bool matrices = matrix::is_matrix(a->type) || matrix::is_matrix(b->type);
+    if (!is_df(a->type) && !is_df(b->type) && !matrices) return e;
     const std::string& op = e->op;
     if (op == "=") return e;
+    if (matrices && (op == "==" || op == "!="))
+      return call(Kind::Call, matrix::equal(ctx_, matrix::cols(a->type), matrix::rows(a->type), op == "!="),
+                  ir::scalar_type(ir::Base::Bool), {a, b}, e->loc);
     if (op == "+" || op == "-" || op == "*" || op == "/") return arithmetic(op, a, b, e->loc);
     static const std::map<std::string, std::string> compare{{"<", "df_lt"}, {"<=", "df_le"}, {">", "df_gt"},
                                                              {">=", "df_ge"}, {"==", "df_equal"}, {"!=", "df_not_equal"}};
@@ -395,22 +440,102 @@ class DoubleLowering {
   }
 
   ExprPtr lower_builtin(const ExprPtr& e) {
-    bool any_df = std::any_of(e->args.begin(), e->args.end(), [](const ExprPtr& a) { return is_df(a->type); });
+    bool any_df = std::any_of(e->args.begin(), e->args.end(),
+                              [](const ExprPtr& a) { return is_df(a->type) || matrix::is_matrix(a->type); });
     if (!any_df) return e;
     const std::string& n = e->name;
-    if (n == "abs" || n == "sqrt") return rule("df_" + n, df_width(e->args[0]->type), e->args[0]->type, e->args, e->loc);
-    if (n == "min" || n == "max") {
-      int width = df_width(e->args[0]->type);
-      ExprPtr b = df_width(e->args[1]->type) < width ? splat(e->args[1], width) : e->args[1];
-      return rule("df_" + n, width, e->args[0]->type, {e->args[0], b}, e->loc);
+    if (ExprPtr m = lower_matrix_builtin(e)) return m;
+    return lower_common_builtin(e);
+  }
+
+  // Built-ins of GLSL 4.60 sections 8.3-8.7 on doubles: each is one rule of rules/*.glsl at the
+  // width of its widest double argument; double scalars are splatted to that width (mix(x, y, a),
+  // step(edge, x), clamp(x, lo, hi) with scalar bounds, ...).
+  ExprPtr lower_common_builtin(const ExprPtr& e) {
+    struct Builtin {
+      const char* rule;
+      enum Result { Same, Scalar, Bools } result;
+    };
+    static const std::map<std::string, Builtin> table{
+        {"abs", {"df_abs", Builtin::Same}},          {"sqrt", {"df_sqrt", Builtin::Same}},
+        {"inversesqrt", {"df_inversesqrt", Builtin::Same}}, {"sign", {"df_sign", Builtin::Same}},
+        {"floor", {"df_floor", Builtin::Same}},      {"ceil", {"df_ceil", Builtin::Same}},
+        {"trunc", {"df_trunc", Builtin::Same}},      {"round", {"df_round", Builtin::Same}},
+        {"roundEven", {"df_round_even", Builtin::Same}}, {"fract", {"df_fract", Builtin::Same}},
+        {"mod", {"df_mod", Builtin::Same}},          {"modf", {"df_modf", Builtin::Same}},
+        {"min", {"df_min", Builtin::Same}},          {"max", {"df_max", Builtin::Same}},
+        {"clamp", {"df_clamp", Builtin::Same}},      {"mix", {"df_mix", Builtin::Same}},
+        {"step", {"df_step", Builtin::Same}},        {"smoothstep", {"df_smoothstep", Builtin::Same}},
+        {"fma", {"df_fma", Builtin::Same}},          {"ldexp", {"df_ldexp", Builtin::Same}},
+        {"frexp", {"df_frexp", Builtin::Same}},      {"cross", {"df_cross", Builtin::Same}},
+        {"normalize", {"df_normalize", Builtin::Same}}, {"faceforward", {"df_faceforward", Builtin::Same}},
+        {"reflect", {"df_reflect", Builtin::Same}},  {"refract", {"df_refract", Builtin::Same}},
+        {"dot", {"df_dot", Builtin::Scalar}},        {"length", {"df_length", Builtin::Scalar}},
+        {"distance", {"df_distance", Builtin::Scalar}}, {"isnan", {"df_isnan", Builtin::Bools}},
+        {"isinf", {"df_isinf", Builtin::Bools}},     {"lessThan", {"df_less_than", Builtin::Bools}},
+        {"lessThanEqual", {"df_less_than_equal", Builtin::Bools}},
+        {"greaterThan", {"df_greater_than", Builtin::Bools}},
+        {"greaterThanEqual", {"df_greater_than_equal", Builtin::Bools}},
+        {"equal", {"df_equal_components", Builtin::Bools}}, {"notEqual", {"df_not_equal_components", Builtin::Bools}},
+    };
+    const std::string& n = e->name;
+    if (n == "packDouble2x32" || n == "unpackDouble2x32") {
+      ctx_.error(e->loc, n + " is not supported yet: a float-float value has no IEEE double bit pattern; pass hi "
+                         "and lo as two floats instead");
+      return e;
     }
-    if (n == "dot") return rule("df_dot", df_width(e->args[0]->type), df_type(1), e->args, e->loc);
-    if (n == "length") return rule("df_length", df_width(e->args[0]->type), df_type(1), e->args, e->loc);
-    ctx_.error(e->loc, "built-in function '" + n + "' on doubles is not supported yet");
-    return e;
+    auto it = table.find(n);
+    if (it == table.end()) {
+      ctx_.error(e->loc, "built-in function '" + n + "' is not defined on doubles in GLSL 4.60; doublet cannot lower it");
+      return e;
+    }
+    if ((n == "modf" || n == "frexp") && !is_pure(e->args[1])) {
+      ctx_.error(e->args[1]->loc, "the out argument of " + n + " must be a whole double variable here, not one "
+                                  "component of a double vector; use a temporary");
+      return e;
+    }
+    std::string rule_name = it->second.rule;
+    std::vector<ExprPtr> args = e->args;
+    // Which arguments are doubles (others pass through: mix's bool selector, ldexp's and
+    // frexp's int exponent, modf's out argument is a double lvalue and stays as it is).
+    int width = 1;
+    for (const auto& a : args)
+      if (is_df(a->type)) width = std::max(width, df_width(a->type));
+    if (n == "mix" && args[2]->type.base == ir::Base::Bool) rule_name = "df_mix_bool";
+    if (n == "normalize" && width == 1) rule_name = "df_sign";
+    if (n == "frexp" && width > 1) {
+      ctx_.error(e->loc, "frexp on double vectors is not supported yet; call it per component");
+      return e;
+    }
+    for (auto& a : args) {
+      if (a->type.base == ir::Base::Bool || a->type.base == ir::Base::Int) continue;
+      if (!is_df(a->type)) a = to_df(a);
+      if (n == "refract" && &a == &args[2]) continue;  // eta stays a scalar
+      if (df_width(a->type) < width) a = splat(a, width);
+    }
+    ir::Type result = df_type(width);
+    if (it->second.result == Builtin::Scalar) result = df_type(1);
+    if (it->second.result == Builtin::Bools) result = ir::scalar_type(ir::Base::Bool, width);
+    return rule(rule_name, width, result, args, e->loc);
   }
 
   ExprPtr lower_construct(const ExprPtr& e, bool was_double) {
+    if (was_double && matrix::is_matrix(e->type)) return construct_matrix(e);
+    if (e->type.is_matrix() && e->args.size() == 1 && matrix::is_matrix(e->args[0]->type)) {
+      // mat4(dmat4), mat3(dmat4): round each element to float, then resize as GLSL does.
+      const ExprPtr& a = e->args[0];
+      int c = matrix::cols(a->type), r = matrix::rows(a->type);
+      auto converted = call(Kind::Call, matrix::to_float(ctx_, c, r), float_matrix(c, r), {a}, e->loc);
+      if (c == e->type.cols && r == e->type.vec) return converted;
+      e->args = {converted};
+      return e;
+    }
+    for (const auto& a : e->args)
+      if (matrix::is_matrix(a->type)) {
+        ctx_.error(a->loc, "building a scalar or vector from the components of a double matrix is not supported; "
+                           "index its columns (m[j]) instead");
+        return e;
+      }
     if (e->type.is_array() || (e->type.base == ir::Base::Struct && !is_df(e->type))) return e;  // arrays, user structs
     if (was_double) {
       int width = df_width(e->type);
@@ -470,6 +595,154 @@ class DoubleLowering {
                                       "supported; use a temporary");
       }
     }
+  }
+
+  // ---- matrices (helpers generated by matrix_helpers.cpp) -----------------------------
+  static ir::Type float_matrix(int cols, int rows) {
+    ir::Type t = ir::scalar_type(ir::Base::Float, rows);
+    t.cols = cols;
+    return t;
+  }
+
+  ExprPtr matrix_column(const ExprPtr& m, const ExprPtr& j, ir::Loc loc) {
+    int c = matrix::cols(m->type), r = matrix::rows(m->type);
+    ctx_.use_width(r);
+    if (is_pure(m) && j->kind == Kind::Const) {
+      auto word = [&](const char* w) {
+        auto index = Expr::make(Kind::Index, ir::scalar_type(ir::Base::Float, r), loc);
+        index->args = {member(m, w, float_matrix(c, r)), j};
+        return index;
+      };
+      return call(Kind::Construct, "", df_type(r), {word("hi"), word("lo")}, loc);
+    }
+    return call(Kind::Call, matrix::column(ctx_, c, r), df_type(r), {m, j}, loc);
+  }
+
+  static bool is_double_matrix(const ir::Type& t) { return t.is_double() && t.is_matrix() && !t.is_array(); }
+
+  // m[j] = v, m[j][i] = x, their op= forms, and m[j].xy = ... (diagnosed).
+  static bool is_matrix_lvalue_write(const ExprPtr& e) {
+    if (!is_assignment(e)) return false;
+    const ExprPtr& lhs = e->args[0];
+    if (lhs->kind != Kind::Index && lhs->kind != Kind::Member) return false;
+    const ExprPtr& base = lhs->args[0];
+    if (lhs->kind == Kind::Index && is_double_matrix(base->type)) return true;
+    return base->kind == Kind::Index && is_double_matrix(base->args[0]->type);
+  }
+
+  ExprPtr lower_matrix_write(const ExprPtr& e) {
+    const ExprPtr& lhs = e->args[0];
+    if (lhs->kind == Kind::Member) {
+      ctx_.error(e->loc, "writing a swizzle of a double matrix column is not supported; assign the column m[j] or "
+                         "single elements m[j][i]");
+      return e;
+    }
+    const bool element = !is_double_matrix(lhs->args[0]->type);
+    ExprPtr m = lower(element ? lhs->args[0]->args[0] : lhs->args[0]);
+    ExprPtr j = lower(element ? lhs->args[0]->args[1] : lhs->args[1]);
+    ExprPtr i = element ? lower(lhs->args[1]) : nullptr;
+    ExprPtr rhs = lower(e->args[1]);
+    int c = matrix::cols(m->type), r = matrix::rows(m->type);
+    if (e->op != "=") {
+      if (!is_pure(m) || !is_pure(j) || (i && !is_pure(i)))
+        ctx_.error(e->loc, "compound assignment into a double matrix through an expression with side effects is not "
+                           "supported; use a temporary");
+      ExprPtr current = matrix_column(m, j, lhs->loc);
+      if (element) current = component(current, i, lhs->loc);
+      rhs = arithmetic(e->op.substr(0, 1), current, rhs, e->loc);
+    }
+    if (!is_df(rhs->type)) rhs = to_df(rhs);
+    if (element) return call(Kind::Call, matrix::assign_element(ctx_, c, r), df_type(1), {m, j, i, rhs}, e->loc);
+    if (df_width(rhs->type) < r) rhs = splat(rhs, r);
+    return call(Kind::Call, matrix::assign_column(ctx_, c, r), df_type(r), {m, j, rhs}, e->loc);
+  }
+
+  ExprPtr matrix_arithmetic(const std::string& op, ExprPtr a, ExprPtr b, ir::Loc loc) {
+    const bool ma = matrix::is_matrix(a->type), mb = matrix::is_matrix(b->type);
+    if (!ma && !is_df(a->type)) a = to_df(a);
+    if (!mb && !is_df(b->type)) b = to_df(b);
+    if (op == "*" && ma && mb) {
+      int inner = matrix::cols(a->type), r = matrix::rows(a->type), c = matrix::cols(b->type);
+      return call(Kind::Call, matrix::times_matrix(ctx_, inner, r, c), matrix::type(c, r), {a, b}, loc);
+    }
+    if (op == "*" && ma && df_width(b->type) > 1) {
+      int c = matrix::cols(a->type), r = matrix::rows(a->type);
+      return call(Kind::Call, matrix::times_vector(ctx_, c, r), df_type(r), {a, b}, loc);
+    }
+    if (op == "*" && mb && df_width(a->type) > 1) {
+      int c = matrix::cols(b->type), r = matrix::rows(b->type);
+      return call(Kind::Call, matrix::vector_times(ctx_, c, r), df_type(c), {a, b}, loc);
+    }
+    static const std::map<std::string, std::string> names{{"+", "df_add"}, {"-", "df_sub"}, {"*", "df_mul"}, {"/", "df_div"}};
+    auto it = names.find(op);
+    if (it == names.end()) {
+      ctx_.error(loc, "operator '" + op + "' is not defined on double matrices");
+      return a;
+    }
+    const ir::Type& shape = ma ? a->type : b->type;
+    int c = matrix::cols(shape), r = matrix::rows(shape);
+    using Operand = matrix::Operand;
+    std::string name = matrix::elementwise(ctx_, it->second, c, r, ma ? Operand::Matrix : Operand::Scalar,
+                                           mb ? Operand::Matrix : Operand::Scalar);
+    return call(Kind::Call, name, matrix::type(c, r), {a, b}, loc);
+  }
+
+  // Null when `e` is not a matrix built-in.
+  ExprPtr lower_matrix_builtin(const ExprPtr& e) {
+    const std::string& n = e->name;
+    const auto& args = e->args;
+    if (n == "matrixCompMult" && matrix::is_matrix(args[0]->type)) {
+      int c = matrix::cols(args[0]->type), r = matrix::rows(args[0]->type);
+      using Operand = matrix::Operand;
+      return call(Kind::Call, matrix::elementwise(ctx_, "df_mul", c, r, Operand::Matrix, Operand::Matrix),
+                  matrix::type(c, r), args, e->loc);
+    }
+    if (n == "transpose") {
+      int c = matrix::cols(args[0]->type), r = matrix::rows(args[0]->type);
+      return call(Kind::Call, matrix::transpose(ctx_, c, r), matrix::type(r, c), args, e->loc);
+    }
+    if (n == "determinant")
+      return call(Kind::Call, matrix::determinant(ctx_, matrix::cols(args[0]->type)), df_type(1), args, e->loc);
+    if (n == "inverse") {
+      int size = matrix::cols(args[0]->type);
+      return call(Kind::Call, matrix::inverse(ctx_, size), matrix::type(size, size), args, e->loc);
+    }
+    if (n == "outerProduct") {
+      int r = df_width(args[0]->type), c = df_width(args[1]->type);
+      return call(Kind::Call, matrix::outer_product(ctx_, c, r), matrix::type(c, r), args, e->loc);
+    }
+    return nullptr;
+  }
+
+  ExprPtr construct_matrix(const ExprPtr& e) {
+    int c = matrix::cols(e->type), r = matrix::rows(e->type);
+    if (e->args.size() == 1) {
+      const ExprPtr& a = e->args[0];
+      if (matrix::is_matrix(a->type)) {
+        if (matrix::cols(a->type) == c && matrix::rows(a->type) == r) return a;
+        return call(Kind::Call, matrix::resize(ctx_, matrix::cols(a->type), matrix::rows(a->type), c, r), e->type, {a},
+                    e->loc);
+      }
+      if (a->type.is_matrix()) {  // dmat4(mat4): hi is the float matrix, lo is zero
+        ExprPtr hi = a;
+        if (a->type.cols != c || a->type.vec != r) hi = call(Kind::Construct, "", float_matrix(c, r), {a}, e->loc);
+        auto zero = call(Kind::Construct, "", float_matrix(c, r), {float_const(0.0f, e->loc)}, e->loc);
+        return call(Kind::Construct, "", e->type, {hi, zero}, e->loc);
+      }
+      if (a->type.vec == 1 || (is_df(a->type) && df_width(a->type) == 1))
+        return call(Kind::Call, matrix::diagonal(ctx_, c, r), e->type, {to_df(a)}, e->loc);
+    }
+    std::vector<ExprPtr> parts;
+    std::vector<int> widths;
+    for (const auto& a : e->args) {
+      if (a->type.is_matrix() || matrix::is_matrix(a->type)) {
+        ctx_.error(a->loc, "a matrix argument must be a matrix constructor's only argument");
+        return e;
+      }
+      parts.push_back(to_df(a));
+      widths.push_back(df_width(parts.back()->type));
+    }
+    return call(Kind::Call, matrix::from_components(ctx_, c, r, widths), e->type, parts, e->loc);
   }
 
   ir::Module& module_;

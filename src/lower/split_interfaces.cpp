@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "lower/block_layout.hpp"
 #include "lower/lower.hpp"
 
 namespace doublet::passes {
@@ -97,7 +98,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   std::map<ir::Storage, int> next_location;
   for (const auto& g : module.globals) {
     if (g->layout.location < 0) continue;
-    int slots = g->type.is_array() ? g->type.array_dims[0] : 1;
+    int slots = (g->type.is_array() ? g->type.array_dims[0] : 1) * std::max(g->declared_type.cols, 1);
     if (g->declared_type.is_double() && g->declared_type.vec > 2) slots *= 2;  // dvec3/4 take two locations
     next_location[g->storage] = std::max(next_location[g->storage], g->layout.location + slots);
   }
@@ -141,7 +142,8 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
           names.insert(part->name);
           if (half == 1 && v->layout.location >= 0) {
             part->layout.location = next_location[v->storage];
-            next_location[v->storage] += v->type.is_array() ? v->type.array_dims[0] : 1;
+            next_location[v->storage] +=
+                (v->type.is_array() ? v->type.array_dims[0] : 1) * std::max(v->declared_type.cols, 1);
           }
           (half == 0 ? s.hi : s.lo) = part;
           globals.push_back(part);
@@ -158,6 +160,18 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         v->invariant = false;
         splits.push_back(s);
       }
+    }
+    if (interface && v->type.base == ir::Base::Block && v->declared_type.contains_double()) {
+      InterfaceVariable entry;
+      entry.name = v->name.rfind("anon@", 0) == 0 ? v->type.name : v->name;
+      entry.storage = storage_name(v->storage, module.stage, es100);
+      entry.type = v->type.name;
+      entry.split = true;
+      entry.lowered_type = v->type.name;
+      entry.lowered_names = {entry.name};
+      entry.layout = v->layout.packing;
+      entry.members = block_layout(v->type, v->layout.packing);
+      manifest.variables.push_back(entry);
     }
     globals.push_back(v);
     inits.push_back(module.global_inits[i]);

@@ -1,0 +1,14 @@
+// The std140/std430 layout of a lowered uniform/storage block, for the manifest: a host that
+// filled the block with IEEE doubles must now write hi/lo float pairs at these offsets.
+#pragma once
+
+#include "doublet/doublet.hpp"
+#include "ir/ir.hpp"
+
+namespace doublet::passes {
+
+// Members (nested struct members with dotted names) of `block`, whose type is already lowered,
+// laid out with `packing` ("std140" or "std430").
+std::vector<BlockMember> block_layout(const ir::Type& block, const std::string& packing);
+
+}  // namespace doublet::passes
