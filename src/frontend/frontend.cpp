@@ -5,7 +5,10 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
+#include <functional>
 #include <fstream>
 #include <mutex>
 #include <regex>
@@ -108,6 +111,8 @@ void append_glslang_log(std::string_view log, const std::string& main_name,
       if (!token.empty()) message += " '" + token + "'";
     }
     if (message.find("compilation terminated") != std::string::npos) continue;
+    if (message.find("memory exhausted") != std::string::npos)  // bison's stack limit (10000 levels)
+      message = "the code nests too deeply for the GLSL parser (more than 10000 levels of parentheses or blocks)";
     while (!message.empty() && message.front() == ' ') message.erase(message.begin());
     d.message = message;
     d.column = 1;
@@ -136,11 +141,22 @@ class IncludeAdapter : public glslang::TShader::Includer {
                  std::vector<std::string>& included)
       : options_(options), files_(files), included_(included) {}
 
-  IncludeResult* includeLocal(const char* header, const char* includer, size_t) override {
-    return resolve(header, includer, true);
+  IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
+    return too_deep(header, depth) ? nullptr : resolve(header, includer, true);
   }
-  IncludeResult* includeSystem(const char* header, const char* includer, size_t) override {
-    return resolve(header, includer, false);
+  IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
+    return too_deep(header, depth) ? nullptr : resolve(header, includer, false);
+  }
+
+  // glslang follows an include cycle forever; stop at a depth no real shader needs.
+  static constexpr size_t kMaxIncludeDepth = 32;
+  std::string depth_error;
+  bool too_deep(const char* header, size_t depth) {
+    if (depth <= kMaxIncludeDepth) return false;
+    if (depth_error.empty())
+      depth_error = "#include nested more than " + std::to_string(kMaxIncludeDepth) + " deep at \"" +
+                    std::string(header) + "\" (an include cycle?)";
+    return true;
   }
   void releaseInclude(IncludeResult* result) override {
     if (!result) return;
@@ -184,6 +200,64 @@ class IncludeAdapter : public glslang::TShader::Includer {
   std::vector<std::string>& included_;
 };
 
+// The largest number of tokens one macro can expand to, following
+// object-like and function-like macro bodies (not argument duplication).
+// glslang expands macros eagerly and without limit, so a "billion laughs"
+// chain (#define A1 A0 A0, #define A2 A1 A1, ...) would run for hours.
+std::pair<std::string, double> largest_macro_expansion(std::string_view source) {
+  static const std::regex define_re(R"(^[ \t]*#[ \t]*define[ \t]+([A-Za-z_]\w*)(\([^)]*\))?(.*)$)");
+  static const std::regex token_re(R"([A-Za-z_]\w*|\d[\w.]*|\S)");
+  std::map<std::string, std::vector<std::string>> bodies;
+  std::istringstream lines{std::string(source)};
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (!std::regex_match(line, m, define_re)) continue;
+    std::vector<std::string> tokens;
+    std::string body = m[3].str();
+    for (std::sregex_iterator it(body.begin(), body.end(), token_re), end; it != end; ++it) tokens.push_back(it->str());
+    bodies[m[1].str()] = std::move(tokens);
+  }
+  std::map<std::string, double> size;
+  std::function<double(const std::string&, int)> expand = [&](const std::string& name, int depth) -> double {
+    if (auto it = size.find(name); it != size.end()) return it->second;
+    size[name] = 1;  // a macro is not re-expanded inside itself
+    double total = 0;
+    for (const auto& t : bodies[name])
+      total += bodies.count(t) && depth < 1000 ? expand(t, depth + 1) : 1;
+    return size[name] = std::max(total, 1.0);
+  };
+  std::pair<std::string, double> worst{"", 0};
+  for (const auto& [name, body] : bodies)
+    if (double n = expand(name, 0); n > worst.second) worst = {name, n};
+  return worst;
+}
+
+constexpr double kMaxMacroExpansion = 1e7;
+
+bool known_version(const SourceInfo& info) {
+  static const int es[] = {100, 300, 310, 320};
+  static const int desktop[] = {110, 120, 130, 140, 150, 330, 400, 410, 420, 430, 440, 450, 460};
+  const int* first = info.es ? std::begin(es) : std::begin(desktop);
+  const int* last = info.es ? std::end(es) : std::end(desktop);
+  return std::find(first, last, info.version) != last;
+}
+
+int version_line(std::string_view source) {
+  auto pos = source.find("#version");
+  if (pos == std::string_view::npos) return 1;
+  return 1 + static_cast<int>(std::count(source.begin(), source.begin() + static_cast<long>(pos), '\n'));
+}
+
+bool has_main(glslang::TIntermediate* intermediate) {
+  auto* root = intermediate->getTreeRoot() ? intermediate->getTreeRoot()->getAsAggregate() : nullptr;
+  if (!root) return false;
+  for (TIntermNode* node : root->getSequence())
+    if (auto* f = node->getAsAggregate(); f && f->getOp() == glslang::EOpFunction &&
+                                          std::string(f->getName().c_str()).rfind("main(", 0) == 0)
+      return true;
+  return false;
+}
+
 }  // namespace
 
 bool parse(std::string_view source, const Options& options, ParsedShader& out,
@@ -199,6 +273,20 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
     int line = 1 + static_cast<int>(std::count(source.begin(), source.begin() + source.find('\0'), '\n'));
     diagnostics.push_back({options.file_name, line, 1, Severity::Error,
                            "input is not GLSL text (it contains a NUL byte)"});
+    return false;
+  }
+
+  if (!known_version(out.info)) {
+    diagnostics.push_back({options.file_name, version_line(source), 1, Severity::Error,
+                           "unsupported #version " + std::to_string(out.info.version) + (out.info.es ? " es" : "") +
+                               ": doublet reads GLSL ES 1.00, 3.00, 3.10, 3.20 and desktop GLSL 1.10-4.60"});
+    return false;
+  }
+
+  if (auto [macro, tokens] = largest_macro_expansion(source); tokens > kMaxMacroExpansion) {
+    diagnostics.push_back({options.file_name, 1, 1, Severity::Error,
+                           "macro '" + macro + "' expands to about " + std::to_string(static_cast<long long>(std::min(tokens, 1e18))) +
+                               " tokens (limit " + std::to_string(static_cast<long long>(kMaxMacroExpansion)) + ")"});
     return false;
   }
 
@@ -222,6 +310,10 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
   auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
   // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
   bool ok = out.shader->parse(GetDefaultResources(), 450, ECompatibilityProfile, true, false, messages, includer);
+  if (!includer.depth_error.empty()) {
+    diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.depth_error});
+    return false;
+  }
   append_glslang_log(out.shader->getInfoLog(), options.file_name, files, diagnostics);
   if (!ok) {
     bool any_error = false;
@@ -231,6 +323,10 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
     return false;
   }
   out.intermediate = out.shader->getIntermediate();
+  if (!has_main(out.intermediate)) {
+    diagnostics.push_back({options.file_name, 1, 1, Severity::Error, "the shader has no main() function"});
+    return false;
+  }
   return true;
 }
 

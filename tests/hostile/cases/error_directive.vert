@@ -1,0 +1,3 @@
+#version 300 es
+#error this shader is not finished
+void main() { }
