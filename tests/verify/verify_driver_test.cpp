@@ -1,0 +1,110 @@
+// verify() on real drivers: the lowered shaders keep >= 44 bits in compute on lavapipe and GLES,
+// and each sabotage turns the same check red (drop-lo: <= 24 bits, the fp32 demotion).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "verify/report.hpp"
+#include "verify/verify.hpp"
+
+namespace doublet::verify {
+namespace {
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+VerifyReport run(const std::string& dir, const std::string& name, Sabotage sabotage, uint64_t samples) {
+  VerifyOptions o;
+  o.lower.stage = Stage::Compute;
+  o.lower.target = Target::Es310;
+  o.lower.file_name = name + ".comp";
+  o.samples = samples;
+  o.min_bits = 44;
+  o.sabotage = sabotage;
+  const std::string spec = read(dir + "/" + name + ".json");
+  if (!spec.empty()) EXPECT_EQ(parse_spec(spec, &o.spec), "");
+  return verify(read(dir + "/" + name + ".comp"), o);
+}
+
+double worst_bits(const VerifyReport& r) {
+  double worst = kMaxBits;
+  for (const BackendRun& run : r.runs)
+    for (const OutputStats& o : run.outputs) worst = std::min(worst, o.min_bits);
+  return worst;
+}
+
+void expect_ran_on_both_backends(const VerifyReport& r) {
+  ASSERT_EQ(r.input_error, "") << format_table(r);
+  ASSERT_EQ(r.runs.size(), 2u) << format_table(r);
+  for (const BackendRun& run : r.runs) {
+    EXPECT_EQ(run.error, "") << format_table(r);
+    EXPECT_EQ(run.probe.error, "");
+    EXPECT_FALSE(run.outputs.empty());
+    for (const OutputStats& o : run.outputs) EXPECT_EQ(o.class_mismatches, 0u) << o.name;
+  }
+}
+
+struct Case {
+  const char* name;
+  uint64_t samples;
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+class VerifyShader : public ::testing::TestWithParam<Case> {};
+
+TEST_P(VerifyShader, KeepsAtLeast44BitsOnBothBackends) {
+  const VerifyReport r = run(DOUBLET_VERIFY_SHADERS, GetParam().name, Sabotage::None, GetParam().samples);
+  expect_ran_on_both_backends(r);
+  std::printf("%s", format_table(r).c_str());
+  EXPECT_TRUE(r.passed()) << format_table(r);
+  EXPECT_GE(worst_bits(r), 44.0);
+}
+
+TEST_P(VerifyShader, DropGuardSabotageFails) {
+  const VerifyReport r = run(DOUBLET_VERIFY_SHADERS, GetParam().name, Sabotage::DropGuard, GetParam().samples);
+  expect_ran_on_both_backends(r);
+  EXPECT_FALSE(r.passed()) << "sabotage did not turn the check red:\n" << format_table(r);
+  EXPECT_LT(worst_bits(r), 44.0);
+}
+
+TEST_P(VerifyShader, DropLoSabotageIsFloatPrecision) {
+  const VerifyReport r = run(DOUBLET_VERIFY_SHADERS, GetParam().name, Sabotage::DropLo, GetParam().samples);
+  expect_ran_on_both_backends(r);
+  EXPECT_FALSE(r.passed());
+  EXPECT_LE(worst_bits(r), 24.0) << format_table(r);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shaders, VerifyShader,
+                         ::testing::Values(Case{"arith_pairs", 2048}, Case{"uniform_pairs", 64}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// The foundation's golden compute shaders have float outputs: native and lowered must agree on
+// every float (their ~48-bit intermediates round to the same float here).
+TEST(VerifyGolden, FoundationComputeShadersAgree) {
+  for (const char* name : {"add_dvec2", "operators"}) {
+    const VerifyReport r = run(DOUBLET_GOLDEN_CASES, name, Sabotage::None, 64);
+    expect_ran_on_both_backends(r);
+    std::printf("%s", format_table(r).c_str());
+    EXPECT_GE(worst_bits(r), 23.0) << format_table(r);
+  }
+}
+
+TEST(VerifyInputs, UnknownRangeNameIsAnInputError) {
+  VerifyOptions o;
+  o.lower.stage = Stage::Compute;
+  o.lower.target = Target::Es310;
+  o.spec.inputs["nope"].lo = 1;
+  o.spec.inputs["nope"].hi = 2;
+  const VerifyReport r = verify(read(std::string(DOUBLET_VERIFY_SHADERS) + "/uniform_pairs.comp"), o);
+  EXPECT_NE(r.input_error.find("no input named 'nope'"), std::string::npos) << r.input_error;
+  EXPECT_TRUE(r.runs.empty());
+}
+
+}  // namespace
+}  // namespace doublet::verify
