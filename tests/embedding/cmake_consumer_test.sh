@@ -39,4 +39,14 @@ echo "// edited" >>"$work/project/shaders/orbit_step.comp"
 cmake --build "$build" >"$work/build5.log"
 grep -c "doublet: lowering" "$work/build5.log" | grep -qx 1 || { echo "editing one shader should re-lower only it"; cat "$work/build5.log"; exit 1; }
 "$build/orbit_and_zoom" >/dev/null
+# MODE is reserved until the CLI has precision modes: a clear configure error, not a
+# silently different shader.
+sed -i 's/  TARGET_ES 310/  TARGET_ES 310 MODE fast/' "$work/project/CMakeLists.txt"
+if cmake -S "$work/project" -B "$work/build-mode" -DCMAKE_PREFIX_PATH="$prefix" >"$work/mode.log" 2>&1; then
+  if ! "$prefix/bin/doublet" lower --help | grep -q -- "--mode"; then
+    echo "MODE was accepted by a CLI without --mode"; exit 1
+  fi
+else
+  grep -q "MODE is reserved" "$work/mode.log" || { cat "$work/mode.log"; exit 1; }
+fi
 echo "cmake-consumer: OK"
