@@ -148,10 +148,11 @@ $DF df_round_even($DF a) {
 
 // df_mod: x - y * floor(x / y) (GLSL's definition). Where x / y is within df_div's error of an
 // integer, floor may pick the neighbouring integer, and the result is off by y (the function is
-// discontinuous there, in native fp64 as well).
+// discontinuous there, in native fp64 as well). Otherwise the product has 7u^2 abs(y q) <=
+// 7u^2 (abs(x) + abs(y)) and the subtraction 3u^2 abs(r).
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
-// Bound: 10u^2 * abs(x) (absolute) when floor(x / y) is exact
+// Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
 // Flops: 84
 // @widths 1 2 3 4
 $DF df_mod($DF a, $DF b) {

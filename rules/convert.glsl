@@ -165,3 +165,99 @@ $B df_to_bool($DF a) {
   $PRECISE $F s = $G(ah + al);
   return $B(s);
 }
+
+// df_pack_double2x32: the double whose IEEE binary64 bits are (v.x = low word, v.y = high word),
+// as float-float. Significand 1.m (52 bits) = t (21 bits) + mid (24 bits) + low (8 bits), each an
+// exact float; TwoSum joins the first two exactly, DWPlusFP adds the last (the only rounding:
+// 53 bits to a double-word), then df_ldexp scales by the exponent (exact unless the value is
+// outside float range, which gives Inf or 0). Zero and subnormal doubles give +-0.
+// Algorithm: TwoSum, DWPlusFP (JMP Algorithm 4), exponent scaling
+// Source: IEEE 754-2008 section 3.4; Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 27
+// @widths 1
+// @min-es 300
+// @uses df_two_sum:1 df_add_f:1 df_ldexp:1 df_neg:1
+df_double df_pack_double2x32(uvec2 v) {
+  uint exponent = (v.y >> 20u) & 2047u;
+  uint top = (v.y & 1048575u) | 1048576u;
+  uint mid = v.x >> 8u;
+  uint low = v.x & 255u;
+  uint sign_bit = v.y & 2147483648u;
+  if (exponent == 0u) {
+    uint zero_bits = sign_bit;
+    $PRECISE float z = $G(uintBitsToFloat(zero_bits));
+    return df_double(z, 0.0);
+  }
+  if (exponent == 2047u) {
+    bool nan = (v.y & 1048575u) != 0u || v.x != 0u;
+    uint special = nan ? 2143289344u : (sign_bit | 2139095040u);
+    $PRECISE float s = $G(uintBitsToFloat(special));
+    return df_double(s, 0.0);
+  }
+  $PRECISE float t = $G(float(top));
+  $PRECISE float tn = $G(t * 9.5367431640625e-07);
+  $PRECISE float m = $G(float(mid));
+  $PRECISE float mn = $G(m * 5.684341886080802e-14);
+  $PRECISE float l = $G(float(low));
+  $PRECISE float ln = $G(l * 2.220446049250313e-16);
+  df_double s = df_two_sum(tn, mn);
+  df_double r = df_add_f(s, ln);
+  int scale = int(exponent) - 1023;
+  df_double x = df_ldexp(r, scale);
+  if (sign_bit != 0u) {
+    df_double n = df_neg(x);
+    return n;
+  }
+  return x;
+}
+
+// df_unpack_double2x32: the IEEE binary64 bits (low word, high word) of the double nearest to a
+// (ties to even). With x = abs(a) * 2^-k in [1, 2): M = round(x * 2^52) = hi * 2^52 + roundEven(lo *
+// 2^52) exactly (hi * 2^52 is an integer), assembled in two 32-bit words with carry.
+// Algorithm: exponent of hi, exact scaling, integer assembly of the rounded significand
+// Source: IEEE 754-2008 section 3.4; JMP 2017, Definition 1.4 (abs(lo) <= ulp(hi)/2)
+// Bound: 0.5 ulp of binary64 (correctly rounded; exact when the value has at most 53 bits)
+// Flops: 8
+// @widths 1
+// @min-es 300
+// @uses df_abs:1 df_ldexp:1
+uvec2 df_unpack_double2x32(df_double a) {
+  uint sign_bit = floatBitsToUint(a.hi) & 2147483648u;
+  if (a.hi == 0.0) {
+    return uvec2(0u, sign_bit);
+  }
+  if (isnan(a.hi)) {
+    return uvec2(0u, 2146959360u);
+  }
+  uint inf_bits = sign_bit | 2146435072u;
+  if (isinf(a.hi)) {
+    return uvec2(0u, inf_bits);
+  }
+  df_double m = df_abs(a);
+  int bits = floatBitsToInt(m.hi);
+  int e = ((bits >> 23) & 255) - 127;
+  bool below = (bits & 8388607) == 0 && m.lo < 0.0;
+  int k = below ? e - 1 : e;
+  int nk = 0 - k;
+  df_double x = df_ldexp(m, nk);
+  $PRECISE float hs = $G(x.hi * 8388608.0);
+  $PRECISE float ls = $G(x.lo * 4503599627370496.0);
+  $PRECISE float lr = $G(roundEven(ls));
+  uint big = uint(hs);
+  uint high = big >> 3u;
+  uint low = big << 29u;
+  int li = int(lr);
+  uint add = uint(li >= 0 ? li : 0 - li);
+  uint sum = low + add;
+  uint difference = low - add;
+  uint carry = sum < low ? 1u : 0u;
+  uint borrow = low < add ? 1u : 0u;
+  uint low_word = li >= 0 ? sum : difference;
+  uint high_sig = li >= 0 ? high + carry : high - borrow;
+  bool overflow = high_sig >= 2097152u;
+  uint significand = overflow ? 1048576u : high_sig;
+  int biased = (overflow ? k + 1 : k) + 1023;
+  uint high_word = sign_bit | (uint(biased) << 20u) | (significand & 1048575u);
+  return uvec2(low_word, high_word);
+}

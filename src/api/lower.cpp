@@ -104,6 +104,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   result.manifest.target = std::string(to_string(options.target));
   if (!passes::lower_doubles(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
+  if (!passes::check_target(module, ctx)) return result;
 
   emit::PrintOptions print_options;
   print_options.target = options.target;

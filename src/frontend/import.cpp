@@ -59,6 +59,15 @@ class Importer {
         out.fields = struct_fields(t, loc, out.base == ir::Base::Struct);
         break;
       }
+      case EbtInt64:
+      case EbtUint64:
+        if (reported_.insert("int64").second)
+          error(loc, "64-bit integers (" + std::string(t.getBasicTypeString().c_str()) + ") are not available on " +
+                         std::string(to_string(options_.target)) +
+                         ": no target of doublet has them; split the value into two 32-bit ints (high and low "
+                         "words), or carry it as a double when it fits in 48 bits");
+        out.base = ir::Base::Void;
+        break;
       default:
         error(loc, std::string("type '") + t.getCompleteString().c_str() + "' is not supported by doublet");
         out.base = ir::Base::Void;
@@ -306,8 +315,20 @@ class Importer {
     return e;
   }
 
+  // Subgroup operations on doubles have no float-float form: a subgroup reduction would have to
+  // reduce hi and lo together, which no target's subgroup built-ins can do.
+  bool refuse_double_subgroup_op(TOperator op, TIntermTyped* node, TIntermTyped* operand) {
+    if (op <= EOpSubgroupGuardStart || op >= EOpSubgroupGuardStop) return false;
+    if (operand->getBasicType() != EbtDouble && node->getBasicType() != EbtDouble) return false;
+    error(node->getLoc(), "subgroup operations on doubles cannot be lowered for " + std::string(to_string(options_.target)) +
+                              ": a double is two floats (hi, lo) and subgroup built-ins move or combine one value; "
+                              "reduce through shared memory with the lowered double arithmetic instead");
+    return true;
+  }
+
   ir::ExprPtr unary(TIntermUnary* u) {
     TOperator op = u->getOp();
+    if (refuse_double_subgroup_op(op, u, u->getOperand())) return make(ir::Expr::Kind::Const, u);
     if (is_conversion(op) || op == EOpCopyObject) {
       auto e = make(ir::Expr::Kind::Construct, u);
       e->args = {expr(u->getOperand())};
@@ -331,6 +352,9 @@ class Importer {
 
   ir::ExprPtr aggregate(TIntermAggregate* a) {
     TOperator op = a->getOp();
+    if (!a->getSequence().empty() && a->getSequence()[0]->getAsTyped() &&
+        refuse_double_subgroup_op(op, a, a->getSequence()[0]->getAsTyped()))
+      return make(ir::Expr::Kind::Const, a);
     std::vector<ir::ExprPtr> args;
     for (TIntermNode* n : a->getSequence()) args.push_back(expr(n));
     if (op == EOpFunctionCall) {
@@ -530,6 +554,7 @@ class Importer {
   std::map<std::pair<long long, int>, ir::VarPtr> members_;
   std::map<std::string, std::shared_ptr<std::vector<ir::Field>>> structs_;
   std::set<const ir::Var*> declared_;
+  std::set<std::string> reported_;  // diagnostics given once per kind
 
  public:
   bool failed() const { return failed_; }

@@ -2,7 +2,10 @@
 //   lower_doubles     every double value becomes a df_* struct (hi + lo), every
 //                     operation on one a call into the float-float runtime;
 //   split_interfaces  a double in/out/uniform X becomes X_hi + X_lo of the
-//                     same-shaped float type, joined/split at main's edges.
+//                     same-shaped float type, joined/split at main's edges;
+//   check_target      what the target language lacks (ES 1.00: uint, bit operators,
+//                     switch, array constructors, non-float varyings) is diagnosed.
+// Double matrices: matrix_helpers.hpp; block layouts for the manifest: block_layout.hpp.
 #pragma once
 
 #include <map>
@@ -43,5 +46,7 @@ int df_width(const ir::Type& t);
 
 bool lower_doubles(ir::Module& module, Context& context);
 bool split_interfaces(ir::Module& module, Context& context, Manifest& manifest);
+// Diagnoses, by construct and target, what the lowered shader needs but the target lacks.
+bool check_target(const ir::Module& module, Context& context);
 
 }  // namespace doublet::passes

@@ -440,6 +440,7 @@ class DoubleLowering {
   }
 
   ExprPtr lower_builtin(const ExprPtr& e) {
+    if (e->name == "packDouble2x32") return rule("df_pack_double2x32", 1, df_type(1), e->args, e->loc);
     bool any_df = std::any_of(e->args.begin(), e->args.end(),
                               [](const ExprPtr& a) { return is_df(a->type) || matrix::is_matrix(a->type); });
     if (!any_df) return e;
@@ -479,9 +480,13 @@ class DoubleLowering {
         {"equal", {"df_equal_components", Builtin::Bools}}, {"notEqual", {"df_not_equal_components", Builtin::Bools}},
     };
     const std::string& n = e->name;
-    if (n == "packDouble2x32" || n == "unpackDouble2x32") {
-      ctx_.error(e->loc, n + " is not supported yet: a float-float value has no IEEE double bit pattern; pass hi "
-                         "and lo as two floats instead");
+    if (n == "unpackDouble2x32")
+      return rule("df_unpack_double2x32", 1, ir::scalar_type(ir::Base::Uint, 2), e->args, e->loc);
+    if (n.rfind("atomic", 0) == 0) {
+      ctx_.error(e->loc, "atomic operations on doubles (" + n + ") cannot be lowered for " +
+                             std::string(to_string(ctx_.options.target)) +
+                             ": a double becomes two floats (hi, lo) that no atomic can update together; accumulate "
+                             "per invocation and reduce afterwards, or use an integer fixed-point atomicAdd");
       return e;
     }
     auto it = table.find(n);
