@@ -4,6 +4,7 @@
 #include <regex>
 #include <set>
 
+#include "api/big_stack.hpp"
 #include "doublet/doublet.hpp"
 #include "emit/printer.hpp"
 #include "emit/validate.hpp"
@@ -167,9 +168,31 @@ Result lower_unchecked(std::string_view source, const Options& options) {
 
 }  // namespace
 
+// Deeper expressions than this are refused before glslang sees them: even
+// the 1 GiB stack below would not hold glslang's recursion much beyond it.
+constexpr std::size_t kMaxStatementOperators = 200000;
+
 Result lower(std::string_view source, const Options& options) {
   try {
-    return lower_unchecked(source, options);
+    if (std::size_t depth = max_statement_operators(source); depth > kMaxStatementOperators) {
+      Result r;
+      r.diagnostics.push_back({options.file_name, 1, 1, Severity::Error,
+                               "a statement with " + std::to_string(depth) + " operators is nested too deeply for "
+                               "doublet (limit " + std::to_string(kMaxStatementOperators) + "); split it up"});
+      return r;
+    }
+    Result result;
+    std::exception_ptr failure;
+    bool ran = run_with_big_stack([&] {
+      try {
+        result = lower_unchecked(source, options);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    });
+    if (!ran) result = lower_unchecked(source, options);
+    if (failure) std::rethrow_exception(failure);
+    return result;
   } catch (const std::exception& e) {
     Result r;
     r.diagnostics.push_back({options.file_name, 0, 0, Severity::Error, std::string("internal error: ") + e.what()});
