@@ -10,6 +10,7 @@
 #include "atomic_file.hpp"
 #include "commands.hpp"
 #include "verify/report.hpp"
+#include "verify/sweep.hpp"
 #include "verify/verify.hpp"
 
 namespace doublet::cli {
@@ -21,6 +22,8 @@ struct VerifyArgs {
   std::vector<std::string> ranges, defines, include_dirs;
   uint64_t samples = 1024, seed = 1;
   std::optional<double> min_bits;
+  std::string sweep, sweep_stage = "comp", heatmap_dir = ".";
+  int grid_step = 1;
 };
 
 // Exit codes of verify (docs/verify.md): 1 = accuracy below --min-bits; 3 = a driver failed.
@@ -41,7 +44,37 @@ bool read_file(const std::string& path, std::string* out) {
   return true;
 }
 
+// --sweep OP|all: per-operation sweeps against MPFR; exit 1 when an op leaves its bound.
+int run_sweep(const VerifyArgs& a) {
+  if (a.sweep_stage != "comp") return input_error("--sweep supports --stage comp only so far");
+  verify::SweepOptions o;
+  o.ops = a.sweep == "all" ? verify::sweep_ops() : std::vector<std::string>{a.sweep};
+  const std::optional<Target> target = parse_target(a.target);
+  if (!target) return input_error("unknown target '" + a.target + "'");
+  o.target = *target;
+  o.grid_step = a.grid_step;
+  o.heatmap_dir = a.heatmap_dir;
+  o.seed = a.seed;
+  o.sabotage = verify::parse_sabotage(a.sabotage).value_or(verify::Sabotage::None);
+  bool within = true;
+  for (runner::Backend b : {runner::Backend::Vulkan, runner::Backend::Gles}) {
+    if ((a.backend == "vulkan" && b != runner::Backend::Vulkan) || (a.backend == "gles" && b != runner::Backend::Gles))
+      continue;
+    std::cout << "[" << (b == runner::Backend::Vulkan ? "vulkan" : "gles") << "] "
+              << verify::describe(verify::probe_compute(b)) << "\n" << std::flush;
+    o.backend = b;
+    std::string error;
+    const std::vector<verify::OpSweep> sweeps = verify::sweep(o, &error);
+    if (!error.empty()) return error.find("unknown sweep op") == 0 ? input_error(error) : (std::cerr << error << "\n", kExitDriver);
+    std::cout << verify::format_sweep(sweeps) << std::flush;
+    for (const verify::OpSweep& s : sweeps) within &= s.within_bound;
+  }
+  return within ? kExitOk : kExitBelowMinBits;
+}
+
 int run_verify(const VerifyArgs& a) {
+  if (!a.sweep.empty()) return run_sweep(a);
+  if (a.shader.empty()) return input_error("SHADER is required (or --sweep OP|all)");
   verify::VerifyOptions o;
   o.lower.file_name = a.shader;
   o.lower.stage = a.stage.empty() ? stage_from_path(a.shader) : parse_stage(a.stage);
@@ -96,7 +129,12 @@ Command add_verify_command(CLI::App& app) {
   auto args = std::make_shared<VerifyArgs>();
   CLI::App* cmd = app.add_subcommand(
       "verify", "Run SHADER natively (fp64, lavapipe) and lowered (lavapipe / Mesa GLES); report accuracy per output");
-  cmd->add_option("SHADER", args->shader, "shader file (.comp)")->required();
+  cmd->add_option("SHADER", args->shader, "shader file (.comp); not with --sweep");
+  cmd->add_option("--sweep", args->sweep, "OP|all: per-operation sweep against MPFR (add sub mul div sqrt)");
+  cmd->add_option("--stage", args->sweep_stage, "stage of the sweep (comp)");
+  cmd->add_option("--heatmap-dir", args->heatmap_dir, "where --sweep writes its PNG heatmaps (default .)");
+  cmd->add_option("--grid-step", args->grid_step, "exponent step of the sweep grid (default 1)")
+      ->check(CLI::Range(1, 64));
   cmd->add_option("-S", args->stage, "stage: vert|frag|comp (default: from the extension)");
   cmd->add_option("--target", args->target, "target of the lowering (default es310)");
   cmd->add_option("--samples", args->samples, "input sets (default 1024)")->check(CLI::PositiveNumber);
