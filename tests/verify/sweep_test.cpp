@@ -27,7 +27,8 @@ std::vector<OpSweep> small_sweep(runner::Backend backend, Sabotage sabotage, con
 class Sweep : public ::testing::TestWithParam<runner::Backend> {};
 
 TEST_P(Sweep, EveryOpWithinItsBoundAndHeatmapsWritten) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "doublet_sweep_test";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                     ("doublet_sweep_test_" + std::string(runner::backend_name(GetParam())));
   const std::vector<OpSweep> s = small_sweep(GetParam(), Sabotage::None, dir.string());
   std::printf("%s", format_sweep(s).c_str());
   for (const OpSweep& o : s) {
