@@ -110,6 +110,19 @@ void members(const Layout& layout, const ir::Type& type, const std::string& pref
     if (plain_struct && !f.type.is_array()) {
       members(layout, elem, prefix + f.name + ".", base + offset, out);
     } else {
+      if (plain_struct) {  // an array of structs: the array (with its stride), then element 0's members
+        BlockMember array;
+        array.name = prefix + f.name;
+        array.type = original_name(f.type);
+        array.lowered_type = ir::type_name(f.type) + ir::array_suffix(f.type);
+        array.offset = base + offset;
+        array.size = whole.size;
+        array.array_stride = layout.stride(f.type);
+        out.push_back(array);
+        members(layout, elem, prefix + f.name + "[0].", base + offset, out);
+        offset += whole.size;
+        continue;
+      }
       BlockMember m;
       m.name = prefix + f.name;
       m.type = original_name(f.type);
@@ -128,6 +141,14 @@ void members(const Layout& layout, const ir::Type& type, const std::string& pref
 }
 
 }  // namespace
+
+bool holds_doubles(const ir::Type& t) {
+  if (t.base == ir::Base::Double || t.name.rfind("df_d", 0) == 0) return true;
+  if (t.fields)
+    for (const auto& f : *t.fields)
+      if (holds_doubles(f.type)) return true;
+  return false;
+}
 
 std::vector<BlockMember> block_layout(const ir::Type& block, const std::string& packing) {
   std::vector<BlockMember> out;

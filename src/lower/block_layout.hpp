@@ -9,6 +9,9 @@ namespace doublet::passes {
 
 // Members (nested struct members with dotted names) of `block`, whose type is already lowered,
 // laid out with `packing` ("std140" or "std430").
+// True when `t` (before or after lowering) holds doubles anywhere in its members.
+bool holds_doubles(const ir::Type& t);
+
 std::vector<BlockMember> block_layout(const ir::Type& block, const std::string& packing);
 
 }  // namespace doublet::passes

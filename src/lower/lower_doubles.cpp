@@ -8,6 +8,7 @@
 
 #include "emit/printer.hpp"
 #include "ir/walk.hpp"
+#include "lower/block_layout.hpp"
 #include "lower/lower.hpp"
 #include "lower/matrix_helpers.hpp"
 
@@ -103,7 +104,7 @@ class DoubleLowering {
       for (auto& f : *t.fields) f.type = lower_type(f.type, {});
     for (size_t i = 0; i < module_.globals.size(); ++i) {
       auto& g = module_.globals[i];
-      if (g->type.base == ir::Base::Block && g->type.contains_double()) lower_block(*g);
+      if (g->type.base == ir::Base::Block && holds_doubles(g->type)) lower_block(*g);
       lower_var(*g);
       if (module_.global_inits[i]) module_.global_inits[i] = lower(module_.global_inits[i]);
     }

@@ -72,6 +72,8 @@ int rows(const ir::Type& t) { return t.name.size() > 8 ? t.name[9] - '0' : cols(
 std::string elementwise(Context& ctx, const std::string& rule, int c, int r, Operand a, Operand b) {
   auto spell = [&](Operand o) { return o == Operand::Matrix ? suffix(c, r) : std::string("double"); };
   std::string name = rule + "_" + spell(a) + "_" + spell(b);
+  // df_mul_dmatN_dmatN is the linear-algebra product (times_matrix); component-wise is matrixCompMult.
+  if (rule == "df_mul" && a == Operand::Matrix && b == Operand::Matrix) name = "df_matrix_comp_mult_" + suffix(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_rule(rule, r);
   ctx.use_matrix(c, r);

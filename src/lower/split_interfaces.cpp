@@ -66,6 +66,24 @@ void for_each_element(const ExprPtr& e, const std::function<void(const ExprPtr&)
   for (int i = 0; i < e->type.array_dims[0]; ++i) for_each_element(index(e, i), f);
 }
 
+// GL uniform names of every leaf of a (lowered) struct uniform: "s.a.hi", "s.b[1].lo", "s.m.hi".
+void uniform_leaves(const ir::Type& t, const std::string& name, std::vector<std::string>& out) {
+  if (t.is_array()) {
+    for (int i = 0; i < t.array_dims[0]; ++i) uniform_leaves(t.element(), name + "[" + std::to_string(i) + "]", out);
+    return;
+  }
+  if (t.base == ir::Base::Struct && t.name.rfind("df_d", 0) == 0) {
+    out.push_back(name + ".hi");
+    out.push_back(name + ".lo");
+    return;
+  }
+  if (t.base == ir::Base::Struct && t.fields) {
+    for (const auto& f : *t.fields) uniform_leaves(f.type, name + "." + f.name, out);
+    return;
+  }
+  out.push_back(name);
+}
+
 struct Split {
   ir::VarPtr original, hi, lo;
   ir::Storage storage;  // the original's storage class
@@ -115,7 +133,15 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       entry.name = v->name;
       entry.storage = storage_name(v->storage, module.stage, es100);
       entry.type = ir::type_name(v->declared_type) + ir::array_suffix(v->declared_type);
-      if (!v->declared_type.is_double()) {
+      if (v->storage == ir::Storage::Uniform && !v->declared_type.is_double() && v->type.base == ir::Base::Struct &&
+          holds_doubles(v->type)) {
+        // A struct uniform keeps its name; its double members are df_* structs, so the host sets
+        // "s.member.hi" and "s.member.lo": list those leaf names.
+        entry.split = true;
+        entry.lowered_type = ir::type_name(v->type) + ir::array_suffix(v->type);
+        uniform_leaves(v->type, v->name, entry.lowered_names);
+        manifest.variables.push_back(entry);
+      } else if (!v->declared_type.is_double()) {
         entry.lowered_type = entry.type;
         entry.lowered_names = {v->name};
         if (v->layout.location >= 0) entry.locations = {v->layout.location};
@@ -161,7 +187,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         splits.push_back(s);
       }
     }
-    if (interface && v->type.base == ir::Base::Block && v->declared_type.contains_double()) {
+    if (interface && v->type.base == ir::Base::Block && holds_doubles(v->type)) {
       InterfaceVariable entry;
       entry.name = v->name.rfind("anon@", 0) == 0 ? v->type.name : v->name;
       entry.storage = storage_name(v->storage, module.stage, es100);

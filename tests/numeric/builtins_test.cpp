@@ -43,7 +43,7 @@ double load(uint k) { return double(words[k].x) + double(words[k].y); }
 
 void main() {
   uint i = gl_GlobalInvocationID.x;
-  base = i * 40u;
+  base = i * 45u;
   double x = load(4u * i), y = load(4u * i + 1u), z = load(4u * i + 2u), w = load(4u * i + 3u);
   put(0, floor(x));
   put(1, ceil(x));
@@ -86,9 +86,15 @@ void main() {
   results[base + 37u] = uintBitsToFloat(ub);
   put(38, packDouble2x32(bits[i]));
   put(39, outerProduct(v, u)[1][2]);
+  dmat3 P = M * transpose(M);
+  put(40, P[1][2]);
+  put(41, matrixCompMult(M, transpose(M))[2][0]);
+  put(42, (u * M).y);
+  put(43, (M - 2.0lf)[1][1]);
+  put(44, (M / y)[2][0]);
 }
 )";
-constexpr int kSlots = 40;
+constexpr int kSlots = 45;
 
 struct Pair {
   float hi, lo;
@@ -299,6 +305,37 @@ std::vector<Check> checks() {
            [](const Sample&, LD r) { return rel(2, r); }};
   c[39] = {"outerProduct", [](const Sample& s) { return v_of(s).a[2] * u_of(s).a[1]; },
            [](const Sample&, LD r) { return rel(7, r); }};
+  auto mat = [](const Sample& s, int col, int row) {
+    LD m[3][3];
+    matrix_of(s, m);
+    return m[col][row];
+  };
+  // (M M^T)[1][2] = sum_k M[k][2] M[k][1]: a dot of width 3 over the matrix's rows.
+  c[40] = {"dmat3*dmat3", [mat](const Sample& s) {
+             LD r = 0;
+             for (int k = 0; k < 3; ++k) r += mat(s, k, 2) * mat(s, k, 1);
+             return r;
+           },
+           [mat](const Sample& s, LD) {
+             LD sum = 0;
+             for (int k = 0; k < 3; ++k) sum += std::fabs(mat(s, k, 2) * mat(s, k, 1));
+             return 13 * kU2 * sum;
+           }};
+  c[41] = {"matrixCompMult", [mat](const Sample& s) { return mat(s, 2, 0) * mat(s, 0, 2); },
+           [](const Sample&, LD r) { return rel(7, r); }};
+  c[42] = {"dvec3*dmat3", [mat](const Sample& s) {
+             Vec3 u = u_of(s);
+             return u.a[0] * mat(s, 1, 0) + u.a[1] * mat(s, 1, 1) + u.a[2] * mat(s, 1, 2);
+           },
+           [mat](const Sample& s, LD) {
+             Vec3 u = u_of(s);
+             return 13 * kU2 *
+                    (std::fabs(u.a[0] * mat(s, 1, 0)) + std::fabs(u.a[1] * mat(s, 1, 1)) + std::fabs(u.a[2] * mat(s, 1, 2)));
+           }};
+  c[43] = {"dmat3-double", [mat](const Sample& s) { return mat(s, 1, 1) - 2; },
+           [](const Sample&, LD r) { return rel(3, r); }};
+  c[44] = {"dmat3/double", [mat](const Sample& s) { return mat(s, 2, 0) / s.y.value(); },
+           [](const Sample&, LD r) { return rel(15, r); }};
   return c;
 }
 

@@ -1,0 +1,1335 @@
+#version 310 es
+precision highp float;
+precision highp int;
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
+
+// doublet float-float runtime: 87 functions from rules/*.glsl, guard: uniform df_guard
+struct df_double { float hi; float lo; };
+struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard;  // never set: GL zero-fills it at link
+
+// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_double df_neg(df_double a) {
+  float h = ((-a.hi) + df_guard);
+  float l = ((-a.lo) + df_guard);
+  return df_double(h, l);
+}
+
+// df_sign: -1, 0 or +1, the sign of hi.
+// Algorithm: sign of hi
+// Source: JMP 2017, Definition 1.4 (the sign of a double-word number is the sign of hi)
+// Bound: exact
+// Flops: 1
+df_double df_sign(df_double a) {
+  float s = ((sign(a.hi)) + df_guard);
+  return df_double(s, float(0.0));
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  float s = ((a + b) + df_guard);
+  float z = ((s - a) + df_guard);
+  float e = ((b - z) + df_guard);
+  return df_double(s, e);
+}
+
+// df_floor: largest integer <= x. hi not an integer: floor(hi); else hi + floor(lo), joined by
+// Fast2Sum (|floor(lo)| <= |hi| since |lo| <= ulp(hi)/2 and |hi| >= 1).
+// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is an integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Bound: exact
+// Flops: 5
+df_double df_floor(df_double a) {
+  float f = ((floor(a.hi)) + df_guard);
+  if (f == a.hi) {
+    float g = ((floor(a.lo)) + df_guard);
+    df_double r = df_fast_two_sum(a.hi, g);
+    return r;
+  }
+  return df_double(f, float(0.0));
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  float s = ((a + b) + df_guard);
+  float bb = ((s - a) + df_guard);
+  float ab = ((s - bb) + df_guard);
+  float da = ((a - ab) + df_guard);
+  float db = ((b - bb) + df_guard);
+  float e = ((da + db) + df_guard);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  float c = ((s.lo + t.hi) + df_guard);
+  df_double v = df_fast_two_sum(s.hi, c);
+  float w = ((t.lo + v.lo) + df_guard);
+  df_double z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_ceil: smallest integer >= x (the mirror of df_floor).
+// Algorithm: ceil of hi, or Fast2Sum(hi, ceil(lo)) when hi is an integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Bound: exact
+// Flops: 5
+df_double df_ceil(df_double a) {
+  float c = ((ceil(a.hi)) + df_guard);
+  if (c == a.hi) {
+    float g = ((ceil(a.lo)) + df_guard);
+    df_double r = df_fast_two_sum(a.hi, g);
+    return r;
+  }
+  return df_double(c, float(0.0));
+}
+
+// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
+// Algorithm: df_ceil or df_floor by the sign of hi
+// Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
+// Bound: exact
+// Flops: 5
+df_double df_trunc(df_double a) {
+  if (a.hi < 0.0) {
+    df_double c = df_ceil(a);
+    return c;
+  }
+  df_double f = df_floor(a);
+  return f;
+}
+
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 10
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  float v = ((a.lo + s.lo) + df_guard);
+  df_double z = df_fast_two_sum(s.hi, v);
+  return z;
+}
+
+// df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
+// TwoSum(hi, -floor(hi)) is exact and lo is added with DWPlusFP (exact when hi >= 0 or
+// |hi| >= 1, where hi - floor(hi) is a float).
+// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
+// Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 18
+df_double df_fract(df_double a) {
+  float f = ((floor(a.hi)) + df_guard);
+  if (f == a.hi) {
+    float g = ((floor(a.lo)) + df_guard);
+    float ng = ((0.0 - g) + df_guard);
+    df_double r = df_two_sum(a.lo, ng);
+    return r;
+  }
+  float nf = ((0.0 - f) + df_guard);
+  df_double t = df_two_sum(a.hi, nf);
+  df_double s = df_add_f(t, a.lo);
+  return s;
+}
+
+// df_round: nearest integer, halves away from zero (GLSL lets the implementation choose).
+// Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
+// Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 33
+// Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
+df_double df_round(df_double a) {
+  df_double f = df_floor(a);
+  df_double d = df_fract(a);
+  bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
+  bool tie = d.hi == 0.5 && d.lo == 0.0;
+  if (above || (tie && a.hi >= 0.0)) {
+    df_double u = df_add_f(f, 1.0);
+    return u;
+  }
+  return f;
+}
+
+// df_round_even: nearest integer, halves to the even neighbour (roundEven).
+// Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
+// Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 39
+// Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
+// (one of them is even: fl != 0 only when ulp(fh) >= 2).
+df_double df_round_even(df_double a) {
+  df_double f = df_floor(a);
+  df_double d = df_fract(a);
+  float h2 = ((f.hi * 0.5) + df_guard);
+  float fh2 = ((floor(h2)) + df_guard);
+  float ph = ((h2 - fh2) + df_guard);
+  float l2 = ((f.lo * 0.5) + df_guard);
+  float fl2 = ((floor(l2)) + df_guard);
+  float pl = ((l2 - fl2) + df_guard);
+  float parity = ((ph + pl) + df_guard);
+  bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
+  bool tie = d.hi == 0.5 && d.lo == 0.0;
+  if (above || (tie && parity == 0.5)) {
+    df_double u = df_add_f(f, 1.0);
+    return u;
+  }
+  return f;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_double df_split(float a) {
+  float g = ((a * 4097.0) + df_guard);
+  float d = ((a - g) + df_guard);
+  float hi = ((g + d) + df_guard);
+  float lo = ((a - hi) + df_guard);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  float p = ((a * b) + df_guard);
+  df_double sa = df_split(a);
+  df_double sb = df_split(b);
+  float hh = ((sa.hi * sb.hi) + df_guard);
+  float hl = ((sa.hi * sb.lo) + df_guard);
+  float lh = ((sa.lo * sb.hi) + df_guard);
+  float ll = ((sa.lo * sb.lo) + df_guard);
+  float t1 = ((hh - p) + df_guard);
+  float t2 = ((t1 + hl) + df_guard);
+  float t3 = ((t2 + lh) + df_guard);
+  float e = ((t3 + ll) + df_guard);
+  return df_double(p, e);
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 25
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2).
+// Range: |ah|, |b| <= 8.3e34 (split).
+df_double df_mul_f(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  float cl2 = ((a.lo * b) + df_guard);
+  df_double t = df_fast_two_sum(c.hi, cl2);
+  float tl2 = ((t.lo + c.lo) + df_guard);
+  df_double z = df_fast_two_sum(t.hi, tl2);
+  return z;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 33
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error). b == 0 gives NaN (the split of Inf), not Inf.
+// Range: |th| and |bh| <= 8.3e34 (split).
+df_double df_div(df_double a, df_double b) {
+  float th = ((a.hi / b.hi) + df_guard);
+  df_double r = df_mul_f(b, th);
+  float pih = ((a.hi - r.hi) + df_guard);
+  float dl = ((a.lo - r.lo) + df_guard);
+  float d = ((pih + dl) + df_guard);
+  float tl = ((d / b.hi) + df_guard);
+  df_double z = df_fast_two_sum(th, tl);
+  return z;
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_double df_mul(df_double a, df_double b) {
+  df_double c = df_two_prod(a.hi, b.hi);
+  float tl = ((a.hi * b.lo) + df_guard);
+  float th = ((a.lo * b.hi) + df_guard);
+  float cl2 = ((th + tl) + df_guard);
+  float cl3 = ((c.lo + cl2) + df_guard);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 22
+df_double df_sub(df_double a, df_double b) {
+  df_double nb = df_neg(b);
+  df_double z = df_add(a, nb);
+  return z;
+}
+
+// df_mod: x - y * floor(x / y) (GLSL's definition). Where x / y is within df_div's error of an
+// integer, floor may pick the neighbouring integer, and the result is off by y (the function is
+// discontinuous there, in native fp64 as well). Otherwise the product has 7u^2 abs(y q) <=
+// 7u^2 (abs(x) + abs(y)) and the subtraction 3u^2 abs(r).
+// Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
+// Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
+// Flops: 84
+df_double df_mod(df_double a, df_double b) {
+  df_double q = df_div(a, b);
+  df_double f = df_floor(q);
+  df_double p = df_mul(b, f);
+  df_double r = df_sub(a, p);
+  return r;
+}
+
+// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign.
+// Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
+// Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2
+// Flops: 27
+df_double df_modf(df_double a, out df_double i) {
+  i = df_trunc(a);
+  df_double r = df_sub(a, i);
+  return r;
+}
+
+// df_lt: a < b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_lt(df_double a, df_double b) {
+  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+}
+
+// df_min: component-wise min(a, b) = b < a ? b : a (GLSL definition).
+// Algorithm: lexicographic compare (df_lt) and select; widths 2-4 per component
+// Source: GLSL ES 3.20 section 8.3 (min); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+df_double df_min(df_double a, df_double b) {
+  if (df_lt(b, a)) {
+    return b;
+  }
+  return a;
+}
+
+// df_max: component-wise max(a, b) = a < b ? b : a (GLSL definition).
+// Algorithm: lexicographic compare (df_lt) and select; widths 2-4 per component
+// Source: GLSL ES 3.20 section 8.3 (max); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+df_double df_max(df_double a, df_double b) {
+  if (df_lt(a, b)) {
+    return b;
+  }
+  return a;
+}
+
+// df_clamp: min(max(x, lo), hi).
+// Algorithm: df_max then df_min (lexicographic compare and select)
+// Source: GLSL 4.60 (2019) section 8.3 (clamp); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (6 comparisons per component)
+df_double df_clamp(df_double x, df_double lo, df_double hi) {
+  df_double m = df_max(x, lo);
+  df_double r = df_min(m, hi);
+  return r;
+}
+
+// df_mix: x + a * (y - x), as GLSL defines mix (r is the result).
+// Algorithm: AccurateDWPlusDW, DWTimesDW1, AccurateDWPlusDW
+// Source: GLSL 4.60 (2019) section 8.3 (mix); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 3u^2 * abs(r) + 10u^2 * abs(a * (y - x)) (absolute, first order)
+// Flops: 66
+df_double df_mix(df_double x, df_double y, df_double a) {
+  df_double d = df_sub(y, x);
+  df_double p = df_mul(a, d);
+  df_double r = df_add(x, p);
+  return r;
+}
+
+// df_mix_bool: a ? y : x per component (mix with a boolean selector).
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBDType)
+// Bound: exact
+// Flops: 0
+df_double df_mix_bool(df_double x, df_double y, bool a) {
+  if (a) {
+    return y;
+  }
+  return x;
+}
+
+// df_step: 0.0 if x < edge, else 1.0.
+// Algorithm: lexicographic compare (df_lt)
+// Source: GLSL 4.60 (2019) section 8.3 (step); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (3 comparisons)
+df_double df_step(df_double edge, df_double x) {
+  if (df_lt(x, edge)) {
+    return df_double(0.0, 0.0);
+  }
+  return df_double(1.0, 0.0);
+}
+
+// df_smoothstep: t = clamp((x - e0) / (e1 - e0), 0, 1); t * t * (3 - 2t). t has relative error
+// 3 + 3 + 15 = 21u^2 (each subtraction is one AccurateDWPlusDW of exact inputs); the cubic's
+// slope is at most 1.5 and its evaluation adds 7 + 9 + 7 u^2 on [0, 1].
+// Algorithm: AccurateDWPlusDW, DWDivDW2, clamp, DWTimesDW1
+// Source: GLSL 4.60 (2019) section 8.3 (smoothstep); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 55u^2 (absolute; the result is in [0, 1])
+// Flops: 170
+df_double df_smoothstep(df_double e0, df_double e1, df_double x) {
+  df_double n = df_sub(x, e0);
+  df_double d = df_sub(e1, e0);
+  df_double q = df_div(n, d);
+  df_double t = df_clamp(q, df_double(float(0.0), float(0.0)), df_double(float(1.0), float(0.0)));
+  df_double s = df_mul(t, t);
+  df_double t2 = df_add(t, t);
+  df_double c = df_sub(df_double(float(3.0), float(0.0)), t2);
+  df_double r = df_mul(s, c);
+  return r;
+}
+
+// df_fma: a * b + c. Not fused: the product is rounded (DWTimesDW1), then added.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 3u^2 * abs(r) + 7u^2 * abs(a * b) (absolute, first order)
+// Flops: 44
+df_double df_fma(df_double a, df_double b, df_double c) {
+  df_double p = df_mul(a, b);
+  df_double r = df_add(p, c);
+  return r;
+}
+
+// df_exp2i: the bit patterns of two floats whose product is 2^e, -252 <= e <= 254 (exact factors
+// built from exponent bits; intBitsToFloat needs ES 3.00). Beyond that range the caller's product over/underflows anyway.
+// Algorithm: IEEE 754 binary32 exponent field
+// Source: IEEE 754-2008 section 3.4 (binary interchange format encodings)
+// Bound: exact
+// Flops: 0 (integer operations)
+ivec2 df_exp2i(int e) {
+  int c = clamp(e, -252, 254);
+  int e1 = c / 2;
+  int e2 = c - e1;
+  int b1 = (e1 + 127) << 23;
+  int b2 = (e2 + 127) << 23;
+  return ivec2(b1, b2);
+}
+
+// df_ldexp: x * 2^e, both words scaled by powers of two (exact unless over/underflow).
+// Algorithm: scaling of hi and lo by 2^e in two exact steps
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 4
+df_double df_ldexp(df_double a, int e) {
+  ivec2 b = df_exp2i(e);
+  float s1 = ((intBitsToFloat(b.x)) + df_guard);
+  float s2 = ((intBitsToFloat(b.y)) + df_guard);
+  float h1 = ((a.hi * s1) + df_guard);
+  float h = ((h1 * s2) + df_guard);
+  float l1 = ((a.lo * s1) + df_guard);
+  float l = ((l1 * s2) + df_guard);
+  return df_double(h, l);
+}
+
+// df_frexp: x = m * 2^e with 0.5 <= |m| < 1 (m = 0, e = 0 for x = 0). The exponent is hi's;
+// when hi = +-2^k and lo has the opposite sign, |x| < 2^k, so e is one less.
+// Algorithm: exponent field of hi, corrected by the sign of lo, then df_ldexp
+// Source: IEEE 754-2008 section 5.3.3 (logB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 4
+// Range: hi must be a normal float (|x| >= 2^-126); Inf and NaN give undefined results, as in GLSL.
+df_double df_frexp(df_double a, out int e) {
+  if (a.hi == 0.0) {
+    e = 0;
+    return df_double(0.0, 0.0);
+  }
+  int bits = floatBitsToInt(a.hi);
+  int k = ((bits >> 23) & 255) - 126;
+  int mantissa = bits & 8388607;
+  bool below = mantissa == 0 && ((a.hi > 0.0 && a.lo < 0.0) || (a.hi < 0.0 && a.lo > 0.0));
+  int exponent = below ? k - 1 : k;
+  int scale = 0 - exponent;
+  e = exponent;
+  df_double m = df_ldexp(a, scale);
+  return m;
+}
+
+// df_abs: |a|. Both words are multiplied by sign(hi) (exactly -1, 0 or +1).
+// Algorithm: sign of hi applied to both words
+// Source: JMP 2017, Definition 1.4 (sign of a double-word number is the sign of hi)
+// Bound: exact
+// Flops: 3
+df_double df_abs(df_double a) {
+  float s = ((sign(a.hi)) + df_guard);
+  float h = ((abs(a.hi)) + df_guard);
+  float l = ((a.lo * s) + df_guard);
+  return df_double(h, l);
+}
+
+// df_sqrt: sqrt(a) for a >= 0; sqrt(0) = 0 (not NaN). a < 0 is undefined, like GLSL sqrt().
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
+// Bound: 25/8 u^2
+// Flops: 27
+// Steps (LLMPR Algorithm 8, our no-FMA form):
+//   sh   = RN(sqrt(ah))
+//   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
+//   r0   = RN(ah - p)                exact: ah/2 <= p <= 2ah (Sterbenz)
+//   rho1 = RN(r0 - e)                == RN(ah - sh^2), the value fma(-sh, sh, ah) returns
+//   rho2 = RN(al + rho1)
+//   sl   = RN(rho2 / (2 sh))
+//   (zh,zl) = Fast2Sum(sh, sl)
+// sh is guarded too: Mesa rewrites sqrt(x)*sqrt(x) to |x|, which would zero the residual.
+// So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
+// correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
+// few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
+// not proved). Zero: 2 sh is clamped below by 1e-30, so a = 0 gives rho2 = 0, sl = 0/1e-30 = 0;
+// for any float a > 0, 2 sh >= 2^-74 > 1e-30, so the clamp never changes a nonzero result.
+// Range: a < FLT_MAX; Inf gives NaN (split of Inf).
+df_double df_sqrt(df_double a) {
+  float sh = ((sqrt(a.hi)) + df_guard);
+  df_double sq = df_two_prod(sh, sh);
+  float r0 = ((a.hi - sq.hi) + df_guard);
+  float rho1 = ((r0 - sq.lo) + df_guard);
+  float rho2 = ((a.lo + rho1) + df_guard);
+  float sh2 = ((sh * 2.0) + df_guard);
+  float den = ((max(sh2, 1.0e-30)) + df_guard);
+  float sl = ((rho2 / den) + df_guard);
+  df_double z = df_fast_two_sum(sh, sl);
+  return z;
+}
+
+// df_inversesqrt: 1 / sqrt(a): SQRTDWtoDW, then DWDivDW2 of 1 by the root.
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), then DWDivDW2 (JMP Algorithm 17)
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 18.125u^2
+// Flops: 60
+df_double df_inversesqrt(df_double a) {
+  df_double s = df_sqrt(a);
+  df_double r = df_div(df_double(float(1.0), float(0.0)), s);
+  return r;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_dvec3 df_split(vec3 a) {
+  vec3 g = ((a * 4097.0) + df_guard);
+  vec3 d = ((a - g) + df_guard);
+  vec3 hi = ((g + d) + df_guard);
+  vec3 lo = ((a - hi) + df_guard);
+  return df_dvec3(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_dvec3 df_two_prod(vec3 a, vec3 b) {
+  vec3 p = ((a * b) + df_guard);
+  df_dvec3 sa = df_split(a);
+  df_dvec3 sb = df_split(b);
+  vec3 hh = ((sa.hi * sb.hi) + df_guard);
+  vec3 hl = ((sa.hi * sb.lo) + df_guard);
+  vec3 lh = ((sa.lo * sb.hi) + df_guard);
+  vec3 ll = ((sa.lo * sb.lo) + df_guard);
+  vec3 t1 = ((hh - p) + df_guard);
+  vec3 t2 = ((t1 + hl) + df_guard);
+  vec3 t3 = ((t2 + lh) + df_guard);
+  vec3 e = ((t3 + ll) + df_guard);
+  return df_dvec3(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
+  vec3 s = ((a + b) + df_guard);
+  vec3 z = ((s - a) + df_guard);
+  vec3 e = ((b - z) + df_guard);
+  return df_dvec3(s, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 c = df_two_prod(a.hi, b.hi);
+  vec3 tl = ((a.hi * b.lo) + df_guard);
+  vec3 th = ((a.lo * b.hi) + df_guard);
+  vec3 cl2 = ((th + tl) + df_guard);
+  vec3 cl3 = ((c.lo + cl2) + df_guard);
+  df_dvec3 z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_dot: (a.x*b.x + a.y*b.y) + a.z*b.z.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 112
+df_double df_dot(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_double(m.hi.z, m.lo.z);
+  df_double xy = df_add(x, y);
+  df_double r = df_add(xy, z);
+  return r;
+}
+
+// df_length: sqrt(dot(a, a)), W = 2..4. No cancellation in dot(a, a), so its error is
+// relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
+// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order).
+// Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 9.625u^2
+// Flops: 183 (W = 4; 95 for W = 2, 139 for W = 3)
+// Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
+df_double df_length(df_dvec3 a) {
+  df_double d = df_dot(a, a);
+  df_double z = df_sqrt(d);
+  return z;
+}
+
+// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_dvec3 df_neg(df_dvec3 a) {
+  vec3 h = ((-a.hi) + df_guard);
+  vec3 l = ((-a.lo) + df_guard);
+  return df_dvec3(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec3 df_two_sum(vec3 a, vec3 b) {
+  vec3 s = ((a + b) + df_guard);
+  vec3 bb = ((s - a) + df_guard);
+  vec3 ab = ((s - bb) + df_guard);
+  vec3 da = ((a - ab) + df_guard);
+  vec3 db = ((b - bb) + df_guard);
+  vec3 e = ((da + db) + df_guard);
+  return df_dvec3(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 s = df_two_sum(a.hi, b.hi);
+  df_dvec3 t = df_two_sum(a.lo, b.lo);
+  vec3 c = ((s.lo + t.hi) + df_guard);
+  df_dvec3 v = df_fast_two_sum(s.hi, c);
+  vec3 w = ((t.lo + v.lo) + df_guard);
+  df_dvec3 z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 22
+df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 nb = df_neg(b);
+  df_dvec3 z = df_add(a, nb);
+  return z;
+}
+
+// df_distance: length(a - b). The difference of exact inputs is one AccurateDWPlusDW per
+// component (3u^2 relative), which adds 3u^2 to df_length's relative bound.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_length
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 12.625u^2
+// Flops: 205 (W = 4)
+df_double df_distance(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 d = df_sub(a, b);
+  df_double r = df_length(d);
+  return r;
+}
+
+// df_cross: a.yzx * b.zxy - a.zxy * b.yzx (two DWTimesDW1 and one AccurateDWPlusDW per component).
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 10u^2 * (abs(a_j b_k) + abs(a_k b_j)) per component (absolute, first order)
+// Flops: 70
+df_dvec3 df_cross(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 p = df_mul(df_dvec3(a.hi.yzx, a.lo.yzx), df_dvec3(b.hi.zxy, b.lo.zxy));
+  df_dvec3 q = df_mul(df_dvec3(a.hi.zxy, a.lo.zxy), df_dvec3(b.hi.yzx, b.lo.yzx));
+  df_dvec3 r = df_sub(p, q);
+  return r;
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 25
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2).
+// Range: |ah|, |b| <= 8.3e34 (split).
+df_dvec3 df_mul_f(df_dvec3 a, vec3 b) {
+  df_dvec3 c = df_two_prod(a.hi, b);
+  vec3 cl2 = ((a.lo * b) + df_guard);
+  df_dvec3 t = df_fast_two_sum(c.hi, cl2);
+  vec3 tl2 = ((t.lo + c.lo) + df_guard);
+  df_dvec3 z = df_fast_two_sum(t.hi, tl2);
+  return z;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 33
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error). b == 0 gives NaN (the split of Inf), not Inf.
+// Range: |th| and |bh| <= 8.3e34 (split).
+df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
+  vec3 th = ((a.hi / b.hi) + df_guard);
+  df_dvec3 r = df_mul_f(b, th);
+  vec3 pih = ((a.hi - r.hi) + df_guard);
+  vec3 dl = ((a.lo - r.lo) + df_guard);
+  vec3 d = ((pih + dl) + df_guard);
+  vec3 tl = ((d / b.hi) + df_guard);
+  df_dvec3 z = df_fast_two_sum(th, tl);
+  return z;
+}
+
+// df_normalize: a / length(a) per component (width 1: sign(a), exact).
+// Algorithm: df_length, then DWDivDW2 (JMP Algorithm 17) per component
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 24.625u^2
+// Flops: 315 (W = 4)
+// Range: |a|^2 must not overflow float, as for df_length.
+df_dvec3 df_normalize(df_dvec3 a) {
+  df_double n = df_length(a);
+  df_dvec3 r = df_div(a, df_dvec3(vec3(n.hi), vec3(n.lo)));
+  return r;
+}
+
+// df_faceforward: dot(nref, i) < 0 ? n : -n. The selection is exact; the sign of the dot
+// product carries df_dot's error (wrong only where |dot| is below that bound).
+// Algorithm: df_dot, then selection
+// Source: GLSL 4.60 (2019) section 8.5 (faceforward); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: exact
+// Flops: 158 (W = 4)
+df_dvec3 df_faceforward(df_dvec3 n, df_dvec3 i, df_dvec3 nref) {
+  df_double d = df_dot(nref, i);
+  if (d.hi < 0.0) {
+    return n;
+  }
+  df_dvec3 m = df_neg(n);
+  return m;
+}
+
+// df_reflect: i - 2 dot(n, i) n. With S = sum |n_j i_j|: the dot has 13u^2 S, doubling is exact,
+// the product adds 7u^2, the subtraction 3u^2 of the result r_i.
+// Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW
+// Source: GLSL 4.60 (2019) section 8.5 (reflect); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 3u^2 * abs(r_i) + 20u^2 * 2S abs(n_i) (absolute per component, first order)
+// Flops: 215 (W = 4)
+df_dvec3 df_reflect(df_dvec3 i, df_dvec3 n) {
+  df_double d = df_dot(n, i);
+  df_double d2 = df_add(d, d);
+  df_dvec3 p = df_mul(df_dvec3(vec3(d2.hi), vec3(d2.lo)), n);
+  df_dvec3 r = df_sub(i, p);
+  return r;
+}
+
+// df_refract: k = 1 - eta^2 (1 - dot(n, i)^2); k < 0 gives 0, else eta i - (eta d + sqrt(k)) n.
+// First order, with the rules' bounds composed; sqrt(k) amplifies k's absolute error when k is
+// near 0 (grazing incidence), so the bound holds for k not close to 0.
+// Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW, SQRTDWtoDW (LLMPR Algorithm 8)
+// Source: GLSL 4.60 (2019) section 8.5 (refract); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 60u^2 * (abs(eta i_j) + (abs(eta d) + sqrt(k)) abs(n_j)) (absolute per component, first order, k not near 0)
+// Flops: 420 (W = 4)
+df_dvec3 df_refract(df_dvec3 i, df_dvec3 n, df_double eta) {
+  df_double d = df_dot(n, i);
+  df_double one = df_double(1.0, 0.0);
+  df_double dd = df_mul(d, d);
+  df_double c = df_sub(one, dd);
+  df_double e2 = df_mul(eta, eta);
+  df_double ec = df_mul(e2, c);
+  df_double k = df_sub(one, ec);
+  if (k.hi < 0.0) {
+    return df_dvec3(vec3(0.0), vec3(0.0));
+  }
+  df_double s = df_sqrt(k);
+  df_double ed = df_mul(eta, d);
+  df_double f = df_add(ed, s);
+  df_dvec3 a = df_mul(df_dvec3(vec3(eta.hi), vec3(eta.lo)), i);
+  df_dvec3 b = df_mul(df_dvec3(vec3(f.hi), vec3(f.lo)), n);
+  df_dvec3 r = df_sub(a, b);
+  return r;
+}
+
+// df_floor: largest integer <= x. hi not an integer: floor(hi); else hi + floor(lo), joined by
+// Fast2Sum (|floor(lo)| <= |hi| since |lo| <= ulp(hi)/2 and |hi| >= 1).
+// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is an integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Bound: exact
+// Flops: 5
+// (width 3: the width-1 df_floor applied to each component)
+df_dvec3 df_floor(df_dvec3 a) {
+  df_double r0 = df_floor(df_double(a.hi.x, a.lo.x));
+  df_double r1 = df_floor(df_double(a.hi.y, a.lo.y));
+  df_double r2 = df_floor(df_double(a.hi.z, a.lo.z));
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_mod: x - y * floor(x / y) (GLSL's definition). Where x / y is within df_div's error of an
+// integer, floor may pick the neighbouring integer, and the result is off by y (the function is
+// discontinuous there, in native fp64 as well). Otherwise the product has 7u^2 abs(y q) <=
+// 7u^2 (abs(x) + abs(y)) and the subtraction 3u^2 abs(r).
+// Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
+// Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
+// Flops: 84
+df_dvec3 df_mod(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 q = df_div(a, b);
+  df_dvec3 f = df_floor(q);
+  df_dvec3 p = df_mul(b, f);
+  df_dvec3 r = df_sub(a, p);
+  return r;
+}
+
+// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
+// Algorithm: df_ceil or df_floor by the sign of hi
+// Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
+// Bound: exact
+// Flops: 5
+// (width 3: the width-1 df_trunc applied to each component)
+df_dvec3 df_trunc(df_dvec3 a) {
+  df_double r0 = df_trunc(df_double(a.hi.x, a.lo.x));
+  df_double r1 = df_trunc(df_double(a.hi.y, a.lo.y));
+  df_double r2 = df_trunc(df_double(a.hi.z, a.lo.z));
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign.
+// Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
+// Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2
+// Flops: 27
+df_dvec3 df_modf(df_dvec3 a, out df_dvec3 i) {
+  i = df_trunc(a);
+  df_dvec3 r = df_sub(a, i);
+  return r;
+}
+
+// df_mix_bool: a ? y : x per component (mix with a boolean selector).
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBDType)
+// Bound: exact
+// Flops: 0
+// (width 3: the width-1 df_mix_bool applied to each component)
+df_dvec3 df_mix_bool(df_dvec3 x, df_dvec3 y, bvec3 a) {
+  df_double r0 = df_mix_bool(df_double(x.hi.x, x.lo.x), df_double(y.hi.x, y.lo.x), a.x);
+  df_double r1 = df_mix_bool(df_double(x.hi.y, x.lo.y), df_double(y.hi.y, y.lo.y), a.y);
+  df_double r2 = df_mix_bool(df_double(x.hi.z, x.lo.z), df_double(y.hi.z, y.lo.z), a.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_step: 0.0 if x < edge, else 1.0.
+// Algorithm: lexicographic compare (df_lt)
+// Source: GLSL 4.60 (2019) section 8.3 (step); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (3 comparisons)
+// (width 3: the width-1 df_step applied to each component)
+df_dvec3 df_step(df_dvec3 edge, df_dvec3 x) {
+  df_double r0 = df_step(df_double(edge.hi.x, edge.lo.x), df_double(x.hi.x, x.lo.x));
+  df_double r1 = df_step(df_double(edge.hi.y, edge.lo.y), df_double(x.hi.y, x.lo.y));
+  df_double r2 = df_step(df_double(edge.hi.z, edge.lo.z), df_double(x.hi.z, x.lo.z));
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_ldexp: x * 2^e, both words scaled by powers of two (exact unless over/underflow).
+// Algorithm: scaling of hi and lo by 2^e in two exact steps
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 4
+// (width 3: the width-1 df_ldexp applied to each component)
+df_dvec3 df_ldexp(df_dvec3 a, ivec3 e) {
+  df_double r0 = df_ldexp(df_double(a.hi.x, a.lo.x), e.x);
+  df_double r1 = df_ldexp(df_double(a.hi.y, a.lo.y), e.y);
+  df_double r2 = df_ldexp(df_double(a.hi.z, a.lo.z), e.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_max: component-wise max(a, b) = a < b ? b : a (GLSL definition).
+// Algorithm: lexicographic compare (df_lt) and select; widths 2-4 per component
+// Source: GLSL ES 3.20 section 8.3 (max); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_max applied to each component)
+df_dvec3 df_max(df_dvec3 a, df_dvec3 b) {
+  df_double r0 = df_max(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  df_double r1 = df_max(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  df_double r2 = df_max(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_min: component-wise min(a, b) = b < a ? b : a (GLSL definition).
+// Algorithm: lexicographic compare (df_lt) and select; widths 2-4 per component
+// Source: GLSL ES 3.20 section 8.3 (min); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_min applied to each component)
+df_dvec3 df_min(df_dvec3 a, df_dvec3 b) {
+  df_double r0 = df_min(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  df_double r1 = df_min(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  df_double r2 = df_min(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_clamp: min(max(x, lo), hi).
+// Algorithm: df_max then df_min (lexicographic compare and select)
+// Source: GLSL 4.60 (2019) section 8.3 (clamp); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (6 comparisons per component)
+df_dvec3 df_clamp(df_dvec3 x, df_dvec3 lo, df_dvec3 hi) {
+  df_dvec3 m = df_max(x, lo);
+  df_dvec3 r = df_min(m, hi);
+  return r;
+}
+
+// df_abs: |a|. Both words are multiplied by sign(hi) (exactly -1, 0 or +1).
+// Algorithm: sign of hi applied to both words
+// Source: JMP 2017, Definition 1.4 (sign of a double-word number is the sign of hi)
+// Bound: exact
+// Flops: 3
+df_dvec3 df_abs(df_dvec3 a) {
+  vec3 s = ((sign(a.hi)) + df_guard);
+  vec3 h = ((abs(a.hi)) + df_guard);
+  vec3 l = ((a.lo * s) + df_guard);
+  return df_dvec3(h, l);
+}
+
+// df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
+// TwoSum(hi, -floor(hi)) is exact and lo is added with DWPlusFP (exact when hi >= 0 or
+// |hi| >= 1, where hi - floor(hi) is a float).
+// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
+// Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 18
+// (width 3: the width-1 df_fract applied to each component)
+df_dvec3 df_fract(df_dvec3 a) {
+  df_double r0 = df_fract(df_double(a.hi.x, a.lo.x));
+  df_double r1 = df_fract(df_double(a.hi.y, a.lo.y));
+  df_double r2 = df_fract(df_double(a.hi.z, a.lo.z));
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_sign: -1, 0 or +1, the sign of hi.
+// Algorithm: sign of hi
+// Source: JMP 2017, Definition 1.4 (the sign of a double-word number is the sign of hi)
+// Bound: exact
+// Flops: 1
+df_dvec3 df_sign(df_dvec3 a) {
+  vec3 s = ((sign(a.hi)) + df_guard);
+  return df_dvec3(s, vec3(0.0));
+}
+
+// df_less_than: lessThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+bool df_less_than(df_double a, df_double b) {
+  return df_lt(a, b);
+}
+
+// df_less_than: lessThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_less_than applied to each component)
+bvec3 df_less_than(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_less_than(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_less_than(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_less_than(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_le: a <= b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_le(df_double a, df_double b) {
+  return a.hi < b.hi || (a.hi == b.hi && a.lo <= b.lo);
+}
+
+// df_less_than_equal: lessThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+bool df_less_than_equal(df_double a, df_double b) {
+  return df_le(a, b);
+}
+
+// df_less_than_equal: lessThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_less_than_equal applied to each component)
+bvec3 df_less_than_equal(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_less_than_equal(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_less_than_equal(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_less_than_equal(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_gt: a > b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_gt(df_double a, df_double b) {
+  return a.hi > b.hi || (a.hi == b.hi && a.lo > b.lo);
+}
+
+// df_greater_than: greaterThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+bool df_greater_than(df_double a, df_double b) {
+  return df_gt(a, b);
+}
+
+// df_greater_than: greaterThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_greater_than applied to each component)
+bvec3 df_greater_than(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_greater_than(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_greater_than(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_greater_than(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_ge: a >= b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_ge(df_double a, df_double b) {
+  return a.hi > b.hi || (a.hi == b.hi && a.lo >= b.lo);
+}
+
+// df_greater_than_equal: greaterThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+bool df_greater_than_equal(df_double a, df_double b) {
+  return df_ge(a, b);
+}
+
+// df_greater_than_equal: greaterThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_greater_than_equal applied to each component)
+bvec3 df_greater_than_equal(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_greater_than_equal(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_greater_than_equal(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_greater_than_equal(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_equal_components: equal(a, b) per component (word-wise).
+// Algorithm: word-wise equality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+bool df_equal_components(df_double a, df_double b) {
+  return a.hi == b.hi && a.lo == b.lo;
+}
+
+// df_equal_components: equal(a, b) per component (word-wise).
+// Algorithm: word-wise equality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+// (width 3: the width-1 df_equal_components applied to each component)
+bvec3 df_equal_components(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_equal_components(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_equal_components(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_equal_components(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_not_equal_components: notEqual(a, b) per component (word-wise).
+// Algorithm: word-wise inequality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+bool df_not_equal_components(df_double a, df_double b) {
+  return a.hi != b.hi || a.lo != b.lo;
+}
+
+// df_not_equal_components: notEqual(a, b) per component (word-wise).
+// Algorithm: word-wise inequality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+// (width 3: the width-1 df_not_equal_components applied to each component)
+bvec3 df_not_equal_components(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_not_equal_components(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_not_equal_components(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_not_equal_components(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_isnan: true where the value is NaN (NaN propagates to hi).
+// Algorithm: isnan of hi
+// Source: IEEE 754-2008 section 6.2; JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: exact
+// Flops: 0
+bool df_isnan(df_double a) {
+  return isnan(a.hi);
+}
+
+// df_isinf: true where the value is infinite.
+// Algorithm: isinf of hi
+// Source: IEEE 754-2008 section 6.1; JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: exact
+// Flops: 0
+bool df_isinf(df_double a) {
+  return isinf(a.hi);
+}
+
+// df_isnan: true where the value is NaN (NaN propagates to hi).
+// Algorithm: isnan of hi
+// Source: IEEE 754-2008 section 6.2; JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: exact
+// Flops: 0
+bvec3 df_isnan(df_dvec3 a) {
+  return isnan(a.hi);
+}
+
+// df_isinf: true where the value is infinite.
+// Algorithm: isinf of hi
+// Source: IEEE 754-2008 section 6.1; JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: exact
+// Flops: 0
+bvec3 df_isinf(df_dvec3 a) {
+  return isinf(a.hi);
+}
+
+// df_unpack_double2x32: the IEEE binary64 bits (low word, high word) of the double nearest to a
+// (ties to even). With x = abs(a) * 2^-k in [1, 2): M = round(x * 2^52) = hi * 2^52 + roundEven(lo *
+// 2^52) exactly (hi * 2^52 is an integer), assembled in two 32-bit words with carry.
+// Algorithm: exponent of hi, exact scaling, integer assembly of the rounded significand
+// Source: IEEE 754-2008 section 3.4; JMP 2017, Definition 1.4 (abs(lo) <= ulp(hi)/2)
+// Bound: 0.5 ulp of binary64 (correctly rounded; exact when the value has at most 53 bits)
+// Flops: 8
+uvec2 df_unpack_double2x32(df_double a) {
+  uint sign_bit = floatBitsToUint(a.hi) & 2147483648u;
+  if (a.hi == 0.0) {
+    return uvec2(0u, sign_bit);
+  }
+  if (isnan(a.hi)) {
+    return uvec2(0u, 2146959360u);
+  }
+  uint inf_bits = sign_bit | 2146435072u;
+  if (isinf(a.hi)) {
+    return uvec2(0u, inf_bits);
+  }
+  df_double m = df_abs(a);
+  int bits = floatBitsToInt(m.hi);
+  int e = ((bits >> 23) & 255) - 127;
+  bool below = (bits & 8388607) == 0 && m.lo < 0.0;
+  int k = below ? e - 1 : e;
+  int nk = 0 - k;
+  df_double x = df_ldexp(m, nk);
+  float hs = ((x.hi * 8388608.0) + df_guard);
+  float ls = ((x.lo * 4503599627370496.0) + df_guard);
+  float lr = ((roundEven(ls)) + df_guard);
+  uint big = uint(hs);
+  uint high = big >> 3u;
+  uint low = big << 29u;
+  int li = int(lr);
+  uint add = uint(li >= 0 ? li : 0 - li);
+  uint sum = low + add;
+  uint difference = low - add;
+  uint carry = sum < low ? 1u : 0u;
+  uint borrow = low < add ? 1u : 0u;
+  uint low_word = li >= 0 ? sum : difference;
+  uint high_sig = li >= 0 ? high + carry : high - borrow;
+  bool overflow = high_sig >= 2097152u;
+  uint significand = overflow ? 1048576u : high_sig;
+  int biased = (overflow ? k + 1 : k) + 1023;
+  uint high_word = sign_bit | (uint(biased) << 20u) | (significand & 1048575u);
+  return uvec2(low_word, high_word);
+}
+
+// df_pack_double2x32: the double whose IEEE binary64 bits are (v.x = low word, v.y = high word),
+// as float-float. Significand 1.m (52 bits) = t (21 bits) + mid (24 bits) + low (8 bits), each an
+// exact float; TwoSum joins the first two exactly, DWPlusFP adds the last (the only rounding:
+// 53 bits to a double-word), then df_ldexp scales by the exponent (exact unless the value is
+// outside float range, which gives Inf or 0). Zero and subnormal doubles give +-0.
+// Algorithm: TwoSum, DWPlusFP (JMP Algorithm 4), exponent scaling
+// Source: IEEE 754-2008 section 3.4; Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 27
+df_double df_pack_double2x32(uvec2 v) {
+  uint exponent = (v.y >> 20u) & 2047u;
+  uint top = (v.y & 1048575u) | 1048576u;
+  uint mid = v.x >> 8u;
+  uint low = v.x & 255u;
+  uint sign_bit = v.y & 2147483648u;
+  if (exponent == 0u) {
+    uint zero_bits = sign_bit;
+    float z = ((uintBitsToFloat(zero_bits)) + df_guard);
+    return df_double(z, 0.0);
+  }
+  if (exponent == 2047u) {
+    bool nan = (v.y & 1048575u) != 0u || v.x != 0u;
+    uint special = nan ? 2143289344u : (sign_bit | 2139095040u);
+    float s = ((uintBitsToFloat(special)) + df_guard);
+    return df_double(s, 0.0);
+  }
+  float t = ((float(top)) + df_guard);
+  float tn = ((t * 9.5367431640625e-07) + df_guard);
+  float m = ((float(mid)) + df_guard);
+  float mn = ((m * 5.684341886080802e-14) + df_guard);
+  float l = ((float(low)) + df_guard);
+  float ln = ((l * 2.220446049250313e-16) + df_guard);
+  df_double s = df_two_sum(tn, mn);
+  df_double r = df_add_f(s, ln);
+  int scale = int(exponent) - 1023;
+  df_double x = df_ldexp(r, scale);
+  if (sign_bit != 0u) {
+    df_double n = df_neg(x);
+    return n;
+  }
+  return x;
+}
+
+df_dvec3 df_make_dvec3_1_1_1(df_double a0, df_double a1, df_double a2) {
+  return df_dvec3(vec3(a0.hi, a1.hi, a2.hi), vec3(a0.lo, a1.lo, a2.lo));
+}
+
+df_dvec3 df_splat_dvec3(df_double s) {
+  return df_dvec3(vec3(s.hi), vec3(s.lo));
+}
+
+layout(std430, binding = 0) buffer Data {
+  df_double xs[];
+};
+layout(std430, binding = 1) buffer Bits {
+  uvec2 words[];
+};
+
+
+void main()
+{
+  df_double ip;
+  int e;
+  df_dvec3 vi;
+  uint i = gl_GlobalInvocationID.x;
+  df_double a = xs[i];
+  df_double b = xs[i + 1u];
+  df_dvec3 v = df_make_dvec3_1_1_1(a, b, df_neg(a));
+  df_dvec3 u = df_make_dvec3_1_1_1(b, df_double(1.0, 0.0), a);
+  df_double s = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_sign(a), df_floor(a)), df_ceil(a)), df_trunc(a)), df_round(a)), df_round_even(a)), df_fract(a)), df_mod(a, b)), df_modf(a, ip)), df_min(a, b)), df_max(a, b)), df_clamp(a, df_double(0.0, 0.0), b)), df_mix(a, b, df_double(0.25, 0.0))), df_mix_bool(a, b, df_lt(a, b))), df_step(b, a)), df_smoothstep(df_double(0.0, 0.0), b, a)), df_fma(a, b, df_double(1.0, 0.0))), df_frexp(a, e)), df_ldexp(a, e)), df_abs(a)), df_sqrt(df_abs(a))), df_inversesqrt(df_abs(b))), df_length(v)), df_distance(v, u)), df_dot(v, u));
+  df_dvec3 g = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_cross(v, u), df_normalize(v)), df_faceforward(v, u, v)), df_reflect(v, u)), df_refract(df_normalize(v), df_normalize(u), df_double(0.5, 0.0))), df_mod(v, df_splat_dvec3(df_double(2.0, 0.0)))), df_modf(v, vi)), df_mix_bool(v, u, bvec3(true, false, true))), df_step(df_splat_dvec3(df_double(0.5, 0.0)), v)), df_ldexp(v, ivec3(e))), df_clamp(v, u, df_add(u, df_splat_dvec3(df_double(1.0, 0.0))))), df_abs(v)), df_floor(v)), df_fract(v)), df_sign(u));
+  bool c = any(df_less_than(v, u)) || any(df_less_than_equal(v, g)) || all(df_greater_than(g, u)) || any(df_greater_than_equal(u, v)) || all(df_equal_components(v, g)) || any(df_not_equal_components(g, u));
+  if (df_isnan(s) || df_isinf(s) || any(df_isnan(g)) || any(df_isinf(g)) || c)
+  {
+    s = df_double(0.0, 0.0);
+  }
+  words[i] = df_unpack_double2x32(df_add(s, df_double(g.hi.x, g.lo.x)));
+  xs[i] = df_add(df_add(df_pack_double2x32(words[i + 1u]), ip), df_double(vi.hi.y, vi.lo.y));
+}

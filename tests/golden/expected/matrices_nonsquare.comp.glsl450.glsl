@@ -1,0 +1,693 @@
+#version 450 core
+precision highp float;
+precision highp int;
+layout(local_size_x = 16, local_size_y = 1, local_size_z = 1) in;
+
+struct df_dmat2 {
+  mat2 hi;
+  mat2 lo;
+};
+struct df_dmat2x3 {
+  mat2x3 hi;
+  mat2x3 lo;
+};
+struct df_dmat2x4 {
+  mat2x4 hi;
+  mat2x4 lo;
+};
+struct df_dmat3x2 {
+  mat3x2 hi;
+  mat3x2 lo;
+};
+struct df_dmat3 {
+  mat3 hi;
+  mat3 lo;
+};
+struct df_dmat4x3 {
+  mat4x3 hi;
+  mat4x3 lo;
+};
+// doublet float-float runtime: 29 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+struct df_dvec2 { vec2 hi; vec2 lo; };
+struct df_dvec3 { vec3 hi; vec3 lo; };
+struct df_dvec4 { vec4 hi; vec4 lo; };
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_dvec3 df_split(vec3 a) {
+  precise vec3 g = (a * 4097.0);
+  precise vec3 d = (a - g);
+  precise vec3 hi = (g + d);
+  precise vec3 lo = (a - hi);
+  return df_dvec3(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_dvec3 df_two_prod(vec3 a, vec3 b) {
+  precise vec3 p = (a * b);
+  df_dvec3 sa = df_split(a);
+  df_dvec3 sb = df_split(b);
+  precise vec3 hh = (sa.hi * sb.hi);
+  precise vec3 hl = (sa.hi * sb.lo);
+  precise vec3 lh = (sa.lo * sb.hi);
+  precise vec3 ll = (sa.lo * sb.lo);
+  precise vec3 t1 = (hh - p);
+  precise vec3 t2 = (t1 + hl);
+  precise vec3 t3 = (t2 + lh);
+  precise vec3 e = (t3 + ll);
+  return df_dvec3(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
+  precise vec3 s = (a + b);
+  precise vec3 z = (s - a);
+  precise vec3 e = (b - z);
+  return df_dvec3(s, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 c = df_two_prod(a.hi, b.hi);
+  precise vec3 tl = (a.hi * b.lo);
+  precise vec3 th = (a.lo * b.hi);
+  precise vec3 cl2 = (th + tl);
+  precise vec3 cl3 = (c.lo + cl2);
+  df_dvec3 z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  precise float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  precise float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_dot: (a.x*b.x + a.y*b.y) + a.z*b.z.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 112
+df_double df_dot(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_double(m.hi.z, m.lo.z);
+  df_double xy = df_add(x, y);
+  df_double r = df_add(xy, z);
+  return r;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec2(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_dvec2 df_split(vec2 a) {
+  precise vec2 g = (a * 4097.0);
+  precise vec2 d = (a - g);
+  precise vec2 hi = (g + d);
+  precise vec2 lo = (a - hi);
+  return df_dvec2(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_dvec2 df_two_prod(vec2 a, vec2 b) {
+  precise vec2 p = (a * b);
+  df_dvec2 sa = df_split(a);
+  df_dvec2 sb = df_split(b);
+  precise vec2 hh = (sa.hi * sb.hi);
+  precise vec2 hl = (sa.hi * sb.lo);
+  precise vec2 lh = (sa.lo * sb.hi);
+  precise vec2 ll = (sa.lo * sb.lo);
+  precise vec2 t1 = (hh - p);
+  precise vec2 t2 = (t1 + hl);
+  precise vec2 t3 = (t2 + lh);
+  precise vec2 e = (t3 + ll);
+  return df_dvec2(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
+  precise vec2 s = (a + b);
+  precise vec2 z = (s - a);
+  precise vec2 e = (b - z);
+  return df_dvec2(s, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 c = df_two_prod(a.hi, b.hi);
+  precise vec2 tl = (a.hi * b.lo);
+  precise vec2 th = (a.lo * b.hi);
+  precise vec2 cl2 = (th + tl);
+  precise vec2 cl3 = (c.lo + cl2);
+  df_dvec2 z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_dot: a.x*b.x + a.y*b.y.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 10u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 68
+df_double df_dot(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_add(x, y);
+  return z;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec4(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_dvec4 df_split(vec4 a) {
+  precise vec4 g = (a * 4097.0);
+  precise vec4 d = (a - g);
+  precise vec4 hi = (g + d);
+  precise vec4 lo = (a - hi);
+  return df_dvec4(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_dvec4 df_two_prod(vec4 a, vec4 b) {
+  precise vec4 p = (a * b);
+  df_dvec4 sa = df_split(a);
+  df_dvec4 sb = df_split(b);
+  precise vec4 hh = (sa.hi * sb.hi);
+  precise vec4 hl = (sa.hi * sb.lo);
+  precise vec4 lh = (sa.lo * sb.hi);
+  precise vec4 ll = (sa.lo * sb.lo);
+  precise vec4 t1 = (hh - p);
+  precise vec4 t2 = (t1 + hl);
+  precise vec4 t3 = (t2 + lh);
+  precise vec4 e = (t3 + ll);
+  return df_dvec4(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
+  precise vec4 s = (a + b);
+  precise vec4 z = (s - a);
+  precise vec4 e = (b - z);
+  return df_dvec4(s, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
+  df_dvec4 c = df_two_prod(a.hi, b.hi);
+  precise vec4 tl = (a.hi * b.lo);
+  precise vec4 th = (a.lo * b.hi);
+  precise vec4 cl2 = (th + tl);
+  precise vec4 cl3 = (c.lo + cl2);
+  df_dvec4 z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_dot: (a.x*b.x + a.y*b.y) + (a.z*b.z + a.w*b.w), pairwise.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 3 AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 156
+df_double df_dot(df_dvec4 a, df_dvec4 b) {
+  df_dvec4 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_double(m.hi.z, m.lo.z);
+  df_double w = df_double(m.hi.w, m.lo.w);
+  df_double xy = df_add(x, y);
+  df_double zw = df_add(z, w);
+  df_double r = df_add(xy, zw);
+  return r;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec3 df_two_sum(vec3 a, vec3 b) {
+  precise vec3 s = (a + b);
+  precise vec3 bb = (s - a);
+  precise vec3 ab = (s - bb);
+  precise vec3 da = (a - ab);
+  precise vec3 db = (b - bb);
+  precise vec3 e = (da + db);
+  return df_dvec3(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 s = df_two_sum(a.hi, b.hi);
+  df_dvec3 t = df_two_sum(a.lo, b.lo);
+  precise vec3 c = (s.lo + t.hi);
+  df_dvec3 v = df_fast_two_sum(s.hi, c);
+  precise vec3 w = (t.lo + v.lo);
+  df_dvec3 z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_dvec4 df_neg(df_dvec4 a) {
+  precise vec4 h = (-a.hi);
+  precise vec4 l = (-a.lo);
+  return df_dvec4(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec4 df_two_sum(vec4 a, vec4 b) {
+  precise vec4 s = (a + b);
+  precise vec4 bb = (s - a);
+  precise vec4 ab = (s - bb);
+  precise vec4 da = (a - ab);
+  precise vec4 db = (b - bb);
+  precise vec4 e = (da + db);
+  return df_dvec4(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_dvec4 df_add(df_dvec4 a, df_dvec4 b) {
+  df_dvec4 s = df_two_sum(a.hi, b.hi);
+  df_dvec4 t = df_two_sum(a.lo, b.lo);
+  precise vec4 c = (s.lo + t.hi);
+  df_dvec4 v = df_fast_two_sum(s.hi, c);
+  precise vec4 w = (t.lo + v.lo);
+  df_dvec4 z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 22
+df_dvec4 df_sub(df_dvec4 a, df_dvec4 b) {
+  df_dvec4 nb = df_neg(b);
+  df_dvec4 z = df_add(a, nb);
+  return z;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_double df_split(float a) {
+  precise float g = (a * 4097.0);
+  precise float d = (a - g);
+  precise float hi = (g + d);
+  precise float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  precise float p = (a * b);
+  df_double sa = df_split(a);
+  df_double sb = df_split(b);
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_double df_mul(df_double a, df_double b) {
+  df_double c = df_two_prod(a.hi, b.hi);
+  precise float tl = (a.hi * b.lo);
+  precise float th = (a.lo * b.hi);
+  precise float cl2 = (th + tl);
+  precise float cl3 = (c.lo + cl2);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_double df_neg(df_double a) {
+  precise float h = (-a.hi);
+  precise float l = (-a.lo);
+  return df_double(h, l);
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 22
+df_double df_sub(df_double a, df_double b) {
+  df_double nb = df_neg(b);
+  df_double z = df_add(a, nb);
+  return z;
+}
+
+// df_transpose_dmat2x3: exact (words moved).
+df_dmat3x2 df_transpose_dmat2x3(df_dmat2x3 m) {
+  return df_dmat3x2(mat3x2(m.hi[0][0], m.hi[1][0], m.hi[0][1], m.hi[1][1], m.hi[0][2], m.hi[1][2]), mat3x2(m.lo[0][0], m.lo[1][0], m.lo[0][1], m.lo[1][1], m.lo[0][2], m.lo[1][2]));
+}
+
+// df_mul_dmat3x2_dvec3: (m * v)[i] = df_dot(row i of m, v) (vector DWTimesDW1 + pairwise
+// AccurateDWPlusDW). Bound: 13u^2 * sum_j |m[j][i] v[j]| per component (absolute).
+df_dvec2 df_mul_dmat3x2_dvec3(df_dmat3x2 m, df_dvec3 v) {
+  df_double p0 = df_dot(df_dvec3(vec3(m.hi[0][0], m.hi[1][0], m.hi[2][0]), vec3(m.lo[0][0], m.lo[1][0], m.lo[2][0])), v);
+  df_double p1 = df_dot(df_dvec3(vec3(m.hi[0][1], m.hi[1][1], m.hi[2][1]), vec3(m.lo[0][1], m.lo[1][1], m.lo[2][1])), v);
+  return df_dvec2(vec2(p0.hi, p1.hi), vec2(p0.lo, p1.lo));
+}
+
+// df_mul_dmat3x2_dmat2x3: column j of a * b is a * (column j of b) (df_mul_dmat3x2_dvec3). Bound: 13u^2 * sum_k |a[k][i] b[j][k]| per element (absolute).
+df_dmat2 df_mul_dmat3x2_dmat2x3(df_dmat3x2 a, df_dmat2x3 b) {
+  df_dvec2 c0 = df_mul_dmat3x2_dvec3(a, df_dvec3(b.hi[0], b.lo[0]));
+  df_dvec2 c1 = df_mul_dmat3x2_dvec3(a, df_dvec3(b.hi[1], b.lo[1]));
+  return df_dmat2(mat2(c0.hi, c1.hi), mat2(c0.lo, c1.lo));
+}
+
+// df_mul_dmat2x3_dvec2: (m * v)[i] = df_dot(row i of m, v) (vector DWTimesDW1 + pairwise
+// AccurateDWPlusDW). Bound: 10u^2 * sum_j |m[j][i] v[j]| per component (absolute).
+df_dvec3 df_mul_dmat2x3_dvec2(df_dmat2x3 m, df_dvec2 v) {
+  df_double p0 = df_dot(df_dvec2(vec2(m.hi[0][0], m.hi[1][0]), vec2(m.lo[0][0], m.lo[1][0])), v);
+  df_double p1 = df_dot(df_dvec2(vec2(m.hi[0][1], m.hi[1][1]), vec2(m.lo[0][1], m.lo[1][1])), v);
+  df_double p2 = df_dot(df_dvec2(vec2(m.hi[0][2], m.hi[1][2]), vec2(m.lo[0][2], m.lo[1][2])), v);
+  return df_dvec3(vec3(p0.hi, p1.hi, p2.hi), vec3(p0.lo, p1.lo, p2.lo));
+}
+
+// df_mul_dmat2x3_dmat3x2: column j of a * b is a * (column j of b) (df_mul_dmat2x3_dvec2). Bound: 10u^2 * sum_k |a[k][i] b[j][k]| per element (absolute).
+df_dmat3 df_mul_dmat2x3_dmat3x2(df_dmat2x3 a, df_dmat3x2 b) {
+  df_dvec3 c0 = df_mul_dmat2x3_dvec2(a, df_dvec2(b.hi[0], b.lo[0]));
+  df_dvec3 c1 = df_mul_dmat2x3_dvec2(a, df_dvec2(b.hi[1], b.lo[1]));
+  df_dvec3 c2 = df_mul_dmat2x3_dvec2(a, df_dvec2(b.hi[2], b.lo[2]));
+  return df_dmat3(mat3(c0.hi, c1.hi, c2.hi), mat3(c0.lo, c1.lo, c2.lo));
+}
+
+// df_outer_product_dmat4x3: column j is a * b[j] (df_mul, DWTimesDW1). Bound: 7u^2 per element.
+df_dmat4x3 df_outer_product_dmat4x3(df_dvec3 a, df_dvec4 b) {
+  df_dvec3 c0 = df_mul(a, df_dvec3(vec3(b.hi.x), vec3(b.lo.x)));
+  df_dvec3 c1 = df_mul(a, df_dvec3(vec3(b.hi.y), vec3(b.lo.y)));
+  df_dvec3 c2 = df_mul(a, df_dvec3(vec3(b.hi.z), vec3(b.lo.z)));
+  df_dvec3 c3 = df_mul(a, df_dvec3(vec3(b.hi.w), vec3(b.lo.w)));
+  return df_dmat4x3(mat4x3(c0.hi, c1.hi, c2.hi, c3.hi), mat4x3(c0.lo, c1.lo, c2.lo, c3.lo));
+}
+
+// df_mul_dmat4x3_dvec4: (m * v)[i] = df_dot(row i of m, v) (vector DWTimesDW1 + pairwise
+// AccurateDWPlusDW). Bound: 13u^2 * sum_j |m[j][i] v[j]| per component (absolute).
+df_dvec3 df_mul_dmat4x3_dvec4(df_dmat4x3 m, df_dvec4 v) {
+  df_double p0 = df_dot(df_dvec4(vec4(m.hi[0][0], m.hi[1][0], m.hi[2][0], m.hi[3][0]), vec4(m.lo[0][0], m.lo[1][0], m.lo[2][0], m.lo[3][0])), v);
+  df_double p1 = df_dot(df_dvec4(vec4(m.hi[0][1], m.hi[1][1], m.hi[2][1], m.hi[3][1]), vec4(m.lo[0][1], m.lo[1][1], m.lo[2][1], m.lo[3][1])), v);
+  df_double p2 = df_dot(df_dvec4(vec4(m.hi[0][2], m.hi[1][2], m.hi[2][2], m.hi[3][2]), vec4(m.lo[0][2], m.lo[1][2], m.lo[2][2], m.lo[3][2])), v);
+  return df_dvec3(vec3(p0.hi, p1.hi, p2.hi), vec3(p0.lo, p1.lo, p2.lo));
+}
+
+// df_mul_dvec3_dmat4x3: (v * m)[j] = df_dot(v, column j of m). Bound: 13u^2 * sum_i |v[i] m[j][i]| per component (absolute).
+df_dvec4 df_mul_dvec3_dmat4x3(df_dvec3 v, df_dmat4x3 m) {
+  df_double p0 = df_dot(v, df_dvec3(m.hi[0], m.lo[0]));
+  df_double p1 = df_dot(v, df_dvec3(m.hi[1], m.lo[1]));
+  df_double p2 = df_dot(v, df_dvec3(m.hi[2], m.lo[2]));
+  df_double p3 = df_dot(v, df_dvec3(m.hi[3], m.lo[3]));
+  return df_dvec4(vec4(p0.hi, p1.hi, p2.hi, p3.hi), vec4(p0.lo, p1.lo, p2.lo, p3.lo));
+}
+
+df_dmat2x4 df_resize_dmat4x3_dmat2x4(df_dmat4x3 a) {
+  return df_dmat2x4(mat2x4(a.hi), mat2x4(a.lo) - mat2x4(mat4x3(0.0)));
+}
+
+// df_sub_dmat2x4_dmat2x4: df_sub on each element (column by column), so each element has df_sub's bound (rules/arith.glsl).
+df_dmat2x4 df_sub_dmat2x4_dmat2x4(df_dmat2x4 a, df_dmat2x4 b) {
+  df_dvec4 c0 = df_sub(df_dvec4(a.hi[0], a.lo[0]), df_dvec4(b.hi[0], b.lo[0]));
+  df_dvec4 c1 = df_sub(df_dvec4(a.hi[1], a.lo[1]), df_dvec4(b.hi[1], b.lo[1]));
+  return df_dmat2x4(mat2x4(c0.hi, c1.hi), mat2x4(c0.lo, c1.lo));
+}
+
+df_dmat2x4 df_make_dmat2x4_4_4(df_dvec4 a0, df_dvec4 a1) {
+  return df_dmat2x4(mat2x4(a0.hi, a1.hi), mat2x4(a0.lo, a1.lo));
+}
+
+// df_matrix_comp_mult_dmat2x4: df_mul on each element (column by column), so each element has df_mul's bound (rules/arith.glsl).
+df_dmat2x4 df_matrix_comp_mult_dmat2x4(df_dmat2x4 a, df_dmat2x4 b) {
+  df_dvec4 c0 = df_mul(df_dvec4(a.hi[0], a.lo[0]), df_dvec4(b.hi[0], b.lo[0]));
+  df_dvec4 c1 = df_mul(df_dvec4(a.hi[1], a.lo[1]), df_dvec4(b.hi[1], b.lo[1]));
+  return df_dmat2x4(mat2x4(c0.hi, c1.hi), mat2x4(c0.lo, c1.lo));
+}
+
+// df_mul_dmat2x4_double: df_mul on each element (column by column), so each element has df_mul's bound (rules/arith.glsl).
+df_dmat2x4 df_mul_dmat2x4_double(df_dmat2x4 a, df_double b) {
+  df_dvec4 c0 = df_mul(df_dvec4(a.hi[0], a.lo[0]), df_dvec4(vec4(b.hi), vec4(b.lo)));
+  df_dvec4 c1 = df_mul(df_dvec4(a.hi[1], a.lo[1]), df_dvec4(vec4(b.hi), vec4(b.lo)));
+  return df_dmat2x4(mat2x4(c0.hi, c1.hi), mat2x4(c0.lo, c1.lo));
+}
+
+// df_determinant_dmat2: cofactor expansion along the first row, minors shared (df_mul, df_add,
+// df_sub). Bound: 10u^2 * per(|m|) (absolute, first order).
+df_double df_determinant_dmat2(df_dmat2 m) {
+  df_double a00 = df_double(m.hi[0][0], m.lo[0][0]);
+  df_double a01 = df_double(m.hi[1][0], m.lo[1][0]);
+  df_double a10 = df_double(m.hi[0][1], m.lo[0][1]);
+  df_double a11 = df_double(m.hi[1][1], m.lo[1][1]);
+  df_double t0 = df_mul(a00, a11);
+  df_double t1 = df_mul(a01, a10);
+  df_double t2 = df_sub(t0, t1);
+  df_double d01_01 = t2;
+  return d01_01;
+}
+
+// df_determinant_dmat3: cofactor expansion along the first row, minors shared (df_mul, df_add,
+// df_sub). Bound: 23u^2 * per(|m|) (absolute, first order).
+df_double df_determinant_dmat3(df_dmat3 m) {
+  df_double a00 = df_double(m.hi[0][0], m.lo[0][0]);
+  df_double a01 = df_double(m.hi[1][0], m.lo[1][0]);
+  df_double a02 = df_double(m.hi[2][0], m.lo[2][0]);
+  df_double a10 = df_double(m.hi[0][1], m.lo[0][1]);
+  df_double a11 = df_double(m.hi[1][1], m.lo[1][1]);
+  df_double a12 = df_double(m.hi[2][1], m.lo[2][1]);
+  df_double a20 = df_double(m.hi[0][2], m.lo[0][2]);
+  df_double a21 = df_double(m.hi[1][2], m.lo[1][2]);
+  df_double a22 = df_double(m.hi[2][2], m.lo[2][2]);
+  df_double t0 = df_mul(a11, a22);
+  df_double t1 = df_mul(a12, a21);
+  df_double t2 = df_sub(t0, t1);
+  df_double d12_12 = t2;
+  df_double t3 = df_mul(a00, d12_12);
+  df_double t4 = df_mul(a10, a22);
+  df_double t5 = df_mul(a12, a20);
+  df_double t6 = df_sub(t4, t5);
+  df_double d12_02 = t6;
+  df_double t7 = df_mul(a01, d12_02);
+  df_double t8 = df_sub(t3, t7);
+  df_double t9 = df_mul(a10, a21);
+  df_double t10 = df_mul(a11, a20);
+  df_double t11 = df_sub(t9, t10);
+  df_double d12_01 = t11;
+  df_double t12 = df_mul(a02, d12_01);
+  df_double t13 = df_add(t8, t12);
+  df_double d012_012 = t13;
+  return d012_012;
+}
+
+df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
+  return df_dvec4(vec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), vec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
+}
+
+df_dvec3 df_assign_column_dmat2x3(inout df_dmat2x3 m, int j, df_dvec3 v) {
+  m.hi[j] = v.hi;
+  m.lo[j] = v.lo;
+  return v;
+}
+
+layout(std430, binding = 0) buffer Data {
+  df_dmat2x3 weights;
+  df_dvec4 values[];
+};
+
+
+void main()
+{
+  uint i = gl_GlobalInvocationID.x;
+  df_dvec4 v = values[i];
+  df_dmat3x2 t = df_transpose_dmat2x3(weights);
+  df_dmat2 square = df_mul_dmat3x2_dmat2x3(t, weights);
+  df_dmat3 other = df_mul_dmat2x3_dmat3x2(weights, t);
+  df_dmat4x3 outer = df_outer_product_dmat4x3(df_dvec3(v.hi.xyz, v.lo.xyz), v);
+  df_dvec3 column = df_add(df_mul_dmat4x3_dvec4(outer, v), df_mul_dmat2x3_dvec2(weights, df_dvec2(v.hi.zw, v.lo.zw)));
+  df_dvec4 row = df_mul_dvec3_dmat4x3(df_dvec3(v.hi.xyz, v.lo.xyz), outer);
+  df_dmat2x4 wide = df_sub_dmat2x4_dmat2x4(df_resize_dmat4x3_dmat2x4(outer), df_dmat2x4(mat2x4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0), mat2x4(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)));
+  wide = df_mul_dmat2x4_double(df_matrix_comp_mult_dmat2x4(wide, df_make_dmat2x4_4_4(v, df_dvec4(v.hi.wzyx, v.lo.wzyx))), df_double(0.5, 0.0));
+  values[i] = df_add(df_add(row, df_dvec4(wide.hi[1], wide.lo[1])), df_make_dvec4_3_1(column, df_add(df_determinant_dmat2(square), df_determinant_dmat3(other))));
+  df_assign_column_dmat2x3(weights, 1, column);
+}

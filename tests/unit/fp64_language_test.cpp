@@ -1,0 +1,167 @@
+// The fp64 language beyond scalar/vector arithmetic: matrices, built-ins, blocks, structs, and
+// the diagnostics for what a target cannot do (named by construct and target, with an
+// alternative). Golden tests pin the emitted text; these pin behaviour and messages.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "doublet/doublet.hpp"
+
+namespace {
+
+doublet::Result lower(const std::string& source, doublet::Stage stage, doublet::Target target) {
+  doublet::Options o;
+  o.stage = stage;
+  o.target = target;
+  o.file_name = "shader.glsl";
+  return doublet::lower(source, o);
+}
+
+std::string messages(const doublet::Result& r) {
+  std::string s;
+  for (const auto& d : r.diagnostics) s += doublet::format_diagnostic(d) + "\n";
+  return s;
+}
+
+// The first error must mention every fragment.
+void expect_error(const doublet::Result& r, std::initializer_list<const char*> fragments) {
+  ASSERT_FALSE(r.ok) << "expected an error";
+  std::string all = messages(r);
+  for (const char* f : fragments) EXPECT_NE(all.find(f), std::string::npos) << "missing '" << f << "' in\n" << all;
+  EXPECT_EQ(all.find("internal error"), std::string::npos) << all;
+}
+
+const char* kComputeHeader = "#version 450\nlayout(local_size_x = 1) in;\n";
+
+TEST(Matrices, UniformSplitsIntoHiAndLoMatrices) {
+  auto r = lower("#version 450\nuniform dmat4 M;\nin dvec4 p;\nvoid main() { gl_Position = vec4(M * p); }\n",
+                 doublet::Stage::Vertex, doublet::Target::Es300);
+  ASSERT_TRUE(r.ok) << messages(r);
+  EXPECT_NE(r.output.find("uniform mat4 M_hi;"), std::string::npos);
+  EXPECT_NE(r.output.find("uniform mat4 M_lo;"), std::string::npos);
+  EXPECT_NE(r.output.find("M = df_dmat4(M_hi, M_lo);"), std::string::npos);
+  auto j = nlohmann::json::parse(r.manifest.to_json());
+  EXPECT_EQ(j["variables"][0]["type"], "dmat4");
+  EXPECT_EQ(j["variables"][0]["lowered_type"], "mat4");
+}
+
+TEST(Matrices, ProductAndComponentWiseProductAreDifferentHelpers) {
+  auto r = lower(std::string(kComputeHeader) +
+                     "layout(std430, binding = 0) buffer B { dmat2 a, b, c, d; };\n"
+                     "void main() { c = a * b; d = matrixCompMult(a, b); }\n",
+                 doublet::Stage::Compute, doublet::Target::Es310);
+  ASSERT_TRUE(r.ok) << messages(r);
+  EXPECT_NE(r.output.find("c = df_mul_dmat2_dmat2(a, b);"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("d = df_matrix_comp_mult_dmat2(a, b);"), std::string::npos) << r.output;
+}
+
+TEST(Matrices, NonSquareOnEs100IsDiagnosed) {
+  auto r = lower("#version 450\nuniform dmat2x3 M;\nvoid main() { gl_Position = vec4(vec3(M[0]), 1.0); }\n",
+                 doublet::Stage::Vertex, doublet::Target::Es100);
+  expect_error(r, {"dmat2x3", "es100", "square", "es300"});
+}
+
+TEST(Builtins, BitLevelBuiltinsNeedEs300) {
+  for (const char* call : {"ldexp(x, 2)", "frexp(x, e)", "double(isnan(x))", "double(isinf(x))"}) {
+    auto r = lower("#version 450\nuniform double x;\nout vec4 c;\nvoid main() { int e; c = vec4(float(" +
+                       std::string(call) + ")); }\n",
+                   doublet::Stage::Fragment, doublet::Target::Es100);
+    SCOPED_TRACE(call);
+    expect_error(r, {"ES 1.00", "ES 3.00"});
+    EXPECT_TRUE(lower("#version 450\nuniform double x;\nout vec4 c;\nvoid main() { int e; c = vec4(float(" +
+                          std::string(call) + ")); }\n",
+                      doublet::Stage::Fragment, doublet::Target::Es300)
+                    .ok);
+  }
+}
+
+TEST(Builtins, PackAndUnpackDouble2x32) {
+  auto r = lower(std::string(kComputeHeader) +
+                     "layout(std430, binding = 0) buffer B { double x; uvec2 bits; };\n"
+                     "void main() { bits = unpackDouble2x32(x); x = packDouble2x32(bits.yx); }\n",
+                 doublet::Stage::Compute, doublet::Target::Es310);
+  ASSERT_TRUE(r.ok) << messages(r);
+  EXPECT_NE(r.output.find("df_unpack_double2x32(x)"), std::string::npos);
+  EXPECT_NE(r.output.find("df_pack_double2x32(bits.yx)"), std::string::npos);
+}
+
+TEST(Blocks, ManifestListsEveryMembersNewOffset) {
+  auto r = lower(std::string(kComputeHeader) +
+                     "layout(std140, binding = 0) uniform U { double a; dvec3 b; float f; };\n"
+                     "layout(std430, binding = 1) buffer S { dvec2 v[]; } s;\n"
+                     "void main() { s.v[0] = dvec2(a) + b.xy + double(f); }\n",
+                 doublet::Stage::Compute, doublet::Target::Es310);
+  ASSERT_TRUE(r.ok) << messages(r);
+  EXPECT_NE(r.output.find("layout(std140, binding = 0) uniform U {\n  df_double a;\n  df_dvec3 b;\n  float f;\n};"),
+            std::string::npos)
+      << r.output;
+  auto j = nlohmann::json::parse(r.manifest.to_json());
+  const auto& u = j["variables"][0];
+  EXPECT_EQ(u["name"], "U");
+  EXPECT_EQ(u["layout"], "std140");
+  // std140: df_double is a struct (16-byte aligned, 16 bytes); df_dvec3 {vec3 hi; vec3 lo;} is 32.
+  EXPECT_EQ(u["members"][0]["offset"], 0);
+  EXPECT_EQ(u["members"][0]["lo_offset"], 4);
+  EXPECT_EQ(u["members"][1]["offset"], 16);
+  EXPECT_EQ(u["members"][1]["lo_offset"], 16);
+  EXPECT_EQ(u["members"][2]["offset"], 48);
+  const auto& st = j["variables"][1];
+  EXPECT_EQ(st["layout"], "std430");
+  EXPECT_EQ(st["members"][0]["array_stride"], 16);
+  EXPECT_EQ(st["members"][0]["lo_offset"], 8);
+}
+
+TEST(Blocks, SharedPackingBecomesExplicit) {
+  auto r = lower(std::string(kComputeHeader) + "layout(binding = 0) buffer S { double x; };\nvoid main() { x += 1.0lf; }\n",
+                 doublet::Stage::Compute, doublet::Target::Es310);
+  ASSERT_TRUE(r.ok) << messages(r);
+  EXPECT_NE(r.output.find("layout(std430, binding = 0) buffer S"), std::string::npos) << r.output;
+}
+
+TEST(Structs, StructUniformListsItsHiLoLeaves) {
+  auto r = lower("#version 450\nstruct S { double a; dvec2 b[2]; };\nuniform S s;\nout vec4 c;\n"
+                 "void main() { c = vec4(float(s.a + s.b[1].y)); }\n",
+                 doublet::Stage::Fragment, doublet::Target::Es300);
+  ASSERT_TRUE(r.ok) << messages(r);
+  auto j = nlohmann::json::parse(r.manifest.to_json());
+  std::vector<std::string> want{"s.a.hi", "s.a.lo", "s.b[0].hi", "s.b[0].lo", "s.b[1].hi", "s.b[1].lo"};
+  EXPECT_EQ(j["variables"][0]["lowered_names"].get<std::vector<std::string>>(), want);
+}
+
+TEST(Targets, ConstructsTheTargetLacksAreDiagnosedByConstructAndTarget) {
+  expect_error(lower("#version 450\n#extension GL_EXT_shader_atomic_float : enable\nlayout(local_size_x = 1) in;\n"
+                     "layout(std430, binding = 0) buffer B { double v[]; };\nvoid main() { atomicAdd(v[0], 1.0lf); }\n",
+                     doublet::Stage::Compute, doublet::Target::Es310),
+               {"atomic", "atomicAdd", "es310", "reduce"});
+  expect_error(lower("#version 450\n#extension GL_KHR_shader_subgroup_arithmetic : enable\n"
+                     "layout(local_size_x = 64) in;\nlayout(std430, binding = 0) buffer B { double v[]; };\n"
+                     "void main() { v[0] = subgroupAdd(v[1]); }\n",
+                     doublet::Stage::Compute, doublet::Target::Glsl450),
+               {"subgroup", "glsl450", "shared memory"});
+  expect_error(lower("#version 450\n#extension GL_ARB_gpu_shader_int64 : enable\nlayout(local_size_x = 1) in;\n"
+                     "layout(std430, binding = 0) buffer B { double v; int64_t w; };\nvoid main() { w = int64_t(v); }\n",
+                     doublet::Stage::Compute, doublet::Target::Es320),
+               {"64-bit integers", "es320", "two 32-bit"});
+  expect_error(lower(std::string(kComputeHeader) + "void main() { double x = 1.0lf; }\n", doublet::Stage::Compute,
+                     doublet::Target::Es300),
+               {"es300", "compute", "es310"});
+}
+
+TEST(Targets, Es100LimitsAreDiagnosedByConstruct) {
+  auto frag = [](const std::string& body, const std::string& decls = "") {
+    return lower("#version 450\nuniform double x;\nuniform int k;\n" + decls + "out vec4 c;\nvoid main() {\n" + body + "\n}\n",
+                 doublet::Stage::Fragment, doublet::Target::Es100);
+  };
+  expect_error(frag("uint u = uint(k); c = vec4(float(x) + float(u));"), {"unsigned", "es100"});
+  expect_error(frag("c = vec4(float(x) + float(k & 1));"), {"'&'", "es100"});
+  expect_error(frag("double a[2] = double[2](x, x); c = vec4(float(a[1]));"), {"array constructors", "es100"});
+  expect_error(frag("switch (k) { default: c = vec4(float(x)); }"), {"switch", "es100"});
+  expect_error(frag("c = vec4(float(x) + float(n));", "flat in int n;\n"), {"'n'", "int", "es300"});
+  // Optional features of Appendix A are warnings, and the output is still produced.
+  auto r = frag("double a[4]; for (int i = 0; i < 4; ++i) a[i] = x; c = vec4(float(a[k]));");
+  ASSERT_TRUE(r.ok) << messages(r);
+  EXPECT_NE(messages(r).find("warning: indexing an array"), std::string::npos) << messages(r);
+}
+
+}  // namespace
