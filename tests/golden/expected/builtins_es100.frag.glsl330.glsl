@@ -2,7 +2,7 @@
 precision highp float;
 precision highp int;
 
-// doublet float-float runtime: 45 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 70 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -511,6 +511,113 @@ df_double df_step(df_double edge, df_double x) {
   return df_double(1.0, 0.0);
 }
 
+// df_ceil: smallest integer >= x (the mirror of df_floor).
+// Algorithm: ceil of hi, or Fast2Sum(hi, ceil(lo)) when hi is an integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Bound: exact
+// Flops: 5
+df_double df_ceil(df_double a) {
+  float c = ((ceil(a.hi)) + df_guard);
+  if (c == a.hi) {
+    float g = ((ceil(a.lo)) + df_guard);
+    df_double r = df_fast_two_sum(a.hi, g);
+    return r;
+  }
+  return df_double(c, float(0.0));
+}
+
+// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
+// Algorithm: df_ceil or df_floor by the sign of hi
+// Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
+// Bound: exact
+// Flops: 5
+df_double df_trunc(df_double a) {
+  if (a.hi < 0.0) {
+    df_double c = df_ceil(a);
+    return c;
+  }
+  df_double f = df_floor(a);
+  return f;
+}
+
+// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign.
+// Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
+// Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2
+// Flops: 27
+df_double df_modf(df_double a, out df_double i) {
+  i = df_trunc(a);
+  df_double r = df_sub(a, i);
+  return r;
+}
+
+// df_round: nearest integer, halves away from zero (GLSL lets the implementation choose).
+// Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
+// Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 33
+// Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
+df_double df_round(df_double a) {
+  df_double f = df_floor(a);
+  df_double d = df_fract(a);
+  bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
+  bool tie = d.hi == 0.5 && d.lo == 0.0;
+  if (above || (tie && a.hi >= 0.0)) {
+    df_double u = df_add_f(f, 1.0);
+    return u;
+  }
+  return f;
+}
+
+// df_round_even: nearest integer, halves to the even neighbour (roundEven).
+// Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
+// Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 39
+// Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
+// (one of them is even: fl != 0 only when ulp(fh) >= 2).
+df_double df_round_even(df_double a) {
+  df_double f = df_floor(a);
+  df_double d = df_fract(a);
+  float h2 = ((f.hi * 0.5) + df_guard);
+  float fh2 = ((floor(h2)) + df_guard);
+  float ph = ((h2 - fh2) + df_guard);
+  float l2 = ((f.lo * 0.5) + df_guard);
+  float fl2 = ((floor(l2)) + df_guard);
+  float pl = ((l2 - fl2) + df_guard);
+  float parity = ((ph + pl) + df_guard);
+  bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
+  bool tie = d.hi == 0.5 && d.lo == 0.0;
+  if (above || (tie && parity == 0.5)) {
+    df_double u = df_add_f(f, 1.0);
+    return u;
+  }
+  return f;
+}
+
+// df_fma: a * b + c. Not fused: the product is rounded (DWTimesDW1), then added.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 3u^2 * abs(r) + 7u^2 * abs(a * b) (absolute, first order)
+// Flops: 44
+df_double df_fma(df_double a, df_double b, df_double c) {
+  df_double p = df_mul(a, b);
+  df_double r = df_add(p, c);
+  return r;
+}
+
+// df_mix_bool: a ? y : x per component (mix with a boolean selector).
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBDType)
+// Bound: exact
+// Flops: 0
+df_double df_mix_bool(df_double x, df_double y, bool a) {
+  if (a) {
+    return y;
+  }
+  return x;
+}
+
 // df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
 // Algorithm: sign flip of both words
 // Source: Dekker 1971 (trivial); JMP section 1
@@ -603,6 +710,220 @@ df_dvec3 df_mix(df_dvec3 x, df_dvec3 y, df_dvec3 a) {
   df_dvec3 p = df_mul(a, d);
   df_dvec3 r = df_add(x, p);
   return r;
+}
+
+// df_faceforward: dot(nref, i) < 0 ? n : -n. The selection is exact; the sign of the dot
+// product carries df_dot's error (wrong only where |dot| is below that bound).
+// Algorithm: df_dot, then selection
+// Source: GLSL 4.60 (2019) section 8.5 (faceforward); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: exact
+// Flops: 158 (W = 4)
+df_dvec3 df_faceforward(df_dvec3 n, df_dvec3 i, df_dvec3 nref) {
+  df_double d = df_dot(nref, i);
+  if (d.hi < 0.0) {
+    return n;
+  }
+  df_dvec3 m = df_neg(n);
+  return m;
+}
+
+// df_refract: k = 1 - eta^2 (1 - dot(n, i)^2); k < 0 gives 0, else eta i - (eta d + sqrt(k)) n.
+// First order, with the rules' bounds composed; sqrt(k) amplifies k's absolute error when k is
+// near 0 (grazing incidence), so the bound holds for k not close to 0.
+// Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW, SQRTDWtoDW (LLMPR Algorithm 8)
+// Source: GLSL 4.60 (2019) section 8.5 (refract); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 60u^2 * (abs(eta i_j) + (abs(eta d) + sqrt(k)) abs(n_j)) (absolute per component, first order, k not near 0)
+// Flops: 420 (W = 4)
+df_dvec3 df_refract(df_dvec3 i, df_dvec3 n, df_double eta) {
+  df_double d = df_dot(n, i);
+  df_double one = df_double(1.0, 0.0);
+  df_double dd = df_mul(d, d);
+  df_double c = df_sub(one, dd);
+  df_double e2 = df_mul(eta, eta);
+  df_double ec = df_mul(e2, c);
+  df_double k = df_sub(one, ec);
+  if (k.hi < 0.0) {
+    return df_dvec3(vec3(0.0), vec3(0.0));
+  }
+  df_double s = df_sqrt(k);
+  df_double ed = df_mul(eta, d);
+  df_double f = df_add(ed, s);
+  df_dvec3 a = df_mul(df_dvec3(vec3(eta.hi), vec3(eta.lo)), i);
+  df_dvec3 b = df_mul(df_dvec3(vec3(f.hi), vec3(f.lo)), n);
+  df_dvec3 r = df_sub(a, b);
+  return r;
+}
+
+// df_mix_bool: a ? y : x per component (mix with a boolean selector).
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBDType)
+// Bound: exact
+// Flops: 0
+// (width 3: the width-1 df_mix_bool applied to each component)
+df_dvec3 df_mix_bool(df_dvec3 x, df_dvec3 y, bvec3 a) {
+  df_double r0 = df_mix_bool(df_double(x.hi.x, x.lo.x), df_double(y.hi.x, y.lo.x), a.x);
+  df_double r1 = df_mix_bool(df_double(x.hi.y, x.lo.y), df_double(y.hi.y, y.lo.y), a.y);
+  df_double r2 = df_mix_bool(df_double(x.hi.z, x.lo.z), df_double(y.hi.z, y.lo.z), a.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_less_than: lessThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+bool df_less_than(df_double a, df_double b) {
+  return df_lt(a, b);
+}
+
+// df_less_than: lessThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_less_than applied to each component)
+bvec3 df_less_than(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_less_than(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_less_than(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_less_than(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_le: a <= b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_le(df_double a, df_double b) {
+  return a.hi < b.hi || (a.hi == b.hi && a.lo <= b.lo);
+}
+
+// df_less_than_equal: lessThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+bool df_less_than_equal(df_double a, df_double b) {
+  return df_le(a, b);
+}
+
+// df_less_than_equal: lessThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_less_than_equal applied to each component)
+bvec3 df_less_than_equal(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_less_than_equal(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_less_than_equal(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_less_than_equal(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_gt: a > b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_gt(df_double a, df_double b) {
+  return a.hi > b.hi || (a.hi == b.hi && a.lo > b.lo);
+}
+
+// df_greater_than: greaterThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+bool df_greater_than(df_double a, df_double b) {
+  return df_gt(a, b);
+}
+
+// df_greater_than: greaterThan(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_greater_than applied to each component)
+bvec3 df_greater_than(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_greater_than(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_greater_than(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_greater_than(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_ge: a >= b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_ge(df_double a, df_double b) {
+  return a.hi > b.hi || (a.hi == b.hi && a.lo >= b.lo);
+}
+
+// df_greater_than_equal: greaterThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+bool df_greater_than_equal(df_double a, df_double b) {
+  return df_ge(a, b);
+}
+
+// df_greater_than_equal: greaterThanEqual(a, b) per component.
+// Algorithm: lexicographic comparison of (hi, lo) per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+// (width 3: the width-1 df_greater_than_equal applied to each component)
+bvec3 df_greater_than_equal(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_greater_than_equal(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_greater_than_equal(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_greater_than_equal(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_equal_components: equal(a, b) per component (word-wise).
+// Algorithm: word-wise equality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+bool df_equal_components(df_double a, df_double b) {
+  return a.hi == b.hi && a.lo == b.lo;
+}
+
+// df_equal_components: equal(a, b) per component (word-wise).
+// Algorithm: word-wise equality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+// (width 3: the width-1 df_equal_components applied to each component)
+bvec3 df_equal_components(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_equal_components(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_equal_components(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_equal_components(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
+}
+
+// df_not_equal_components: notEqual(a, b) per component (word-wise).
+// Algorithm: word-wise inequality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+bool df_not_equal_components(df_double a, df_double b) {
+  return a.hi != b.hi || a.lo != b.lo;
+}
+
+// df_not_equal_components: notEqual(a, b) per component (word-wise).
+// Algorithm: word-wise inequality per component
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness)
+// Bound: exact
+// Flops: 0 (2 comparisons per component)
+// (width 3: the width-1 df_not_equal_components applied to each component)
+bvec3 df_not_equal_components(df_dvec3 a, df_dvec3 b) {
+  bool r0 = df_not_equal_components(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  bool r1 = df_not_equal_components(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  bool r2 = df_not_equal_components(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return bvec3(r0, r1, r2);
 }
 
 // df_abs: |a|. Both words are multiplied by sign(hi) (exactly -1, 0 or +1).
@@ -704,9 +1025,11 @@ void main()
 {
   scale = df_double(scale_hi, scale_lo);
   light = df_dvec3(light_hi, light_lo);
+  df_double ip;
   df_dvec3 n = df_normalize(df_mul(df_from_float(normal_in), df_splat_dvec3(scale)));
   df_double d = df_max(df_dot(n, df_normalize(light)), df_double(0.0, 0.0));
-  df_double t = df_add(df_add(df_smoothstep(df_double(0.0, 0.0), df_double(1.0, 0.0), df_fract(df_mul(d, df_double(4.0, 0.0)))), df_mod(d, df_double(0.25, 0.0))), df_step(df_double(0.5, 0.0), d));
-  df_dvec3 r = df_add(df_add(df_reflect(df_neg(light), n), df_mul(df_cross(n, light), df_splat_dvec3(df_clamp(d, df_double(0.0, 0.0), df_double(1.0, 0.0))))), df_mix(n, light, df_splat_dvec3(t)));
-  color = vec4(df_to_float(df_add(df_add(df_abs(r), df_floor(r)), df_sign(r))), df_to_float(df_add(df_add(df_length(r), df_distance(n, light)), df_inversesqrt(df_add(d, df_double(1.0, 0.0))))));
+  df_double t = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_smoothstep(df_double(0.0, 0.0), df_double(1.0, 0.0), df_fract(df_mul(d, df_double(4.0, 0.0)))), df_mod(d, df_double(0.25, 0.0))), df_step(df_double(0.5, 0.0), d)), df_modf(df_mul(d, df_double(8.0, 0.0)), ip)), df_trunc(d)), df_round(d)), df_round_even(d)), df_ceil(d)), df_min(d, scale)), df_fma(d, d, scale)), df_sqrt(d)), df_mix_bool(d, scale, df_lt(d, scale)));
+  df_dvec3 r = df_add(df_add(df_add(df_add(df_add(df_reflect(df_neg(light), n), df_mul(df_cross(n, light), df_splat_dvec3(df_clamp(d, df_double(0.0, 0.0), df_double(1.0, 0.0))))), df_mix(n, light, df_splat_dvec3(t))), df_faceforward(n, light, n)), df_refract(n, df_normalize(light), df_double(0.75, 0.0))), df_mix_bool(n, light, bvec3(true, false, true)));
+  bool c = any(df_less_than(n, r)) || all(df_less_than_equal(n, r)) || any(df_greater_than(n, r)) || any(df_greater_than_equal(n, r)) || all(df_equal_components(n, r)) || any(df_not_equal_components(n, r));
+  color = vec4(df_to_float(df_add(df_add(df_abs(r), df_floor(r)), df_sign(r))), df_to_float(df_add(df_add(df_add(df_length(r), df_distance(n, light)), df_inversesqrt(df_add(d, df_double(1.0, 0.0)))), ip))) + (c ? 1.0 : 0.0);
 }

@@ -1,0 +1,277 @@
+#version 330 core
+precision highp float;
+precision highp int;
+
+struct df_dmat3 {
+  mat3 hi;
+  mat3 lo;
+};
+// doublet float-float runtime: 14 functions from rules/*.glsl, guard: uniform df_guard
+struct df_double { float hi; float lo; };
+struct df_dvec3 { vec3 hi; vec3 lo; };
+struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard;  // never set: GL zero-fills it at link
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_dvec3 df_split(vec3 a) {
+  vec3 g = ((a * 4097.0) + df_guard);
+  vec3 d = ((a - g) + df_guard);
+  vec3 hi = ((g + d) + df_guard);
+  vec3 lo = ((a - hi) + df_guard);
+  return df_dvec3(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_dvec3 df_two_prod(vec3 a, vec3 b) {
+  vec3 p = ((a * b) + df_guard);
+  df_dvec3 sa = df_split(a);
+  df_dvec3 sb = df_split(b);
+  vec3 hh = ((sa.hi * sb.hi) + df_guard);
+  vec3 hl = ((sa.hi * sb.lo) + df_guard);
+  vec3 lh = ((sa.lo * sb.hi) + df_guard);
+  vec3 ll = ((sa.lo * sb.lo) + df_guard);
+  vec3 t1 = ((hh - p) + df_guard);
+  vec3 t2 = ((t1 + hl) + df_guard);
+  vec3 t3 = ((t2 + lh) + df_guard);
+  vec3 e = ((t3 + ll) + df_guard);
+  return df_dvec3(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
+  vec3 s = ((a + b) + df_guard);
+  vec3 z = ((s - a) + df_guard);
+  vec3 e = ((b - z) + df_guard);
+  return df_dvec3(s, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 c = df_two_prod(a.hi, b.hi);
+  vec3 tl = ((a.hi * b.lo) + df_guard);
+  vec3 th = ((a.lo * b.hi) + df_guard);
+  vec3 cl2 = ((th + tl) + df_guard);
+  vec3 cl3 = ((c.lo + cl2) + df_guard);
+  df_dvec3 z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  float s = ((a + b) + df_guard);
+  float bb = ((s - a) + df_guard);
+  float ab = ((s - bb) + df_guard);
+  float da = ((a - ab) + df_guard);
+  float db = ((b - bb) + df_guard);
+  float e = ((da + db) + df_guard);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  float s = ((a + b) + df_guard);
+  float z = ((s - a) + df_guard);
+  float e = ((b - z) + df_guard);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  float c = ((s.lo + t.hi) + df_guard);
+  df_double v = df_fast_two_sum(s.hi, c);
+  float w = ((t.lo + v.lo) + df_guard);
+  df_double z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_dot: (a.x*b.x + a.y*b.y) + a.z*b.z.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 112
+df_double df_dot(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_double(m.hi.z, m.lo.z);
+  df_double xy = df_add(x, y);
+  df_double r = df_add(xy, z);
+  return r;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec4(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_dvec4 df_split(vec4 a) {
+  vec4 g = ((a * 4097.0) + df_guard);
+  vec4 d = ((a - g) + df_guard);
+  vec4 hi = ((g + d) + df_guard);
+  vec4 lo = ((a - hi) + df_guard);
+  return df_dvec4(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_dvec4 df_two_prod(vec4 a, vec4 b) {
+  vec4 p = ((a * b) + df_guard);
+  df_dvec4 sa = df_split(a);
+  df_dvec4 sb = df_split(b);
+  vec4 hh = ((sa.hi * sb.hi) + df_guard);
+  vec4 hl = ((sa.hi * sb.lo) + df_guard);
+  vec4 lh = ((sa.lo * sb.hi) + df_guard);
+  vec4 ll = ((sa.lo * sb.lo) + df_guard);
+  vec4 t1 = ((hh - p) + df_guard);
+  vec4 t2 = ((t1 + hl) + df_guard);
+  vec4 t3 = ((t2 + lh) + df_guard);
+  vec4 e = ((t3 + ll) + df_guard);
+  return df_dvec4(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
+  vec4 s = ((a + b) + df_guard);
+  vec4 z = ((s - a) + df_guard);
+  vec4 e = ((b - z) + df_guard);
+  return df_dvec4(s, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
+  df_dvec4 c = df_two_prod(a.hi, b.hi);
+  vec4 tl = ((a.hi * b.lo) + df_guard);
+  vec4 th = ((a.lo * b.hi) + df_guard);
+  vec4 cl2 = ((th + tl) + df_guard);
+  vec4 cl3 = ((c.lo + cl2) + df_guard);
+  df_dvec4 z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Algorithm: RN(hi + lo)
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 1
+vec4 df_to_float(df_dvec4 a) {
+  vec4 f = ((a.hi + a.lo) + df_guard);
+  return f;
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Algorithm: RN(hi + lo)
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 1
+vec3 df_to_float(df_dvec3 a) {
+  vec3 f = ((a.hi + a.lo) + df_guard);
+  return f;
+}
+
+// df_mul_dmat3_dvec3: (m * v)[i] = df_dot(row i of m, v) (vector DWTimesDW1 + pairwise
+// AccurateDWPlusDW). Bound: 13u^2 * sum_j |m[j][i] v[j]| per component (absolute).
+df_dvec3 df_mul_dmat3_dvec3(df_dmat3 m, df_dvec3 v) {
+  df_double p0 = df_dot(df_dvec3(vec3(m.hi[0][0], m.hi[1][0], m.hi[2][0]), vec3(m.lo[0][0], m.lo[1][0], m.lo[2][0])), v);
+  df_double p1 = df_dot(df_dvec3(vec3(m.hi[0][1], m.hi[1][1], m.hi[2][1]), vec3(m.lo[0][1], m.lo[1][1], m.lo[2][1])), v);
+  df_double p2 = df_dot(df_dvec3(vec3(m.hi[0][2], m.hi[1][2], m.hi[2][2]), vec3(m.lo[0][2], m.lo[1][2], m.lo[2][2])), v);
+  return df_dvec3(vec3(p0.hi, p1.hi, p2.hi), vec3(p0.lo, p1.lo, p2.lo));
+}
+
+df_dvec4 df_splat_dvec4(df_double s) {
+  return df_dvec4(vec4(s.hi), vec4(s.lo));
+}
+
+layout(std140) uniform Material {
+  df_dvec4 albedo;
+  df_dmat3 basis;
+  df_double roughness;
+};
+flat in vec3 position_flat_hi;
+flat in vec3 position_flat_lo;
+df_dvec3 position_flat;
+out vec4 color;
+
+
+void main()
+{
+  position_flat = df_dvec3(position_flat_hi, position_flat_lo);
+  df_dvec3 p = df_mul_dmat3_dvec3(basis, position_flat);
+  color = df_to_float(df_mul(albedo, df_splat_dvec4(roughness))) + vec4(df_to_float(p), 1.0);
+}
