@@ -52,7 +52,9 @@ std::vector<Row> rows() {
       table = true;
       continue;
     }
-    if (!table || line.rfind("| ", 0) != 0) continue;
+    if (!table) continue;
+    if (line.rfind("|", 0) != 0) break;  // the table ends at its first non-row line
+    if (line.rfind("|---", 0) == 0) continue;
     std::vector<std::string> cols;
     // Split on " | " (cells never contain it; probes in backticks may contain '|' only as "||").
     size_t start = 2;
