@@ -150,6 +150,7 @@ class Printer {
       else
         parts.push_back(v.layout.packing);
     }
+    if (!v.layout.format.empty()) parts.push_back(v.layout.format);
     if (v.layout.set >= 0 && !es_ && version_ >= 450) parts.push_back("set = " + std::to_string(v.layout.set));
     if (v.layout.binding >= 0 && (es_ ? version_ >= 310 : version_ >= 420))
       parts.push_back("binding = " + std::to_string(v.layout.binding));

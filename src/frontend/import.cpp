@@ -124,6 +124,7 @@ class Importer {
       default: break;
     }
     if (q.layoutMatrix == ElmRowMajor) l.matrix = "row_major";
+    if (q.hasFormat()) l.format = TQualifier::getLayoutFormatString(q.layoutFormat);
     return l;
   }
 

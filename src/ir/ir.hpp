@@ -44,6 +44,7 @@ struct Layout {
   int offset = -1;
   std::string packing;  // "std140", "std430", "shared", "packed" or empty
   std::string matrix;   // "row_major", "column_major" or empty
+  std::string format;   // image format ("rgba32f"), or empty
 };
 
 struct Field {

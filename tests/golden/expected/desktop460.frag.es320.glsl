@@ -1,0 +1,479 @@
+#version 320 es
+precision highp float;
+precision highp int;
+precision highp image2D;
+
+struct df_dmat4 {
+  mat4 hi;
+  mat4 lo;
+};
+// doublet float-float runtime: 25 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+struct df_dvec3 { vec3 hi; vec3 lo; };
+struct df_dvec4 { vec4 hi; vec4 lo; };
+
+// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_dvec3 df_neg(df_dvec3 a) {
+  precise vec3 h = (-a.hi);
+  precise vec3 l = (-a.lo);
+  return df_dvec3(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec3 df_two_sum(vec3 a, vec3 b) {
+  precise vec3 s = (a + b);
+  precise vec3 bb = (s - a);
+  precise vec3 ab = (s - bb);
+  precise vec3 da = (a - ab);
+  precise vec3 db = (b - bb);
+  precise vec3 e = (da + db);
+  return df_dvec3(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
+  precise vec3 s = (a + b);
+  precise vec3 z = (s - a);
+  precise vec3 e = (b - z);
+  return df_dvec3(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 s = df_two_sum(a.hi, b.hi);
+  df_dvec3 t = df_two_sum(a.lo, b.lo);
+  precise vec3 c = (s.lo + t.hi);
+  df_dvec3 v = df_fast_two_sum(s.hi, c);
+  precise vec3 w = (t.lo + v.lo);
+  df_dvec3 z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 22
+df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 nb = df_neg(b);
+  df_dvec3 z = df_add(a, nb);
+  return z;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec4(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_dvec4 df_split(vec4 a) {
+  precise vec4 g = (a * 4097.0);
+  precise vec4 d = (a - g);
+  precise vec4 hi = (g + d);
+  precise vec4 lo = (a - hi);
+  return df_dvec4(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_dvec4 df_two_prod(vec4 a, vec4 b) {
+  precise vec4 p = (a * b);
+  df_dvec4 sa = df_split(a);
+  df_dvec4 sb = df_split(b);
+  precise vec4 hh = (sa.hi * sb.hi);
+  precise vec4 hl = (sa.hi * sb.lo);
+  precise vec4 lh = (sa.lo * sb.hi);
+  precise vec4 ll = (sa.lo * sb.lo);
+  precise vec4 t1 = (hh - p);
+  precise vec4 t2 = (t1 + hl);
+  precise vec4 t3 = (t2 + lh);
+  precise vec4 e = (t3 + ll);
+  return df_dvec4(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
+  precise vec4 s = (a + b);
+  precise vec4 z = (s - a);
+  precise vec4 e = (b - z);
+  return df_dvec4(s, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
+  df_dvec4 c = df_two_prod(a.hi, b.hi);
+  precise vec4 tl = (a.hi * b.lo);
+  precise vec4 th = (a.lo * b.hi);
+  precise vec4 cl2 = (th + tl);
+  precise vec4 cl3 = (c.lo + cl2);
+  df_dvec4 z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  precise float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  precise float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_dot: (a.x*b.x + a.y*b.y) + (a.z*b.z + a.w*b.w), pairwise.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 3 AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 156
+df_double df_dot(df_dvec4 a, df_dvec4 b) {
+  df_dvec4 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_double(m.hi.z, m.lo.z);
+  df_double w = df_double(m.hi.w, m.lo.w);
+  df_double xy = df_add(x, y);
+  df_double zw = df_add(z, w);
+  df_double r = df_add(xy, zw);
+  return r;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_dvec3 df_split(vec3 a) {
+  precise vec3 g = (a * 4097.0);
+  precise vec3 d = (a - g);
+  precise vec3 hi = (g + d);
+  precise vec3 lo = (a - hi);
+  return df_dvec3(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_dvec3 df_two_prod(vec3 a, vec3 b) {
+  precise vec3 p = (a * b);
+  df_dvec3 sa = df_split(a);
+  df_dvec3 sb = df_split(b);
+  precise vec3 hh = (sa.hi * sb.hi);
+  precise vec3 hl = (sa.hi * sb.lo);
+  precise vec3 lh = (sa.lo * sb.hi);
+  precise vec3 ll = (sa.lo * sb.lo);
+  precise vec3 t1 = (hh - p);
+  precise vec3 t2 = (t1 + hl);
+  precise vec3 t3 = (t2 + lh);
+  precise vec3 e = (t3 + ll);
+  return df_dvec3(p, e);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 24
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 c = df_two_prod(a.hi, b.hi);
+  precise vec3 tl = (a.hi * b.lo);
+  precise vec3 th = (a.lo * b.hi);
+  precise vec3 cl2 = (th + tl);
+  precise vec3 cl3 = (c.lo + cl2);
+  df_dvec3 z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_dot: (a.x*b.x + a.y*b.y) + a.z*b.z.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 112
+df_double df_dot(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_double(m.hi.z, m.lo.z);
+  df_double xy = df_add(x, y);
+  df_double r = df_add(xy, z);
+  return r;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+df_double df_split(float a) {
+  precise float g = (a * 4097.0);
+  precise float d = (a - g);
+  precise float hi = (g + d);
+  precise float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 17
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  precise float p = (a * b);
+  df_double sa = df_split(a);
+  df_double sb = df_split(b);
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_sqrt: sqrt(a) for a >= 0; sqrt(0) = 0 (not NaN). a < 0 is undefined, like GLSL sqrt().
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
+// Bound: 25/8 u^2
+// Flops: 27
+// Steps (LLMPR Algorithm 8, our no-FMA form):
+//   sh   = RN(sqrt(ah))
+//   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
+//   r0   = RN(ah - p)                exact: ah/2 <= p <= 2ah (Sterbenz)
+//   rho1 = RN(r0 - e)                == RN(ah - sh^2), the value fma(-sh, sh, ah) returns
+//   rho2 = RN(al + rho1)
+//   sl   = RN(rho2 / (2 sh))
+//   (zh,zl) = Fast2Sum(sh, sl)
+// sh is guarded too: Mesa rewrites sqrt(x)*sqrt(x) to |x|, which would zero the residual.
+// So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
+// correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
+// few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
+// not proved). Zero: 2 sh is clamped below by 1e-30, so a = 0 gives rho2 = 0, sl = 0/1e-30 = 0;
+// for any float a > 0, 2 sh >= 2^-74 > 1e-30, so the clamp never changes a nonzero result.
+// Range: a < FLT_MAX; Inf gives NaN (split of Inf).
+df_double df_sqrt(df_double a) {
+  precise float sh = (sqrt(a.hi));
+  df_double sq = df_two_prod(sh, sh);
+  precise float r0 = (a.hi - sq.hi);
+  precise float rho1 = (r0 - sq.lo);
+  precise float rho2 = (a.lo + rho1);
+  precise float sh2 = (sh * 2.0);
+  precise float den = (max(sh2, 1.0e-30));
+  precise float sl = (rho2 / den);
+  df_double z = df_fast_two_sum(sh, sl);
+  return z;
+}
+
+// df_length: sqrt(dot(a, a)), W = 2..4. No cancellation in dot(a, a), so its error is
+// relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
+// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order).
+// Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 9.625u^2
+// Flops: 183 (W = 4; 95 for W = 2, 139 for W = 3)
+// Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
+df_double df_length(df_dvec3 a) {
+  df_double d = df_dot(a, a);
+  df_double z = df_sqrt(d);
+  return z;
+}
+
+// df_from_float: the exact double-word (f, 0).
+// Algorithm: hi = f, lo = 0
+// Source: JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0
+df_double df_from_float(float f) {
+  return df_double(f, float(0.0));
+}
+
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 10
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  precise float v = (a.lo + s.lo);
+  df_double z = df_fast_two_sum(s.hi, v);
+  return z;
+}
+
+// df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
+// TwoSum(hi, -floor(hi)) is exact and lo is added with DWPlusFP (exact when hi >= 0 or
+// |hi| >= 1, where hi - floor(hi) is a float).
+// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
+// Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 18
+df_double df_fract(df_double a) {
+  precise float f = (floor(a.hi));
+  if (f == a.hi) {
+    precise float g = (floor(a.lo));
+    precise float ng = (0.0 - g);
+    df_double r = df_two_sum(a.lo, ng);
+    return r;
+  }
+  precise float nf = (0.0 - f);
+  df_double t = df_two_sum(a.hi, nf);
+  df_double s = df_add_f(t, a.lo);
+  return s;
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Algorithm: RN(hi + lo)
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 1
+float df_to_float(df_double a) {
+  precise float f = (a.hi + a.lo);
+  return f;
+}
+
+df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
+  return df_dvec4(vec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), vec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
+}
+
+// df_mul_dmat4_dvec4: (m * v)[i] = df_dot(row i of m, v) (vector DWTimesDW1 + pairwise
+// AccurateDWPlusDW). Bound: 13u^2 * sum_j |m[j][i] v[j]| per component (absolute).
+df_dvec4 df_mul_dmat4_dvec4(df_dmat4 m, df_dvec4 v) {
+  df_double p0 = df_dot(df_dvec4(vec4(m.hi[0][0], m.hi[1][0], m.hi[2][0], m.hi[3][0]), vec4(m.lo[0][0], m.lo[1][0], m.lo[2][0], m.lo[3][0])), v);
+  df_double p1 = df_dot(df_dvec4(vec4(m.hi[0][1], m.hi[1][1], m.hi[2][1], m.hi[3][1]), vec4(m.lo[0][1], m.lo[1][1], m.lo[2][1], m.lo[3][1])), v);
+  df_double p2 = df_dot(df_dvec4(vec4(m.hi[0][2], m.hi[1][2], m.hi[2][2], m.hi[3][2]), vec4(m.lo[0][2], m.lo[1][2], m.lo[2][2], m.lo[3][2])), v);
+  df_double p3 = df_dot(df_dvec4(vec4(m.hi[0][3], m.hi[1][3], m.hi[2][3], m.hi[3][3]), vec4(m.lo[0][3], m.lo[1][3], m.lo[2][3], m.lo[3][3])), v);
+  return df_dvec4(vec4(p0.hi, p1.hi, p2.hi, p3.hi), vec4(p0.lo, p1.lo, p2.lo, p3.lo));
+}
+
+layout(binding = 0) uniform sampler2D albedo;
+layout(rgba32f, binding = 1) readonly uniform image2D heights;
+uniform mat4 view_hi;
+uniform mat4 view_lo;
+df_dmat4 view;
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+df_dvec3 eye;
+flat in vec3 world_hi;
+flat in vec3 world_lo;
+df_dvec3 world;
+in vec2 uv;
+layout(location = 0) out vec4 color;
+
+
+void main()
+{
+  view = df_dmat4(view_hi, view_lo);
+  eye = df_dvec3(eye_hi, eye_lo);
+  world = df_dvec3(world_hi, world_lo);
+  df_dvec4 p = df_mul_dmat4_dvec4(view, df_make_dvec4_3_1(df_sub(world, eye), df_double(1.0, 0.0)));
+  vec4 h = imageLoad(heights, ivec2(uv * 16.0));
+  df_double d = df_add(df_length(df_dvec3(p.hi.xyz, p.lo.xyz)), df_from_float(h.x));
+  color = texture(albedo, uv) * df_to_float(df_fract(d));
+}
