@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "runner/runner.hpp"
@@ -15,11 +16,13 @@ struct UniformSlot {
   uint32_t offset = 0;
   bool is_float = false;   // only `float` can be set through ComputeJob::float_uniforms
   bool is_double = false;  // double/dvecN (else float/vecN when components > 0)
-  int components = 0;      // 1..4 for float/double scalars and vectors, 0 for anything else
+  int components = 0;      // values: 1..4 for scalars/vectors, columns × rows for matrices, 0 otherwise
+  int columns = 1;         // matrices: std140 puts each column at a 16-byte (dvec3/4: 32) stride
 };
 
 struct SpirvProgram {
-  std::vector<uint32_t> words;
+  std::vector<uint32_t> words;           // the compute or vertex stage
+  std::vector<uint32_t> fragment_words;  // graphics programs: the fragment stage
   std::map<std::string, UniformSlot> uniforms;  // live members of the global uniform block
   uint32_t uniform_block_size = 0;              // 0 when the shader has no loose uniforms
   std::vector<int> ssbo_bindings;               // bindings of the shader's buffer blocks
@@ -28,6 +31,11 @@ struct SpirvProgram {
 // glslang compile + link + IO mapping + reflection + SPIRV-Tools validation.
 // When `iface` is set it also receives the reflected interface.
 bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface = nullptr);
+
+// The same for several stages linked as one program (vertex then fragment; words/fragment_words).
+enum class Stage { Compute, Vertex, Fragment };
+bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stages, SpirvProgram* out,
+                         std::string* error, ShaderInterface* iface = nullptr);
 
 // True if the module declares OpCapability Float64.
 bool spirv_uses_float64(const std::vector<uint32_t>& words);

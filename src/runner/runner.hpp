@@ -63,7 +63,10 @@ struct ShaderInterface {
   struct Uniform {
     std::string name;
     bool is_double = false;
-    int components = 0;  // 1..4 for float/double scalars and vectors, 0 for other types
+    // Values: 1..4 for float/double scalars and vectors, columns × rows for matrices (given column
+    // by column), 0 for other types.
+    int components = 0;
+    int columns = 1;  // matrices: columns (each holds components / columns rows)
   };
   struct Block {
     std::string name;
@@ -87,6 +90,63 @@ struct ShaderInterface {
 };
 // Compiles like the Vulkan backend (so "#version 450" with doubles works) and reflects.
 bool reflect_compute(const std::string& glsl, ShaderInterface* out, std::string* error);
+
+// ---- Vertex and fragment stages --------------------------------------------------------------
+// A graphics job runs one user stage over `count` samples (vertices, or one pixel each) and reads
+// back every value it produces bit-exactly. The runner wraps the shader (graphics_wrapper.hpp):
+// each global `in`/`out` declaration becomes a plain global, inputs are loaded from a storage
+// buffer before the user's main() runs and outputs (and gl_Position) stored to another after it,
+// indexed by gl_VertexIndex/gl_VertexID or by the pixel. So the arithmetic runs in the real stage
+// (its denormal handling and optimizer), while nothing passes through attribute fetch,
+// interpolation or float attachments. (lavapipe has no 64-bit vertex formats, which is why native
+// double inputs cannot be vertex attributes.)
+//   Vertex:   `count` points with rasterizer discard.
+//   Fragment: `count` one-pixel points, one per pixel of a 64-wide grid, in a framebuffer without
+//             attachments; a generated vertex shader places them.
+// The text may be "#version 450" (doubles; Vulkan only), "#version 310 es"/"320 es", or
+// "#version 300 es" (run as 310 es: the storage buffers need it; the language is a superset).
+enum class GraphicsStage { Vertex, Fragment };
+
+// One wrapped `in` or `out` variable (or gl_Position) of scalar/vector numeric type.
+struct StageVariable {
+  std::string name;
+  char scalar = 'f';   // 'f' float, 'd' double, 'i' int, 'u' uint
+  int components = 1;  // 1..4
+  uint32_t offset = 0; // std430 offset in the per-sample record
+};
+
+struct GraphicsInterface {
+  std::vector<StageVariable> inputs, outputs;  // declaration order; outputs end with gl_Position
+  uint32_t input_stride = 0, output_stride = 0;  // bytes per sample record (std430 struct)
+  std::vector<ShaderInterface::Uniform> uniforms;  // active loose uniforms (glslang reflection)
+};
+
+// Parses the stage's in/out declarations and reflects its uniforms (compiling the wrapped shader as
+// the Vulkan backend would). False with *error for unsupported interfaces (arrays, blocks, structs).
+bool reflect_graphics(GraphicsStage, const std::string& glsl, GraphicsInterface* out, std::string* error);
+
+struct GraphicsJob {
+  GraphicsStage stage = GraphicsStage::Vertex;
+  std::string glsl;    // the user's stage, as in ComputeJob::glsl
+  uint32_t count = 1;  // samples: vertices or pixels
+  // Per input variable: count × components values (converted to its type). Unlisted inputs are 0.
+  std::map<std::string, std::vector<double>> inputs;
+  std::map<std::string, float> float_uniforms;               // as ComputeJob
+  std::map<std::string, std::vector<double>> uniforms;       // as ComputeJob (matrices too)
+};
+
+struct GraphicsResult {
+  bool ok = false;
+  std::string error;
+  std::string device;
+  // Per output variable (and "gl_Position"): count × components values, each exactly the bits the
+  // shader stored (a float widened to double). Samples the stage never wrote read back as NaN.
+  std::map<std::string, std::vector<double>> outputs;
+};
+
+GraphicsResult run_graphics(Backend, const GraphicsJob&);
+// Many draws with one compiled pipeline (jobs[0].glsl, .stage and .count are used for all).
+std::vector<GraphicsResult> run_graphics_batch(Backend, const std::vector<GraphicsJob>& jobs);
 
 // SPIRV-Tools validation for the Vulkan 1.1 environment. Empty when valid, else the messages.
 std::string validate_spirv(const std::vector<uint32_t>& spirv);

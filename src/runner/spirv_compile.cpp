@@ -39,6 +39,35 @@ int float_components(int gl_type, bool* is_double) {
   return 0;
 }
 
+// Columns and rows of a float/double matrix reflection type (GL type codes); false otherwise.
+bool matrix_shape(int gl_type, bool* is_double, int* columns, int* rows) {
+  struct Shape { int type, columns, rows; };
+  static constexpr Shape kFloat[] = {{0x8B5A, 2, 2}, {0x8B5B, 3, 3}, {0x8B5C, 4, 4}, {0x8B65, 2, 3}, {0x8B66, 2, 4},
+                                     {0x8B67, 3, 2}, {0x8B68, 3, 4}, {0x8B69, 4, 2}, {0x8B6A, 4, 3}};
+  static constexpr Shape kDouble[] = {{0x8F46, 2, 2}, {0x8F47, 3, 3}, {0x8F48, 4, 4}, {0x8F49, 2, 3}, {0x8F4A, 2, 4},
+                                      {0x8F4B, 3, 2}, {0x8F4C, 3, 4}, {0x8F4D, 4, 2}, {0x8F4E, 4, 3}};
+  for (int d = 0; d < 2; ++d)
+    for (const Shape& s : d ? kDouble : kFloat)
+      if (s.type == gl_type) {
+        *is_double = d == 1;
+        *columns = s.columns;
+        *rows = s.rows;
+        return true;
+      }
+  return false;
+}
+
+// A loose uniform's shape: vectors as float_components, matrices as columns × rows values.
+void uniform_shape(int gl_type, int size, bool* is_double, int* components, int* columns) {
+  *components = 0;
+  *columns = 1;
+  *is_double = false;
+  if (size != 1) return;
+  int rows = 0;
+  if (matrix_shape(gl_type, is_double, columns, &rows)) *components = *columns * rows;
+  else *components = float_components(gl_type, is_double);
+}
+
 // glslang keeps process-wide state (symbol tables); initialise it once and serialise compiles.
 std::mutex& glslang_mutex() {
   static std::mutex mu;
@@ -61,7 +90,7 @@ void reflect(const glslang::TProgram& program, ShaderInterface* iface) {
   for (int i = 0; i < program.getNumUniformVariables(); ++i) {
     const glslang::TObjectReflection& u = program.getUniform(i);
     ShaderInterface::Uniform out{u.name};
-    if (u.size == 1) out.components = float_components(u.glDefineType, &out.is_double);
+    uniform_shape(u.glDefineType, u.size, &out.is_double, &out.components, &out.columns);
     iface->uniforms.push_back(out);
   }
   for (int i = 0; i < program.getNumBufferBlocks(); ++i) {
@@ -90,31 +119,44 @@ void reflect(const glslang::TProgram& program, ShaderInterface* iface) {
 }  // namespace
 
 bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface) {
+  return compile_glsl_stages({{Stage::Compute, glsl}}, out, error, iface);
+}
+
+bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stages, SpirvProgram* out,
+                         std::string* error, ShaderInterface* iface) {
   std::lock_guard<std::mutex> lock(glslang_mutex());
   const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  auto language = [](Stage s) {
+    return s == Stage::Vertex ? EShLangVertex : s == Stage::Fragment ? EShLangFragment : EShLangCompute;
+  };
 
-  glslang::TShader shader(EShLangCompute);
-  const char* text = glsl.c_str();
-  const char* name = "job.comp";
-  shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, EShLangCompute, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-  // Relaxed rules accept GL-style text (loose uniforms, no explicit bindings), which is what the
-  // compiler under test emits; loose uniforms go to one block we fill from reflection.
-  shader.setEnvInputVulkanRulesRelaxed();
-  shader.setAutoMapBindings(true);
-  shader.setAutoMapLocations(true);
-  shader.setGlobalUniformBlockName(kGlobalBlockName);
-  shader.setGlobalUniformSet(kUniformSet);
-  shader.setGlobalUniformBinding(kUniformBinding);
-
-  if (!shader.parse(GetDefaultResources(), 100, false, messages)) {
-    *error = std::string("GLSL compile failed (glslang):\n") + shader.getInfoLog() + shader.getInfoDebugLog();
-    return false;
-  }
+  std::vector<std::unique_ptr<glslang::TShader>> shaders;
   glslang::TProgram program;
-  program.addShader(&shader);
+  for (const auto& [stage, glsl] : stages) {
+    const EShLanguage lang = language(stage);
+    auto shader = std::make_unique<glslang::TShader>(lang);
+    const char* text = glsl.c_str();
+    const char* name = stage == Stage::Vertex ? "job.vert" : stage == Stage::Fragment ? "job.frag" : "job.comp";
+    shader->setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
+    shader->setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
+    shader->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+    shader->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+    // Relaxed rules accept GL-style text (loose uniforms, no explicit bindings), which is what the
+    // compiler under test emits; loose uniforms go to one block we fill from reflection.
+    shader->setEnvInputVulkanRulesRelaxed();
+    shader->setAutoMapBindings(true);
+    shader->setAutoMapLocations(true);
+    shader->setGlobalUniformBlockName(kGlobalBlockName);
+    shader->setGlobalUniformSet(kUniformSet);
+    shader->setGlobalUniformBinding(kUniformBinding);
+    if (!shader->parse(GetDefaultResources(), 100, false, messages)) {
+      *error = std::string("GLSL compile failed (glslang, ") + name + "):\n" + shader->getInfoLog() +
+               shader->getInfoDebugLog();
+      return false;
+    }
+    program.addShader(shader.get());
+    shaders.push_back(std::move(shader));
+  }
   if (!program.link(messages) || !program.mapIO()) {
     *error = std::string("GLSL link failed (glslang):\n") + program.getInfoLog() + program.getInfoDebugLog();
     return false;
@@ -142,7 +184,7 @@ bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error
       return false;
     }
     UniformSlot slot{static_cast<uint32_t>(u.offset), u.glDefineType == kGlFloat && u.size == 1};
-    if (u.size == 1) slot.components = float_components(u.glDefineType, &slot.is_double);
+    uniform_shape(u.glDefineType, u.size, &slot.is_double, &slot.components, &slot.columns);
     result.uniforms[u.name] = slot;
   }
   for (int i = 0; i < program.getNumBufferBlocks(); ++i) result.ssbo_bindings.push_back(program.getBufferBlock(i).getBinding());
@@ -150,15 +192,18 @@ bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error
   glslang::SpvOptions options;
   options.disableOptimizer = true;  // the driver's optimizer is what we want to observe, not spirv-opt's
   options.validate = false;         // validated below with a readable message
-  spv::SpvBuildLogger logger;
-  glslang::GlslangToSpv(*program.getIntermediate(EShLangCompute), result.words, &logger, &options);
-  if (result.words.empty()) {
-    *error = "glslang produced no SPIR-V: " + logger.getAllMessages();
-    return false;
-  }
-  if (std::string v = validate_spirv(result.words); !v.empty()) {
-    *error = "invalid SPIR-V: " + v;
-    return false;
+  for (size_t i = 0; i < stages.size(); ++i) {
+    std::vector<uint32_t>& words = i == 0 ? result.words : result.fragment_words;
+    spv::SpvBuildLogger logger;
+    glslang::GlslangToSpv(*program.getIntermediate(language(stages[i].first)), words, &logger, &options);
+    if (words.empty()) {
+      *error = "glslang produced no SPIR-V: " + logger.getAllMessages();
+      return false;
+    }
+    if (std::string v = validate_spirv(words); !v.empty()) {
+      *error = "invalid SPIR-V: " + v;
+      return false;
+    }
   }
   *out = std::move(result);
   return true;

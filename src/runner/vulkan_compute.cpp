@@ -1,4 +1,4 @@
-// Vulkan backend: one lavapipe device per process; each job builds and destroys its own objects.
+// Vulkan compute backend: each job builds and destroys its own objects on the shared lavapipe device.
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
@@ -8,217 +8,10 @@
 #include <functional>
 #include <mutex>
 
-#include "runner/internal.hpp"
+#include "runner/vulkan_device.hpp"
 
 namespace doublet::runner::detail {
 namespace {
-
-const char* result_name(VkResult r) {
-  switch (r) {
-    case VK_SUCCESS: return "VK_SUCCESS";
-    case VK_TIMEOUT: return "VK_TIMEOUT";
-    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
-    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
-    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
-    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER";
-    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
-    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
-    case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
-    case VK_ERROR_INVALID_SHADER_NV: return "VK_ERROR_INVALID_SHADER_NV";
-    default: return "VkResult(other)";
-  }
-}
-
-std::string vk_failed(const char* call, VkResult r) {
-  return std::string(call) + " failed: " + result_name(r) + " (" + std::to_string(static_cast<int>(r)) + ")";
-}
-
-constexpr const char* kLavapipeIcd = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
-
-struct VulkanDevice {
-  VkInstance instance = VK_NULL_HANDLE;
-  VkPhysicalDevice physical = VK_NULL_HANDLE;
-  VkDevice device = VK_NULL_HANDLE;
-  VkQueue queue = VK_NULL_HANDLE;
-  uint32_t queue_family = 0;
-  VkPhysicalDeviceMemoryProperties memory{};
-  VkPhysicalDeviceLimits limits{};
-  bool float64 = false;
-  std::string name;
-  std::string error;  // non-empty: this backend is unusable, and why
-  std::mutex mu;      // the queue and per-job pools are externally synchronised objects
-};
-
-// Creates an instance and returns the lavapipe physical device, or an explanation.
-std::string find_lavapipe(VulkanDevice& d) {
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-  app.pApplicationName = "doublet_runner";
-  app.apiVersion = VK_API_VERSION_1_1;
-  VkInstanceCreateInfo ici{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  ici.pApplicationInfo = &app;
-  if (VkResult r = vkCreateInstance(&ici, nullptr, &d.instance); r != VK_SUCCESS) {
-    d.instance = VK_NULL_HANDLE;
-    return vk_failed("vkCreateInstance", r);
-  }
-  uint32_t count = 0;
-  // An ICD for absent hardware may fail here; the loader then reports an error for the whole call.
-  VkResult r = vkEnumeratePhysicalDevices(d.instance, &count, nullptr);
-  std::vector<VkPhysicalDevice> devices(count);
-  if (r == VK_SUCCESS || r == VK_INCOMPLETE) r = vkEnumeratePhysicalDevices(d.instance, &count, devices.data());
-  if (r != VK_SUCCESS && r != VK_INCOMPLETE) return vk_failed("vkEnumeratePhysicalDevices", r);
-  std::string seen;
-  for (uint32_t i = 0; i < count; ++i) {
-    VkPhysicalDeviceProperties p;
-    vkGetPhysicalDeviceProperties(devices[i], &p);
-    seen += std::string(seen.empty() ? "" : ", ") + p.deviceName;
-    if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU || std::strstr(p.deviceName, "llvmpipe")) {
-      if (p.apiVersion < VK_API_VERSION_1_1) return std::string(p.deviceName) + " supports only Vulkan 1.0";
-      d.physical = devices[i];
-      d.name = p.deviceName;
-      d.limits = p.limits;
-      return {};
-    }
-  }
-  return "no lavapipe (CPU) Vulkan device among [" + seen + "]";
-}
-
-std::string init(VulkanDevice& d) {
-  std::string why = find_lavapipe(d);
-  // Other ICDs (hardware drivers without their hardware) can break instance creation or
-  // enumeration. Unless the user chose ICDs, retry with lavapipe alone.
-  if (!why.empty() && !std::getenv("VK_ICD_FILENAMES") && !std::getenv("VK_DRIVER_FILES") &&
-      std::filesystem::exists(kLavapipeIcd)) {
-    if (d.instance) vkDestroyInstance(d.instance, nullptr);
-    d.instance = VK_NULL_HANDLE;
-    setenv("VK_ICD_FILENAMES", kLavapipeIcd, 0);
-    std::string again = find_lavapipe(d);
-    if (!again.empty()) why += "; with VK_ICD_FILENAMES=" + std::string(kLavapipeIcd) + ": " + again;
-    else why.clear();
-  }
-  if (!why.empty()) return why;
-
-  uint32_t nfam = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(d.physical, &nfam, nullptr);
-  std::vector<VkQueueFamilyProperties> fams(nfam);
-  vkGetPhysicalDeviceQueueFamilyProperties(d.physical, &nfam, fams.data());
-  d.queue_family = UINT32_MAX;
-  for (uint32_t i = 0; i < nfam; ++i)
-    if (fams[i].queueFlags & VK_QUEUE_COMPUTE_BIT) { d.queue_family = i; break; }
-  if (d.queue_family == UINT32_MAX) return d.name + " has no compute queue";
-
-  VkPhysicalDeviceFeatures supported;
-  vkGetPhysicalDeviceFeatures(d.physical, &supported);
-  VkPhysicalDeviceFeatures enabled{};
-  enabled.shaderFloat64 = supported.shaderFloat64;  // native doubles: the reference for lowered code
-  enabled.shaderInt64 = supported.shaderInt64;
-  d.float64 = supported.shaderFloat64 == VK_TRUE;
-
-  float priority = 1.0f;
-  VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-  qci.queueFamilyIndex = d.queue_family;
-  qci.queueCount = 1;
-  qci.pQueuePriorities = &priority;
-  VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-  dci.queueCreateInfoCount = 1;
-  dci.pQueueCreateInfos = &qci;
-  dci.pEnabledFeatures = &enabled;
-  if (VkResult r = vkCreateDevice(d.physical, &dci, nullptr, &d.device); r != VK_SUCCESS)
-    return vk_failed("vkCreateDevice", r);
-  vkGetDeviceQueue(d.device, d.queue_family, 0, &d.queue);
-  vkGetPhysicalDeviceMemoryProperties(d.physical, &d.memory);
-  return {};
-}
-
-// Never destroyed: tearing down a driver during static destruction only invites exit-time crashes.
-VulkanDevice& shared_device() {
-  static VulkanDevice* d = [] {
-    auto* dev = new VulkanDevice;
-    dev->error = init(*dev);
-    return dev;
-  }();
-  return *d;
-}
-
-// Everything one job creates; destroyed in reverse order whatever happens.
-struct JobObjects {
-  VkDevice dev;
-  std::vector<std::function<void()>> cleanup;
-  explicit JobObjects(VkDevice d) : dev(d) {}
-  ~JobObjects() {
-    for (auto it = cleanup.rbegin(); it != cleanup.rend(); ++it) (*it)();
-  }
-};
-
-struct HostBuffer {
-  VkBuffer buffer = VK_NULL_HANDLE;
-  void* mapped = nullptr;
-};
-
-std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usage, const std::vector<uint8_t>& data,
-                        HostBuffer* out) {
-  VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-  bci.size = std::max<VkDeviceSize>(data.size(), 16);  // Vulkan forbids empty buffers
-  bci.usage = usage;
-  bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  if (VkResult r = vkCreateBuffer(d.device, &bci, nullptr, &out->buffer); r != VK_SUCCESS)
-    return vk_failed("vkCreateBuffer", r);
-  VkBuffer buf = out->buffer;
-  job.cleanup.push_back([&d, buf] { vkDestroyBuffer(d.device, buf, nullptr); });
-
-  VkMemoryRequirements req;
-  vkGetBufferMemoryRequirements(d.device, buf, &req);
-  const VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  uint32_t type = UINT32_MAX;
-  for (uint32_t i = 0; i < d.memory.memoryTypeCount; ++i)
-    if ((req.memoryTypeBits & (1u << i)) && (d.memory.memoryTypes[i].propertyFlags & want) == want) { type = i; break; }
-  if (type == UINT32_MAX) return "no host-visible coherent memory type on " + d.name;
-  VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  mai.allocationSize = req.size;
-  mai.memoryTypeIndex = type;
-  VkDeviceMemory mem;
-  if (VkResult r = vkAllocateMemory(d.device, &mai, nullptr, &mem); r != VK_SUCCESS) return vk_failed("vkAllocateMemory", r);
-  job.cleanup.push_back([&d, mem] { vkFreeMemory(d.device, mem, nullptr); });
-  if (VkResult r = vkBindBufferMemory(d.device, buf, mem, 0); r != VK_SUCCESS) return vk_failed("vkBindBufferMemory", r);
-  if (VkResult r = vkMapMemory(d.device, mem, 0, VK_WHOLE_SIZE, 0, &out->mapped); r != VK_SUCCESS)
-    return vk_failed("vkMapMemory", r);
-  std::memset(out->mapped, 0, bci.size);
-  if (!data.empty()) std::memcpy(out->mapped, data.data(), data.size());
-  return {};
-}
-
-// Fills the global uniform block: zero everywhere, then each named value at its reflected offset.
-std::string uniform_block_bytes(const SpirvProgram& program, const ComputeJob& job, std::vector<uint8_t>* bytes) {
-  bytes->assign(std::max<uint32_t>(program.uniform_block_size, 16), 0);
-  for (const auto& [name, value] : job.float_uniforms) {
-    auto it = program.uniforms.find(name);
-    if (it == program.uniforms.end()) continue;  // inactive or absent: GL ignores it too
-    if (!it->second.is_float) return "uniform '" + name + "' is not a float; float_uniforms can only set floats";
-    if (it->second.offset + sizeof(float) > bytes->size()) return "uniform '" + name + "' lies outside its block";
-    std::memcpy(bytes->data() + it->second.offset, &value, sizeof(float));
-  }
-  for (const auto& [name, values] : job.uniforms) {
-    auto it = program.uniforms.find(name);
-    if (it == program.uniforms.end()) continue;
-    const UniformSlot& slot = it->second;
-    if (slot.components == 0) return "uniform '" + name + "' is not a float/double scalar or vector";
-    if (static_cast<int>(values.size()) != slot.components)
-      return "uniform '" + name + "' has " + std::to_string(slot.components) + " component(s), job gives " +
-             std::to_string(values.size());
-    const size_t width = slot.is_double ? sizeof(double) : sizeof(float);
-    if (slot.offset + width * values.size() > bytes->size()) return "uniform '" + name + "' lies outside its block";
-    for (size_t c = 0; c < values.size(); ++c) {  // std140 vectors are tightly packed
-      uint8_t* dst = bytes->data() + slot.offset + c * width;
-      if (slot.is_double) std::memcpy(dst, &values[c], width);
-      else {
-        const float f = static_cast<float>(values[c]);
-        std::memcpy(dst, &f, width);
-      }
-    }
-  }
-  return {};
-}
-
 // What every job of a batch shares: layouts, the pipeline, the command pool.
 struct Pipeline {
   VkDescriptorSetLayout layouts[2] = {};
@@ -299,7 +92,7 @@ std::string dispatch(VulkanDevice& d, const SpirvProgram& program, const Pipelin
   const uint32_t n = p.buffer_count;
   if (std::string e = check_job(d, program, job, n); !e.empty()) return e;
   std::vector<uint8_t> ubo_data;
-  if (std::string e = uniform_block_bytes(program, job, &ubo_data); !e.empty()) return e;
+  if (std::string e = uniform_block_bytes(program, job.float_uniforms, job.uniforms, &ubo_data); !e.empty()) return e;
 
   JobObjects objs(d.device);
   std::vector<HostBuffer> ssbos(n);

@@ -1,0 +1,125 @@
+// GLES graphics backend: the wrapped stage pair (graphics_wrapper.hpp) linked by Mesa's GLES compiler
+// and drawn as points on llvmpipe into a framebuffer without attachments (the wrapper stores its
+// outputs in a storage buffer, so nothing is rendered).
+#include <algorithm>
+#include <cstring>
+
+#include "runner/gles_context.hpp"
+#include "runner/graphics_wrapper.hpp"
+
+namespace doublet::runner::detail {
+namespace {
+
+struct GlGraphicsObjects {
+  GLuint shaders[2] = {}, program = 0, framebuffer = 0, vertex_array = 0, buffers[2] = {};
+  ~GlGraphicsObjects() {
+    glDeleteBuffers(2, buffers);
+    if (vertex_array) glDeleteVertexArrays(1, &vertex_array);
+    if (framebuffer) glDeleteFramebuffers(1, &framebuffer);
+    if (program) glDeleteProgram(program);
+    for (GLuint s : shaders)
+      if (s) glDeleteShader(s);
+    glGetError();  // do not leak an error into the next job
+  }
+};
+
+std::string link(const WrappedProgram& w, GlGraphicsObjects& gl, const std::string& device) {
+  const GLenum types[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+  const std::string* texts[2] = {&w.vertex, &w.fragment};
+  gl.program = glCreateProgram();
+  for (int i = 0; i < 2; ++i) {
+    gl.shaders[i] = glCreateShader(types[i]);
+    const char* text = texts[i]->c_str();
+    glShaderSource(gl.shaders[i], 1, &text, nullptr);
+    glCompileShader(gl.shaders[i]);
+    GLint status = 0;
+    glGetShaderiv(gl.shaders[i], GL_COMPILE_STATUS, &status);
+    if (!status)
+      return std::string("GLSL compile failed (GLES ") + (i ? "fragment" : "vertex") + ", " + device + "):\n" +
+             info_log(gl.shaders[i], false);
+    glAttachShader(gl.program, gl.shaders[i]);
+  }
+  glLinkProgram(gl.program);
+  GLint status = 0;
+  glGetProgramiv(gl.program, GL_LINK_STATUS, &status);
+  if (!status) return "GLSL link failed (GLES, " + device + "):\n" + info_log(gl.program, true);
+  // A framebuffer with no attachments (ES 3.1) gives the fragment stage its grid of pixels.
+  glGenFramebuffers(1, &gl.framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, gl.framebuffer);
+  glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, static_cast<GLint>(kGridWidth));
+  glFramebufferParameteri(GL_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, static_cast<GLint>(kGridHeight));
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) return "attachment-less framebuffer incomplete";
+  glViewport(0, 0, static_cast<GLsizei>(kGridWidth), static_cast<GLsizei>(kGridHeight));
+  glGenVertexArrays(1, &gl.vertex_array);
+  glBindVertexArray(gl.vertex_array);
+  glGenBuffers(2, gl.buffers);
+  return gl_error("setting up the program");
+}
+
+std::string draw(const WrappedProgram& w, GlGraphicsObjects& gl, const GraphicsJob& job, uint32_t count,
+                 GraphicsResult* result) {
+  glUseProgram(gl.program);
+  if (std::string e = set_uniforms(gl.program, job.float_uniforms, job.uniforms); !e.empty()) return e;
+  std::vector<uint8_t> inputs;
+  if (std::string e = pack_inputs(w.iface, job, &inputs); !e.empty()) return e;
+  const std::vector<uint8_t> outputs = blank_outputs(w.iface, count);
+  const std::vector<uint8_t>* data[2] = {&inputs, &outputs};
+  const GLuint bindings[2] = {kInputBinding, kOutputBinding};
+  for (int i = 0; i < 2; ++i) {
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, gl.buffers[i]);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(data[i]->size()), data[i]->data(), GL_DYNAMIC_COPY);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings[i], gl.buffers[i]);
+  }
+  if (std::string e = gl_error("uploading buffers"); !e.empty()) return e;
+
+  const bool vertex = job.stage == GraphicsStage::Vertex;
+  if (vertex) glEnable(GL_RASTERIZER_DISCARD);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+  if (vertex) glDisable(GL_RASTERIZER_DISCARD);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  if (std::string e = gl_error("glDrawArrays"); !e.empty()) return e;
+
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, gl.buffers[1]);
+  const void* p = glMapBufferRange(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(outputs.size()), GL_MAP_READ_BIT);
+  if (!p) return gl_error("glMapBufferRange") + " (outputs)";
+  unpack_outputs(w.iface, count, static_cast<const uint8_t*>(p), result);
+  glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+  return gl_error("reading outputs back");
+}
+
+}  // namespace
+
+std::vector<GraphicsResult> gles_run_graphics(const WrappedProgram& w, const std::vector<GraphicsJob>& jobs) {
+  GlesContext& g = shared_context();
+  GraphicsResult failed;
+  failed.device = g.renderer;
+  if (!g.error.empty()) {
+    failed.error = "GLES unavailable: " + g.error;
+    return {failed};
+  }
+  std::lock_guard<std::mutex> lock(g.mu);
+  if (!eglMakeCurrent(g.display, EGL_NO_SURFACE, EGL_NO_SURFACE, g.context)) {
+    failed.error = egl_error("eglMakeCurrent");
+    return {failed};
+  }
+  std::vector<GraphicsResult> results;
+  {
+    glGetError();  // start clean
+    GlGraphicsObjects gl;
+    const std::string error = link(w, gl, g.renderer);
+    for (size_t i = 0; i < jobs.size() && (i == 0 || results.back().ok); ++i) {
+      GraphicsResult result;
+      result.device = g.renderer;
+      result.error = error.empty() ? draw(w, gl, jobs[i], jobs[0].count, &result) : error;
+      result.ok = result.error.empty();
+      if (!result.ok) result.outputs.clear();
+      results.push_back(std::move(result));
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindVertexArray(0);
+  }
+  eglMakeCurrent(g.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);  // let other threads use it
+  return results;
+}
+
+}  // namespace doublet::runner::detail

@@ -1,0 +1,163 @@
+#include "runner/graphics_wrapper.hpp"
+
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+namespace doublet::runner::detail {
+namespace {
+
+// A whole-line global declaration: [layout(...)] [interpolation/precision...] in|out [precision] TYPE names;
+const std::regex& declaration() {
+  static const std::regex re(
+      R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*)"
+      R"((in|out)\s+((?:highp|mediump|lowp)\s+)?([A-Za-z_]\w*)\s+([A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*)\s*;\s*(?://.*)?$)");
+  return re;
+}
+
+// Anything that starts like an in/out declaration; what `declaration` does not take is unsupported.
+const std::regex& looks_like_declaration() {
+  static const std::regex re(
+      R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*(in|out)\s+\w)");
+  return re;
+}
+
+// float/vecN, double/dvecN, int/ivecN, uint/uvecN → scalar letter and components.
+bool parse_type(const std::string& type, char* scalar, int* components) {
+  static const std::pair<const char*, char> kScalars[] = {{"float", 'f'}, {"double", 'd'}, {"int", 'i'}, {"uint", 'u'}};
+  static const std::pair<const char*, char> kVectors[] = {{"vec", 'f'}, {"dvec", 'd'}, {"ivec", 'i'}, {"uvec", 'u'}};
+  for (const auto& [name, s] : kScalars)
+    if (type == name) {
+      *scalar = s;
+      *components = 1;
+      return true;
+    }
+  for (const auto& [prefix, s] : kVectors) {
+    const std::string p = prefix;
+    if (type.size() == p.size() + 1 && type.compare(0, p.size(), p) == 0 && type.back() >= '2' && type.back() <= '4') {
+      *scalar = s;
+      *components = type.back() - '0';
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string type_name(const StageVariable& v) {
+  static const char* kScalar[] = {"float", "double", "int", "uint"};
+  static const char* kVector[] = {"vec", "dvec", "ivec", "uvec"};
+  const int k = v.scalar == 'f' ? 0 : v.scalar == 'd' ? 1 : v.scalar == 'i' ? 2 : 3;
+  return v.components == 1 ? kScalar[k] : kVector[k] + std::to_string(v.components);
+}
+
+// std430 offsets of the variables as members of one struct; returns the struct's array stride.
+uint32_t lay_out(std::vector<StageVariable>& vars) {
+  uint32_t offset = 0, struct_align = 4;
+  for (StageVariable& v : vars) {
+    const uint32_t scalar = v.scalar == 'd' ? 8 : 4;
+    const uint32_t align = scalar * (v.components == 1 ? 1 : v.components == 2 ? 2 : 4);
+    offset = (offset + align - 1) / align * align;
+    v.offset = offset;
+    offset += scalar * static_cast<uint32_t>(v.components);
+    struct_align = std::max(struct_align, align);
+  }
+  return (offset + struct_align - 1) / struct_align * struct_align;
+}
+
+std::string struct_decl(const char* name, const std::vector<StageVariable>& vars) {
+  std::string s = std::string("struct ") + name + " {";
+  for (size_t i = 0; i < vars.size(); ++i) s += " " + type_name(vars[i]) + " m" + std::to_string(i) + ";";
+  return s + " };\n";
+}
+
+// gl_VertexIndex under Vulkan (glslang defines VULKAN), gl_VertexID under GL.
+constexpr const char* kVertexIndexMacro =
+    "#ifdef VULKAN\n#define doublet_vertex_index gl_VertexIndex\n#else\n#define doublet_vertex_index gl_VertexID\n#endif\n";
+
+}  // namespace
+
+std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedProgram* out) {
+  *out = WrappedProgram{};
+  std::istringstream in(glsl);
+  std::string line, body, version;
+  static const std::regex version_re(R"(^\s*#\s*version\s+(\d+)\s*(es)?\s*(?:core)?\s*(?://.*)?$)");
+  int line_number = 0;
+  while (std::getline(in, line)) {
+    ++line_number;
+    std::smatch m;
+    if (version.empty() && std::regex_match(line, m, version_re)) {
+      const std::string number = m[1];
+      const bool es = m[2].matched;
+      if (es && (number == "300" || number == "310")) version = "#version 310 es";  // 300 es: buffers need 3.10
+      else if (es && number == "320") version = "#version 320 es";
+      else if (!es && number == "450") version = "#version 450";
+      else return "unsupported '#version " + number + (es ? " es" : "") + "' for a vertex/fragment run (300 es, 310 es, 320 es, 450)";
+      out->es = es;
+      body += version + "\n#define main doublet_user_main\n";
+      continue;
+    }
+    if (std::regex_match(line, m, declaration())) {
+      StageVariable v;
+      if (!parse_type(m[3], &v.scalar, &v.components))
+        return "line " + std::to_string(line_number) + ": unsupported " + std::string(m[1]) + " type '" +
+               std::string(m[3]) + "' (float/double/int/uint scalars and vectors)";
+      std::string names = m[4];
+      std::replace(names.begin(), names.end(), ',', ' ');
+      std::istringstream split(names);
+      for (std::string name; split >> name;) {
+        v.name = name;
+        (m[1] == "in" ? out->iface.inputs : out->iface.outputs).push_back(v);
+      }
+      body += std::string(m[2]) + std::string(m[3]) + " " + std::string(m[4]) + ";  // was: " + line + "\n";
+      continue;
+    }
+    if (std::regex_search(line, looks_like_declaration()))
+      return "line " + std::to_string(line_number) + ": unsupported in/out declaration (one per line, no arrays, " +
+             "blocks or structs): " + line;
+    body += line + "\n";
+  }
+  if (version.empty()) return "the shader has no #version line";
+  if (stage == GraphicsStage::Vertex && glsl.find("gl_Position") != std::string::npos)
+    out->iface.outputs.push_back(StageVariable{"gl_Position", 'f', 4});
+  if (out->iface.outputs.empty()) return "the shader has no outputs to compare";
+  out->iface.input_stride = lay_out(out->iface.inputs);
+  out->iface.output_stride = lay_out(out->iface.outputs);
+
+  std::string w = "#undef main\n";
+  if (out->es) w += "precision highp float;\nprecision highp int;\n";
+  if (stage == GraphicsStage::Vertex) w += kVertexIndexMacro;
+  if (!out->iface.inputs.empty())
+    w += struct_decl("doublet_In", out->iface.inputs) + "layout(std430, binding = " + std::to_string(kInputBinding) +
+         ") readonly buffer doublet_Inputs { doublet_In doublet_in[]; };\n";
+  w += struct_decl("doublet_Out", out->iface.outputs) + "layout(std430, binding = " + std::to_string(kOutputBinding) +
+       ") writeonly buffer doublet_Outputs { doublet_Out doublet_out[]; };\n";
+  w += "void main() {\n  int doublet_i = ";
+  w += stage == GraphicsStage::Vertex ? "doublet_vertex_index;\n"
+                                      : "int(gl_FragCoord.y) * " + std::to_string(kGridWidth) + " + int(gl_FragCoord.x);\n";
+  for (size_t i = 0; i < out->iface.inputs.size(); ++i)
+    w += "  " + out->iface.inputs[i].name + " = doublet_in[doublet_i].m" + std::to_string(i) + ";\n";
+  w += "  doublet_user_main();\n";
+  for (size_t i = 0; i < out->iface.outputs.size(); ++i)
+    w += "  doublet_out[doublet_i].m" + std::to_string(i) + " = " + out->iface.outputs[i].name + ";\n";
+  w += "}\n";
+
+  const std::string user = body + w;
+  if (stage == GraphicsStage::Vertex) {
+    out->vertex = user;
+    out->fragment = version + "\nvoid main() {}\n";  // never runs: rasterizer discard
+  } else {
+    const std::string width = std::to_string(kGridWidth) + ".0", height = std::to_string(kGridHeight) + ".0";
+    out->vertex = version + "\n" + kVertexIndexMacro +
+                  "void main() {\n"
+                  "  int i = doublet_vertex_index;\n"
+                  "  vec2 pixel = vec2(float(i % " + std::to_string(kGridWidth) + "), float(i / " +
+                  std::to_string(kGridWidth) + ")) + 0.5;\n"
+                  "  gl_Position = vec4(pixel / vec2(" + width + ", " + height + ") * 2.0 - 1.0, 0.0, 1.0);\n"
+                  "  gl_PointSize = 1.0;\n"
+                  "}\n";
+    out->fragment = user;
+  }
+  return {};
+}
+
+}  // namespace doublet::runner::detail

@@ -1,0 +1,61 @@
+// The lavapipe device shared by the Vulkan backends (compute, graphics) and per-job helpers.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "runner/internal.hpp"
+
+namespace doublet::runner::detail {
+
+struct VulkanDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  uint32_t queue_family = 0;
+  VkPhysicalDeviceMemoryProperties memory{};
+  VkPhysicalDeviceLimits limits{};
+  bool float64 = false;
+  bool graphics = false;      // the queue draws as well as dispatches
+  bool stage_stores = false;  // vertexPipelineStoresAndAtomics and fragmentStoresAndAtomics enabled
+  std::string name;
+  std::string error;  // non-empty: this backend is unusable, and why
+  std::mutex mu;      // the queue and per-job pools are externally synchronised objects
+};
+
+// Created on first use, never destroyed: tearing down a driver during static destruction only
+// invites exit-time crashes.
+VulkanDevice& shared_device();
+
+std::string vk_failed(const char* call, VkResult r);
+
+// Everything one job creates; destroyed in reverse order whatever happens.
+struct JobObjects {
+  VkDevice dev;
+  std::vector<std::function<void()>> cleanup;
+  explicit JobObjects(VkDevice d) : dev(d) {}
+  ~JobObjects() {
+    for (auto it = cleanup.rbegin(); it != cleanup.rend(); ++it) (*it)();
+  }
+};
+
+struct HostBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  void* mapped = nullptr;
+};
+
+// A host-visible, coherent buffer holding `data` (zero-padded to at least 16 bytes), mapped.
+std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usage, const std::vector<uint8_t>& data,
+                        HostBuffer* out);
+
+// The global uniform block's bytes: zero everywhere, then each named value at its reflected offset.
+std::string uniform_block_bytes(const SpirvProgram& program, const std::map<std::string, float>& float_uniforms,
+                                const std::map<std::string, std::vector<double>>& uniforms, std::vector<uint8_t>* bytes);
+
+}  // namespace doublet::runner::detail

@@ -1,0 +1,129 @@
+// run_graphics: vertex and fragment stages on lavapipe and Mesa GLES, inputs and outputs read
+// bit-exactly through the wrapper's storage buffers; native doubles in both stages on lavapipe.
+#include <cmath>
+
+#include "test_util.hpp"
+
+namespace doublet::runner::test {
+namespace {
+
+class Graphics : public ::testing::TestWithParam<std::tuple<Backend, GraphicsStage>> {};
+
+// The same text works in both stages: after wrapping, `in`/`out` are plain globals.
+constexpr const char* kFloatShader = R"(#version 300 es
+precision highp float;
+in vec2 a;
+in float b;
+uniform float k;
+uniform mat2 m;
+flat out vec2 r;
+out float s;
+void main() {
+  r = m * a * b + k;
+  s = a.x / b;
+}
+)";
+
+TEST_P(Graphics, FloatOutputsAreBitExact) {
+  const auto [backend, stage] = GetParam();
+  REQUIRE_BACKEND(backend);
+  GraphicsJob job;
+  job.stage = stage;
+  job.glsl = kFloatShader;
+  job.count = 200;  // more than a 64-pixel row
+  for (uint32_t i = 0; i < job.count; ++i) {
+    job.inputs["a"].push_back(1.0 + i * 0x1p-10);
+    job.inputs["a"].push_back(-3.0 - i);
+    job.inputs["b"].push_back(0.75 + i);
+  }
+  job.uniforms["k"] = {0.125};
+  job.uniforms["m"] = {2, 0, 0, 4};  // column-major diag(2, 4)
+  const GraphicsResult r = run_graphics(backend, job);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.outputs.at("r").size(), 2u * job.count);
+  ASSERT_EQ(r.outputs.at("s").size(), job.count);
+  for (uint32_t i = 0; i < job.count; ++i) {
+    const float ax = static_cast<float>(job.inputs["a"][2 * i]), ay = static_cast<float>(job.inputs["a"][2 * i + 1]);
+    const float b = static_cast<float>(job.inputs["b"][i]);
+    EXPECT_EQ(r.outputs.at("r")[2 * i], 2.0f * ax * b + 0.125f) << i;
+    EXPECT_EQ(r.outputs.at("r")[2 * i + 1], 4.0f * ay * b + 0.125f) << i;
+    EXPECT_EQ(bits<uint32_t>(static_cast<float>(r.outputs.at("s")[i])), bits<uint32_t>(ax / b)) << i;
+  }
+}
+
+class GraphicsStageOnly : public ::testing::TestWithParam<GraphicsStage> {};
+
+TEST_P(GraphicsStageOnly, NativeDoublesRunOnLavapipe) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  GraphicsJob job;
+  job.stage = GetParam();
+  job.glsl = R"(#version 450
+in dvec3 p;
+uniform dvec3 eye;
+flat out dvec3 d;
+void main() { d = p - eye; }
+)";
+  job.count = 3;
+  job.inputs["p"] = {1e7 + 0.1, 2, 3, 4, 5, 6, 7, 8, 9};
+  job.uniforms["eye"] = {1e7, 1, 1};
+  const GraphicsResult r = run_graphics(Backend::Vulkan, job);
+  ASSERT_TRUE(r.ok) << r.error;
+  const std::vector<double>& d = r.outputs.at("d");
+  EXPECT_EQ(d[0], (1e7 + 0.1) - 1e7);  // exact in double; float would be off by ~0.1
+  EXPECT_EQ(d[8], 8.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Stages, GraphicsStageOnly, ::testing::Values(GraphicsStage::Vertex, GraphicsStage::Fragment),
+                         [](const auto& info) { return std::string(info.param == GraphicsStage::Vertex ? "Vertex" : "Fragment"); });
+
+class GraphicsBackend : public ::testing::TestWithParam<Backend> {};
+
+TEST_P(GraphicsBackend, VertexStageCapturesGlPosition) {
+  REQUIRE_BACKEND(GetParam());
+  GraphicsJob job;
+  job.glsl = "#version 310 es\nin vec3 p;\nvoid main() { gl_Position = vec4(p, 1.0); }\n";
+  job.count = 2;
+  job.inputs["p"] = {1, 2, 3, -4, -5, -6};
+  const GraphicsResult r = run_graphics(GetParam(), job);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.outputs.at("gl_Position"), (std::vector<double>{1, 2, 3, 1, -4, -5, -6, 1}));
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, GraphicsBackend, ::testing::Values(Backend::Vulkan, Backend::Gles), backend_param_name);
+
+TEST(GraphicsWrap, UnsupportedDeclarationsAreReported) {
+  GraphicsInterface iface;
+  std::string error;
+  EXPECT_FALSE(reflect_graphics(GraphicsStage::Vertex, "#version 310 es\nin vec3 p[2];\nvoid main() {}\n", &iface, &error));
+  EXPECT_NE(error.find("unsupported in/out declaration"), std::string::npos) << error;
+  EXPECT_FALSE(reflect_graphics(GraphicsStage::Vertex, "#version 100\nattribute vec3 p;\nvoid main() { gl_Position = vec4(p, 1.0); }\n",
+                                &iface, &error));
+  EXPECT_NE(error.find("unsupported '#version 100'"), std::string::npos) << error;
+}
+
+TEST(GraphicsWrap, ReflectsInputsOutputsAndUniforms) {
+  GraphicsInterface iface;
+  std::string error;
+  ASSERT_TRUE(reflect_graphics(GraphicsStage::Fragment, kFloatShader, &iface, &error)) << error;
+  ASSERT_EQ(iface.inputs.size(), 2u);
+  EXPECT_EQ(iface.inputs[0].name, "a");
+  EXPECT_EQ(iface.inputs[1].offset, 8u);
+  EXPECT_EQ(iface.input_stride, 16u);  // vec2 + float, aligned to 8
+  ASSERT_EQ(iface.outputs.size(), 2u);
+  EXPECT_EQ(iface.uniforms.size(), 2u);
+  for (const auto& u : iface.uniforms)
+    if (u.name == "m") EXPECT_TRUE(u.components == 4 && u.columns == 2);
+}
+
+std::string param_name(const ::testing::TestParamInfo<std::tuple<Backend, GraphicsStage>>& info) {
+  return std::string(backend_name(std::get<0>(info.param))) +
+         (std::get<1>(info.param) == GraphicsStage::Vertex ? "Vertex" : "Fragment");
+}
+
+INSTANTIATE_TEST_SUITE_P(Stages, Graphics,
+                         ::testing::Combine(::testing::Values(Backend::Vulkan, Backend::Gles),
+                                            ::testing::Values(GraphicsStage::Vertex, GraphicsStage::Fragment)),
+                         param_name);
+
+}  // namespace
+}  // namespace doublet::runner::test
