@@ -26,18 +26,74 @@ void main() {
 )";
 constexpr int kPairs = 64;
 
-}  // namespace
+// The same arithmetic as a vertex/fragment stage (the runner feeds `abd` per sample, reads `r`).
+constexpr const char* kStageProbeShader = R"(#version 320 es
+precision highp float;
+in vec4 abd;
+out vec4 r;
+void main() {
+  float a = abd.x, b = abd.y, d = abd.z;
+  float s = a + b;
+  float bb = s - a;
+  float e = (a - (s - bb)) + (b - bb);
+  precise float p = a * b;
+  precise float f = fma(a, b, -p);
+  r = vec4(s, e, f, d * 0.5);
+}
+)";
 
-Probe probe_compute(runner::Backend backend) {
-  Probe probe;
+// Per pair: a = 1 + k·2^-12, b = a shifted (TwoSum and TwoProd errors all non-zero), FLT_MIN.
+std::vector<float> probe_inputs() {
   std::vector<float> in(4 * kPairs);
   for (int i = 0; i < kPairs; ++i) {
-    // a = 1 + k·2^-12, b = a shifted: TwoSum and TwoProd errors are all non-zero.
     const float a = 1.0f + static_cast<float>(i + 1) * 0x1p-12f;
     in[4 * i] = a;
     in[4 * i + 1] = a * 0x1p-20f;
     in[4 * i + 2] = 0x1p-126f;  // FLT_MIN: half of it is a denormal
   }
+  return in;
+}
+
+// Compares the stage's (s, e, f, d/2) per pair with IEEE float arithmetic on the host.
+void judge(const std::vector<float>& in, const std::vector<float>& out, Probe* probe) {
+  bool two_sum = true, fused = true, flushed = true;
+  for (int i = 0; i < kPairs; ++i) {
+    const float a = in[4 * i], b = in[4 * i + 1];
+    const float s = a + b, bb = s - a, e = (a - (s - bb)) + (b - bb);
+    const double exact_prod_err = static_cast<double>(a) * b - static_cast<double>(a * b);
+    two_sum &= out[4 * i + 1] == e;
+    fused &= static_cast<double>(out[4 * i + 2]) == exact_prod_err;
+    flushed &= out[4 * i + 3] == 0.0f;
+  }
+  probe->two_sum_survives = two_sum;
+  probe->fma_fused = fused;
+  probe->denormals_flushed = flushed;
+}
+
+}  // namespace
+
+Probe probe_stage(runner::Backend backend, runner::GraphicsStage stage) {
+  Probe probe;
+  probe.stage = stage == runner::GraphicsStage::Vertex ? "vert" : "frag";
+  const std::vector<float> in = probe_inputs();
+  runner::GraphicsJob job;
+  job.stage = stage;
+  job.glsl = kStageProbeShader;
+  job.count = kPairs;
+  job.inputs["abd"].assign(in.begin(), in.end());
+  const runner::GraphicsResult r = runner::run_graphics(backend, job);
+  if (!r.ok) {
+    probe.error = r.error;
+    return probe;
+  }
+  const std::vector<double>& got = r.outputs.at("r");
+  judge(in, std::vector<float>(got.begin(), got.end()), &probe);
+  return probe;
+}
+
+Probe probe_compute(runner::Backend backend) {
+  Probe probe;
+  const std::vector<float> in = probe_inputs();
   runner::ComputeJob job;
   job.glsl = kProbeShader;
   job.buffers = {std::vector<uint8_t>(in.size() * 4), std::vector<uint8_t>(in.size() * 4)};
@@ -50,18 +106,7 @@ Probe probe_compute(runner::Backend backend) {
   }
   std::vector<float> out(4 * kPairs);
   std::memcpy(out.data(), r.buffers[1].data(), r.buffers[1].size());
-  bool two_sum = true, fused = true, flushed = true;
-  for (int i = 0; i < kPairs; ++i) {
-    const float a = in[4 * i], b = in[4 * i + 1];
-    const float s = a + b, bb = s - a, e = (a - (s - bb)) + (b - bb);
-    const double exact_prod_err = static_cast<double>(a) * b - static_cast<double>(a * b);
-    two_sum &= out[4 * i + 1] == e;
-    fused &= static_cast<double>(out[4 * i + 2]) == exact_prod_err;
-    flushed &= out[4 * i + 3] == 0.0f;
-  }
-  probe.two_sum_survives = two_sum;
-  probe.fma_fused = fused;
-  probe.denormals_flushed = flushed;
+  judge(in, out, &probe);
   return probe;
 }
 

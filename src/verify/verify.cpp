@@ -3,6 +3,7 @@
 #include <regex>
 
 #include "verify/compute_harness.hpp"
+#include "verify/graphics_harness.hpp"
 
 namespace doublet::verify {
 namespace {
@@ -38,6 +39,96 @@ bool VerifyReport::passed() const {
   return true;
 }
 
+namespace {
+
+// Compute: every sample a dispatch or an invocation (compute_harness.hpp).
+void run_compute_stage(const std::string& native_glsl, const Result& lowered, const VerifyOptions& options,
+                       VerifyReport* report) {
+  ComputeHarness harness;
+  if (std::string e = harness.plan(native_glsl, lowered.output, lowered.manifest, options.spec, options.samples);
+      !e.empty()) {
+    report->input_error = e;
+    return;
+  }
+  harness.generate(options.seed);
+  report->notes = harness.notes();
+  report->inputs = harness.describe_inputs();
+  report->dispatches = harness.dispatches();
+
+  const std::vector<runner::ComputeResult> native = runner::run_compute_batch(runner::Backend::Vulkan, harness.native_jobs());
+  const bool native_ok = native.size() == harness.dispatches() && native.back().ok;
+  const std::vector<runner::ComputeJob> lowered_jobs = harness.lowered_jobs();
+  for (runner::Backend backend : options.backends) {
+    BackendRun run;
+    run.backend = backend;
+    run.reference_driver = native.back().device;
+    if (backend == runner::Backend::Gles && !target_is_es(options.lower.target)) {
+      report->notes.push_back("GLES backend skipped: target " + report->target + " is desktop GLSL");
+      continue;
+    }
+    run.probe = probe_compute(backend);
+    if (!native_ok) {
+      run.error = "native fp64 run failed: " + native.back().error;
+    } else {
+      const std::vector<runner::ComputeResult> got = runner::run_compute_batch(backend, lowered_jobs);
+      run.driver = got.back().device;
+      if (got.size() != lowered_jobs.size() || !got.back().ok) run.error = "lowered run failed: " + got.back().error;
+      else run.outputs = harness.compare(native, got, options.min_bits);
+    }
+    report->runs.push_back(std::move(run));
+  }
+}
+
+// Vertex/fragment: draws of points whose in/out variables pass through storage buffers
+// (graphics_harness.hpp); the native fp64 shader runs in the same stage on lavapipe.
+void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_glsl, const Result& lowered,
+                        const VerifyOptions& options, VerifyReport* report) {
+  const Target t = options.lower.target;
+  if (t == Target::Es100 || t == Target::Glsl330) {
+    report->input_error = "vertex/fragment verify needs target es300, es310, es320 or glsl450 (" + report->target +
+                          " text cannot host the storage-buffer capture)";
+    return;
+  }
+  GraphicsHarness harness;
+  if (std::string e = harness.plan(stage, native_glsl, lowered.output, lowered.manifest, options.spec, options.samples);
+      !e.empty()) {
+    report->input_error = e;
+    return;
+  }
+  harness.generate(options.seed);
+  report->notes = harness.notes();
+  if (t == Target::Es300)
+    report->notes.push_back("es300 text runs as #version 310 es (the capture's storage buffers need 3.10; the "
+                            "shader text is otherwise unchanged)");
+  report->inputs = harness.describe_inputs();
+  report->dispatches = harness.draws();
+
+  const std::vector<runner::GraphicsResult> native = runner::run_graphics_batch(runner::Backend::Vulkan, harness.native_jobs());
+  const bool native_ok = native.size() == harness.draws() && native.back().ok;
+  const std::vector<runner::GraphicsJob> lowered_jobs = harness.lowered_jobs();
+  for (runner::Backend backend : options.backends) {
+    BackendRun run;
+    run.backend = backend;
+    run.reference_driver = native.back().device;
+    if (backend == runner::Backend::Gles && !target_is_es(t)) {
+      report->notes.push_back("GLES backend skipped: target " + report->target + " is desktop GLSL");
+      continue;
+    }
+    run.probe = probe_stage(backend, stage);
+    if (!native_ok) {
+      run.error = "native fp64 run failed: " + native.back().error;
+    } else {
+      const std::vector<runner::GraphicsResult> got = runner::run_graphics_batch(backend, lowered_jobs);
+      run.driver = got.back().device;
+      if (got.size() != lowered_jobs.size() || !got.back().ok) run.error = "lowered run failed: " + got.back().error;
+      else run.outputs = harness.compare(native, got, options.min_bits);
+    }
+    report->runs.push_back(std::move(run));
+  }
+}
+
+}  // namespace
+
 VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   VerifyReport report;
   report.shader = options.lower.file_name;
@@ -46,8 +137,8 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   report.sabotage = std::string(to_string(options.sabotage));
   report.samples = options.samples;
   report.seed = options.seed;
-  if (options.lower.stage != Stage::Compute) {
-    report.input_error = "verify supports compute shaders only so far (stage: " + report.stage + ")";
+  if (!options.lower.stage) {
+    report.input_error = "the stage is unknown (vert, frag or comp)";
     return report;
   }
   if (options.samples == 0) {
@@ -65,39 +156,11 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   }
   report.lowered_glsl = lowered.output;
 
-  ComputeHarness harness;
-  if (std::string e = harness.plan(as_native_450(source), lowered.output, lowered.manifest, options.spec,
-                                   options.samples);
-      !e.empty()) {
-    report.input_error = e;
-    return report;
-  }
-  harness.generate(options.seed);
-  report.notes = harness.notes();
-  report.inputs = harness.describe_inputs();
-  report.dispatches = harness.dispatches();
-
-  const std::vector<runner::ComputeResult> native = runner::run_compute_batch(runner::Backend::Vulkan, harness.native_jobs());
-  const bool native_ok = native.size() == harness.dispatches() && native.back().ok;
-  const std::vector<runner::ComputeJob> lowered_jobs = harness.lowered_jobs();
-  for (runner::Backend backend : options.backends) {
-    BackendRun run;
-    run.backend = backend;
-    run.reference_driver = native.back().device;
-    if (backend == runner::Backend::Gles && !target_is_es(options.lower.target)) {
-      report.notes.push_back("GLES backend skipped: target " + report.target + " is desktop GLSL");
-      continue;
-    }
-    run.probe = probe_compute(backend);
-    if (!native_ok) {
-      run.error = "native fp64 run failed: " + native.back().error;
-    } else {
-      const std::vector<runner::ComputeResult> got = runner::run_compute_batch(backend, lowered_jobs);
-      run.driver = got.back().device;
-      if (got.size() != lowered_jobs.size() || !got.back().ok) run.error = "lowered run failed: " + got.back().error;
-      else run.outputs = harness.compare(native, got, options.min_bits);
-    }
-    report.runs.push_back(std::move(run));
+  const std::string native = as_native_450(source);
+  switch (*options.lower.stage) {
+    case Stage::Compute: run_compute_stage(native, lowered, options, &report); break;
+    case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;
+    case Stage::Fragment: run_graphics_stage(runner::GraphicsStage::Fragment, native, lowered, options, &report); break;
   }
   return report;
 }

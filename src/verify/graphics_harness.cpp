@@ -1,0 +1,196 @@
+#include "verify/graphics_harness.hpp"
+
+#include <algorithm>
+
+#include "doublet/split.hpp"
+#include "verify/inputs.hpp"
+
+namespace doublet::verify {
+namespace {
+
+using runner::GraphicsInterface;
+
+constexpr uint32_t kMaxPerDraw = 65536;     // the runner's grid
+constexpr uint32_t kDefaultPerDraw = 64;    // samples per draw when uniforms vary per draw
+
+std::string type_name(bool is_double, int components, bool matrix) {
+  if (matrix) return std::string(is_double ? "dmat" : "mat") + "(" + std::to_string(components) + " values)";
+  if (components == 1) return is_double ? "double" : "float";
+  return std::string(is_double ? "dvec" : "vec") + std::to_string(components);
+}
+
+std::vector<std::string> lowered_names(const Manifest& manifest, const std::string& name) {
+  for (const auto& v : manifest.variables)
+    if (v.name == name && v.split && v.lowered_names.size() == 2) return v.lowered_names;
+  return {name};
+}
+
+bool has_output(const GraphicsInterface& s, const std::string& name) {
+  return std::any_of(s.outputs.begin(), s.outputs.end(), [&](const auto& o) { return o.name == name; });
+}
+
+}  // namespace
+
+std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string& native_glsl,
+                                  const std::string& lowered_glsl, const Manifest& manifest, const Spec& spec,
+                                  uint64_t samples) {
+  stage_ = stage;
+  native_glsl_ = native_glsl;
+  lowered_glsl_ = lowered_glsl;
+  GraphicsInterface native_if, lowered_if;
+  std::string error;
+  if (!runner::reflect_graphics(stage, native_glsl, &native_if, &error))
+    return "the shader cannot run as native fp64 (#version 450): " + error;
+  if (!runner::reflect_graphics(stage, lowered_glsl, &lowered_if, &error))
+    return "the lowered shader cannot run: " + error;
+
+  for (const auto& u : native_if.uniforms) {
+    if (u.components == 0) {
+      notes_.push_back("uniform '" + u.name + "' is not a float/double scalar, vector or matrix: left at 0");
+      continue;
+    }
+    Variable v{u.name, true, u.is_double, u.components, lowered_names(manifest, u.name)};
+    if (u.columns > 1) notes_.push_back("uniform '" + u.name + "' is a matrix: fed column by column");
+    inputs_.push_back(std::move(v));
+  }
+  for (const auto& in : native_if.inputs) {
+    if (in.scalar != 'f' && in.scalar != 'd') {
+      notes_.push_back("input '" + in.name + "' is an integer: left at 0");
+      continue;
+    }
+    inputs_.push_back(Variable{in.name, false, in.scalar == 'd', in.components, lowered_names(manifest, in.name)});
+  }
+  for (const auto& out : native_if.outputs) {
+    if (out.scalar != 'f' && out.scalar != 'd') {
+      notes_.push_back("output '" + out.name + "' is an integer: not compared");
+      continue;
+    }
+    Variable v{out.name, false, out.scalar == 'd', out.components, lowered_names(manifest, out.name)};
+    for (const std::string& n : v.lowered)
+      if (!has_output(lowered_if, n)) return "output '" + out.name + "' has no '" + n + "' in the lowered shader";
+    outputs_.push_back(std::move(v));
+  }
+  if (outputs_.empty()) return "the shader has no float/double output: nothing to compare";
+
+  for (const auto& [name, in] : spec.inputs) {
+    auto it = std::find_if(inputs_.begin(), inputs_.end(), [&](const Variable& v) { return v.name == name; });
+    if (it == inputs_.end()) {
+      std::string known;
+      for (const auto& v : inputs_) known += " " + v.name;
+      return "no input named '" + name + "' (inputs:" + known + ")";
+    }
+    it->input = in;
+  }
+  for (const auto& [name, out] : spec.outputs) {
+    auto it = std::find_if(outputs_.begin(), outputs_.end(), [&](const Variable& v) { return v.name == name; });
+    if (it == outputs_.end()) return "no output named '" + name + "'";
+    if (out.join_hi_lo && (it->is_double || it->components % 2 != 0))
+      return "output '" + name + "': join hi_lo needs a vec2 or vec4";
+    it->output = out;
+  }
+
+  const bool uniforms = std::any_of(inputs_.begin(), inputs_.end(), [](const Variable& v) { return v.is_uniform; });
+  per_draw_ = uniforms ? spec.array_length.value_or(kDefaultPerDraw) : static_cast<uint32_t>(std::min<uint64_t>(samples, kMaxPerDraw));
+  per_draw_ = std::clamp<uint32_t>(per_draw_, 1, kMaxPerDraw);
+  draws_ = (samples + per_draw_ - 1) / per_draw_;
+  return {};
+}
+
+void GraphicsHarness::generate(uint64_t seed) {
+  InputGenerator gen(seed);
+  values_.assign(draws_, {});
+  for (uint64_t d = 0; d < draws_; ++d)
+    for (const Variable& v : inputs_) {
+      const size_t count = (v.is_uniform ? 1 : size_t{per_draw_}) * static_cast<size_t>(v.components);
+      std::vector<double> vals(count);
+      for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input, v.is_double, d * count + k);
+      values_[d].push_back(std::move(vals));
+    }
+}
+
+std::vector<runner::GraphicsJob> GraphicsHarness::jobs(bool native) const {
+  std::vector<runner::GraphicsJob> out(draws_);
+  for (uint64_t d = 0; d < draws_; ++d) {
+    runner::GraphicsJob& job = out[d];
+    job.stage = stage_;
+    job.glsl = native ? native_glsl_ : lowered_glsl_;
+    job.count = per_draw_;
+    for (size_t i = 0; i < inputs_.size(); ++i) {
+      const Variable& v = inputs_[i];
+      const std::vector<std::string> names = native ? std::vector<std::string>{v.name} : v.lowered;
+      for (size_t part = 0; part < names.size(); ++part) {
+        // A split pair gets hi in part 0 and lo in part 1; anything else gets the value itself.
+        std::vector<double> vals = values_[d][i];
+        if (names.size() == 2)
+          for (double& x : vals) {
+            const FloatPair p = split(x);
+            x = part == 0 ? p.hi : p.lo;
+          }
+        (v.is_uniform ? job.uniforms : job.inputs)[names[part]] = std::move(vals);
+      }
+    }
+  }
+  return out;
+}
+
+std::string GraphicsHarness::describe_sample(uint64_t draw, uint32_t sample) const {
+  std::string s;
+  for (size_t i = 0; i < inputs_.size(); ++i) {
+    const Variable& v = inputs_[i];
+    const size_t comps = static_cast<size_t>(v.components);
+    const size_t first = v.is_uniform ? 0 : sample * comps;
+    s += (s.empty() ? "" : " ") + v.name + "=";
+    if (comps > 1) s += "(";
+    for (size_t c = 0; c < comps; ++c) s += (c ? ", " : "") + hex(values_[draw][i][first + c]);
+    if (comps > 1) s += ")";
+  }
+  return (draws_ > 1 ? "draw " + std::to_string(draw) + " " : std::string()) + "sample " + std::to_string(sample) +
+         ": " + s;
+}
+
+std::vector<std::string> GraphicsHarness::describe_inputs() const {
+  std::vector<std::string> out;
+  for (const Variable& v : inputs_)
+    out.push_back(v.name + " (" + (v.is_uniform ? "uniform " : "in ") +
+                  type_name(v.is_double, v.components, v.is_uniform && v.components > 4) + ")");
+  return out;
+}
+
+std::vector<OutputStats> GraphicsHarness::compare(const std::vector<runner::GraphicsResult>& native,
+                                                  const std::vector<runner::GraphicsResult>& lowered,
+                                                  std::optional<double> default_min_bits) const {
+  std::vector<OutputStats> all;
+  static const char* kComponent = "xyzw";
+  for (const Variable& v : outputs_) {
+    const int step = v.output.join_hi_lo ? 2 : 1;
+    const size_t comps = static_cast<size_t>(v.components);
+    for (int c = 0; c < v.components; c += step) {
+      std::string name = v.name;
+      if (v.components > 1) name += std::string(".") + std::string(kComponent + c, static_cast<size_t>(step));
+      const std::string type = v.output.join_hi_lo ? "float hi+lo" : v.is_double ? "double" : "float";
+      StatsBuilder stats(name, type, v.output.abs_floor.value_or(0x1p-126));
+      for (uint64_t d = 0; d < draws_; ++d) {
+        const std::vector<double>& want_v = native[d].outputs.at(v.name);
+        const std::vector<double>& hi_v = lowered[d].outputs.at(v.lowered[0]);
+        for (uint32_t s = 0; s < per_draw_; ++s) {
+          const size_t k = s * comps + static_cast<size_t>(c);
+          double want = want_v[k], got = hi_v[k];
+          if (v.output.join_hi_lo) {
+            want = join(static_cast<float>(want), static_cast<float>(want_v[k + 1]));
+            got = join(static_cast<float>(got), static_cast<float>(hi_v[k + 1]));
+          } else if (v.lowered.size() == 2) {
+            got += lowered[d].outputs.at(v.lowered[1])[k];
+          }
+          stats.add(got, want, d * per_draw_ + s);
+        }
+      }
+      OutputStats s = stats.finish();
+      s.worst_input = describe_sample(s.worst_sample / per_draw_, static_cast<uint32_t>(s.worst_sample % per_draw_));
+      s.min_bits_required = v.output.min_bits.value_or(default_min_bits.value_or(-1));
+      all.push_back(std::move(s));
+    }
+  }
+  return all;
+}
+
+}  // namespace doublet::verify
