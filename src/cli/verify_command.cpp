@@ -129,7 +129,7 @@ Command add_verify_command(CLI::App& app) {
   auto args = std::make_shared<VerifyArgs>();
   CLI::App* cmd = app.add_subcommand(
       "verify", "Run SHADER natively (fp64, lavapipe) and lowered (lavapipe / Mesa GLES); report accuracy per output");
-  cmd->add_option("SHADER", args->shader, "shader file (.comp); not with --sweep");
+  cmd->add_option("SHADER", args->shader, "shader file (.vert, .frag or .comp); not with --sweep");
   cmd->add_option("--sweep", args->sweep, "OP|all: per-operation sweep against MPFR (add sub mul div sqrt)");
   cmd->add_option("--stage", args->sweep_stage, "stage of the sweep (comp)");
   cmd->add_option("--heatmap-dir", args->heatmap_dir, "where --sweep writes its PNG heatmaps (default .)");

@@ -86,4 +86,31 @@ TEST(VerifyCli, JsonFileFollowsTheSchema) {
   EXPECT_EQ(o["class_mismatches"], 0);
 }
 
+// Vertex and fragment stages: same command, same schema; the stage's probe reports the FTZ.
+TEST(VerifyCli, FragmentAndVertexStagesReportTheirProbe) {
+  const fs::path json = fs::temp_directory_path() / "doublet_verify_frag.json";
+  const CliRun r = doublet(kShaders + "/pairs.frag --spec " + kShaders + "/pairs.frag.json --target es300 --samples 256 " +
+                           "--min-bits 44 --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("probe: stage frag: unprotected TwoSum DELETED"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("fp32 denormals FLUSHED"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("caveat: this stage flushes denormals"), std::string::npos) << r.out;
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  fs::remove(json);
+  EXPECT_EQ(j["schema"], "doublet-verify/1");
+  EXPECT_EQ(j["stage"], "frag");
+  ASSERT_EQ(j["runs"].size(), 2u);
+  for (const nlohmann::json& run : j["runs"]) {
+    EXPECT_EQ(run["probe"]["stage"], "frag");
+    EXPECT_EQ(run["probe"]["denormals_flushed"], true);
+    EXPECT_EQ(run["outputs"][0]["name"], "color.xy");
+    EXPECT_GE(run["outputs"][0]["min_bits"].get<double>(), 44.0);
+  }
+  const CliRun vert = doublet(kShaders + "/pairs.vert --spec " + kShaders + "/pairs.vert.json --samples 256 " +
+                              "--min-bits 44 --backend vulkan --sabotage drop-lo");
+  EXPECT_EQ(vert.exit_code, 1) << vert.out;
+  EXPECT_NE(vert.out.find("probe: stage vert"), std::string::npos) << vert.out;
+}
+
 }  // namespace
