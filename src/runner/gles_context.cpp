@@ -20,7 +20,6 @@ std::string egl_error(const char* call) {
 
 namespace {
 
-
 bool has_extension(const char* list, const char* name) {
   if (!list) return false;
   const size_t len = std::strlen(name);
@@ -28,7 +27,6 @@ bool has_extension(const char* list, const char* name) {
     if ((p == list || p[-1] == ' ') && (p[len] == ' ' || p[len] == '\0')) return true;
   return false;
 }
-
 
 EGLDisplay open_display() {
   const char* client_exts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
@@ -96,7 +94,6 @@ std::string info_log(GLuint object, bool is_program) {
   log.resize(std::strlen(log.c_str()));
   return log;
 }
-
 
 namespace {
 

@@ -39,7 +39,6 @@ namespace {
 
 const char* const kLavapipeIcd = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
 
-
 // Creates an instance and returns the lavapipe physical device, or an explanation.
 std::string find_lavapipe(VulkanDevice& d) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -131,7 +130,6 @@ std::string init(VulkanDevice& d) {
 
 }  // namespace
 
-// Never destroyed (see the header): tearing down a driver during static destruction only invites exit-time crashes.
 VulkanDevice& shared_device() {
   static VulkanDevice* d = [] {
     auto* dev = new VulkanDevice;
@@ -140,8 +138,6 @@ VulkanDevice& shared_device() {
   }();
   return *d;
 }
-
-
 
 std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usage, const std::vector<uint8_t>& data,
                         HostBuffer* out) {
