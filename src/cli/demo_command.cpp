@@ -71,7 +71,7 @@ int run_mandelbrot_demo(const CLI::App& app, const DemoArgs& a) {
   for (demo::Mode m : o.modes) std::printf(" %s", std::string(demo::mode_name(m)).c_str());
   std::printf("\n");
   for (const demo::MandelbrotView& v : r.views) {
-    std::printf("zoom %g per pixel:\n", v.zoom);
+    std::printf("zoom %g per pixel (native shows %d different iteration counts):\n", v.zoom, v.native_distinct_counts);
     for (const demo::MandelbrotModeResult& m : v.modes) {
       std::printf("  %-7s", std::string(demo::mode_name(m.mode)).c_str());
       if (m.equal_to_native >= 0) std::printf(" %6.2f%% of pixels equal to native", 100 * m.equal_to_native);

@@ -2,6 +2,7 @@
 // coloured on the host, so equal counts mean equal pixels.
 #include "demo/mandelbrot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -119,6 +120,11 @@ MandelbrotResult run_mandelbrot(const MandelbrotOptions& o) {
     }
     for (size_t i = 0; i < o.modes.size(); ++i)
       if (o.modes[i] == Mode::Native) native = &counts[i];
+    if (native) {
+      std::vector<uint32_t> sorted = *native;
+      std::sort(sorted.begin(), sorted.end());
+      view.native_distinct_counts = static_cast<int>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+    }
     if (native)
       for (size_t i = 0; i < o.modes.size(); ++i) {
         size_t equal = 0;
