@@ -62,9 +62,10 @@ class Importer {
       case EbtInt64:
       case EbtUint64:
         if (reported_.insert("int64").second)
-          error(loc, "64-bit integers (" + std::string(t.getBasicTypeString().c_str()) + ") are not available on " +
+          error(loc, "type '" + std::string(t.getBasicTypeString().c_str()) +
+                         "' is not supported: 64-bit integers are not available on " +
                          std::string(to_string(options_.target)) +
-                         ": no target of doublet has them; split the value into two 32-bit ints (high and low "
+                         " (no target of doublet has them); split the value into two 32-bit ints (high and low "
                          "words), or carry it as a double when it fits in 48 bits");
         out.base = ir::Base::Void;
         break;
