@@ -31,6 +31,7 @@ int usage_error(const CLI::App& command, std::string_view message);
 
 Command add_lower_command(CLI::App& app);
 Command add_verify_command(CLI::App& app);  // verify_command.cpp
+Command add_bench_command(CLI::App& app);   // bench_command.cpp
 Command add_demo_command(CLI::App& app);    // demo_command.cpp
 
 }  // namespace doublet::cli

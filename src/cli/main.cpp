@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   std::vector<Command> commands;
   commands.push_back(add_lower_command(app));
   commands.push_back(add_verify_command(app));
+  commands.push_back(add_bench_command(app));
   commands.push_back(add_demo_command(app));
   // Later: verify, bench, plan.
 

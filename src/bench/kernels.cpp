@@ -1,0 +1,98 @@
+#include "bench/kernels.hpp"
+
+#include <cstdint>
+#include <cstring>
+
+namespace doublet::bench {
+
+const std::vector<Kernel>& kernels() {
+  // Flops and bits are copied from docs/rules.md and docs/accuracy.md (GLES/lavapipe, es320);
+  // bench_doc_test checks the flops against docs/rules.md.
+  static const std::vector<Kernel> k = {
+      {"add", "df_add", 20, 1, "47.68", 2048},
+      {"sub", "df_sub", 22, 1, "47.22", 2048},
+      {"mul", "df_mul", 24, 1, "46.35", 2048},
+      {"div", "df_div", 33, 1, "45.81", 2048},
+      {"sqrt", "df_sqrt", 27, 1, "46.73", 2048},
+      {"dot3", "df_dot (3)", 112, 5, "—", 1024},
+      {"length3", "df_length (2-4)", 183, 6, "—", 1024},
+      {"mat4", "df_mul_dmatCxR_dvecC (4 × df_dot 4)", 4 * 156, 28, "—", 256},
+  };
+  return k;
+}
+
+const Kernel* find_kernel(const std::string& op) {
+  for (const Kernel& k : kernels())
+    if (k.op == op) return &k;
+  return nullptr;
+}
+
+int rounded_steps(int steps) { return steps < kUnroll ? kUnroll : (steps + kUnroll - 1) / kUnroll * kUnroll; }
+
+namespace {
+struct Body {
+  const char* setup;  // declarations from `p` (dvec4 of the element's inputs)
+  const char* step;   // one dependent step
+  const char* store;  // vec4 written to outp[i]
+};
+
+Body body(const std::string& op) {
+  // y near 1 for mul/div keeps the chain's magnitude bounded; dot3 weights sum below 1 and
+  // length3 grows like sqrt(steps), so no chain overflows or underflows.
+  if (op == "add") return {"double x = p.x; double y = p.y;", "x = x + y;", "vec4(float(x))"};
+  if (op == "sub") return {"double x = p.x; double y = p.y;", "x = x - y;", "vec4(float(x))"};
+  if (op == "mul") return {"double x = p.x; double y = 1.0 + p.y * 0.001;", "x = x * y;", "vec4(float(x))"};
+  if (op == "div") return {"double x = p.x; double y = 1.0 + p.y * 0.001;", "x = x / y;", "vec4(float(x))"};
+  if (op == "sqrt") return {"double x = p.x + p.y;", "x = sqrt(x);", "vec4(float(x))"};
+  if (op == "dot3") return {"dvec3 v = p.xyz; dvec3 w = p.wzy * 0.3;", "v.x = dot(v, w);", "vec4(vec3(v), 0.0)"};
+  if (op == "length3") return {"dvec3 v = p.xyz;", "v.x = length(v);", "vec4(vec3(v), 0.0)"};
+  return {"dmat4 m = dmat4(dvec4(mcol[0]), dvec4(mcol[1]), dvec4(mcol[2]), dvec4(mcol[3])); dvec4 v = p;",
+          "v = m * v;", "vec4(v)"};
+}
+}  // namespace
+
+std::string kernel_source(const Kernel& k, int steps) {
+  const Body b = body(k.op);
+  std::string unrolled;
+  for (int u = 0; u < kUnroll; ++u) unrolled += std::string("    ") + b.step + "\n";
+  std::string s =
+      "#version 450\n"
+      "layout(local_size_x = " + std::to_string(kLocalSize) + ") in;\n"
+      "layout(std430, binding = 0) readonly buffer Inputs { vec4 inp[]; };\n"
+      "layout(std430, binding = 1) writeonly buffer Outputs { vec4 outp[]; };\n";
+  if (k.op == "mat4") s += "layout(std430, binding = 2) readonly buffer Matrix { vec4 mcol[4]; };\n";
+  s += "void main() {\n"
+       "  uint i = gl_GlobalInvocationID.x;\n"
+       "  dvec4 p = dvec4(inp[i]);\n"
+       "  " + std::string(b.setup) + "\n"
+       "  for (int k = 0; k < " + std::to_string(rounded_steps(steps) / kUnroll) + "; ++k) {\n" +
+       unrolled +
+       "  }\n"
+       "  outp[i] = " + b.store + ";\n"
+       "}\n";
+  return s;
+}
+
+std::vector<std::vector<uint8_t>> kernel_buffers(const Kernel& k, int elements) {
+  std::vector<float> in(static_cast<size_t>(elements) * 4);
+  uint32_t state = 12345;
+  for (float& v : in) {  // xorshift: reproducible, no <random> distribution differences
+    state ^= state << 13, state ^= state >> 17, state ^= state << 5;
+    v = 0.5f + static_cast<float>(state >> 8) * (0.5f / 16777216.0f);
+  }
+  auto bytes = [](const std::vector<float>& f) {
+    std::vector<uint8_t> b(f.size() * sizeof(float));
+    std::memcpy(b.data(), f.data(), b.size());
+    return b;
+  };
+  std::vector<std::vector<uint8_t>> buffers{bytes(in), std::vector<uint8_t>(in.size() * sizeof(float))};
+  if (k.op == "mat4") {
+    // Entries in [0.1, 0.24): every row sums below 1, so repeated m * v stays bounded.
+    std::vector<float> m(16);
+    for (size_t j = 0; j < m.size(); ++j) m[j] = 0.1f + 0.01f * static_cast<float>((j * 7) % 15);
+    buffers.push_back(bytes(m));
+  }
+  return buffers;
+}
+
+}  // namespace doublet::bench

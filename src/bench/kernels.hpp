@@ -1,0 +1,36 @@
+// The per-operation benchmark kernels: one double-precision compute shader per operation that
+// applies the operation in a dependent chain (each step consumes the previous result, so the
+// driver can neither skip nor overlap steps) and stores the result so nothing is dead code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace doublet::bench {
+
+struct Kernel {
+  std::string op;        // "add", "sub", ..., "mat4"
+  std::string rule;      // the docs/rules.md row whose flop count one step costs in df64
+  int rule_flops = 0;    // that row's "flops" (docs/rules.md); mat4 = 4 dot4
+  int fp32_flops = 0;    // float operations of one step in fp32 (and fp64 operations natively)
+  std::string bits;      // measured worst-case bits of df64 (docs/accuracy.md), or "—"
+  int default_steps = 0; // chain length when --steps is not given: fp32 dispatches of ~5 ms on
+                         // llvmpipe, long enough that thread wake-ups do not dominate
+};
+
+const std::vector<Kernel>& kernels();  // in report order
+const Kernel* find_kernel(const std::string& op);
+
+inline constexpr int kLocalSize = 64;  // invocations per work group
+inline constexpr int kUnroll = 8;      // steps written out per loop trip (keeps loop overhead out of fp32)
+
+// `#version 450` source with doubles. Buffers: binding 0 `vec4 inp[]` (one vec4 per element),
+// binding 1 `vec4 outp[]`, binding 2 (mat4 only) `vec4 mcol[4]`. `steps` is rounded up to a
+// multiple of kUnroll.
+std::string kernel_source(const Kernel& k, int steps);
+int rounded_steps(int steps);
+
+// Input buffers for `elements` invocations: values in [0.5, 1) so every chain stays finite.
+std::vector<std::vector<uint8_t>> kernel_buffers(const Kernel& k, int elements);
+
+}  // namespace doublet::bench

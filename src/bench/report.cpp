@@ -1,0 +1,109 @@
+// Markdown and JSON renderings of a BenchReport.
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/bench.hpp"
+#include "bench/kernels.hpp"
+
+namespace doublet::bench {
+namespace {
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+// Accuracy of a mode as documented (docs/accuracy.md): the bench does not measure bits itself.
+std::string documented_bits(const Kernel* k, Mode m) {
+  if (m == Mode::Native) return "53";
+  if (m == Mode::Fp32) return "≤ 24";
+  return k ? k->bits : "—";
+}
+
+std::string flops(const Kernel* k, Mode m) {
+  if (!k) return "—";
+  return std::to_string(m == Mode::Df64 ? k->rule_flops : k->fp32_flops);
+}
+
+std::string ratio(const std::optional<double>& r) { return r ? fixed(*r, 2) + "×" : "—"; }
+
+}  // namespace
+
+std::string format_markdown(const BenchReport& report) {
+  const bool shader = !report.options.shader_path.empty();
+  std::string s;
+  for (runner::Backend b : report.options.backends) {
+    const std::string key = backend_key(b);
+    const auto dev = report.devices.find(key);
+    const auto clock = report.clocks.find(key);
+    s += "### " + key + (dev != report.devices.end() ? " — " + dev->second : "") + "\n\nclock: " +
+         (clock != report.clocks.end() ? clock->second : "none (nothing ran)") + "\n\n";
+    s += shader ? "| shader | mode | median ms | min ms | invocations/s | time / fp32 | time / native fp64 | SPIR-V instr | GLSL lines |\n"
+                  "|---|---|---|---|---|---|---|---|---|\n"
+                : "| op | mode | flops/step | bits (docs) | median ms | min ms | ops/s | time / fp32 | time / native fp64 | SPIR-V instr | GLSL lines |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Measurement& r : report.rows) {
+      if (r.backend != b) continue;
+      const Kernel* k = shader ? nullptr : find_kernel(r.op);
+      s += "| " + r.op + " | " + mode_name(r.mode) + " | ";
+      if (!shader) s += flops(k, r.mode) + " | " + documented_bits(k, r.mode) + " | ";
+      if (!r.ok) {
+        s += "not run | | | | | | |\n";
+        continue;
+      }
+      char ops[32];
+      std::snprintf(ops, sizeof ops, "%.3g", r.ops_per_second);
+      s += fixed(r.median_seconds * 1e3, 3) + " | " + fixed(r.min_seconds * 1e3, 3) + " | " + ops + " | " + ratio(r.time_vs_fp32) + " | " +
+           ratio(r.time_vs_native) + " | " + std::to_string(r.size.spirv_instructions) + " | " +
+           std::to_string(r.size.glsl_lines) + " |" + (r.finite_output ? "" : " (non-finite output!)") + "\n";
+    }
+    s += "\n";
+  }
+  if (!report.notes.empty()) {
+    s += "Not run:\n";
+    for (const std::string& n : report.notes) s += "- " + n.substr(0, n.find('\n')) + "\n";
+  }
+  return s;
+}
+
+std::string format_json(const BenchReport& report) {
+  const BenchOptions& o = report.options;
+  nlohmann::json j;
+  j["command"] = report.command;
+  j["shader"] = o.shader_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.shader_path);
+  j["target"] = std::string(to_string(o.target));
+  j["elements"] = o.elements;
+  j["warmup"] = o.warmup;
+  j["repetitions"] = o.repetitions;
+  j["devices"] = report.devices;
+  j["clocks"] = report.clocks;
+  j["native_reference_backend"] = "vulkan";
+  j["results"] = nlohmann::json::array();
+  for (const Measurement& r : report.rows) {
+    nlohmann::json row;
+    row["op"] = r.op;
+    row["backend"] = backend_key(r.backend);
+    row["mode"] = mode_name(r.mode);
+    row["ok"] = r.ok;
+    row["steps"] = r.steps;
+    row["note"] = r.note;
+    row["seconds"] = r.seconds;
+    row["median_seconds"] = r.median_seconds;
+    row["min_seconds"] = r.min_seconds;
+    row["ops_per_second"] = r.ops_per_second;
+    row["time_vs_fp32"] = r.time_vs_fp32 ? nlohmann::json(*r.time_vs_fp32) : nlohmann::json(nullptr);
+    row["time_vs_native"] = r.time_vs_native ? nlohmann::json(*r.time_vs_native) : nlohmann::json(nullptr);
+    row["finite_output"] = r.finite_output;
+    row["spirv_instructions"] = r.size.spirv_instructions;
+    row["glsl_lines"] = r.size.glsl_lines;
+    if (const Kernel* k = o.shader_path.empty() ? find_kernel(r.op) : nullptr)
+      row["flops_per_step"] = r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops;
+    j["results"].push_back(std::move(row));
+  }
+  j["notes"] = report.notes;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace doublet::bench

@@ -1,0 +1,111 @@
+#include "bench/variants.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+#include <vector>
+
+namespace doublet::bench {
+
+const char* mode_name(Mode m) {
+  switch (m) {
+    case Mode::Fp32: return "fp32";
+    case Mode::Df64: return "df64";
+    case Mode::Native: return "native";
+  }
+  return "?";
+}
+
+std::optional<Mode> parse_mode(const std::string& s) {
+  for (Mode m : {Mode::Fp32, Mode::Df64, Mode::Native})
+    if (s == mode_name(m)) return m;
+  return std::nullopt;
+}
+
+namespace {
+bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Replaces the `#version` line (desktop 450 → ES 3.20 with highp defaults).
+std::string with_es_header(const std::string& source) {
+  const size_t v = source.find("#version");
+  if (v == std::string::npos) return source;
+  const size_t eol = source.find('\n', v);
+  return source.substr(0, v) + "#version 320 es\nprecision highp float;\nprecision highp int;\n" +
+         (eol == std::string::npos ? "" : source.substr(eol + 1));
+}
+}  // namespace
+
+std::string demote_doubles(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (size_t i = 0; i < s.size();) {
+    if (!ident_char(s[i])) {
+      out += s[i++];
+      continue;
+    }
+    size_t j = i;
+    while (j < s.size() && ident_char(s[j])) ++j;
+    std::string word = s.substr(i, j - i);
+    if (std::isdigit(static_cast<unsigned char>(word[0]))) {
+      // A number: 1.0lf / 2LF → 1.0 / 2 (exponent parts such as 1e-3 contain no 'l').
+      if (word.size() > 2 && (word.ends_with("lf") || word.ends_with("LF"))) word.resize(word.size() - 2);
+    } else if (word == "double") {
+      word = "float";
+    } else if (word.starts_with("dvec") || word.starts_with("dmat")) {
+      word = word.substr(1);
+    }
+    out += word;
+    i = j;
+  }
+  return out;
+}
+
+Variant make_variant(Mode mode, runner::Backend backend, const std::string& source, Target target,
+                     const std::string& file_name) {
+  Variant v;
+  switch (mode) {
+    case Mode::Fp32:
+      v.glsl = with_es_header(demote_doubles(source));
+      break;
+    case Mode::Native:
+      if (backend == runner::Backend::Gles) v.note = "GLES has no fp64";
+      else v.glsl = source;
+      break;
+    case Mode::Df64: {
+      Options o;
+      o.stage = Stage::Compute;
+      o.target = target;
+      o.file_name = file_name;
+      Result r = lower(source, o);
+      if (r.ok) {
+        v.glsl = std::move(r.output);
+      } else {
+        v.note = "doublet::lower failed:";
+        for (const Diagnostic& d : r.diagnostics) v.note += " " + format_diagnostic(d) + ";";
+      }
+      break;
+    }
+  }
+  return v;
+}
+
+ShaderSize shader_size(const std::string& glsl) {
+  ShaderSize s;
+  std::istringstream in(glsl);
+  for (std::string line; std::getline(in, line);)
+  {
+    const size_t first = line.find_first_not_of(" \t\r");
+    if (first != std::string::npos && line.compare(first, 2, "//") != 0) ++s.glsl_lines;  // code, not comments
+  }
+  std::vector<uint32_t> words;
+  std::string error;
+  if (runner::compile_compute_to_spirv(glsl, &words, &error))
+    for (size_t i = 5; i < words.size(); i += std::max<uint32_t>(1, words[i] >> 16)) {
+      const uint32_t op = words[i] & 0xffff;
+      // Debug instructions (OpSource* / OpName / OpString / OpLine / OpNoLine / OpModuleProcessed) are not code.
+      if (!((op >= 2 && op <= 8) || op == 317 || op == 330)) ++s.spirv_instructions;
+    }
+  return s;
+}
+
+}  // namespace doublet::bench

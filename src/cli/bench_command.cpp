@@ -1,0 +1,115 @@
+// `doublet bench [SHADER]`: throughput per precision mode on lavapipe and Mesa GLES
+// (docs/modes.md). The work is doublet::bench::run_bench(); this file maps the command line to
+// BenchOptions and prints the Markdown table (and the JSON file with --json).
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+
+#include "atomic_file.hpp"
+#include "bench/bench.hpp"
+#include "bench/kernels.hpp"
+#include "commands.hpp"
+
+namespace doublet::cli {
+namespace {
+
+struct BenchArgs {
+  std::string shader, ops = "all", modes = "all", backend = "both", target = "es320", json;
+  int elements = 16384, steps = 0, warmup = 2, reps = 7;
+};
+
+std::vector<std::string> split_commas(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  bench::BenchOptions o;
+  if (a.ops == "all") {
+    for (const bench::Kernel& k : bench::kernels()) o.ops.push_back(k.op);
+  } else {
+    o.ops = split_commas(a.ops);
+    for (const std::string& op : o.ops)
+      if (!bench::find_kernel(op)) return usage_error(cmd, "unknown op '" + op + "'");
+  }
+  if (a.modes != "all") {
+    o.modes.clear();
+    for (const std::string& m : split_commas(a.modes)) {
+      const std::optional<bench::Mode> mode = bench::parse_mode(m);
+      if (!mode) return usage_error(cmd, "unknown mode '" + m + "' (fp32, df64, native)");
+      o.modes.push_back(*mode);
+    }
+  }
+  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
+  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
+  const std::optional<Target> target = parse_target(a.target);
+  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
+    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  o.target = *target;
+  o.elements = a.elements;
+  o.steps = a.steps;
+  o.warmup = a.warmup;
+  o.repetitions = a.reps;
+  if (!a.shader.empty()) {
+    std::ifstream in(a.shader, std::ios::binary);
+    if (!in) {
+      std::cerr << "doublet bench: error: cannot read " << a.shader << "\n";
+      return kExitInput;
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    o.shader_path = a.shader;
+    o.shader_source = ss.str();
+  }
+  bench::BenchReport report;
+  report.command = command_line;
+  std::string error;
+  if (!bench::run_bench(o, &report, &error)) {
+    std::cerr << "doublet bench: error: " << error << "\n";
+    return kExitInput;
+  }
+  std::cout << bench::format_markdown(report) << std::flush;
+  if (!a.json.empty()) {
+    if (std::string e = write_file_atomically(a.json, bench::format_json(report)); !e.empty()) {
+      std::cerr << "doublet bench: error: " << e << "\n";
+      return kExitInput;
+    }
+  }
+  for (const bench::Measurement& r : report.rows)
+    if (!r.ok && r.note.find("GLES has no fp64") == std::string::npos) return 3;  // a driver failed
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand("bench", "Measure throughput per precision mode (fp32, df64, native fp64)");
+  cmd->add_option("SHADER", args->shader, "a #version 450 compute shader with doubles (default: per-op kernels)");
+  cmd->add_option("--ops", args->ops, "all, or a comma list of add,sub,mul,div,sqrt,dot3,length3,mat4");
+  cmd->add_option("--modes", args->modes, "all, or a comma list of fp32,df64,native");
+  cmd->add_option("--backend", args->backend, "vulkan|gles|both")->check(CLI::IsMember({"vulkan", "gles", "both"}));
+  cmd->add_option("--target", args->target, "df64 lowering target: es310 (uniform guard), es320 (precise), glsl450");
+  cmd->add_option("--elements", args->elements, "invocations per dispatch (default 16384)");
+  cmd->add_option("--steps", args->steps, "dependent operations per invocation, rounded up to a multiple of 8 (default: per op, docs/modes.md)");
+  cmd->add_option("--warmup", args->warmup, "discarded dispatches before timing (default 2)");
+  cmd->add_option("--reps", args->reps, "timed dispatches; the median is reported (default 7)");
+  cmd->add_option("--json", args->json, "also write the results as JSON (keys: docs/modes.md)");
+  return {cmd, [cmd, args] {
+            // The full command with every default spelled out, so the docs can quote it as run.
+            const BenchArgs& a = *args;
+            std::string line = "doublet bench" + (a.shader.empty() ? "" : " " + a.shader) + " --ops " + a.ops +
+                               " --modes " + a.modes + " --backend " + a.backend + " --target " + a.target +
+                               " --elements " + std::to_string(a.elements) +
+                               (a.steps ? " --steps " + std::to_string(a.steps) : std::string()) +
+                               " --warmup " + std::to_string(a.warmup) + " --reps " + std::to_string(a.reps);
+            return run_bench_command(*cmd, a, line);
+          }};
+}
+
+}  // namespace doublet::cli

@@ -1,0 +1,49 @@
+// `doublet bench --json`: a tiny run through the executable writes the documented keys.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+TEST(BenchCli, JsonHasTheDocumentedKeys) {
+  const auto json_path = std::filesystem::temp_directory_path() / ("bench_cli_" + std::to_string(::getpid()) + ".json");
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) +
+                          " bench --ops add,sqrt --elements 128 --steps 8 --warmup 1 --reps 2 --json " +
+                          json_path.string() + " > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  std::filesystem::remove(json_path);
+  // The keys docs/modes.md lists, at the top level and per result.
+  for (const char* key : {"command", "shader", "target", "elements", "warmup", "repetitions", "devices",
+                          "clocks", "native_reference_backend", "results", "notes"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  ASSERT_EQ(j["results"].size(), 2u * 2u * 3u);
+  for (const auto& r : j["results"])
+    for (const char* key : {"op", "backend", "mode", "ok", "steps", "note", "seconds", "median_seconds", "min_seconds", "ops_per_second",
+                            "time_vs_fp32", "time_vs_native", "finite_output", "spirv_instructions", "glsl_lines",
+                            "flops_per_step"})
+      EXPECT_TRUE(r.contains(key)) << key;
+  // Every documented key appears in docs/modes.md.
+  std::ifstream doc(std::string(DOUBLET_DOCS) + "/modes.md");
+  std::stringstream ss;
+  ss << doc.rdbuf();
+  for (const char* key : {"time_vs_fp32", "time_vs_native", "clocks", "spirv_instructions", "median_seconds"})
+    EXPECT_NE(ss.str().find(std::string("`") + key + "`"), std::string::npos) << key;
+}
+
+TEST(BenchCli, UnknownOpIsAUsageError) {
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench --ops nope > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+}
+
+}  // namespace

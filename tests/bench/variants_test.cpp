@@ -1,0 +1,43 @@
+// Shader variants per mode, without a driver.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "bench/kernels.hpp"
+#include "bench/variants.hpp"
+
+namespace {
+using namespace doublet::bench;
+
+// A double type named in code (comments removed): what a float-only shader must not contain.
+bool names_double_type(const std::string& glsl) {
+  const std::string code = std::regex_replace(glsl, std::regex("//[^\n]*"), "");
+  return std::regex_search(code, std::regex("(^|[^_A-Za-z0-9])(double|dvec[234]|dmat[234](x[234])?)\\b"));
+}
+
+TEST(BenchVariants, DemotionRewritesWholeWordsOnly) {
+  EXPECT_EQ(demote_doubles("double x = 1.5lf; dvec3 v; dmat4 m; dmat2x3 n; int doubled; float f = 1e-3;"),
+            "float x = 1.5; vec3 v; mat4 m; mat2x3 n; int doubled; float f = 1e-3;");
+}
+
+TEST(BenchVariants, EveryKernelLowersAndDemotesWithoutDoubles) {
+  for (const Kernel& k : kernels()) {
+    const std::string src = kernel_source(k, 16);
+    const Variant df = make_variant(Mode::Df64, doublet::runner::Backend::Gles, src, doublet::Target::Es320, k.op);
+    ASSERT_FALSE(df.glsl.empty()) << k.op << ": " << df.note;
+    EXPECT_FALSE(names_double_type(df.glsl)) << k.op;
+    const Variant f = make_variant(Mode::Fp32, doublet::runner::Backend::Gles, src, doublet::Target::Es320, k.op);
+    EXPECT_FALSE(names_double_type(f.glsl)) << k.op;
+    EXPECT_TRUE(names_double_type(src)) << k.op;
+    EXPECT_EQ(f.glsl.rfind("#version 320 es", 0), 0u) << k.op;
+    EXPECT_GT(shader_size(df.glsl).spirv_instructions, shader_size(f.glsl).spirv_instructions) << k.op;
+  }
+}
+
+TEST(BenchVariants, NativeIsVulkanOnly) {
+  const std::string src = kernel_source(*find_kernel("add"), 8);
+  EXPECT_TRUE(make_variant(Mode::Native, doublet::runner::Backend::Gles, src, doublet::Target::Es320, "add").glsl.empty());
+  EXPECT_EQ(make_variant(Mode::Native, doublet::runner::Backend::Vulkan, src, doublet::Target::Es320, "add").glsl, src);
+}
+
+}  // namespace
