@@ -33,13 +33,14 @@ struct Workload {
   std::string name;
   std::string source;  // "#version 450" with doubles
   std::vector<std::vector<uint8_t>> buffers;
+  std::map<std::string, std::vector<double>> uniforms;
   uint32_t groups = 1;
   double ops_per_dispatch = 0;
   int steps = 1;            // kernels: chain length; shaders: 1 (one invocation is one "op")
   int checked_buffer = -1;  // kernels: the output buffer whose values must stay finite
 };
 
-// A user shader's buffers: every reflected block gets its fixed part plus `elements` records of
+// A user shader's buffers (its uniforms below): every reflected block gets its fixed part plus `elements` records of
 // its largest runtime array (twice over, as lowered layouts may be larger), filled with floats in
 // [1, 2): finite as floats and, read as doubles, finite numbers in [2^-7, 2).
 bool shader_workload(const BenchOptions& o, Workload* w, std::string* error) {
@@ -61,6 +62,14 @@ bool shader_workload(const BenchOptions& o, Workload* w, std::string* error) {
       const float f = 1.0f + static_cast<float>((i / 4 * 2654435761u) % 1000u) / 1000.0f;
       std::memcpy(buf.data() + i, &f, 4);
     }
+  }
+  // Loose numeric uniforms read 1 in every mode (0 would make divisions NaN): the name itself, and
+  // the hi word of the split pair the lowering makes of a double uniform (lo stays 0).
+  for (const auto& u : iface.uniforms) {
+    if (u.components <= 0) continue;
+    const std::vector<double> ones(static_cast<size_t>(u.components), 1.0);
+    w->uniforms[u.name] = ones;
+    if (u.is_double) w->uniforms[u.name + "_hi"] = ones;
   }
   const uint32_t local = std::max<uint32_t>(1, iface.local_size[0] * iface.local_size[1] * iface.local_size[2]);
   w->groups = std::max<uint32_t>(1, (static_cast<uint32_t>(o.elements) + local - 1) / local);
@@ -84,6 +93,7 @@ Measurement measure(const BenchOptions& o, const Workload& w, runner::Backend ba
   runner::ComputeJob job;
   job.glsl = v.glsl;
   job.buffers = w.buffers;
+  job.uniforms = w.uniforms;
   job.groups_x = w.groups;
   const runner::TimedResult r = runner::run_compute_timed(backend, job, o.warmup, o.repetitions);
   if (!r.device.empty()) report->devices[backend_key(backend)] = r.device;

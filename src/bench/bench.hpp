@@ -22,8 +22,8 @@ struct BenchOptions {
   int steps = 0;                               // dependent operations per invocation; 0: each kernel's default_steps
   int warmup = 2;                              // dispatches run and discarded before timing
   int repetitions = 7;                         // timed dispatches; the median is reported
-  std::string shader_path;                     // non-empty: bench this "#version 450" compute shader
-  std::string shader_source;                   // its text
+  std::string shader_path;                     // non-empty: bench this compute shader with doubles
+  std::string shader_source;                   // its text: includes expanded, "#version 450" (user_shader.hpp)
 };
 
 struct Measurement {

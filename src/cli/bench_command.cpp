@@ -10,12 +10,14 @@
 #include "atomic_file.hpp"
 #include "bench/bench.hpp"
 #include "bench/kernels.hpp"
+#include "bench/user_shader.hpp"
 #include "commands.hpp"
 
 namespace doublet::cli {
 namespace {
 
 struct BenchArgs {
+  std::vector<std::string> include_dirs;
   std::string shader, ops = "all", modes = "all", backend = "both", target = "es320", json;
   int elements = 16384, steps = 0, warmup = 2, reps = 7;
 };
@@ -56,15 +58,13 @@ int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string
   o.warmup = a.warmup;
   o.repetitions = a.reps;
   if (!a.shader.empty()) {
-    std::ifstream in(a.shader, std::ios::binary);
-    if (!in) {
-      std::cerr << "doublet bench: error: cannot read " << a.shader << "\n";
+    std::string text, error;
+    if (!bench::expand_includes(a.shader, a.include_dirs, &text, &error)) {
+      std::cerr << "doublet bench: error: " << error << "\n";
       return kExitInput;
     }
-    std::ostringstream ss;
-    ss << in.rdbuf();
     o.shader_path = a.shader;
-    o.shader_source = ss.str();
+    o.shader_source = bench::as_desktop_450(text);
   }
   bench::BenchReport report;
   report.command = command_line;
@@ -91,6 +91,7 @@ Command add_bench_command(CLI::App& app) {
   auto args = std::make_shared<BenchArgs>();
   CLI::App* cmd = app.add_subcommand("bench", "Measure throughput per precision mode (fp32, df64, native fp64)");
   cmd->add_option("SHADER", args->shader, "a #version 450 compute shader with doubles (default: per-op kernels)");
+  cmd->add_option("-I", args->include_dirs, "include directory for SHADER's #include \"...\"");
   cmd->add_option("--ops", args->ops, "all, or a comma list of add,sub,mul,div,sqrt,dot3,length3,mat4");
   cmd->add_option("--modes", args->modes, "all, or a comma list of fp32,df64,native");
   cmd->add_option("--backend", args->backend, "vulkan|gles|both")->check(CLI::IsMember({"vulkan", "gles", "both"}));

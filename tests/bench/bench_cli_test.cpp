@@ -40,6 +40,23 @@ TEST(BenchCli, JsonHasTheDocumentedKeys) {
     EXPECT_NE(ss.str().find(std::string("`") + key + "`"), std::string::npos) << key;
 }
 
+TEST(BenchCli, UserShaderWithIncludesRunsInEveryMode) {
+  const auto json_path = std::filesystem::temp_directory_path() / ("bench_shader_" + std::to_string(::getpid()) + ".json");
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench " + DOUBLET_EXAMPLES +
+                          "/shaders/orbit_step.comp --elements 256 --warmup 1 --reps 2 --json " + json_path.string() +
+                          " > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  std::filesystem::remove(json_path);
+  ASSERT_EQ(j["results"].size(), 6u);
+  for (const auto& r : j["results"]) {
+    if (r["backend"] == "gles" && r["mode"] == "native") continue;
+    EXPECT_TRUE(r["ok"].get<bool>()) << r["mode"] << " " << r["backend"] << ": " << r["note"];
+    EXPECT_GT(r["ops_per_second"].get<double>(), 0);
+  }
+}
+
 TEST(BenchCli, UnknownOpIsAUsageError) {
   const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench --ops nope > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());
