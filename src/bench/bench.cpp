@@ -87,6 +87,7 @@ Measurement measure(const BenchOptions& o, const Workload& w, runner::Backend ba
   const Variant v = make_variant(mode, backend, w.source, o.target, w.name);
   if (v.glsl.empty()) {
     m.note = v.note;
+    m.not_applicable = v.not_applicable;
     return m;
   }
   m.size = shader_size(v.glsl);

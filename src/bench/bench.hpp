@@ -31,6 +31,7 @@ struct Measurement {
   runner::Backend backend = runner::Backend::Vulkan;
   Mode mode = Mode::Fp32;
   bool ok = false;
+  bool not_applicable = false;     // the backend cannot run this mode (native on GLES): not a failure
   int steps = 1;                   // dependent operations per invocation
   std::string note;                // why it did not run / failed
   std::vector<double> seconds;     // per repetition

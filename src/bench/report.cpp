@@ -87,6 +87,7 @@ std::string format_json(const BenchReport& report) {
     row["backend"] = backend_key(r.backend);
     row["mode"] = mode_name(r.mode);
     row["ok"] = r.ok;
+    row["not_applicable"] = r.not_applicable;
     row["steps"] = r.steps;
     row["note"] = r.note;
     row["seconds"] = r.seconds;

@@ -68,10 +68,15 @@ Variant make_variant(Mode mode, runner::Backend backend, const std::string& sour
       v.glsl = with_es_header(demote_doubles(source));
       break;
     case Mode::Native:
-      if (backend == runner::Backend::Gles) v.note = "GLES has no fp64";
+      if (backend == runner::Backend::Gles) v.note = "GLES has no fp64", v.not_applicable = true;
       else v.glsl = source;
       break;
     case Mode::Df64: {
+      if (backend == runner::Backend::Gles && !target_is_es(target)) {
+        v.note = "desktop target " + std::string(to_string(target)) + " does not run on GLES";
+        v.not_applicable = true;
+        break;
+      }
       Options o;
       o.stage = Stage::Compute;
       o.target = target;

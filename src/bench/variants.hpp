@@ -20,6 +20,7 @@ std::optional<Mode> parse_mode(const std::string&);
 struct Variant {
   std::string glsl;   // empty when the mode cannot run (see note)
   std::string note;   // why not, e.g. the lowering's diagnostics
+  bool not_applicable = false;  // the backend cannot run this mode at all (not a failure)
 };
 
 // `source` is a "#version 450" compute shader with doubles. `target` is the df64 lowering target

@@ -28,7 +28,7 @@ TEST(BenchCli, JsonHasTheDocumentedKeys) {
     EXPECT_TRUE(j.contains(key)) << key;
   ASSERT_EQ(j["results"].size(), 2u * 2u * 3u);
   for (const auto& r : j["results"])
-    for (const char* key : {"op", "backend", "mode", "ok", "steps", "note", "seconds", "median_seconds", "min_seconds", "ops_per_second",
+    for (const char* key : {"op", "backend", "mode", "ok", "not_applicable", "steps", "note", "seconds", "median_seconds", "min_seconds", "ops_per_second",
                             "time_vs_fp32", "time_vs_native", "finite_output", "spirv_instructions", "glsl_lines",
                             "flops_per_step"})
       EXPECT_TRUE(r.contains(key)) << key;
