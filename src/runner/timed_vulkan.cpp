@@ -31,6 +31,10 @@ std::string run(VulkanDevice& d, const SpirvProgram& program, const ComputeJob& 
                 TimedResult* out) {
   JobObjects objs(d.device);
   const auto n = static_cast<uint32_t>(job.buffers.size());
+  for (int b : program.ssbo_bindings)  // an unbound SSBO would be read through a null descriptor
+    if (b < 0 || static_cast<uint32_t>(b) >= n)
+      return "shader declares an SSBO at binding " + std::to_string(b) + " but the job has " + std::to_string(n) +
+             " buffer(s)";
   // Layouts as the functional backend: set 0 holds SSBO i at binding i, set 1 the uniform block.
   std::vector<VkDescriptorSetLayoutBinding> ssbo(n);
   for (uint32_t i = 0; i < n; ++i) ssbo[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
