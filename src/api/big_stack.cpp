@@ -25,7 +25,21 @@ bool run_with_big_stack(const std::function<void()>& work, std::size_t stack_byt
 
 std::size_t max_statement_operators(std::string_view source) {
   std::size_t best = 0, current = 0;
-  for (char c : source) {
+  for (std::size_t i = 0; i < source.size(); ++i) {
+    char c = source[i];
+    // Comments and preprocessor lines are not expressions.
+    if (c == '/' && i + 1 < source.size() && source[i + 1] == '/') c = '#';
+    if (c == '#') {
+      i = source.find('\n', i);
+      if (i == std::string_view::npos) break;
+      continue;
+    }
+    if (c == '/' && i + 1 < source.size() && source[i + 1] == '*') {
+      i = source.find("*/", i + 2);
+      if (i == std::string_view::npos) break;
+      ++i;
+      continue;
+    }
     switch (c) {
       case ';': case '{': case '}': current = 0; break;
       case '+': case '-': case '*': case '/': case '%': case '(': case '[': case '?': case '&': case '|':
