@@ -35,6 +35,39 @@ std::string vk_failed(const char* call, VkResult r) {
   return std::string(call) + " failed: " + result_name(r) + " (" + std::to_string(static_cast<int>(r)) + ")";
 }
 
+std::string begin_one_time_commands(VulkanDevice& d, VkCommandPool pool, JobObjects& job, VkCommandBuffer* out) {
+  VkCommandBufferAllocateInfo cbai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  cbai.commandPool = pool;
+  cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  cbai.commandBufferCount = 1;
+  VkCommandBuffer cmd;
+  if (VkResult r = vkAllocateCommandBuffers(d.device, &cbai, &cmd); r != VK_SUCCESS)
+    return vk_failed("vkAllocateCommandBuffers", r);
+  job.cleanup.push_back([&d, pool, cmd] { vkFreeCommandBuffers(d.device, pool, 1, &cmd); });
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  if (VkResult r = vkBeginCommandBuffer(cmd, &begin); r != VK_SUCCESS) return vk_failed("vkBeginCommandBuffer", r);
+  *out = cmd;
+  return {};
+}
+
+std::string submit_and_wait(VulkanDevice& d, JobObjects& job, VkCommandBuffer cmd) {
+  if (VkResult r = vkEndCommandBuffer(cmd); r != VK_SUCCESS) return vk_failed("vkEndCommandBuffer", r);
+  VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence;
+  if (VkResult r = vkCreateFence(d.device, &fci, nullptr, &fence); r != VK_SUCCESS) return vk_failed("vkCreateFence", r);
+  job.cleanup.push_back([&d, fence] { vkDestroyFence(d.device, fence, nullptr); });
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  if (VkResult r = vkQueueSubmit(d.queue, 1, &submit, fence); r != VK_SUCCESS) return vk_failed("vkQueueSubmit", r);
+  if (VkResult r = vkWaitForFences(d.device, 1, &fence, VK_TRUE, 300ull * 1000 * 1000 * 1000); r != VK_SUCCESS) {
+    vkQueueWaitIdle(d.queue);  // never free objects the queue may still use
+    return vk_failed("vkWaitForFences (300 s)", r);
+  }
+  return {};
+}
+
 namespace {
 
 const char* const kLavapipeIcd = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";

@@ -54,6 +54,13 @@ struct HostBuffer {
 std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usage, const std::vector<uint8_t>& data,
                         HostBuffer* out);
 
+// A primary command buffer from `pool`, begun for one submission, freed with `job`.
+std::string begin_one_time_commands(VulkanDevice& d, VkCommandPool pool, JobObjects& job, VkCommandBuffer* out);
+
+// Ends `cmd`, submits it and waits for it (300 s at most); if the wait fails, waits for the
+// queue to drain first, because `job`'s objects must not be freed while in use.
+std::string submit_and_wait(VulkanDevice& d, JobObjects& job, VkCommandBuffer cmd);
+
 // The global uniform block's bytes: zero everywhere, then each named value at its reflected offset.
 std::string uniform_block_bytes(const SpirvProgram& program, const std::map<std::string, float>& float_uniforms,
                                 const std::map<std::string, std::vector<double>>& uniforms, std::vector<uint8_t>* bytes);

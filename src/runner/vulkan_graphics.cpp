@@ -176,18 +176,8 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
   }
   vkUpdateDescriptorSets(d.device, 3, writes, 0, nullptr);
 
-  VkCommandBufferAllocateInfo cbai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  cbai.commandPool = p.cmd_pool;
-  cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  cbai.commandBufferCount = 1;
   VkCommandBuffer cmd;
-  if (VkResult r = vkAllocateCommandBuffers(d.device, &cbai, &cmd); r != VK_SUCCESS)
-    return vk_failed("vkAllocateCommandBuffers", r);
-  VkCommandPool cmd_pool = p.cmd_pool;
-  objs.cleanup.push_back([&d, cmd_pool, cmd] { vkFreeCommandBuffers(d.device, cmd_pool, 1, &cmd); });
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vkBeginCommandBuffer(cmd, &begin);
+  if (std::string error = begin_one_time_commands(d, p.cmd_pool, objs, &cmd); !error.empty()) return error;
   VkRenderPassBeginInfo rpbi{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   rpbi.renderPass = p.render_pass;
   rpbi.framebuffer = p.framebuffer;
@@ -203,20 +193,7 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
   barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                        VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
-  if (VkResult r = vkEndCommandBuffer(cmd); r != VK_SUCCESS) return vk_failed("vkEndCommandBuffer", r);
-
-  VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VkFence fence;
-  if (VkResult r = vkCreateFence(d.device, &fci, nullptr, &fence); r != VK_SUCCESS) return vk_failed("vkCreateFence", r);
-  objs.cleanup.push_back([&d, fence] { vkDestroyFence(d.device, fence, nullptr); });
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  if (VkResult r = vkQueueSubmit(d.queue, 1, &submit, fence); r != VK_SUCCESS) return vk_failed("vkQueueSubmit", r);
-  if (VkResult r = vkWaitForFences(d.device, 1, &fence, VK_TRUE, 300ull * 1000 * 1000 * 1000); r != VK_SUCCESS) {
-    vkQueueWaitIdle(d.queue);  // never free objects the queue may still use
-    return vk_failed("vkWaitForFences (300 s)", r);
-  }
+  if (std::string error = submit_and_wait(d, objs, cmd); !error.empty()) return error;
   unpack_outputs(w.iface, count, static_cast<const uint8_t*>(outputs.mapped), result);
   return {};
 }
