@@ -359,7 +359,7 @@ class DoubleLowering {
     std::string name = "df_assign_component_" + src_name.substr(3);
     ctx_.add_helper(name, "df_double " + name + "(inout " + src_name +
                               " v, int i, df_double x) {\n  v.hi[i] = x.hi;\n  v.lo[i] = x.lo;\n  return x;\n}\n");
-    return call(Kind::Call, name, df_type(1), {base, lower(lhs->args[1]), rhs}, e->loc);
+    return call(Kind::Call, name, df_type(1), {base, int_index(lower(lhs->args[1])), rhs}, e->loc);
   }
 
   ExprPtr lower_compound(const ExprPtr& e) {
@@ -408,6 +408,12 @@ class DoubleLowering {
     return call(Kind::Call, name, target->type, {target}, e->loc);
   }
 
+  // The component helpers take an `int` index; GLSL has no implicit uint → int.
+  static ExprPtr int_index(const ExprPtr& index) {
+    if (index->type.base != ir::Base::Uint) return index;
+    return call(Kind::Construct, "", ir::scalar_type(ir::Base::Int), {index}, index->loc);
+  }
+
   ExprPtr component(const ExprPtr& base, const ExprPtr& index, ir::Loc loc) {
     if (index->kind == Kind::Const && !index->values.empty()) {
       static const char* letters = "xyzw";
@@ -417,7 +423,7 @@ class DoubleLowering {
     std::string name = "df_component_" + df_type_name(src).substr(3);
     ctx_.add_helper(name, "df_double " + name + "(" + df_type_name(src) +
                               " v, int i) {\n  return df_double(v.hi[i], v.lo[i]);\n}\n");
-    return call(Kind::Call, name, df_type(1), {base, index}, loc);
+    return call(Kind::Call, name, df_type(1), {base, int_index(index)}, loc);
   }
 
   ExprPtr lower_binary(const ExprPtr& e) {

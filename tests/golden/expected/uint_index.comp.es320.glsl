@@ -1,0 +1,128 @@
+#version 320 es
+precision highp float;
+precision highp int;
+layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;
+
+struct df_dvec3 {
+  vec3 hi;
+  vec3 lo;
+};
+// doublet float-float runtime: 6 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+struct df_dvec2 { vec2 hi; vec2 lo; };
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Algorithm: RN(hi + lo)
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 1
+float df_to_float(df_double a) {
+  precise float f = (a.hi + a.lo);
+  return f;
+}
+
+// df_from_float: the exact double-word (f, 0).
+// Algorithm: hi = f, lo = 0
+// Source: JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0
+df_double df_from_float(float f) {
+  return df_double(f, float(0.0));
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 20
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  precise float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  precise float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  return z;
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Algorithm: RN(hi + lo)
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 1
+vec2 df_to_float(df_dvec2 a) {
+  precise vec2 f = (a.hi + a.lo);
+  return f;
+}
+
+df_dvec3 df_splat_dvec3(df_double s) {
+  return df_dvec3(vec3(s.hi), vec3(s.lo));
+}
+
+df_double df_component_dvec3(df_dvec3 v, int i) {
+  return df_double(v.hi[i], v.lo[i]);
+}
+
+df_double df_assign_component_dvec3(inout df_dvec3 v, int i, df_double x) {
+  v.hi[i] = x.hi;
+  v.lo[i] = x.lo;
+  return x;
+}
+
+layout(std430, binding = 0) buffer B {
+  vec2 v[];
+};
+
+vec2 f(df_double d);
+
+vec2 f(df_double d)
+{
+  return vec2(df_to_float(d));
+}
+
+void main()
+{
+  df_dvec3 p = df_splat_dvec3(df_from_float(v[0].x));
+  for (uint i = 0u; i < 3u; ++i)
+  {
+    v[i] = f(df_component_dvec3(p, int(i)));
+    df_assign_component_dvec3(p, int(i), df_from_float(v[i].y));
+    df_assign_component_dvec3(p, int(i), df_add(df_component_dvec3(p, int(i)), df_double(1.0, 0.0)));
+  }
+  v[3] = df_to_float(df_dvec2(p.hi.xy, p.lo.xy));
+}
