@@ -44,6 +44,9 @@ struct IncludeResult {
   std::string resolved_path;
   std::string contents;
 };
+// lower() parses on an internal thread with a large stack (deeply nested
+// expressions would overflow the caller's), so include() is called from that
+// thread while the calling thread waits: it must not rely on thread-local state.
 class Includer {
  public:
   virtual ~Includer() = default;
