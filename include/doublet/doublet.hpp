@@ -66,6 +66,9 @@ struct Options {
   GuardKind guard = GuardKind::Auto;
   bool allow_gpu_shader5 = false;      // es310: use `precise` via GL_EXT_gpu_shader5
   std::string guard_uniform_name = "df_guard";
+  // Double constants too small for float-float (|x| < 1.2e-38, e.g. 1e-300lf) are a
+  // warning by default and an error when this is set. Too large ones are always errors.
+  bool constant_range_errors = false;
 };
 
 // One member of a uniform or storage block after lowering (members of nested structs are listed

@@ -66,6 +66,7 @@ struct LowerArgs {
   std::string hi_suffix = "_hi";
   std::string lo_suffix = "_lo";
   std::string color = "auto";
+  bool constant_range_errors = false;
 };
 
 // Options shared by every input; the usage error, if any, in `error`.
@@ -95,6 +96,7 @@ Options common_options(const LowerArgs& a, std::string& error) {
   opt.include_dirs = a.include_dirs;
   opt.hi_suffix = a.hi_suffix;
   opt.lo_suffix = a.lo_suffix;
+  opt.constant_range_errors = a.constant_range_errors;
   opt.guard = a.guard == "precise" ? GuardKind::Precise : a.guard == "uniform" ? GuardKind::Uniform : GuardKind::Auto;
   return opt;
 }
@@ -240,6 +242,8 @@ Command add_lower_command(CLI::App& app) {
       ->type_name("S");
   cmd->add_option("--lo-suffix", args->lo_suffix, "Suffix of the low part of split variables (default _lo)")
       ->type_name("S");
+  cmd->add_flag("--constant-range-errors", args->constant_range_errors,
+                "Make double constants too small for float-float (e.g. 1e-300lf) errors, not warnings");
   cmd->add_option("--color", args->color, "Colour diagnostics: auto (terminal, no NO_COLOR), always, never")
       ->type_name("WHEN");
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "doublet/split.hpp"
 #include "emit/printer.hpp"
 #include "ir/walk.hpp"
 #include "lower/block_layout.hpp"
@@ -269,6 +270,24 @@ class DoubleLowering {
     }
   }
 
+  // A double constant float-float cannot hold is diagnosed, never silently Inf or 0.
+  void check_range(double x, SplitStatus status, ir::Loc loc) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    if (std::isinf(x)) {
+      ctx_.error(loc, std::string("the double constant overflows even double precision (") + text + ")");
+    } else if (status == SplitStatus::Overflow) {
+      ctx_.error(loc, std::string("the double constant ") + text +
+                          " is outside float-float range (|x| > 3.4e38): it would become infinity");
+    } else if (status == SplitStatus::Underflow) {
+      std::string message = std::string("the double constant ") + text +
+                            " is below float-float range (|x| < 1.2e-38): it becomes " +
+                            (static_cast<float>(x) == 0.0f ? "0" : "a subnormal float with little precision left");
+      if (ctx_.options.constant_range_errors) ctx_.error(loc, message);
+      else ctx_.warning(loc, message);
+    }
+  }
+
   ExprPtr split_constant(const ExprPtr& e) {
     ir::Type elem_type = e->type;
     elem_type.array_dims.clear();
@@ -280,12 +299,10 @@ class DoubleLowering {
       std::vector<ir::Scalar> his, los;
       for (int i = 0; i < width; ++i) {
         double x = e->values[start + static_cast<size_t>(i)].d;
-        float h = static_cast<float>(x);
-        float l = std::isfinite(h) ? static_cast<float>(x - static_cast<double>(h)) : 0.0f;
-        if (std::isfinite(x) && !std::isfinite(h))
-          ctx_.error(e->loc, "the double constant " + std::to_string(x) + " is outside float-float range (|x| > 3.4e38)");
-        hi.d = h;
-        lo.d = l;
+        FloatPair pair;
+        check_range(x, split_checked(x, pair), e->loc);
+        hi.d = pair.hi;
+        lo.d = pair.lo;
         his.push_back(hi);
         los.push_back(lo);
       }

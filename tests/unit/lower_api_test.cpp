@@ -204,3 +204,37 @@ TEST(Frontend, StageFromPath) {
 }
 
 }  // namespace
+
+namespace {
+
+// Double constants float-float cannot hold: overflow is an error, underflow a
+// warning (an error with Options::constant_range_errors), each at its column.
+TEST(ConstantRange, OutOfRangeConstantsAreDiagnosedAtTheirPlace) {
+  const char* src =
+      "#version 450\nout vec4 o;\nvoid main() {\n"
+      "  double a = 1e100lf;\n  double b = 1e-300lf;\n  double c = 1e+309lf;\n"
+      "  o = vec4(float(a), float(b), float(c), 1.0);\n}\n";
+  doublet::Options o;
+  o.stage = doublet::Stage::Fragment;
+  o.target = doublet::Target::Glsl450;
+  o.file_name = "range.frag";
+  auto r = doublet::lower(src, o);
+  EXPECT_FALSE(r.ok);
+  std::string all = messages(r);
+  EXPECT_NE(all.find("range.frag:4:14: error: the double constant 1e+100 is outside float-float range"),
+            std::string::npos) << all;
+  EXPECT_NE(all.find("range.frag:5:14: warning: the double constant 1e-300 is below float-float range"),
+            std::string::npos) << all;
+  EXPECT_NE(all.find("range.frag:6:14: error: the double constant overflows even double precision"),
+            std::string::npos) << all;
+
+  const char* tiny = "#version 450\nout vec4 o;\nvoid main() { double b = 1e-300lf; o = vec4(float(b)); }\n";
+  auto warned = doublet::lower(tiny, o);
+  EXPECT_TRUE(warned.ok) << messages(warned);
+  o.constant_range_errors = true;
+  auto refused = doublet::lower(tiny, o);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_NE(messages(refused).find("error: the double constant 1e-300 is below"), std::string::npos);
+}
+
+}  // namespace
