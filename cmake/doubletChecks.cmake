@@ -4,6 +4,11 @@
 set(DOUBLET_SANITIZE "" CACHE STRING "Comma-separated -fsanitize= list (e.g. address,undefined)")
 option(DOUBLET_FUZZ "Build the libFuzzer target over doublet::lower (clang only)" OFF)
 
+if(DOUBLET_FUZZ)
+  # Coverage feedback from all of doublet, not only the fuzz target's own file.
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
+
 if(DOUBLET_SANITIZE)
   add_compile_options(-fsanitize=${DOUBLET_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
   add_link_options(-fsanitize=${DOUBLET_SANITIZE})
