@@ -25,6 +25,16 @@ enum class Target { Es100, Es300, Es310, Es320, Glsl330, Glsl450 };
 //  Auto:    Precise where the target has it, Uniform otherwise.
 enum class GuardKind { Auto, Precise, Uniform, None /* unprotected: tests only */ };
 
+// Precision modes (docs/modes.md), cheapest first by cost, weakest first by accuracy:
+//  Fp32:     every double demoted to float (what users have without doublet);
+//  Rte:      doubles stored and passed as hi/lo, arithmetic in float except the exact
+//            float-float subtraction of two split values, whose result is float
+//            (relative-to-eye/center in the Cesium sense);
+//  Df64Fast: float-float with the cheaper algorithms and their weaker bounds;
+//  Df64:     float-float with the accurate algorithms (the default);
+//  Native:   doubles kept as they are (desktop targets with fp64; the reference).
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Native };
+
 enum class Severity { Error, Warning, Note };
 
 struct Diagnostic {
@@ -69,6 +79,13 @@ struct Options {
   // Double constants too small for float-float (|x| < 1.2e-38, e.g. 1e-300lf) are a
   // warning by default and an error when this is set. Too large ones are always errors.
   bool constant_range_errors = false;
+  // The precision mode of everything not named in mode_for (--mode).
+  Mode mode = Mode::Df64;
+  // Per-declaration and per-function modes (--mode-for NAME=MODE, or a plan file), the same as
+  // `#pragma doublet mode(MODE)` in the source before the declaration. NAME is a global
+  // variable, a function (every overload), or FUNCTION.LOCAL for a local variable or parameter.
+  // A later entry for the same NAME wins; a NAME the shader does not declare is an error.
+  std::vector<std::pair<std::string, Mode>> mode_for;
 };
 
 // One member of a uniform or storage block after lowering (members of nested structs are listed
@@ -129,6 +146,8 @@ Result lower(std::string_view source, const Options& options);
 std::string_view to_string(Target t);           // "es300"
 std::string_view to_string(Stage s);            // "vert"
 std::optional<Target> parse_target(std::string_view name);
+std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native"
+std::optional<Mode> parse_mode(std::string_view name);
 std::optional<Stage> parse_stage(std::string_view name);  // "vert"|"frag"|"comp"
 // Stage from a file name: x.vert, x.frag, x.comp, x.vert.glsl, ...
 std::optional<Stage> stage_from_path(std::string_view path);

@@ -34,6 +34,24 @@ std::optional<Target> parse_target(std::string_view name) {
   return std::nullopt;
 }
 
+namespace {
+constexpr std::pair<Mode, const char*> kModes[] = {
+    {Mode::Fp32, "fp32"}, {Mode::Rte, "rte"}, {Mode::Df64Fast, "df64-fast"}, {Mode::Df64, "df64"}, {Mode::Native, "native"},
+};
+}  // namespace
+
+std::string_view to_string(Mode m) {
+  for (const auto& [mode, name] : kModes)
+    if (mode == m) return name;
+  return "df64";
+}
+
+std::optional<Mode> parse_mode(std::string_view name) {
+  for (const auto& [mode, name_of] : kModes)
+    if (name == name_of) return mode;
+  return std::nullopt;
+}
+
 std::string_view to_string(Stage s) {
   switch (s) {
     case Stage::Vertex: return "vert";
