@@ -79,6 +79,11 @@ struct Options {
   // Double constants too small for float-float (|x| < 1.2e-38, e.g. 1e-300lf) are a
   // warning by default and an error when this is set. Too large ones are always errors.
   bool constant_range_errors = false;
+  // Lints (docs/robustness.md, "Lints"): warnings that end in [-WNAME], NAME one of
+  // lint_names(). A name here silences that lint, "all" every lint (-Wno-NAME); an unknown
+  // name is an error. lint_errors makes the lints that run errors (-Werror).
+  std::vector<std::string> disabled_lints;
+  bool lint_errors = false;
   // The precision mode of everything not named in mode_for (--mode).
   Mode mode = Mode::Df64;
   // Per-declaration and per-function modes (--mode-for NAME=MODE, or a plan file), the same as
@@ -149,6 +154,8 @@ std::optional<Target> parse_target(std::string_view name);
 std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native"
 std::optional<Mode> parse_mode(std::string_view name);
 std::optional<Stage> parse_stage(std::string_view name);  // "vert"|"frag"|"comp"
+// The lints Options::disabled_lints can name: "float-literal", "wasted-double", ...
+std::vector<std::string_view> lint_names();
 // Stage from a file name: x.vert, x.frag, x.comp, x.vert.glsl, ...
 std::optional<Stage> stage_from_path(std::string_view path);
 bool target_is_es(Target t);

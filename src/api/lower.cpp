@@ -10,6 +10,7 @@
 #include "emit/validate.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/import.hpp"
+#include "lower/lints.hpp"
 #include "lower/lower.hpp"
 #include "lower/matrix_helpers.hpp"
 #include "rules/rule_library.hpp"
@@ -101,6 +102,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   if (!frontend::import_module(parsed, options, module, diags)) return result;
 
   passes::Context ctx{options, diags};
+  passes::run_lints(module, source, ctx);  // on the IR as imported, before any pass rewrites it
   result.manifest.stage = std::string(to_string(*options.stage));
   result.manifest.target = std::string(to_string(options.target));
   if (!passes::lower_doubles(module, ctx)) return result;
