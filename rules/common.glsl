@@ -78,7 +78,7 @@ $DF df_trunc($DF a) {
 // Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 18
+// Flops: 19
 // @widths 1 2 3 4
 // @per-component
 // @uses df_two_sum:1 df_add_f:1
@@ -100,7 +100,7 @@ $DF df_fract($DF a) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 33
+// Flops: 35
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 // @widths 1 2 3 4
 // @per-component
@@ -121,7 +121,7 @@ $DF df_round($DF a) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 39
+// Flops: 41
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 // @widths 1 2 3 4
@@ -153,7 +153,7 @@ $DF df_round_even($DF a) {
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
-// Flops: 84
+// Flops: 92
 // @widths 1 2 3 4
 $DF df_mod($DF a, $DF b) {
   $DF q = df_div(a, b);
@@ -167,7 +167,7 @@ $DF df_mod($DF a, $DF b) {
 // Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 27
+// Flops: 28
 // @widths 1 2 3 4
 $DF df_modf($DF a, out $DF i) {
   i = df_trunc(a);
@@ -191,7 +191,7 @@ $DF df_clamp($DF x, $DF lo, $DF hi) {
 // Algorithm: AccurateDWPlusDW, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mix); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r) + 10u^2 * abs(a * (y - x)) (absolute, first order)
-// Flops: 66
+// Flops: 71
 // @widths 1 2 3 4
 $DF df_mix($DF x, $DF y, $DF a) {
   $DF d = df_sub(y, x);
@@ -235,7 +235,7 @@ $DF df_step($DF edge, $DF x) {
 // Algorithm: AccurateDWPlusDW, DWDivDW2, clamp, DWTimesDW1
 // Source: GLSL 4.60 (2019) section 8.3 (smoothstep); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 55u^2 (absolute; the result is in [0, 1])
-// Flops: 170
+// Flops: 184
 // @widths 1 2 3 4
 $DF df_smoothstep($DF e0, $DF e1, $DF x) {
   $DF n = df_sub(x, e0);
@@ -275,7 +275,7 @@ $B df_isinf($DF a) {
 // Algorithm: DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r) + 7u^2 * abs(a * b) (absolute, first order)
-// Flops: 44
+// Flops: 48
 // @widths 1 2 3 4
 $DF df_fma($DF a, $DF b, $DF c) {
   $DF p = df_mul(a, b);

@@ -9,11 +9,12 @@
 //           ACM TOMS 23(4), 1997 (the same one-Newton-step idea).
 // Notation: u = 2^-24.
 
-// df_sqrt: sqrt(a) for a >= 0; sqrt(0) = 0 (not NaN). a < 0 is undefined, like GLSL sqrt().
-// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square
+// df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN
+// (IEEE 754-2008 section 5.4.1; GLSL leaves a < 0 undefined, the drivers give NaN).
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
 // Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
 // Bound: 25/8 u^2
-// Flops: 27
+// Flops: 29
 // Steps (LLMPR Algorithm 8, our no-FMA form):
 //   sh   = RN(sqrt(ah))
 //   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
@@ -26,9 +27,9 @@
 // So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
 // correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
 // few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
-// not proved). Zero: 2 sh is clamped below by 1e-30, so a = 0 gives rho2 = 0, sl = 0/1e-30 = 0;
-// for any float a > 0, 2 sh >= 2^-74 > 1e-30, so the clamp never changes a nonzero result.
-// Range: a < FLT_MAX; Inf gives NaN (split of Inf).
+// not proved). Special values end in df_finish(z, sh): a = +-0 gives sl = 0/0 = NaN and so
+// (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
+// Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 // @widths 1 2 3 4
 $DF df_sqrt($DF a) {
   $PRECISE $F sh = $G(sqrt(a.hi));
@@ -37,17 +38,17 @@ $DF df_sqrt($DF a) {
   $PRECISE $F rho1 = $G(r0 - sq.lo);
   $PRECISE $F rho2 = $G(a.lo + rho1);
   $PRECISE $F sh2 = $G(sh * 2.0);
-  $PRECISE $F den = $G(max(sh2, 1.0e-30));
-  $PRECISE $F sl = $G(rho2 / den);
+  $PRECISE $F sl = $G(rho2 / sh2);
   $DF z = df_fast_two_sum(sh, sl);
-  return z;
+  $DF r = df_finish(z, sh);
+  return r;
 }
 
 // df_inversesqrt: 1 / sqrt(a): SQRTDWtoDW, then DWDivDW2 of 1 by the root.
 // Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), then DWDivDW2 (JMP Algorithm 17)
 // Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 18.125u^2
-// Flops: 60
+// Flops: 66
 // @widths 1 2 3 4
 // @uses df_sqrt:W df_div:W
 $DF df_inversesqrt($DF a) {

@@ -137,7 +137,8 @@ bool substitute(std::string_view in, const Subst& s, std::string& out, std::stri
       std::string inner;
       if (!substitute(in.substr(j + 1, k - j - 1), s, inner, error)) return false;
       if (s.guard == GuardStyle::Uniform)
-        out += "((" + inner + ") + " + s.guard_uniform + ")";
+        // Subtract the +0 guard: x - 0 == x for every x including -0 (x + 0 turns -0 into +0).
+        out += "((" + inner + ") - " + s.guard_uniform + ")";
       else
         out += "(" + inner + ")";
       i = k;

@@ -10,7 +10,7 @@
 //   $U   uint  | uvec2 | uvec3 | uvec4
 //   $W   1 | 2 | 3 | 4
 //   $PRECISE   `precise` when the guard is Precise; otherwise empty, and the space after it is dropped
-//   $G(expr)   `(expr)` when Precise or None, `((expr) + df_guard)` when Uniform
+//   $G(expr)   `(expr)` when Precise or None, `((expr) - df_guard)` when Uniform (x - 0 keeps -0)
 // Annotations in the chunk's header comment:
 //   // @widths 1 2 3 4        widths this chunk is instantiated for (default: 1)
 //   // @min-es 300            lowest ES version that may use it (default 100)

@@ -2,7 +2,7 @@
 precision highp float;
 precision highp int;
 
-// doublet float-float runtime: 70 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 72 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -17,43 +17,80 @@ df_dvec3 df_from_float(vec3 f) {
 }
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+df_double df_split(float a) {
+  float aa = ((abs(a)) - df_guard);
+  if (aa > 1.0e34) {
+    float as = ((a * 1.220703125e-4) - df_guard);
+    float gs = ((as * 4097.0) - df_guard);
+    float ds = ((as - gs) - df_guard);
+    float hs = ((gs + ds) - df_guard);
+    float hb = ((hs * 8192.0) - df_guard);
+    float lb = ((a - hb) - df_guard);
+    return df_double(hb, lb);
+  }
+  float g = ((a * 4097.0) - df_guard);
+  float d = ((a - g) - df_guard);
+  float hi = ((g + d) - df_guard);
+  float lo = ((a - hi) - df_guard);
+  return df_double(hi, lo);
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
+// Bound: exact
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+// (width 3: the width-1 df_split applied to each component)
 df_dvec3 df_split(vec3 a) {
-  vec3 g = ((a * 4097.0) + df_guard);
-  vec3 d = ((a - g) + df_guard);
-  vec3 hi = ((g + d) + df_guard);
-  vec3 lo = ((a - hi) + df_guard);
-  return df_dvec3(hi, lo);
+  df_double r0 = df_split(a.x);
+  df_double r1 = df_split(a.y);
+  df_double r2 = df_split(a.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) + df_guard);
+  vec3 p = ((a * b) - df_guard);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
-  vec3 hh = ((sa.hi * sb.hi) + df_guard);
-  vec3 hl = ((sa.hi * sb.lo) + df_guard);
-  vec3 lh = ((sa.lo * sb.hi) + df_guard);
-  vec3 ll = ((sa.lo * sb.lo) + df_guard);
-  vec3 t1 = ((hh - p) + df_guard);
-  vec3 t2 = ((t1 + hl) + df_guard);
-  vec3 t3 = ((t2 + lh) + df_guard);
-  vec3 e = ((t3 + ll) + df_guard);
+  vec3 hh = ((sa.hi * sb.hi) - df_guard);
+  vec3 hl = ((sa.hi * sb.lo) - df_guard);
+  vec3 lh = ((sa.lo * sb.hi) - df_guard);
+  vec3 ll = ((sa.lo * sb.lo) - df_guard);
+  vec3 t1 = ((hh - p) - df_guard);
+  vec3 t2 = ((t1 + hl) - df_guard);
+  vec3 t3 = ((t2 + lh) - df_guard);
+  vec3 e = ((t3 + ll) - df_guard);
   return df_dvec3(p, e);
 }
 
@@ -65,29 +102,63 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) + df_guard);
-  vec3 z = ((s - a) + df_guard);
-  vec3 e = ((b - z) + df_guard);
+  vec3 s = ((a + b) - df_guard);
+  vec3 z = ((s - a) - df_guard);
+  vec3 e = ((b - z) - df_guard);
   return df_dvec3(s, e);
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  float az = ((abs(z.hi)) - df_guard);
+  if (az > 0.0 && az <= 3.40282347e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 3: the width-1 df_finish applied to each component)
+df_dvec3 df_finish(df_dvec3 z, vec3 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  df_double r2 = df_finish(df_double(z.hi.z, z.lo.z), f.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b.hi);
-  vec3 tl = ((a.hi * b.lo) + df_guard);
-  vec3 th = ((a.lo * b.hi) + df_guard);
-  vec3 cl2 = ((th + tl) + df_guard);
-  vec3 cl3 = ((c.lo + cl2) + df_guard);
+  vec3 tl = ((a.hi * b.lo) - df_guard);
+  vec3 th = ((a.lo * b.hi) - df_guard);
+  vec3 cl2 = ((th + tl) - df_guard);
+  vec3 cl3 = ((c.lo + cl2) - df_guard);
   df_dvec3 z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_dvec3 r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
@@ -97,12 +168,12 @@ df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) + df_guard);
-  float bb = ((s - a) + df_guard);
-  float ab = ((s - bb) + df_guard);
-  float da = ((a - ab) + df_guard);
-  float db = ((b - bb) + df_guard);
-  float e = ((da + db) + df_guard);
+  float s = ((a + b) - df_guard);
+  float bb = ((s - a) - df_guard);
+  float ab = ((s - bb) - df_guard);
+  float da = ((a - ab) - df_guard);
+  float db = ((b - bb) - df_guard);
+  float e = ((da + db) - df_guard);
   return df_double(s, e);
 }
 
@@ -114,35 +185,38 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) + df_guard);
-  float z = ((s - a) + df_guard);
-  float e = ((b - z) + df_guard);
+  float s = ((a + b) - df_guard);
+  float z = ((s - a) - df_guard);
+  float e = ((b - z) - df_guard);
   return df_double(s, e);
 }
 
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_double df_add(df_double a, df_double b) {
   df_double s = df_two_sum(a.hi, b.hi);
   df_double t = df_two_sum(a.lo, b.lo);
-  float c = ((s.lo + t.hi) + df_guard);
+  float c = ((s.lo + t.hi) - df_guard);
   df_double v = df_fast_two_sum(s.hi, c);
-  float w = ((t.lo + v.lo) + df_guard);
+  float w = ((t.lo + v.lo) - df_guard);
   df_double z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_double r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_dot: (a.x*b.x + a.y*b.y) + a.z*b.z.
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 112
+// Flops: 123
 df_double df_dot(df_dvec3 a, df_dvec3 b) {
   df_dvec3 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -153,52 +227,38 @@ df_double df_dot(df_dvec3 a, df_dvec3 b) {
   return r;
 }
 
-// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
-// Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
-df_double df_split(float a) {
-  float g = ((a * 4097.0) + df_guard);
-  float d = ((a - g) + df_guard);
-  float hi = ((g + d) + df_guard);
-  float lo = ((a - hi) + df_guard);
-  return df_double(hi, lo);
-}
-
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) + df_guard);
+  float p = ((a * b) - df_guard);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
-  float hh = ((sa.hi * sb.hi) + df_guard);
-  float hl = ((sa.hi * sb.lo) + df_guard);
-  float lh = ((sa.lo * sb.hi) + df_guard);
-  float ll = ((sa.lo * sb.lo) + df_guard);
-  float t1 = ((hh - p) + df_guard);
-  float t2 = ((t1 + hl) + df_guard);
-  float t3 = ((t2 + lh) + df_guard);
-  float e = ((t3 + ll) + df_guard);
+  float hh = ((sa.hi * sb.hi) - df_guard);
+  float hl = ((sa.hi * sb.lo) - df_guard);
+  float lh = ((sa.lo * sb.hi) - df_guard);
+  float ll = ((sa.lo * sb.lo) - df_guard);
+  float t1 = ((hh - p) - df_guard);
+  float t2 = ((t1 + hl) - df_guard);
+  float t3 = ((t2 + lh) - df_guard);
+  float e = ((t3 + ll) - df_guard);
   return df_double(p, e);
 }
 
-// df_sqrt: sqrt(a) for a >= 0; sqrt(0) = 0 (not NaN). a < 0 is undefined, like GLSL sqrt().
-// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square
+// df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN
+// (IEEE 754-2008 section 5.4.1; GLSL leaves a < 0 undefined, the drivers give NaN).
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
 // Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
 // Bound: 25/8 u^2
-// Flops: 27
+// Flops: 29
 // Steps (LLMPR Algorithm 8, our no-FMA form):
 //   sh   = RN(sqrt(ah))
 //   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
@@ -211,20 +271,20 @@ df_double df_two_prod(float a, float b) {
 // So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
 // correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
 // few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
-// not proved). Zero: 2 sh is clamped below by 1e-30, so a = 0 gives rho2 = 0, sl = 0/1e-30 = 0;
-// for any float a > 0, 2 sh >= 2^-74 > 1e-30, so the clamp never changes a nonzero result.
-// Range: a < FLT_MAX; Inf gives NaN (split of Inf).
+// not proved). Special values end in df_finish(z, sh): a = +-0 gives sl = 0/0 = NaN and so
+// (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
+// Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) + df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard);
   df_double sq = df_two_prod(sh, sh);
-  float r0 = ((a.hi - sq.hi) + df_guard);
-  float rho1 = ((r0 - sq.lo) + df_guard);
-  float rho2 = ((a.lo + rho1) + df_guard);
-  float sh2 = ((sh * 2.0) + df_guard);
-  float den = ((max(sh2, 1.0e-30)) + df_guard);
-  float sl = ((rho2 / den) + df_guard);
+  float r0 = ((a.hi - sq.hi) - df_guard);
+  float rho1 = ((r0 - sq.lo) - df_guard);
+  float rho2 = ((a.lo + rho1) - df_guard);
+  float sh2 = ((sh * 2.0) - df_guard);
+  float sl = ((rho2 / sh2) - df_guard);
   df_double z = df_fast_two_sum(sh, sl);
-  return z;
+  df_double r = df_finish(z, sh);
+  return r;
 }
 
 // df_length: sqrt(dot(a, a)), W = 2..4. No cancellation in dot(a, a), so its error is
@@ -233,7 +293,7 @@ df_double df_sqrt(df_double a) {
 // Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 9.625u^2
-// Flops: 183 (W = 4; 95 for W = 2, 139 for W = 3)
+// Flops: 200 (W = 4; 104 for W = 2, 152 for W = 3)
 // Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
 df_double df_length(df_dvec3 a) {
   df_double d = df_dot(a, a);
@@ -242,48 +302,52 @@ df_double df_length(df_dvec3 a) {
 }
 
 // df_mul_f: a * b with b a plain float.
-// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
 // Bound: 1.5u^2 + 4u^3
-// Flops: 25
+// Flops: 28
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
-//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2).
-// Range: |ah|, |b| <= 8.3e34 (split).
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (the split is scaled).
 df_dvec3 df_mul_f(df_dvec3 a, vec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b);
-  vec3 cl2 = ((a.lo * b) + df_guard);
+  vec3 cl2 = ((a.lo * b) - df_guard);
   df_dvec3 t = df_fast_two_sum(c.hi, cl2);
-  vec3 tl2 = ((t.lo + c.lo) + df_guard);
+  vec3 tl2 = ((t.lo + c.lo) - df_guard);
   df_dvec3 z = df_fast_two_sum(t.hi, tl2);
-  return z;
+  df_dvec3 r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_div: a / b.
-// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 15u^2 + 56u^3
-// Flops: 33
+// Flops: 37
 // Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
-//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
 // The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
-// which adds about 2.5u^2 (tl carries the error). b == 0 gives NaN (the split of Inf), not Inf.
-// Range: |th| and |bh| <= 8.3e34 (split).
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (the split is scaled).
 df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
-  vec3 th = ((a.hi / b.hi) + df_guard);
+  vec3 th = ((a.hi / b.hi) - df_guard);
   df_dvec3 r = df_mul_f(b, th);
-  vec3 pih = ((a.hi - r.hi) + df_guard);
-  vec3 dl = ((a.lo - r.lo) + df_guard);
-  vec3 d = ((pih + dl) + df_guard);
-  vec3 tl = ((d / b.hi) + df_guard);
+  vec3 pih = ((a.hi - r.hi) - df_guard);
+  vec3 dl = ((a.lo - r.lo) - df_guard);
+  vec3 d = ((pih + dl) - df_guard);
+  vec3 tl = ((d / b.hi) - df_guard);
   df_dvec3 z = df_fast_two_sum(th, tl);
-  return z;
+  df_dvec3 q = df_finish(z, th);
+  return q;
 }
 
 // df_normalize: a / length(a) per component (width 1: sign(a), exact).
 // Algorithm: df_length, then DWDivDW2 (JMP Algorithm 17) per component
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 24.625u^2
-// Flops: 315 (W = 4)
+// Flops: 348 (W = 4)
 // Range: |a|^2 must not overflow float, as for df_length.
 df_dvec3 df_normalize(df_dvec3 a) {
   df_double n = df_length(a);
@@ -313,35 +377,38 @@ df_double df_max(df_double a, df_double b) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
-  float tl = ((a.hi * b.lo) + df_guard);
-  float th = ((a.lo * b.hi) + df_guard);
-  float cl2 = ((th + tl) + df_guard);
-  float cl3 = ((c.lo + cl2) + df_guard);
+  float tl = ((a.hi * b.lo) - df_guard);
+  float th = ((a.lo * b.hi) - df_guard);
+  float cl2 = ((th + tl) - df_guard);
+  float cl3 = ((c.lo + cl2) - df_guard);
   df_double z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_double r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_add_f: a + b with b a plain float (b need not be a double-word).
-// Algorithm: DWPlusFP (JMP Algorithm 4)
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 10
-// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v).
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
 df_double df_add_f(df_double a, float b) {
   df_double s = df_two_sum(a.hi, b);
-  float v = ((a.lo + s.lo) + df_guard);
+  float v = ((a.lo + s.lo) - df_guard);
   df_double z = df_fast_two_sum(s.hi, v);
-  return z;
+  df_double r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
@@ -350,29 +417,29 @@ df_double df_add_f(df_double a, float b) {
 // Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 18
+// Flops: 19
 df_double df_fract(df_double a) {
-  float f = ((floor(a.hi)) + df_guard);
+  float f = ((floor(a.hi)) - df_guard);
   if (f == a.hi) {
-    float g = ((floor(a.lo)) + df_guard);
-    float ng = ((0.0 - g) + df_guard);
+    float g = ((floor(a.lo)) - df_guard);
+    float ng = ((0.0 - g) - df_guard);
     df_double r = df_two_sum(a.lo, ng);
     return r;
   }
-  float nf = ((0.0 - f) + df_guard);
+  float nf = ((0.0 - f) - df_guard);
   df_double t = df_two_sum(a.hi, nf);
   df_double s = df_add_f(t, a.lo);
   return s;
 }
 
-// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
 // Source: Dekker 1971 (trivial); JMP section 1
 // Bound: exact
 // Flops: 2
 df_double df_neg(df_double a) {
-  float h = ((-a.hi) + df_guard);
-  float l = ((-a.lo) + df_guard);
+  float h = ((-a.hi) - df_guard);
+  float l = ((-a.lo) - df_guard);
   return df_double(h, l);
 }
 
@@ -380,7 +447,7 @@ df_double df_neg(df_double a) {
 // Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 22
+// Flops: 23
 df_double df_sub(df_double a, df_double b) {
   df_double nb = df_neg(b);
   df_double z = df_add(a, nb);
@@ -388,41 +455,45 @@ df_double df_sub(df_double a, df_double b) {
 }
 
 // df_mul_f: a * b with b a plain float.
-// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
 // Bound: 1.5u^2 + 4u^3
-// Flops: 25
+// Flops: 28
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
-//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2).
-// Range: |ah|, |b| <= 8.3e34 (split).
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (the split is scaled).
 df_double df_mul_f(df_double a, float b) {
   df_double c = df_two_prod(a.hi, b);
-  float cl2 = ((a.lo * b) + df_guard);
+  float cl2 = ((a.lo * b) - df_guard);
   df_double t = df_fast_two_sum(c.hi, cl2);
-  float tl2 = ((t.lo + c.lo) + df_guard);
+  float tl2 = ((t.lo + c.lo) - df_guard);
   df_double z = df_fast_two_sum(t.hi, tl2);
-  return z;
+  df_double r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_div: a / b.
-// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 15u^2 + 56u^3
-// Flops: 33
+// Flops: 37
 // Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
-//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
 // The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
-// which adds about 2.5u^2 (tl carries the error). b == 0 gives NaN (the split of Inf), not Inf.
-// Range: |th| and |bh| <= 8.3e34 (split).
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (the split is scaled).
 df_double df_div(df_double a, df_double b) {
-  float th = ((a.hi / b.hi) + df_guard);
+  float th = ((a.hi / b.hi) - df_guard);
   df_double r = df_mul_f(b, th);
-  float pih = ((a.hi - r.hi) + df_guard);
-  float dl = ((a.lo - r.lo) + df_guard);
-  float d = ((pih + dl) + df_guard);
-  float tl = ((d / b.hi) + df_guard);
+  float pih = ((a.hi - r.hi) - df_guard);
+  float dl = ((a.lo - r.lo) - df_guard);
+  float d = ((pih + dl) - df_guard);
+  float tl = ((d / b.hi) - df_guard);
   df_double z = df_fast_two_sum(th, tl);
-  return z;
+  df_double q = df_finish(z, th);
+  return q;
 }
 
 // df_min: component-wise min(a, b) = b < a ? b : a (GLSL definition).
@@ -454,7 +525,7 @@ df_double df_clamp(df_double x, df_double lo, df_double hi) {
 // Algorithm: AccurateDWPlusDW, DWDivDW2, clamp, DWTimesDW1
 // Source: GLSL 4.60 (2019) section 8.3 (smoothstep); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 55u^2 (absolute; the result is in [0, 1])
-// Flops: 170
+// Flops: 184
 df_double df_smoothstep(df_double e0, df_double e1, df_double x) {
   df_double n = df_sub(x, e0);
   df_double d = df_sub(e1, e0);
@@ -474,9 +545,9 @@ df_double df_smoothstep(df_double e0, df_double e1, df_double x) {
 // Bound: exact
 // Flops: 5
 df_double df_floor(df_double a) {
-  float f = ((floor(a.hi)) + df_guard);
+  float f = ((floor(a.hi)) - df_guard);
   if (f == a.hi) {
-    float g = ((floor(a.lo)) + df_guard);
+    float g = ((floor(a.lo)) - df_guard);
     df_double r = df_fast_two_sum(a.hi, g);
     return r;
   }
@@ -490,7 +561,7 @@ df_double df_floor(df_double a) {
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
-// Flops: 84
+// Flops: 92
 df_double df_mod(df_double a, df_double b) {
   df_double q = df_div(a, b);
   df_double f = df_floor(q);
@@ -517,9 +588,9 @@ df_double df_step(df_double edge, df_double x) {
 // Bound: exact
 // Flops: 5
 df_double df_ceil(df_double a) {
-  float c = ((ceil(a.hi)) + df_guard);
+  float c = ((ceil(a.hi)) - df_guard);
   if (c == a.hi) {
-    float g = ((ceil(a.lo)) + df_guard);
+    float g = ((ceil(a.lo)) - df_guard);
     df_double r = df_fast_two_sum(a.hi, g);
     return r;
   }
@@ -544,7 +615,7 @@ df_double df_trunc(df_double a) {
 // Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 27
+// Flops: 28
 df_double df_modf(df_double a, out df_double i) {
   i = df_trunc(a);
   df_double r = df_sub(a, i);
@@ -555,7 +626,7 @@ df_double df_modf(df_double a, out df_double i) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 33
+// Flops: 35
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 df_double df_round(df_double a) {
   df_double f = df_floor(a);
@@ -573,19 +644,19 @@ df_double df_round(df_double a) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 39
+// Flops: 41
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 df_double df_round_even(df_double a) {
   df_double f = df_floor(a);
   df_double d = df_fract(a);
-  float h2 = ((f.hi * 0.5) + df_guard);
-  float fh2 = ((floor(h2)) + df_guard);
-  float ph = ((h2 - fh2) + df_guard);
-  float l2 = ((f.lo * 0.5) + df_guard);
-  float fl2 = ((floor(l2)) + df_guard);
-  float pl = ((l2 - fl2) + df_guard);
-  float parity = ((ph + pl) + df_guard);
+  float h2 = ((f.hi * 0.5) - df_guard);
+  float fh2 = ((floor(h2)) - df_guard);
+  float ph = ((h2 - fh2) - df_guard);
+  float l2 = ((f.lo * 0.5) - df_guard);
+  float fl2 = ((floor(l2)) - df_guard);
+  float pl = ((l2 - fl2) - df_guard);
+  float parity = ((ph + pl) - df_guard);
   bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
   bool tie = d.hi == 0.5 && d.lo == 0.0;
   if (above || (tie && parity == 0.5)) {
@@ -599,7 +670,7 @@ df_double df_round_even(df_double a) {
 // Algorithm: DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r) + 7u^2 * abs(a * b) (absolute, first order)
-// Flops: 44
+// Flops: 48
 df_double df_fma(df_double a, df_double b, df_double c) {
   df_double p = df_mul(a, b);
   df_double r = df_add(p, c);
@@ -618,14 +689,14 @@ df_double df_mix_bool(df_double x, df_double y, bool a) {
   return x;
 }
 
-// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
 // Source: Dekker 1971 (trivial); JMP section 1
 // Bound: exact
 // Flops: 2
 df_dvec3 df_neg(df_dvec3 a) {
-  vec3 h = ((-a.hi) + df_guard);
-  vec3 l = ((-a.lo) + df_guard);
+  vec3 h = ((-a.hi) - df_guard);
+  vec3 l = ((-a.lo) - df_guard);
   return df_dvec3(h, l);
 }
 
@@ -636,38 +707,41 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) + df_guard);
-  vec3 bb = ((s - a) + df_guard);
-  vec3 ab = ((s - bb) + df_guard);
-  vec3 da = ((a - ab) + df_guard);
-  vec3 db = ((b - bb) + df_guard);
-  vec3 e = ((da + db) + df_guard);
+  vec3 s = ((a + b) - df_guard);
+  vec3 bb = ((s - a) - df_guard);
+  vec3 ab = ((s - bb) - df_guard);
+  vec3 da = ((a - ab) - df_guard);
+  vec3 db = ((b - bb) - df_guard);
+  vec3 e = ((da + db) - df_guard);
   return df_dvec3(s, e);
 }
 
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
   df_dvec3 s = df_two_sum(a.hi, b.hi);
   df_dvec3 t = df_two_sum(a.lo, b.lo);
-  vec3 c = ((s.lo + t.hi) + df_guard);
+  vec3 c = ((s.lo + t.hi) - df_guard);
   df_dvec3 v = df_fast_two_sum(s.hi, c);
-  vec3 w = ((t.lo + v.lo) + df_guard);
+  vec3 w = ((t.lo + v.lo) - df_guard);
   df_dvec3 z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_dvec3 r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
 // Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 22
+// Flops: 23
 df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
   df_dvec3 nb = df_neg(b);
   df_dvec3 z = df_add(a, nb);
@@ -679,7 +753,7 @@ df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
 // Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.5 (reflect); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r_i) + 20u^2 * 2S abs(n_i) (absolute per component, first order)
-// Flops: 215 (W = 4)
+// Flops: 235 (W = 4)
 df_dvec3 df_reflect(df_dvec3 i, df_dvec3 n) {
   df_double d = df_dot(n, i);
   df_double d2 = df_add(d, d);
@@ -692,7 +766,7 @@ df_dvec3 df_reflect(df_dvec3 i, df_dvec3 n) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(a_j b_k) + abs(a_k b_j)) per component (absolute, first order)
-// Flops: 70
+// Flops: 77
 df_dvec3 df_cross(df_dvec3 a, df_dvec3 b) {
   df_dvec3 p = df_mul(df_dvec3(a.hi.yzx, a.lo.yzx), df_dvec3(b.hi.zxy, b.lo.zxy));
   df_dvec3 q = df_mul(df_dvec3(a.hi.zxy, a.lo.zxy), df_dvec3(b.hi.yzx, b.lo.yzx));
@@ -704,7 +778,7 @@ df_dvec3 df_cross(df_dvec3 a, df_dvec3 b) {
 // Algorithm: AccurateDWPlusDW, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mix); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r) + 10u^2 * abs(a * (y - x)) (absolute, first order)
-// Flops: 66
+// Flops: 71
 df_dvec3 df_mix(df_dvec3 x, df_dvec3 y, df_dvec3 a) {
   df_dvec3 d = df_sub(y, x);
   df_dvec3 p = df_mul(a, d);
@@ -717,7 +791,7 @@ df_dvec3 df_mix(df_dvec3 x, df_dvec3 y, df_dvec3 a) {
 // Algorithm: df_dot, then selection
 // Source: GLSL 4.60 (2019) section 8.5 (faceforward); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: exact
-// Flops: 158 (W = 4)
+// Flops: 173 (W = 4)
 df_dvec3 df_faceforward(df_dvec3 n, df_dvec3 i, df_dvec3 nref) {
   df_double d = df_dot(nref, i);
   if (d.hi < 0.0) {
@@ -733,7 +807,7 @@ df_dvec3 df_faceforward(df_dvec3 n, df_dvec3 i, df_dvec3 nref) {
 // Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW, SQRTDWtoDW (LLMPR Algorithm 8)
 // Source: GLSL 4.60 (2019) section 8.5 (refract); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 60u^2 * (abs(eta i_j) + (abs(eta d) + sqrt(k)) abs(n_j)) (absolute per component, first order, k not near 0)
-// Flops: 420 (W = 4)
+// Flops: 459 (W = 4)
 df_dvec3 df_refract(df_dvec3 i, df_dvec3 n, df_double eta) {
   df_double d = df_dot(n, i);
   df_double one = df_double(1.0, 0.0);
@@ -932,9 +1006,9 @@ bvec3 df_not_equal_components(df_dvec3 a, df_dvec3 b) {
 // Bound: exact
 // Flops: 3
 df_dvec3 df_abs(df_dvec3 a) {
-  vec3 s = ((sign(a.hi)) + df_guard);
-  vec3 h = ((abs(a.hi)) + df_guard);
-  vec3 l = ((a.lo * s) + df_guard);
+  vec3 s = ((sign(a.hi)) - df_guard);
+  vec3 h = ((abs(a.hi)) - df_guard);
+  vec3 l = ((a.lo * s) - df_guard);
   return df_dvec3(h, l);
 }
 
@@ -958,19 +1032,22 @@ df_dvec3 df_floor(df_dvec3 a) {
 // Bound: exact
 // Flops: 1
 df_dvec3 df_sign(df_dvec3 a) {
-  vec3 s = ((sign(a.hi)) + df_guard);
+  vec3 s = ((sign(a.hi)) - df_guard);
   return df_dvec3(s, vec3(0.0));
 }
 
 // df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
 // double-word number this is hi itself, but the addition also rounds unnormalized pairs).
-// Algorithm: RN(hi + lo)
-// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
+// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
+// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
 // Bound: 0.5 ulp (correctly rounded to float)
-// Flops: 1
+// Flops: 2
 vec3 df_to_float(df_dvec3 a) {
-  vec3 f = ((a.hi + a.lo) + df_guard);
-  return f;
+  vec3 f = ((a.hi + a.lo) - df_guard);
+  df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
+  return r.hi;
 }
 
 // df_distance: length(a - b). The difference of exact inputs is one AccurateDWPlusDW per
@@ -978,7 +1055,7 @@ vec3 df_to_float(df_dvec3 a) {
 // Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_length
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 12.625u^2
-// Flops: 205 (W = 4)
+// Flops: 223 (W = 4)
 df_double df_distance(df_dvec3 a, df_dvec3 b) {
   df_dvec3 d = df_sub(a, b);
   df_double r = df_length(d);
@@ -989,7 +1066,7 @@ df_double df_distance(df_dvec3 a, df_dvec3 b) {
 // Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), then DWDivDW2 (JMP Algorithm 17)
 // Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 18.125u^2
-// Flops: 60
+// Flops: 66
 df_double df_inversesqrt(df_double a) {
   df_double s = df_sqrt(a);
   df_double r = df_div(df_double(float(1.0), float(0.0)), s);
@@ -998,13 +1075,16 @@ df_double df_inversesqrt(df_double a) {
 
 // df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
 // double-word number this is hi itself, but the addition also rounds unnormalized pairs).
-// Algorithm: RN(hi + lo)
-// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
+// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
+// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
 // Bound: 0.5 ulp (correctly rounded to float)
-// Flops: 1
+// Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) + df_guard);
-  return f;
+  float f = ((a.hi + a.lo) - df_guard);
+  df_double r = df_finish(df_double(f, float(0.0)), a.hi);
+  return r.hi;
 }
 
 df_dvec3 df_splat_dvec3(df_double s) {

@@ -2,19 +2,34 @@
 precision highp float;
 precision highp int;
 
-// doublet float-float runtime: 19 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 21 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
 df_double df_split(float a) {
+  precise float aa = (abs(a));
+  if (aa > 1.0e34) {
+    precise float as = (a * 1.220703125e-4);
+    precise float gs = (as * 4097.0);
+    precise float ds = (as - gs);
+    precise float hs = (gs + ds);
+    precise float hb = (hs * 8192.0);
+    precise float lb = (a - hb);
+    return df_double(hb, lb);
+  }
   precise float g = (a * 4097.0);
   precise float d = (a - g);
   precise float hi = (g + d);
@@ -26,11 +41,12 @@ df_double df_split(float a) {
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   precise float p = (a * b);
@@ -61,15 +77,32 @@ df_double df_fast_two_sum(float a, float b) {
   return df_double(s, e);
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  precise float az = (abs(z.hi));
+  if (az > 0.0 && az <= 3.40282347e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
   precise float tl = (a.hi * b.lo);
@@ -77,34 +110,40 @@ df_double df_mul(df_double a, df_double b) {
   precise float cl2 = (th + tl);
   precise float cl3 = (c.lo + cl2);
   df_double z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_double r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_dvec2(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+// (width 2: the width-1 df_split applied to each component)
 df_dvec2 df_split(vec2 a) {
-  precise vec2 g = (a * 4097.0);
-  precise vec2 d = (a - g);
-  precise vec2 hi = (g + d);
-  precise vec2 lo = (a - hi);
-  return df_dvec2(hi, lo);
+  df_double r0 = df_split(a.x);
+  df_double r1 = df_split(a.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_dvec2 df_two_prod(vec2 a, vec2 b) {
   precise vec2 p = (a * b);
@@ -135,15 +174,31 @@ df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
   return df_dvec2(s, e);
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
   df_dvec2 c = df_two_prod(a.hi, b.hi);
   precise vec2 tl = (a.hi * b.lo);
@@ -151,7 +206,8 @@ df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
   precise vec2 cl2 = (th + tl);
   precise vec2 cl3 = (c.lo + cl2);
   df_dvec2 z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_dvec2 r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
@@ -171,13 +227,15 @@ df_double df_two_sum(float a, float b) {
 }
 
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_double df_add(df_double a, df_double b) {
   df_double s = df_two_sum(a.hi, b.hi);
   df_double t = df_two_sum(a.lo, b.lo);
@@ -185,14 +243,15 @@ df_double df_add(df_double a, df_double b) {
   df_double v = df_fast_two_sum(s.hi, c);
   precise float w = (t.lo + v.lo);
   df_double z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_double r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_dot: a.x*b.x + a.y*b.y.
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 10u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 68
+// Flops: 75
 df_double df_dot(df_dvec2 a, df_dvec2 b) {
   df_dvec2 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -201,11 +260,12 @@ df_double df_dot(df_dvec2 a, df_dvec2 b) {
   return z;
 }
 
-// df_sqrt: sqrt(a) for a >= 0; sqrt(0) = 0 (not NaN). a < 0 is undefined, like GLSL sqrt().
-// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square
+// df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN
+// (IEEE 754-2008 section 5.4.1; GLSL leaves a < 0 undefined, the drivers give NaN).
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
 // Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
 // Bound: 25/8 u^2
-// Flops: 27
+// Flops: 29
 // Steps (LLMPR Algorithm 8, our no-FMA form):
 //   sh   = RN(sqrt(ah))
 //   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
@@ -218,9 +278,9 @@ df_double df_dot(df_dvec2 a, df_dvec2 b) {
 // So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
 // correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
 // few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
-// not proved). Zero: 2 sh is clamped below by 1e-30, so a = 0 gives rho2 = 0, sl = 0/1e-30 = 0;
-// for any float a > 0, 2 sh >= 2^-74 > 1e-30, so the clamp never changes a nonzero result.
-// Range: a < FLT_MAX; Inf gives NaN (split of Inf).
+// not proved). Special values end in df_finish(z, sh): a = +-0 gives sl = 0/0 = NaN and so
+// (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
+// Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
   precise float sh = (sqrt(a.hi));
   df_double sq = df_two_prod(sh, sh);
@@ -228,10 +288,10 @@ df_double df_sqrt(df_double a) {
   precise float rho1 = (r0 - sq.lo);
   precise float rho2 = (a.lo + rho1);
   precise float sh2 = (sh * 2.0);
-  precise float den = (max(sh2, 1.0e-30));
-  precise float sl = (rho2 / den);
+  precise float sl = (rho2 / sh2);
   df_double z = df_fast_two_sum(sh, sl);
-  return z;
+  df_double r = df_finish(z, sh);
+  return r;
 }
 
 // df_length: sqrt(dot(a, a)), W = 2..4. No cancellation in dot(a, a), so its error is
@@ -240,7 +300,7 @@ df_double df_sqrt(df_double a) {
 // Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 9.625u^2
-// Flops: 183 (W = 4; 95 for W = 2, 139 for W = 3)
+// Flops: 200 (W = 4; 104 for W = 2, 152 for W = 3)
 // Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
 df_double df_length(df_dvec2 a) {
   df_double d = df_dot(a, a);
@@ -249,32 +309,35 @@ df_double df_length(df_dvec2 a) {
 }
 
 // df_mul_f: a * b with b a plain float.
-// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
 // Bound: 1.5u^2 + 4u^3
-// Flops: 25
+// Flops: 28
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
-//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2).
-// Range: |ah|, |b| <= 8.3e34 (split).
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (the split is scaled).
 df_double df_mul_f(df_double a, float b) {
   df_double c = df_two_prod(a.hi, b);
   precise float cl2 = (a.lo * b);
   df_double t = df_fast_two_sum(c.hi, cl2);
   precise float tl2 = (t.lo + c.lo);
   df_double z = df_fast_two_sum(t.hi, tl2);
-  return z;
+  df_double r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_div: a / b.
-// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 15u^2 + 56u^3
-// Flops: 33
+// Flops: 37
 // Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
-//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
 // The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
-// which adds about 2.5u^2 (tl carries the error). b == 0 gives NaN (the split of Inf), not Inf.
-// Range: |th| and |bh| <= 8.3e34 (split).
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (the split is scaled).
 df_double df_div(df_double a, df_double b) {
   precise float th = (a.hi / b.hi);
   df_double r = df_mul_f(b, th);
@@ -283,10 +346,11 @@ df_double df_div(df_double a, df_double b) {
   precise float d = (pih + dl);
   precise float tl = (d / b.hi);
   df_double z = df_fast_two_sum(th, tl);
-  return z;
+  df_double q = df_finish(z, th);
+  return q;
 }
 
-// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
 // Source: Dekker 1971 (trivial); JMP section 1
 // Bound: exact
@@ -314,13 +378,15 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 }
 
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
   df_dvec2 s = df_two_sum(a.hi, b.hi);
   df_dvec2 t = df_two_sum(a.lo, b.lo);
@@ -328,18 +394,22 @@ df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
   df_dvec2 v = df_fast_two_sum(s.hi, c);
   precise vec2 w = (t.lo + v.lo);
   df_dvec2 z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_dvec2 r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
 // double-word number this is hi itself, but the addition also rounds unnormalized pairs).
-// Algorithm: RN(hi + lo)
-// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
+// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
+// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
 // Bound: 0.5 ulp (correctly rounded to float)
-// Flops: 1
+// Flops: 2
 vec2 df_to_float(df_dvec2 a) {
   precise vec2 f = (a.hi + a.lo);
-  return f;
+  df_dvec2 r = df_finish(df_dvec2(f, vec2(0.0)), a.hi);
+  return r.hi;
 }
 
 df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {

@@ -27,37 +27,74 @@ struct df_dmat4x3 {
   mat4x3 hi;
   mat4x3 lo;
 };
-// doublet float-float runtime: 29 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 33 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+df_double df_split(float a) {
+  precise float aa = (abs(a));
+  if (aa > 1.0e34) {
+    precise float as = (a * 1.220703125e-4);
+    precise float gs = (as * 4097.0);
+    precise float ds = (as - gs);
+    precise float hs = (gs + ds);
+    precise float hb = (hs * 8192.0);
+    precise float lb = (a - hb);
+    return df_double(hb, lb);
+  }
+  precise float g = (a * 4097.0);
+  precise float d = (a - g);
+  precise float hi = (g + d);
+  precise float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
+// Bound: exact
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+// (width 3: the width-1 df_split applied to each component)
 df_dvec3 df_split(vec3 a) {
-  precise vec3 g = (a * 4097.0);
-  precise vec3 d = (a - g);
-  precise vec3 hi = (g + d);
-  precise vec3 lo = (a - hi);
-  return df_dvec3(hi, lo);
+  df_double r0 = df_split(a.x);
+  df_double r1 = df_split(a.y);
+  df_double r2 = df_split(a.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
   precise vec3 p = (a * b);
@@ -88,15 +125,48 @@ df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
   return df_dvec3(s, e);
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  precise float az = (abs(z.hi));
+  if (az > 0.0 && az <= 3.40282347e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 3: the width-1 df_finish applied to each component)
+df_dvec3 df_finish(df_dvec3 z, vec3 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  df_double r2 = df_finish(df_double(z.hi.z, z.lo.z), f.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b.hi);
   precise vec3 tl = (a.hi * b.lo);
@@ -104,7 +174,8 @@ df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
   precise vec3 cl2 = (th + tl);
   precise vec3 cl3 = (c.lo + cl2);
   df_dvec3 z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_dvec3 r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
@@ -138,13 +209,15 @@ df_double df_fast_two_sum(float a, float b) {
 }
 
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_double df_add(df_double a, df_double b) {
   df_double s = df_two_sum(a.hi, b.hi);
   df_double t = df_two_sum(a.lo, b.lo);
@@ -152,14 +225,15 @@ df_double df_add(df_double a, df_double b) {
   df_double v = df_fast_two_sum(s.hi, c);
   precise float w = (t.lo + v.lo);
   df_double z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_double r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_dot: (a.x*b.x + a.y*b.y) + a.z*b.z.
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 112
+// Flops: 123
 df_double df_dot(df_dvec3 a, df_dvec3 b) {
   df_dvec3 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -172,29 +246,34 @@ df_double df_dot(df_dvec3 a, df_dvec3 b) {
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_dvec2(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+// (width 2: the width-1 df_split applied to each component)
 df_dvec2 df_split(vec2 a) {
-  precise vec2 g = (a * 4097.0);
-  precise vec2 d = (a - g);
-  precise vec2 hi = (g + d);
-  precise vec2 lo = (a - hi);
-  return df_dvec2(hi, lo);
+  df_double r0 = df_split(a.x);
+  df_double r1 = df_split(a.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_dvec2 df_two_prod(vec2 a, vec2 b) {
   precise vec2 p = (a * b);
@@ -225,15 +304,31 @@ df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
   return df_dvec2(s, e);
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
   df_dvec2 c = df_two_prod(a.hi, b.hi);
   precise vec2 tl = (a.hi * b.lo);
@@ -241,14 +336,15 @@ df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
   precise vec2 cl2 = (th + tl);
   precise vec2 cl3 = (c.lo + cl2);
   df_dvec2 z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_dvec2 r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_dot: a.x*b.x + a.y*b.y.
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 10u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 68
+// Flops: 75
 df_double df_dot(df_dvec2 a, df_dvec2 b) {
   df_dvec2 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -259,29 +355,36 @@ df_double df_dot(df_dvec2 a, df_dvec2 b) {
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_dvec4(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+// (width 4: the width-1 df_split applied to each component)
 df_dvec4 df_split(vec4 a) {
-  precise vec4 g = (a * 4097.0);
-  precise vec4 d = (a - g);
-  precise vec4 hi = (g + d);
-  precise vec4 lo = (a - hi);
-  return df_dvec4(hi, lo);
+  df_double r0 = df_split(a.x);
+  df_double r1 = df_split(a.y);
+  df_double r2 = df_split(a.z);
+  df_double r3 = df_split(a.w);
+  return df_dvec4(vec4(r0.hi, r1.hi, r2.hi, r3.hi), vec4(r0.lo, r1.lo, r2.lo, r3.lo));
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_dvec4 df_two_prod(vec4 a, vec4 b) {
   precise vec4 p = (a * b);
@@ -312,15 +415,33 @@ df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
   return df_dvec4(s, e);
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 4: the width-1 df_finish applied to each component)
+df_dvec4 df_finish(df_dvec4 z, vec4 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  df_double r2 = df_finish(df_double(z.hi.z, z.lo.z), f.z);
+  df_double r3 = df_finish(df_double(z.hi.w, z.lo.w), f.w);
+  return df_dvec4(vec4(r0.hi, r1.hi, r2.hi, r3.hi), vec4(r0.lo, r1.lo, r2.lo, r3.lo));
+}
+
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
   df_dvec4 c = df_two_prod(a.hi, b.hi);
   precise vec4 tl = (a.hi * b.lo);
@@ -328,14 +449,15 @@ df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
   precise vec4 cl2 = (th + tl);
   precise vec4 cl3 = (c.lo + cl2);
   df_dvec4 z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_dvec4 r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_dot: (a.x*b.x + a.y*b.y) + (a.z*b.z + a.w*b.w), pairwise.
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 3 AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 156
+// Flops: 171
 df_double df_dot(df_dvec4 a, df_dvec4 b) {
   df_dvec4 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -365,13 +487,15 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 }
 
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
   df_dvec3 s = df_two_sum(a.hi, b.hi);
   df_dvec3 t = df_two_sum(a.lo, b.lo);
@@ -379,10 +503,11 @@ df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
   df_dvec3 v = df_fast_two_sum(s.hi, c);
   precise vec3 w = (t.lo + v.lo);
   df_dvec3 z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_dvec3 r = df_finish(z, s.hi);
+  return r;
 }
 
-// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
 // Source: Dekker 1971 (trivial); JMP section 1
 // Bound: exact
@@ -410,13 +535,15 @@ df_dvec4 df_two_sum(vec4 a, vec4 b) {
 }
 
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_dvec4 df_add(df_dvec4 a, df_dvec4 b) {
   df_dvec4 s = df_two_sum(a.hi, b.hi);
   df_dvec4 t = df_two_sum(a.lo, b.lo);
@@ -424,45 +551,31 @@ df_dvec4 df_add(df_dvec4 a, df_dvec4 b) {
   df_dvec4 v = df_fast_two_sum(s.hi, c);
   precise vec4 w = (t.lo + v.lo);
   df_dvec4 z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_dvec4 r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
 // Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 22
+// Flops: 23
 df_dvec4 df_sub(df_dvec4 a, df_dvec4 b) {
   df_dvec4 nb = df_neg(b);
   df_dvec4 z = df_add(a, nb);
   return z;
 }
 
-// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
-// Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
-df_double df_split(float a) {
-  precise float g = (a * 4097.0);
-  precise float d = (a - g);
-  precise float hi = (g + d);
-  precise float lo = (a - hi);
-  return df_double(hi, lo);
-}
-
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   precise float p = (a * b);
@@ -480,14 +593,15 @@ df_double df_two_prod(float a, float b) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
   precise float tl = (a.hi * b.lo);
@@ -495,10 +609,11 @@ df_double df_mul(df_double a, df_double b) {
   precise float cl2 = (th + tl);
   precise float cl3 = (c.lo + cl2);
   df_double z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_double r = df_finish(z, c.hi);
+  return r;
 }
 
-// df_neg: -a, exact. Under the Uniform guard a zero result is +0 (x + 0 turns -0 into +0).
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
 // Source: Dekker 1971 (trivial); JMP section 1
 // Bound: exact
@@ -513,7 +628,7 @@ df_double df_neg(df_double a) {
 // Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 22
+// Flops: 23
 df_double df_sub(df_double a, df_double b) {
   df_double nb = df_neg(b);
   df_double z = df_add(a, nb);

@@ -6,7 +6,7 @@ struct df_dmat2 {
   mat2 hi;
   mat2 lo;
 };
-// doublet float-float runtime: 17 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 19 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -18,12 +18,12 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) + df_guard);
-  float bb = ((s - a) + df_guard);
-  float ab = ((s - bb) + df_guard);
-  float da = ((a - ab) + df_guard);
-  float db = ((b - bb) + df_guard);
-  float e = ((da + db) + df_guard);
+  float s = ((a + b) - df_guard);
+  float bb = ((s - a) - df_guard);
+  float ab = ((s - bb) - df_guard);
+  float da = ((a - ab) - df_guard);
+  float db = ((b - bb) - df_guard);
+  float e = ((da + db) - df_guard);
   return df_double(s, e);
 }
 
@@ -35,28 +35,47 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) + df_guard);
-  float z = ((s - a) + df_guard);
-  float e = ((b - z) + df_guard);
+  float s = ((a + b) - df_guard);
+  float z = ((s - a) - df_guard);
+  float e = ((b - z) - df_guard);
   return df_double(s, e);
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  float az = ((abs(z.hi)) - df_guard);
+  if (az > 0.0 && az <= 3.40282347e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_double df_add(df_double a, df_double b) {
   df_double s = df_two_sum(a.hi, b.hi);
   df_double t = df_two_sum(a.lo, b.lo);
-  float c = ((s.lo + t.hi) + df_guard);
+  float c = ((s.lo + t.hi) - df_guard);
   df_double v = df_fast_two_sum(s.hi, c);
-  float w = ((t.lo + v.lo) + df_guard);
+  float w = ((t.lo + v.lo) - df_guard);
   df_double z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_double r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
@@ -66,12 +85,12 @@ df_double df_add(df_double a, df_double b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) + df_guard);
-  vec2 bb = ((s - a) + df_guard);
-  vec2 ab = ((s - bb) + df_guard);
-  vec2 da = ((a - ab) + df_guard);
-  vec2 db = ((b - bb) + df_guard);
-  vec2 e = ((da + db) + df_guard);
+  vec2 s = ((a + b) - df_guard);
+  vec2 bb = ((s - a) - df_guard);
+  vec2 ab = ((s - bb) - df_guard);
+  vec2 da = ((a - ab) - df_guard);
+  vec2 db = ((b - bb) - df_guard);
+  vec2 e = ((da + db) - df_guard);
   return df_dvec2(s, e);
 }
 
@@ -83,28 +102,46 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) + df_guard);
-  vec2 z = ((s - a) + df_guard);
-  vec2 e = ((b - z) + df_guard);
+  vec2 s = ((a + b) - df_guard);
+  vec2 z = ((s - a) - df_guard);
+  vec2 e = ((b - z) - df_guard);
   return df_dvec2(s, e);
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
 // df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6)
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2 + 13u^3
-// Flops: 20
+// Flops: 21
 // Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w).
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
 // The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
 df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
   df_dvec2 s = df_two_sum(a.hi, b.hi);
   df_dvec2 t = df_two_sum(a.lo, b.lo);
-  vec2 c = ((s.lo + t.hi) + df_guard);
+  vec2 c = ((s.lo + t.hi) - df_guard);
   df_dvec2 v = df_fast_two_sum(s.hi, c);
-  vec2 w = ((t.lo + v.lo) + df_guard);
+  vec2 w = ((t.lo + v.lo) - df_guard);
   df_dvec2 z = df_fast_two_sum(v.hi, w);
-  return z;
+  df_dvec2 r = df_finish(z, s.hi);
+  return r;
 }
 
 // df_from_int: exact for every 32-bit int i.
@@ -119,25 +156,40 @@ df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
 df_double df_from_int(int i) {
   int q = i / 65536;
   int r = i - q * 65536;
-  float qf = ((float(q) * 65536.0) + df_guard);
-  float rf = ((float(r)) + df_guard);
+  float qf = ((float(q) * 65536.0) - df_guard);
+  float rf = ((float(r)) - df_guard);
   df_double z = df_two_sum(qf, rf);
   return z;
 }
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
 df_double df_split(float a) {
-  float g = ((a * 4097.0) + df_guard);
-  float d = ((a - g) + df_guard);
-  float hi = ((g + d) + df_guard);
-  float lo = ((a - hi) + df_guard);
+  float aa = ((abs(a)) - df_guard);
+  if (aa > 1.0e34) {
+    float as = ((a * 1.220703125e-4) - df_guard);
+    float gs = ((as * 4097.0) - df_guard);
+    float ds = ((as - gs) - df_guard);
+    float hs = ((gs + ds) - df_guard);
+    float hb = ((hs * 8192.0) - df_guard);
+    float lb = ((a - hb) - df_guard);
+    return df_double(hb, lb);
+  }
+  float g = ((a * 4097.0) - df_guard);
+  float d = ((a - g) - df_guard);
+  float hi = ((g + d) - df_guard);
+  float lo = ((a - hi) - df_guard);
   return df_double(hi, lo);
 }
 
@@ -145,111 +197,121 @@ df_double df_split(float a) {
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) + df_guard);
+  float p = ((a * b) - df_guard);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
-  float hh = ((sa.hi * sb.hi) + df_guard);
-  float hl = ((sa.hi * sb.lo) + df_guard);
-  float lh = ((sa.lo * sb.hi) + df_guard);
-  float ll = ((sa.lo * sb.lo) + df_guard);
-  float t1 = ((hh - p) + df_guard);
-  float t2 = ((t1 + hl) + df_guard);
-  float t3 = ((t2 + lh) + df_guard);
-  float e = ((t3 + ll) + df_guard);
+  float hh = ((sa.hi * sb.hi) - df_guard);
+  float hl = ((sa.hi * sb.lo) - df_guard);
+  float lh = ((sa.lo * sb.hi) - df_guard);
+  float ll = ((sa.lo * sb.lo) - df_guard);
+  float t1 = ((hh - p) - df_guard);
+  float t2 = ((t1 + hl) - df_guard);
+  float t3 = ((t2 + lh) - df_guard);
+  float e = ((t3 + ll) - df_guard);
   return df_double(p, e);
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
-  float tl = ((a.hi * b.lo) + df_guard);
-  float th = ((a.lo * b.hi) + df_guard);
-  float cl2 = ((th + tl) + df_guard);
-  float cl3 = ((c.lo + cl2) + df_guard);
+  float tl = ((a.hi * b.lo) - df_guard);
+  float th = ((a.lo * b.hi) - df_guard);
+  float cl2 = ((th + tl) - df_guard);
+  float cl3 = ((c.lo + cl2) - df_guard);
   df_double z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_double r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_dvec2(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+// (width 2: the width-1 df_split applied to each component)
 df_dvec2 df_split(vec2 a) {
-  vec2 g = ((a * 4097.0) + df_guard);
-  vec2 d = ((a - g) + df_guard);
-  vec2 hi = ((g + d) + df_guard);
-  vec2 lo = ((a - hi) + df_guard);
-  return df_dvec2(hi, lo);
+  df_double r0 = df_split(a.x);
+  df_double r1 = df_split(a.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 17
+// Flops: 19
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: needs |a|, |b| <= 8.3e34 (split) and |a*b| <= FLT_MAX; e underflows below ~2^-102.
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_dvec2 df_two_prod(vec2 a, vec2 b) {
-  vec2 p = ((a * b) + df_guard);
+  vec2 p = ((a * b) - df_guard);
   df_dvec2 sa = df_split(a);
   df_dvec2 sb = df_split(b);
-  vec2 hh = ((sa.hi * sb.hi) + df_guard);
-  vec2 hl = ((sa.hi * sb.lo) + df_guard);
-  vec2 lh = ((sa.lo * sb.hi) + df_guard);
-  vec2 ll = ((sa.lo * sb.lo) + df_guard);
-  vec2 t1 = ((hh - p) + df_guard);
-  vec2 t2 = ((t1 + hl) + df_guard);
-  vec2 t3 = ((t2 + lh) + df_guard);
-  vec2 e = ((t3 + ll) + df_guard);
+  vec2 hh = ((sa.hi * sb.hi) - df_guard);
+  vec2 hl = ((sa.hi * sb.lo) - df_guard);
+  vec2 lh = ((sa.lo * sb.hi) - df_guard);
+  vec2 ll = ((sa.lo * sb.lo) - df_guard);
+  vec2 t1 = ((hh - p) - df_guard);
+  vec2 t2 = ((t1 + hl) - df_guard);
+  vec2 t3 = ((t2 + lh) - df_guard);
+  vec2 e = ((t3 + ll) - df_guard);
   return df_dvec2(p, e);
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split, C = 4097)
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 24
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: |ah|, |bh| <= 8.3e34 (the split multiplies by 4097); beyond that the result is NaN.
+// Range: any finite operands whose product is within float range (the split is scaled).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
   df_dvec2 c = df_two_prod(a.hi, b.hi);
-  vec2 tl = ((a.hi * b.lo) + df_guard);
-  vec2 th = ((a.lo * b.hi) + df_guard);
-  vec2 cl2 = ((th + tl) + df_guard);
-  vec2 cl3 = ((c.lo + cl2) + df_guard);
+  vec2 tl = ((a.hi * b.lo) - df_guard);
+  vec2 th = ((a.lo * b.hi) - df_guard);
+  vec2 cl2 = ((th + tl) - df_guard);
+  vec2 cl3 = ((c.lo + cl2) - df_guard);
   df_dvec2 z = df_fast_two_sum(c.hi, cl3);
-  return z;
+  df_dvec2 r = df_finish(z, c.hi);
+  return r;
 }
 
 // df_dot: a.x*b.x + a.y*b.y.
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 10u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 68
+// Flops: 75
 df_double df_dot(df_dvec2 a, df_dvec2 b) {
   df_dvec2 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -271,22 +333,22 @@ df_double df_dot(df_dvec2 a, df_dvec2 b) {
 // Bound: exact
 // Flops: 15 (float, including sign/abs/floor/step; plus 3 conversions and 2 integer adds)
 int df_to_int(df_double a) {
-  float s = ((sign(a.hi)) + df_guard);
-  float ah = ((abs(a.hi)) + df_guard);
-  float fh = ((floor(ah)) + df_guard);
-  float t = ((s * fh) + df_guard);
-  float d = ((a.hi - t) + df_guard);
-  float ad = ((abs(d)) + df_guard);
-  float m = ((step(ad, float(0.0))) + df_guard);
-  float sl = ((s * a.lo) + df_guard);
-  float fl = ((floor(sl)) + df_guard);
-  float adj0 = ((s * fl) + df_guard);
-  float adj = ((adj0 * m) + df_guard);
-  float th = ((t * 0.5) + df_guard);
+  float s = ((sign(a.hi)) - df_guard);
+  float ah = ((abs(a.hi)) - df_guard);
+  float fh = ((floor(ah)) - df_guard);
+  float t = ((s * fh) - df_guard);
+  float d = ((a.hi - t) - df_guard);
+  float ad = ((abs(d)) - df_guard);
+  float m = ((step(ad, float(0.0))) - df_guard);
+  float sl = ((s * a.lo) - df_guard);
+  float fl = ((floor(sl)) - df_guard);
+  float adj0 = ((s * fl) - df_guard);
+  float adj = ((adj0 * m) - df_guard);
+  float th = ((t * 0.5) - df_guard);
   int h = int(th);
-  float h2 = ((float(h) * 2.0) + df_guard);
-  float e = ((t - h2) + df_guard);
-  float ea = ((e + adj) + df_guard);
+  float h2 = ((float(h) * 2.0) - df_guard);
+  float e = ((t - h2) - df_guard);
+  float ea = ((e + adj) - df_guard);
   int k = int(ea);
   int hk = h + k;
   int z = hk + h;
@@ -304,13 +366,16 @@ bool df_gt(df_double a, df_double b) {
 
 // df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
 // double-word number this is hi itself, but the addition also rounds unnormalized pairs).
-// Algorithm: RN(hi + lo)
-// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo))
+// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
+// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
+// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
 // Bound: 0.5 ulp (correctly rounded to float)
-// Flops: 1
+// Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) + df_guard);
-  return f;
+  float f = ((a.hi + a.lo) - df_guard);
+  df_double r = df_finish(df_double(f, float(0.0)), a.hi);
+  return r.hi;
 }
 
 df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
