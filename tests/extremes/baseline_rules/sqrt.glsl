@@ -1,0 +1,57 @@
+// rules/sqrt.glsl -- float-float square root.
+//
+// Sources:
+//   [LLMPR] V. Lefevre, N. Louvet, J.-M. Muller, J. Picot, L. Rideau, "Accurate calculation of
+//           Euclidean norms using double-word arithmetic", ACM TOMS 49(1), article 1, 2023,
+//           Algorithm 8 (SQRTDWtoDW) and its error bound 25/8 u^2.
+//   [Dekker] T. J. Dekker, Numerische Mathematik 18, 1971 (mul12, used for the exact square).
+//   [Karp-Markstein] A. H. Karp, P. Markstein, "High-precision division and square root",
+//           ACM TOMS 23(4), 1997 (the same one-Newton-step idea).
+// Notation: u = 2^-24.
+
+// df_sqrt: sqrt(a) for a >= 0; sqrt(0) = 0 (not NaN). a < 0 is undefined, like GLSL sqrt().
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
+// Bound: 25/8 u^2
+// Flops: 27
+// Steps (LLMPR Algorithm 8, our no-FMA form):
+//   sh   = RN(sqrt(ah))
+//   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
+//   r0   = RN(ah - p)                exact: ah/2 <= p <= 2ah (Sterbenz)
+//   rho1 = RN(r0 - e)                == RN(ah - sh^2), the value fma(-sh, sh, ah) returns
+//   rho2 = RN(al + rho1)
+//   sl   = RN(rho2 / (2 sh))
+//   (zh,zl) = Fast2Sum(sh, sl)
+// sh is guarded too: Mesa rewrites sqrt(x)*sqrt(x) to |x|, which would zero the residual.
+// So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
+// correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
+// few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
+// not proved). Zero: 2 sh is clamped below by 1e-30, so a = 0 gives rho2 = 0, sl = 0/1e-30 = 0;
+// for any float a > 0, 2 sh >= 2^-74 > 1e-30, so the clamp never changes a nonzero result.
+// Range: a < FLT_MAX; Inf gives NaN (split of Inf).
+// @widths 1 2 3 4
+$DF df_sqrt($DF a) {
+  $PRECISE $F sh = $G(sqrt(a.hi));
+  $DF sq = df_two_prod(sh, sh);
+  $PRECISE $F r0 = $G(a.hi - sq.hi);
+  $PRECISE $F rho1 = $G(r0 - sq.lo);
+  $PRECISE $F rho2 = $G(a.lo + rho1);
+  $PRECISE $F sh2 = $G(sh * 2.0);
+  $PRECISE $F den = $G(max(sh2, 1.0e-30));
+  $PRECISE $F sl = $G(rho2 / den);
+  $DF z = df_fast_two_sum(sh, sl);
+  return z;
+}
+
+// df_inversesqrt: 1 / sqrt(a): SQRTDWtoDW, then DWDivDW2 of 1 by the root.
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), then DWDivDW2 (JMP Algorithm 17)
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 18.125u^2
+// Flops: 60
+// @widths 1 2 3 4
+// @uses df_sqrt:W df_div:W
+$DF df_inversesqrt($DF a) {
+  $DF s = df_sqrt(a);
+  $DF r = df_div($DF($F(1.0), $F(0.0)), s);
+  return r;
+}

@@ -1,0 +1,479 @@
+// Special values and range extremes against native fp64 (docs/extremes.md, one test per row).
+//
+// Each row is a double expression in x and y. The same shader runs natively in fp64 on lavapipe
+// and, lowered by doublet, on lavapipe and on Mesa GLES (llvmpipe), in compute and in the vertex
+// and fragment stages; the interface is float only (x = hi + lo in, float(r) and the rest out),
+// so both see the same inputs and the same driver. The lowered result must have native's class
+// (NaN, +-Inf, +-0 with its sign, finite with its sign) and, where finite, native's value to
+// 2^-44 (the rules' bounds). Rows where float-float cannot match native say how it differs
+// (Expect::Saturates, Expect::Tiny) and the test checks that documented behaviour instead.
+//
+// Sabotage: the same rows run with the previous rule text (tests/extremes/baseline_rules/, the
+// rules before special values were handled) spliced into the lowered shader, and with the
+// Uniform guard adding its zero instead of subtracting it; the rows that those fixed must fail.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+#include "doublet/split.hpp"
+#include "rules/rule_library.hpp"
+#include "runner/runner.hpp"
+
+namespace {
+
+using doublet::runner::Backend;
+using doublet::runner::GraphicsStage;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+enum class Expect {
+  Match,      // same class and sign; finite values within 2^-44 relative
+  Saturates,  // native is finite beyond float range; float-float gives +-Inf of native's sign
+  Tiny,       // below ~2^-102: lo subnormal (compute: absolute error <= 2^-146) or flushed
+              // (vertex/fragment: float precision, 2^-126 absolute)
+  TinyOperand,  // an operand below ~2^-114: compute matches (2^-44); vertex/fragment flush the
+                // split's low half, so the product keeps only ~12 bits (2^-11 relative)
+};
+
+enum class Sabotage { None, BaselineRules, AddGuard };
+
+struct Row {
+  const char* name;
+  const char* expr;  // a double expression in x and y
+  std::vector<std::pair<double, double>> inputs;
+  Expect expect = Expect::Match;
+  // Which sabotage must turn the row red (where it did not already fail before the fix).
+  bool red_with_baseline = false;
+  bool red_with_add_guard = false;
+};
+
+const std::vector<Row>& rows() {
+  static const std::vector<Row> r = {
+      {"add_inf", "x + y", {{1.5, kInf}, {-2.5, kInf}, {1e30, -kInf}, {kInf, 3.0}, {-kInf, -7.0}}, Expect::Match, true},
+      {"add_inf_minus_inf", "x + y", {{kInf, -kInf}, {-kInf, kInf}}},
+      {"sub_inf_inf", "x - y", {{kInf, kInf}, {-kInf, -kInf}, {kInf, -kInf}}, Expect::Match, true},
+      {"add_nan", "x + y", {{kNaN, 1.0}, {1.0, kNaN}, {kNaN, kInf}}},
+      {"mul_overflow", "x * y", {{1e20, 1e20}, {-1e20, 1e20}, {3e38, 2.0}, {1e30, -1e10}}, Expect::Match, true},
+      {"mul_zero_inf", "x * y", {{0.0, kInf}, {-0.0, kInf}, {kInf, 0.0}}},
+      {"mul_inf", "x * y", {{kInf, 2.5}, {-3.0, kInf}, {kInf, -kInf}}, Expect::Match, true},
+      {"mul_nan", "x * y", {{kNaN, 2.0}, {2.0, kNaN}}},
+      {"div_by_zero", "x / y", {{1.0, 0.0}, {1.0, -0.0}, {-2.5, 0.0}, {1e-30, -0.0}, {kInf, 0.0}}, Expect::Match, true},
+      {"div_zero_zero", "x / y", {{0.0, 0.0}, {-0.0, 0.0}, {kInf, kInf}, {kNaN, 0.0}}},
+      {"div_overflow", "x / y", {{1e30, 1e-30}, {-3e38, 0.5}}, Expect::Match, true},
+      {"div_by_inf", "x / y", {{1.0, kInf}, {-1.0, kInf}, {1.0, -kInf}}, Expect::Match, true},
+      {"div_nan", "x / y", {{kNaN, 1.0}, {1.0, kNaN}}},
+      {"sqrt_negative", "sqrt(x)", {{-1.0, 0}, {-1e-30, 0}, {-kInf, 0}, {kNaN, 0}}},
+      {"sqrt_zero", "sqrt(x)", {{0.0, 0}, {-0.0, 0}}, Expect::Match, true},
+      {"sqrt_inf", "sqrt(x)", {{kInf, 0}}, Expect::Match, true},
+      {"mul_near_max", "x * y",
+       {{1.2345678901234e36, 0.25}, {3.0000000001e38, 1.0000001e-3}, {1.1e35, 1.3e-30}, {-2.9e38, 1.1}, {9e34, -3.3}},
+       Expect::Match, true},
+      {"square_near_max", "x * x", {{1.8e19, 0}, {-1.3e19, 0}, {1.0e35, 0}}, Expect::Match, true},
+      {"div_near_max", "x / y", {{3.0000000001e38, 7.0}, {1.0, 1.0000003e36}, {1e36, 3.3e-2}, {2e38, 1.7e36}}, Expect::Match, true},
+      {"sqrt_near_max", "sqrt(x)", {{3.0000000001e38, 0}, {1.0000000007e36, 0}}},
+      {"add_near_max", "x + y", {{3e38, 3e37}, {3.4e38, -1e38}, {-3e38, -3e37}, {3.4028234e38, 1e30}}},
+      {"add_beyond_max", "(x + y) * 0.5lf", {{3e38, 3e38}, {-3e38, -2e38}}, Expect::Saturates},
+      {"mul_beyond_max", "(x * y) / y", {{1e30, 1e20}, {-1e25, 1e25}}, Expect::Saturates},
+      {"tiny_lo_subnormal", "x * y", {{1.2345678e-20, 1e-15}, {3e-16, 3.3e-17}, {1.3e-19, 1.01e-13}}, Expect::Tiny},
+      {"product_tiny_operand", "x * y", {{1.1e35, 1.3e-35}, {3.3e-36, 7.7e30}}, Expect::TinyOperand},
+      {"below_float_min", "x * y", {{1e-20, 1e-20}, {-3e-21, 2e-19}}, Expect::Tiny},
+      {"neg_signed_zero", "-x", {{0.0, 0}, {-0.0, 0}}, Expect::Match, false, true},
+      {"add_signed_zero", "x + y", {{-0.0, -0.0}, {-0.0, 0.0}, {0.0, -0.0}, {1.5, -1.5}}, Expect::Match, true, true},
+      {"sub_signed_zero", "x - y", {{-0.0, 0.0}, {0.0, 0.0}, {1.5, 1.5}, {0.0, -0.0}}, Expect::Match, true, true},
+      {"mul_signed_zero", "x * y", {{-0.0, 5.0}, {-3.0, 0.0}, {-0.0, -2.0}, {1e-30, -1e-30}}, Expect::Match, true, true},
+      {"div_signed_zero", "x / y", {{-0.0, 3.0}, {0.0, -3.0}}, Expect::Match, true, true},
+      {"to_float_saturates", "double(float(x * y))", {{1e20, 1e20}, {-1e20, 1e20}, {3.4e38, 1.0000001}}, Expect::Match, true},
+      {"to_float_rounds", "double(float(x + y))",
+       {{1.0, 0x1p-24 + 0x1p-40}, {1.0, 0x1p-24}, {1.0, -0x1p-25 - 0x1p-45}, {3.4028234663852886e38, 1e30}}},
+      {"to_float_signed_zero", "double(float(x))", {{-0.0, 0}, {0.0, 0}}, Expect::Match, true, true},
+      {"compare_nan", "(x < y ? 1.0lf : 0.0lf) + (x == y ? 2.0lf : 0.0lf) + (x != y ? 4.0lf : 0.0lf) + (x >= y ? 8.0lf : 0.0lf)",
+       {{kNaN, 1.0}, {1.0, kNaN}, {kNaN, kNaN}, {1.0, 1.0}}},
+      {"compare_self_nan", "(x != x ? 1.0lf : 0.0lf) + (x == x ? 2.0lf : 0.0lf)", {{kNaN, 0}, {1.0, 0}}},
+      {"isnan_isinf", "(isnan(x) ? 1.0lf : 0.0lf) + (isinf(x) ? 2.0lf : 0.0lf)", {{kNaN, 0}, {kInf, 0}, {-kInf, 0}, {1.0, 0}}},
+  };
+  return r;
+}
+
+// ---- configurations ---------------------------------------------------------------------------
+
+struct Config {
+  const char* name;
+  bool compute;
+  GraphicsStage stage;  // when !compute
+  Backend backend;
+  doublet::Target target;
+};
+
+const std::vector<Config>& configs() {
+  static const std::vector<Config> c = {
+      {"compute_lavapipe_es310", true, GraphicsStage::Vertex, Backend::Vulkan, doublet::Target::Es310},
+      {"compute_lavapipe_es320", true, GraphicsStage::Vertex, Backend::Vulkan, doublet::Target::Es320},
+      {"compute_gles_es310", true, GraphicsStage::Vertex, Backend::Gles, doublet::Target::Es310},
+      {"compute_gles_es320", true, GraphicsStage::Vertex, Backend::Gles, doublet::Target::Es320},
+      {"fragment_lavapipe_es310", false, GraphicsStage::Fragment, Backend::Vulkan, doublet::Target::Es310},
+      {"vertex_lavapipe_glsl450", false, GraphicsStage::Vertex, Backend::Vulkan, doublet::Target::Glsl450},
+      {"fragment_gles_es320", false, GraphicsStage::Fragment, Backend::Gles, doublet::Target::Es320},
+      {"vertex_gles_es310", false, GraphicsStage::Vertex, Backend::Gles, doublet::Target::Es310},
+  };
+  return c;
+}
+
+std::string shader(const Row& row, bool compute, GraphicsStage stage) {
+  std::string s = "#version 450\n";
+  std::string in = "v", out;
+  if (compute) {
+    s += "layout(local_size_x = 1) in;\n"
+         "layout(std430, binding = 0) readonly buffer In { vec4 inputs[]; };\n"
+         "layout(std430, binding = 1) writeonly buffer Out { vec4 outputs[]; };\n";
+    in = "inputs[gl_GlobalInvocationID.x]";
+    out = "outputs[gl_GlobalInvocationID.x]";
+  } else if (stage == GraphicsStage::Fragment) {
+    s += "flat in vec4 v;\nlayout(location = 0) out vec4 o;\n";
+    out = "o";
+  } else {
+    s += "in vec4 v;\nlayout(location = 0) out vec4 o;\n";
+    out = "o";
+  }
+  s += "void main() {\n  vec4 w = " + in + ";\n";
+  s += "  double x = double(w.x) + double(w.y);\n  double y = double(w.z) + double(w.w);\n";
+  s += "  double r = " + std::string(row.expr) + ";\n";
+  s += "  float hi = float(r);\n";
+  s += "  " + out + " = vec4(hi, float(r - double(hi)), 0.0, 0.0);\n";
+  if (!compute && stage == GraphicsStage::Vertex) s += "  gl_Position = vec4(0.0);\n";
+  return s + "}\n";
+}
+
+// x as the float pair the shaders add up: a zero keeps its sign in both words (-0 + -0 = -0).
+std::pair<float, float> pair_of(double x) {
+  doublet::FloatPair p = doublet::split(x);
+  if (p.lo == 0.0f) p.lo = std::copysign(0.0f, p.hi);
+  return {p.hi, p.lo};
+}
+
+std::vector<float> packed_inputs(const Row& row) {
+  std::vector<float> v;
+  for (auto [x, y] : row.inputs) {
+    auto a = pair_of(x), b = pair_of(y);
+    v.insert(v.end(), {a.first, a.second, b.first, b.second});
+  }
+  return v;
+}
+
+// ---- sabotage: the previous rule text ----------------------------------------------------------
+
+const doublet::rules::RuleLibrary& baseline_library() {
+  static const doublet::rules::RuleLibrary lib = [] {
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const auto& e : std::filesystem::directory_iterator(DOUBLET_EXTREMES_BASELINE_DIR)) {
+      std::ifstream f(e.path());
+      std::stringstream ss;
+      ss << f.rdbuf();
+      files.emplace_back(e.path().filename().string(), ss.str());
+    }
+    std::sort(files.begin(), files.end());
+    std::string error;
+    auto parsed = doublet::rules::RuleLibrary::parse(files, &error);
+    if (!parsed) {
+      std::fprintf(stderr, "baseline rules do not parse: %s\n", error.c_str());
+      std::abort();
+    }
+    return std::move(*parsed);
+  }();
+  return lib;
+}
+
+// Replaces the emitted runtime (from its "// doublet float-float runtime" line to the last rule
+// function) with the baseline rules' emission of the same user-called functions. The shaders
+// here are scalar, so every call is at width 1.
+std::string splice_baseline(const std::string& lowered, bool precise, std::string* error) {
+  const size_t begin = lowered.find("// doublet float-float runtime");
+  if (begin == std::string::npos) {
+    *error = "no runtime in the lowered shader";
+    return {};
+  }
+  // The runtime is a run of paragraphs (blank-line separated) of comments, struct and guard
+  // lines and df_ functions.
+  size_t end = begin;
+  const std::regex function(R"(^(\w+) (df_\w+)\()");
+  while (end < lowered.size()) {
+    size_t next = lowered.find("\n\n", end);
+    if (next == std::string::npos) next = lowered.size();
+    std::string para = lowered.substr(end, next - end);
+    while (!para.empty() && para.front() == '\n') para.erase(0, 1);
+    bool ok = para.rfind("// doublet float-float runtime", 0) == 0;
+    if (!ok) {
+      std::istringstream in(para);
+      for (std::string line; std::getline(in, line);) {
+        if (line.rfind("//", 0) == 0) continue;
+        ok = std::regex_search(line, function);
+        break;
+      }
+    }
+    if (!ok) break;
+    end = next == lowered.size() ? next : next + 1;
+  }
+  std::string before = lowered.substr(0, begin), after = lowered.substr(end);
+  std::set<std::string> called;
+  const std::regex call(R"(\b(df_\w+)\()");
+  for (const std::string* part : {&before, &after})
+    for (std::sregex_iterator it(part->begin(), part->end(), call), e; it != e; ++it) called.insert((*it)[1]);
+  doublet::rules::EmitRequest req;
+  for (const auto& name : called)
+    if (baseline_library().has({name, 1})) req.used.push_back({name, 1});
+  req.guard = precise ? doublet::rules::GuardStyle::Precise : doublet::rules::GuardStyle::Uniform;
+  req.es_version = 320;
+  auto emitted = baseline_library().emit(req);
+  if (!emitted.ok) {
+    *error = emitted.error;
+    return {};
+  }
+  std::string text = emitted.text;
+  // Struct types already declared before the runtime stay declared once.
+  for (const char* s : {"struct df_double { float hi; float lo; };\n"})
+    if (before.find(s) != std::string::npos) {
+      size_t at = text.find(s);
+      if (at != std::string::npos) text.erase(at, std::strlen(s));
+    }
+  return before + text + "\n" + after;
+}
+
+std::string add_guard(std::string text) {
+  static const std::regex minus(R"(\) - df_guard\))");
+  return std::regex_replace(text, minus, ") + df_guard)");
+}
+
+// ---- running --------------------------------------------------------------------------------
+
+struct Outcome {
+  std::string error;
+  std::vector<std::pair<float, float>> results;  // (float(r), float(r - float(r))) per input
+};
+
+Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage) {
+  Outcome o;
+  const std::string source = shader(row, c.compute, c.stage);
+  std::string glsl = source;
+  Backend backend = native ? Backend::Vulkan : c.backend;
+  if (!native) {
+    doublet::Options opt;
+    opt.stage = c.compute ? doublet::Stage::Compute
+                          : (c.stage == GraphicsStage::Vertex ? doublet::Stage::Vertex : doublet::Stage::Fragment);
+    opt.target = c.target;
+    opt.file_name = std::string(row.name) + ".glsl";
+    auto lowered = doublet::lower(source, opt);
+    if (!lowered.ok) {
+      for (const auto& d : lowered.diagnostics) o.error += doublet::format_diagnostic(d) + "\n";
+      return o;
+    }
+    glsl = lowered.output;
+    const bool precise = lowered.manifest.guard.kind == "precise";
+    if (sabotage == Sabotage::BaselineRules) glsl = splice_baseline(glsl, precise, &o.error);
+    if (sabotage == Sabotage::AddGuard) glsl = add_guard(glsl);
+    if (!o.error.empty()) return o;
+  }
+  const std::vector<float> in = packed_inputs(row);
+  const uint32_t n = static_cast<uint32_t>(row.inputs.size());
+  if (c.compute) {
+    doublet::runner::ComputeJob job;
+    job.glsl = glsl;
+    job.buffers.resize(2);
+    job.buffers[0].resize(in.size() * sizeof(float));
+    std::memcpy(job.buffers[0].data(), in.data(), job.buffers[0].size());
+    job.buffers[1].assign(n * 4 * sizeof(float), 0);
+    job.groups_x = n;
+    auto r = doublet::runner::run_compute(backend, job);
+    if (!r.ok) {
+      o.error = r.error + "\n--- shader ---\n" + glsl;
+      return o;
+    }
+    std::vector<float> out(n * 4);
+    std::memcpy(out.data(), r.buffers[1].data(), out.size() * sizeof(float));
+    for (uint32_t i = 0; i < n; ++i) o.results.push_back({out[i * 4], out[i * 4 + 1]});
+  } else {
+    doublet::runner::GraphicsJob job;
+    job.stage = c.stage;
+    job.glsl = glsl;
+    job.count = n;
+    job.inputs["v"] = std::vector<double>(in.begin(), in.end());
+    auto r = doublet::runner::run_graphics(backend, job);
+    if (!r.ok) {
+      o.error = r.error + "\n--- shader ---\n" + glsl;
+      return o;
+    }
+    const auto& out = r.outputs["o"];
+    for (uint32_t i = 0; i < n; ++i)
+      o.results.push_back({static_cast<float>(out[i * 4]), static_cast<float>(out[i * 4 + 1])});
+  }
+  return o;
+}
+
+std::string describe(float hi, float lo) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%a, %a)", static_cast<double>(hi), static_cast<double>(lo));
+  return buf;
+}
+
+// Empty when the lowered result `got` is what `want` (native) implies for this row.
+std::string judge(Expect expect, bool compute, std::pair<float, float> want, std::pair<float, float> got) {
+  const float wh = want.first, gh = got.first;
+  // The value: hi alone when it is not finite (r - Inf is NaN), else hi + lo.
+  auto value = [](std::pair<float, float> p) {
+    return std::isfinite(p.first) ? double(p.first) + double(p.second) : double(p.first);
+  };
+  const double w = value(want), g = value(got);
+  const std::string seen = "native " + describe(want.first, want.second) + ", lowered " + describe(got.first, got.second);
+  if (std::isnan(wh)) return std::isnan(gh) ? "" : "expected NaN: " + seen;
+  if (std::isinf(wh)) return gh == wh ? "" : "expected the same infinity: " + seen;
+  if (expect == Expect::Saturates) {
+    // Native keeps a finite value that float-float cannot hold: it must saturate to Inf.
+    return std::isinf(gh) && std::signbit(gh) == std::signbit(wh) ? "" : "expected +-Inf (beyond float range): " + seen;
+  }
+  if (std::isnan(gh) || std::isinf(gh)) return "expected a finite value: " + seen;
+  if (w == 0) {
+    if (expect == Expect::Tiny && !compute && std::fabs(g) <= 0x1p-126) return "";
+    return g == 0 && std::signbit(gh) == std::signbit(wh) ? "" : "expected a zero of the same sign: " + seen;
+  }
+  double tolerance = std::fabs(w) * 0x1p-44;
+  if (expect == Expect::Tiny) tolerance = compute ? std::fabs(w) * 0x1p-44 + 0x1p-146 : std::fabs(w) * 0x1p-23 + 0x1p-126;
+  if (expect == Expect::TinyOperand && !compute) tolerance = std::fabs(w) * 0x1p-11;
+  if (std::signbit(gh) != std::signbit(wh) && g != 0) return "sign differs: " + seen;
+  return std::fabs(g - w) <= tolerance ? "" : "value differs beyond tolerance: " + seen;
+}
+
+// Failures of one row in one configuration ("" when it matches).
+std::string check(const Row& row, const Config& c, Sabotage sabotage) {
+  static std::map<std::string, Outcome> native_cache;
+  const std::string key = std::string(row.name) + (c.compute ? "/comp" : c.stage == GraphicsStage::Vertex ? "/vert" : "/frag");
+  auto it = native_cache.find(key);
+  if (it == native_cache.end()) it = native_cache.emplace(key, run(row, c, true, Sabotage::None)).first;
+  const Outcome& native = it->second;
+  if (!native.error.empty()) return "native fp64 run failed: " + native.error;
+  Outcome lowered = run(row, c, false, sabotage);
+  if (!lowered.error.empty()) return "lowered run failed: " + lowered.error;
+  std::string failures;
+  for (size_t i = 0; i < row.inputs.size(); ++i) {
+    std::string f = judge(row.expect, c.compute, native.results[i], lowered.results[i]);
+    if (!f.empty()) {
+      char in[96];
+      std::snprintf(in, sizeof in, "x=%a y=%a: ", row.inputs[i].first, row.inputs[i].second);
+      failures += std::string("  ") + c.name + " " + in + f + "\n";
+    }
+  }
+  return failures;
+}
+
+class Extremes : public ::testing::TestWithParam<Row> {};
+
+// One row of docs/extremes.md: every configuration (compute and vertex/fragment, lavapipe and
+// GLES, uniform guard and precise) behaves as the row says, against native fp64.
+TEST_P(Extremes, BehavesLikeNativeFp64) {
+  for (Backend b : {Backend::Vulkan, Backend::Gles})
+    ASSERT_EQ(doublet::runner::backend_unavailable_reason(b), "") << doublet::runner::backend_name(b);
+  std::string failures;
+  for (const auto& c : configs()) failures += check(GetParam(), c, Sabotage::None);
+  EXPECT_EQ(failures, "") << GetParam().expr;
+}
+
+INSTANTIATE_TEST_SUITE_P(Rows, Extremes, ::testing::ValuesIn(rows()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// The rows the special-value handling fixed fail with the previous rule text: the tests can fail.
+TEST(ExtremesSabotage, PreviousRulesTurnTheFixedRowsRed) {
+  int red = 0, flagged = 0;
+  std::string still_green;
+  for (const auto& row : rows()) {
+    if (!row.red_with_baseline) continue;
+    ++flagged;
+    std::string failures;
+    for (const auto& c : configs()) failures += check(row, c, Sabotage::BaselineRules);
+    if (failures.find("lowered run failed") != std::string::npos) ADD_FAILURE() << failures;
+    if (!failures.empty()) {
+      ++red;
+      std::printf("%s with the previous rules: %s", row.name, failures.substr(0, failures.find('\n') + 1).c_str());
+    } else {
+      still_green += std::string(row.name) + " ";
+    }
+  }
+  std::printf("previous rules: %d of %d flagged rows red\n", red, flagged);
+  EXPECT_EQ(still_green, "") << "rows that should fail with the previous rules but pass";
+}
+
+// Adding the uniform guard's zero (x + 0) instead of subtracting it loses the sign of -0.
+TEST(ExtremesSabotage, AddingTheGuardZeroTurnsSignedZeroRowsRed) {
+  int red = 0, flagged = 0;
+  std::string still_green;
+  for (const auto& row : rows()) {
+    if (!row.red_with_add_guard) continue;
+    ++flagged;
+    std::string failures;
+    for (const auto& c : configs())
+      if (c.target == doublet::Target::Es310) failures += check(row, c, Sabotage::AddGuard);
+    if (!failures.empty()) {
+      ++red;
+      std::printf("%s with x + guard: %s", row.name, failures.substr(0, failures.find('\n') + 1).c_str());
+    } else {
+      still_green += std::string(row.name) + " ";
+    }
+  }
+  std::printf("x + guard: %d of %d flagged rows red\n", red, flagged);
+  EXPECT_EQ(still_green, "");
+}
+
+// Values outside float-float range are diagnosed at compile time, not silently Inf or 0.
+TEST(ExtremesConstants, OutOfRangeConstantsAreDiagnosed) {
+  for (const char* literal : {"1e100lf", "-1e39lf", "1e+309"}) {
+    std::string src = std::string("#version 450\nlayout(local_size_x = 1) in;\n"
+                                  "layout(std430, binding = 0) buffer B { vec2 o; };\n"
+                                  "void main() {\n  double x = double(o.x);\n  double r = x * ") +
+                      literal + ";\n  o = vec2(float(r), 0.0);\n}\n";
+    doublet::Options opt;
+    opt.stage = doublet::Stage::Compute;
+    opt.target = doublet::Target::Es310;
+    opt.file_name = "range.comp";
+    auto r = doublet::lower(src, opt);
+    EXPECT_FALSE(r.ok) << literal;
+    bool located = false;
+    for (const auto& d : r.diagnostics)
+      if (d.severity == doublet::Severity::Error && d.line == 6 && d.column > 0) located = true;
+    EXPECT_TRUE(located) << literal << ": no error at line 6 with a column";
+  }
+}
+
+// Host split helpers report values outside float range (include/doublet/split.hpp).
+TEST(ExtremesHostSplit, SplitCheckedReportsOutOfRange) {
+  doublet::FloatPair p;
+  EXPECT_EQ(doublet::split_checked(1e39, p), doublet::SplitStatus::Overflow);
+  EXPECT_TRUE(std::isinf(p.hi) && p.hi > 0 && p.lo == 0);
+  EXPECT_EQ(doublet::split_checked(-1e100, p), doublet::SplitStatus::Overflow);
+  EXPECT_TRUE(std::isinf(p.hi) && p.hi < 0 && p.lo == 0);
+  EXPECT_EQ(doublet::split_checked(1e-300, p), doublet::SplitStatus::Underflow);
+  EXPECT_EQ(doublet::split_checked(1e-40, p), doublet::SplitStatus::Underflow);
+  // 1 + 2^-25 + 2^-52: hi = 1, and lo would need the 28 bits from 2^-25 to 2^-52.
+  EXPECT_EQ(doublet::split_checked(1.0 + 0x1p-25 + 0x1p-52, p), doublet::SplitStatus::Rounded);
+  EXPECT_EQ(doublet::split_checked(1.5, p), doublet::SplitStatus::Exact);
+  EXPECT_EQ(doublet::split_checked(kInf, p), doublet::SplitStatus::Exact);
+  EXPECT_TRUE(std::isinf(p.hi) && p.lo == 0);
+  EXPECT_EQ(doublet::split_checked(kNaN, p), doublet::SplitStatus::Exact);
+  EXPECT_TRUE(std::isnan(p.hi));
+  EXPECT_EQ(doublet::split_checked(-0.0, p), doublet::SplitStatus::Exact);
+  EXPECT_TRUE(p.hi == 0 && std::signbit(p.hi));
+  // Just below FLT_MAX + half an ulp still rounds to FLT_MAX (finite); the join is the value.
+  EXPECT_EQ(doublet::split_checked(static_cast<double>(FLT_MAX) + 0x1p100, p), doublet::SplitStatus::Exact);
+  EXPECT_EQ(p.hi, FLT_MAX);
+}
+
+}  // namespace
