@@ -5,6 +5,7 @@
 #include <set>
 
 #include "api/big_stack.hpp"
+#include "api/c_locale.hpp"
 #include "doublet/doublet.hpp"
 #include "emit/printer.hpp"
 #include "emit/validate.hpp"
@@ -76,6 +77,7 @@ std::string matrix_struct_types(std::vector<std::pair<int, int>> shapes) {
 }
 
 Result lower_unchecked(std::string_view source, const Options& options) {
+  ScopedCLocale c_locale;  // '.' in every number printed or read, whatever the application's locale
   Result result;
   auto& diags = result.diagnostics;
   if (!options.stage) {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <locale>
 #include <map>
 #include <set>
 #include <sstream>
@@ -33,7 +34,9 @@ using ir::Stmt;
 class Printer {
  public:
   Printer(const ir::Module& m, const PrintOptions& o, const std::string& file)
-      : module_(m), options_(o), file_(file), es_(target_is_es(o.target)), version_(target_version(o.target)) {}
+      : module_(m), options_(o), file_(file), es_(target_is_es(o.target)), version_(target_version(o.target)) {
+    out_.imbue(std::locale::classic());  // no digit grouping from a global C++ locale ("1.024")
+  }
 
   PrintResult run() {
     header();

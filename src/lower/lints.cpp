@@ -144,9 +144,7 @@ struct Finding {
 class Lints {
  public:
   Lints(const ir::Module& module, std::string_view source, Context& ctx)
-      : module_(module), tokens_(tokenize(source)), ctx_(ctx) {
-    for (size_t i = 0; i < tokens_.size(); ++i) at_[{tokens_[i].line, tokens_[i].column}] = i;
-  }
+      : module_(module), source_(source), ctx_(ctx) {}
 
   void run() {
     const auto& disabled = ctx_.options.disabled_lints;
@@ -157,6 +155,8 @@ class Lints {
       return std::find(disabled.begin(), disabled.end(), name) == disabled.end() &&
              std::find(disabled.begin(), disabled.end(), "all") == disabled.end();
     };
+    if (!on("float-literal") && !on("wasted-double") && !on("smooth-double-varying")) return;
+    tokens_ = tokenize(source_);
     if (on("float-literal")) float_literals();
     if (on("wasted-double")) wasted_doubles();
     if (on("smooth-double-varying")) smooth_varyings();
@@ -177,9 +177,12 @@ class Lints {
   }
 
   std::optional<size_t> token_at(ir::Loc loc) const {
-    auto it = at_.find({loc.line, loc.column});
-    if (it == at_.end()) return std::nullopt;
-    return it->second;
+    // Tokens are in source order: binary search.
+    auto it = std::lower_bound(tokens_.begin(), tokens_.end(), loc, [](const Token& t, ir::Loc l) {
+      return std::tie(t.line, t.column) < std::tie(l.line, l.column);
+    });
+    if (it == tokens_.end() || it->line != loc.line || it->column != loc.column) return std::nullopt;
+    return static_cast<size_t>(it - tokens_.begin());
   }
 
   // Every expression of the module, with its parent (null at the root).
@@ -464,8 +467,8 @@ class Lints {
   }
 
   const ir::Module& module_;
+  std::string_view source_;
   std::vector<Token> tokens_;
-  std::map<std::pair<int, int>, size_t> at_;  // (line, column) → token
   Context& ctx_;
   std::vector<Finding> findings_;
   std::set<size_t> reported_literals_;
