@@ -132,6 +132,7 @@ struct GuardInfo {
 struct Manifest {
   std::string stage;   // "vert", "frag", "comp"
   std::string target;  // "es300", ...
+  std::string mode;    // Options::mode, "df64", ... (in the JSON only when not df64)
   std::vector<InterfaceVariable> variables;
   GuardInfo guard;
   std::string to_json() const;  // pretty-printed JSON

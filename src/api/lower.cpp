@@ -11,6 +11,8 @@
 #include "emit/validate.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/import.hpp"
+#include "frontend/mode_pragmas.hpp"
+#include "lower/apply_modes.hpp"
 #include "lower/lints.hpp"
 #include "lower/lower.hpp"
 #include "lower/matrix_helpers.hpp"
@@ -95,10 +97,32 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   }
   GuardChoice guard;
   if (!choose_guard(options, guard, diags)) return result;
+  const bool native = options.mode == Mode::Native;
+  if (native && options.target != Target::Glsl450) {
+    diags.push_back({options.file_name, 0, 0, Severity::Error,
+                     "--mode native keeps the doubles, which only desktop GLSL 4.00+ has: use --target glsl450 (target " +
+                         std::string(to_string(options.target)) + " has no double type)"});
+    return result;
+  }
+  if (native && !options.mode_for.empty()) {
+    diags.push_back({options.file_name, 0, 0, Severity::Error,
+                     "--mode native applies to the whole shader: it cannot be combined with --mode-for " +
+                         options.mode_for.front().first + "=" + std::string(to_string(options.mode_for.front().second))});
+    return result;
+  }
 
   frontend::ParsedShader parsed;
   if (!frontend::parse(source, options, parsed, diags)) return result;
   result.included_files = parsed.included_files;
+
+  std::vector<frontend::ModePragma> pragmas = frontend::scan_mode_pragmas(source, options.file_name, diags);
+  if (std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }))
+    return result;
+  if (native)
+    for (const auto& p : pragmas)
+      diags.push_back({options.file_name, p.line, p.column, Severity::Warning,
+                       "'#pragma doublet mode(" + std::string(to_string(p.mode)) +
+                           ")' is ignored: --mode native keeps every double"});
 
   ir::Module module;
   if (!frontend::import_module(parsed, options, module, diags)) return result;
@@ -107,7 +131,9 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   passes::run_lints(module, source, ctx);  // on the IR as imported, before any pass rewrites it
   result.manifest.stage = std::string(to_string(*options.stage));
   result.manifest.target = std::string(to_string(options.target));
-  if (!passes::lower_doubles(module, ctx)) return result;
+  result.manifest.mode = std::string(to_string(options.mode));
+  if (!native && !passes::apply_modes(module, ctx, pragmas)) return result;
+  if (!native && !passes::lower_doubles(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
   if (!passes::check_target(module, ctx)) return result;
 

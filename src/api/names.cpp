@@ -91,6 +91,7 @@ std::string Manifest::to_json() const {
   nlohmann::ordered_json j;
   j["stage"] = stage;
   j["target"] = target;
+  if (!mode.empty() && mode != "df64") j["mode"] = mode;
   j["variables"] = nlohmann::ordered_json::array();
   for (const auto& v : variables) {
     nlohmann::ordered_json e;

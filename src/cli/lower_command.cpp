@@ -19,6 +19,7 @@
 #include "doublet/doublet.hpp"
 #include "job_runner.hpp"
 #include "lower_job.hpp"
+#include "mode_args.hpp"
 
 namespace doublet::cli {
 namespace {
@@ -67,6 +68,8 @@ struct LowerArgs {
   std::string lo_suffix = "_lo";
   std::string color = "auto";
   bool constant_range_errors = false;
+  std::string mode;                   // --mode (empty: df64)
+  std::vector<std::string> mode_for;  // --mode-for NAME=MODE
 };
 
 // Options shared by every input; the usage error, if any, in `error`.
@@ -98,6 +101,7 @@ Options common_options(const LowerArgs& a, std::string& error) {
   opt.lo_suffix = a.lo_suffix;
   opt.constant_range_errors = a.constant_range_errors;
   opt.guard = a.guard == "precise" ? GuardKind::Precise : a.guard == "uniform" ? GuardKind::Uniform : GuardKind::Auto;
+  if (std::string mode_error = apply_mode_args(a.mode, a.mode_for, opt); !mode_error.empty()) problem(mode_error);
   return opt;
 }
 
@@ -246,6 +250,14 @@ Command add_lower_command(CLI::App& app) {
                 "Make double constants too small for float-float (e.g. 1e-300lf) errors, not warnings");
   cmd->add_option("--color", args->color, "Colour diagnostics: auto (terminal, no NO_COLOR), always, never")
       ->type_name("WHEN");
+  cmd->add_option("--mode", args->mode,
+                  "Precision mode (docs/modes.md): fp32, rte, df64-fast, df64 or native (default df64; native "
+                  "needs --target glsl450)")
+      ->type_name("MODE");
+  cmd->add_option("--mode-for", args->mode_for,
+                  "Mode of one global, function (all overloads) or FUNCTION.LOCAL, as '#pragma doublet "
+                  "mode(MODE)' before its declaration (repeatable; a later one wins)")
+      ->type_name("NAME=MODE");
 
   return {cmd, [cmd, args] { return run_lower(*cmd, *args); }};
 }

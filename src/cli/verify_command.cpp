@@ -13,6 +13,8 @@
 #include "verify/sweep.hpp"
 #include "verify/verify.hpp"
 
+#include "mode_args.hpp"
+
 namespace doublet::cli {
 namespace {
 
@@ -24,6 +26,8 @@ struct VerifyArgs {
   std::optional<double> min_bits;
   std::string sweep, sweep_stage = "comp", heatmap_dir = ".";
   int grid_step = 1;
+  std::string mode;                   // --mode, --mode-for: the lowering's precision modes
+  std::vector<std::string> mode_for;
 };
 
 // Exit codes of verify (docs/verify.md): 1 = accuracy below --min-bits; 3 = a driver failed.
@@ -87,6 +91,7 @@ int run_verify(const VerifyArgs& a) {
     o.lower.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
   }
   o.lower.include_dirs = a.include_dirs;
+  if (std::string e = apply_mode_args(a.mode, a.mode_for, o.lower); !e.empty()) return input_error(e);
   o.samples = a.samples;
   o.seed = a.seed;
   o.min_bits = a.min_bits;
@@ -149,6 +154,8 @@ Command add_verify_command(CLI::App& app) {
       ->check(CLI::IsMember({"none", "drop-lo", "drop-guard"}));
   cmd->add_option("-D", args->defines, "NAME[=VALUE] preprocessor define");
   cmd->add_option("-I", args->include_dirs, "include directory");
+  cmd->add_option("--mode", args->mode, "precision mode of the lowering: fp32|rte|df64-fast|df64 (default df64)");
+  cmd->add_option("--mode-for", args->mode_for, "NAME=MODE per global, function or FUNCTION.LOCAL (repeatable)");
   cmd->footer("Exit status: 0 pass, 1 an output below its min bits, 2 input error, 3 driver failure.");
   return Command{cmd, [args] { return run_verify(*args); }};
 }

@@ -291,7 +291,15 @@ class Printer {
       case ir::Base::Int: return std::to_string(v.i);
       case ir::Base::Uint: return std::to_string(v.i) + "u";
       case ir::Base::Float: return float_literal(static_cast<float>(v.d));
-      default: return "<double constant>";  // lowering removes these
+      case ir::Base::Double: {  // only mode native keeps doubles
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.17g", v.d);
+        std::string s = buf;
+        if (s.find_first_of(".e") == std::string::npos) s += ".0";
+        else if (s.find('.') == std::string::npos) s.insert(s.find('e'), ".0");
+        return s + "lf";
+      }
+      default: return "<double constant>";
     }
   }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,10 @@ struct Context {
   std::vector<int> widths_used;                  // df struct widths referenced
   std::vector<std::pair<int, int>> matrices_used;  // df_dmatCxR structs referenced: {cols, rows}
   bool failed = false;
+  // Precision modes (apply_modes): functions, and global initialisers, whose double arithmetic
+  // uses the cheaper df64-fast rules (rules/fast.glsl) instead of the accurate ones.
+  std::set<const ir::Function*> fast_functions;
+  bool fast_global_inits = false;
 
   void error(ir::Loc loc, const std::string& message);
   void warning(ir::Loc loc, const std::string& message);

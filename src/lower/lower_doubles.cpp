@@ -103,6 +103,7 @@ class DoubleLowering {
   void run() {
     for (auto& t : module_.structs)
       for (auto& f : *t.fields) f.type = lower_type(f.type, {});
+    fast_ = ctx_.fast_global_inits;
     for (size_t i = 0; i < module_.globals.size(); ++i) {
       auto& g = module_.globals[i];
       if (g->type.base == ir::Base::Block && holds_doubles(g->type)) lower_block(*g);
@@ -110,6 +111,7 @@ class DoubleLowering {
       if (module_.global_inits[i]) module_.global_inits[i] = lower(module_.global_inits[i]);
     }
     for (auto& f : module_.functions) {
+      fast_ = ctx_.fast_functions.count(f.get()) > 0;
       f->return_type = lower_type(f->return_type, f->loc);
       for (auto& p : f->params) lower_var(*p);
       lower_statement(f->body);
@@ -350,7 +352,7 @@ class DoubleLowering {
       ctx_.error(loc, "operator '" + op + "' is not defined on doubles");
       return a;
     }
-    return rule(it->second, width, df_type(width), {a, b}, loc);
+    return rule(fast_ ? it->second + "_fast" : it->second, width, df_type(width), {a, b}, loc);
   }
 
   ExprPtr lower_component_write(const ExprPtr& e) {
@@ -777,6 +779,7 @@ class DoubleLowering {
   ir::Module& module_;
   Context& ctx_;
   std::set<std::string> reported_;  // unsupported types already diagnosed
+  bool fast_ = false;  // the current function's arithmetic is df64-fast (rules/fast.glsl)
 };
 
 }  // namespace

@@ -141,8 +141,10 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         entry.lowered_type = ir::type_name(v->type) + ir::array_suffix(v->type);
         uniform_leaves(v->type, v->name, entry.lowered_names);
         manifest.variables.push_back(entry);
-      } else if (!v->declared_type.is_double()) {
-        entry.lowered_type = entry.type;
+      } else if (!v->declared_type.is_double() || v->type.base != ir::Base::Struct) {
+        // Not a double, or a double kept as one value: demoted to float (mode fp32) or kept
+        // double (mode native).
+        entry.lowered_type = ir::type_name(v->type) + ir::array_suffix(v->type);
         entry.lowered_names = {v->name};
         if (v->layout.location >= 0) entry.locations = {v->layout.location};
         manifest.variables.push_back(entry);

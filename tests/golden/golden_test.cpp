@@ -6,6 +6,9 @@
 //                                          That line is removed before lowering: GLSL ES
 //                                          allows nothing, not even a comment, before
 //                                          #version (diagnostic lines shift by one).
+//                                          An optional `// options: --mode M --mode-for N=M`
+//                                          line (first, or after the targets line) sets
+//                                          the precision modes; it is removed too.
 //   expected/<name>.<stage>.<target>.glsl  expected output, one per target
 //
 // For every case and target (one test each) the harness lowers the case with
@@ -114,11 +117,50 @@ std::string first_line(const std::string& source) {
   return line;
 }
 
-// The source handed to the compiler: without the targets line.
-std::string case_source_for_lowering(const std::string& source) {
-  if (!std::regex_match(first_line(source), targets_line_re())) return source;
-  size_t nl = source.find('\n');
-  return nl == std::string::npos ? std::string() : source.substr(nl + 1);
+// An optional `// options: --mode MODE --mode-for NAME=MODE ...` line, first or right after
+// the targets line: the precision modes the case is lowered with (docs/modes.md).
+const std::regex& options_line_re() {
+  static const std::regex re(R"(^\s*//\s*options\s*:(.*)$)");
+  return re;
+}
+
+// The source handed to the compiler: without the targets and options lines.
+std::string case_source_for_lowering(std::string source) {
+  for (int header = 0; header < 2; ++header) {
+    std::string line = first_line(source);
+    if (!std::regex_match(line, targets_line_re()) && !std::regex_match(line, options_line_re())) break;
+    size_t nl = source.find('\n');
+    source = nl == std::string::npos ? std::string() : source.substr(nl + 1);
+  }
+  return source;
+}
+
+// Applies the options line, if any. Returns a description of a malformed line, or "".
+std::string apply_case_options(const std::string& source, doublet::Options& options) {
+  std::istringstream lines(source);
+  std::string line;
+  for (int header = 0; header < 2 && std::getline(lines, line); ++header) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::smatch m;
+    if (!std::regex_match(line, m, options_line_re())) continue;
+    std::istringstream words(m[1].str());
+    for (std::string flag, value; words >> flag;) {
+      if (!(words >> value)) return "option '" + flag + "' needs a value";
+      if (flag == "--mode") {
+        auto mode = doublet::parse_mode(value);
+        if (!mode) return "unknown mode '" + value + "'";
+        options.mode = *mode;
+      } else if (flag == "--mode-for") {
+        size_t eq = value.find('=');
+        auto mode = eq == std::string::npos ? std::nullopt : doublet::parse_mode(value.substr(eq + 1));
+        if (!mode) return "--mode-for needs NAME=MODE, got '" + value + "'";
+        options.mode_for.emplace_back(value.substr(0, eq), *mode);
+      } else {
+        return "unknown option '" + flag + "' (known: --mode, --mode-for)";
+      }
+    }
+  }
+  return "";
 }
 
 // Targets from a `// targets: a b c` first line, else the defaults.
@@ -189,14 +231,18 @@ class GlslangProcess : public ::testing::Environment {
 
 // Checks one expected file on its own terms: compiles with glslang for the
 // target's version/profile, declares that version, has no double tokens.
+// Mode native (an options line) keeps the doubles on purpose; every other mode removes them.
 void validate_expected(const std::string& file, const std::string& text, const StageInfo& stage,
-                       const TargetInfo& target) {
+                       const TargetInfo& target, bool keeps_doubles = false) {
   SCOPED_TRACE("validating expected/" + file);
 
   const std::string code = strip_comments(text);
   static const std::regex doubles(R"(\b(double|dvec[234]|dmat[234](x[234])?)\b)");
   std::smatch m;
-  EXPECT_FALSE(std::regex_search(code, m, doubles)) << "contains the token '" << m.str() << "'";
+  if (keeps_doubles)
+    EXPECT_TRUE(std::regex_search(code, m, doubles)) << "mode native output has no double left";
+  else
+    EXPECT_FALSE(std::regex_search(code, m, doubles)) << "contains the token '" << m.str() << "'";
 
   // The #version directive must name exactly the target (GLSL ES 1.00 may omit it).
   static const std::regex version_re(R"((^|\n)[ \t]*#[ \t]*version[ \t]+(\d+)[ \t]*(\w*))");
@@ -244,6 +290,8 @@ TEST_P(Golden, Matches) {
   options.stage = stage.stage;
   options.target = target.target;
   options.file_name = "cases/" + p.case_file();
+  std::string bad_options = apply_case_options(*source, options);
+  ASSERT_EQ(bad_options, "") << "cases/" << p.case_file() << ": bad options line";
   doublet::Result result = doublet::lower(case_source_for_lowering(*source), options);
   std::string diagnostics;
   for (const doublet::Diagnostic& d : result.diagnostics) diagnostics += doublet::format_diagnostic(d) + "\n";
@@ -264,14 +312,14 @@ TEST_P(Golden, Matches) {
     } else {
       std::cout << "[golden] unchanged expected/" << p.expected_file() << std::endl;
     }
-    validate_expected(p.expected_file(), result.output, stage, target);
+    validate_expected(p.expected_file(), result.output, stage, target, options.mode == doublet::Mode::Native);
     return;
   }
 
   ASSERT_TRUE(expected) << "missing expected/" << p.expected_file()
                         << "\n  create it with: DOUBLET_UPDATE_GOLDEN=1 ctest --test-dir build -R '^golden\\.'"
                         << "\n  (then review and commit it)";
-  validate_expected(p.expected_file(), *expected, stage, target);
+  validate_expected(p.expected_file(), *expected, stage, target, options.mode == doublet::Mode::Native);
   if (result.ok) {
     EXPECT_EQ(*expected, result.output)
         << "output differs from expected/" << p.expected_file()

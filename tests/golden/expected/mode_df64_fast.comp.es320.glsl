@@ -1,0 +1,235 @@
+#version 320 es
+precision highp float;
+precision highp int;
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+// doublet float-float runtime: 10 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_add_fast: a + b without the second TwoSum of the low words.
+// Algorithm: SloppyDWPlusDW (JMP Algorithm 5; Dekker's add2)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Section 3; Yang et al., arXiv:2404.05948, 2024
+// Bound: 3u^2 when a and b have the same sign; unbounded relative error for opposite signs (cancellation of the high words)
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,bh); v = RN(al+bl); w = RN(sl+v); (zh,zl) = Fast2Sum(sh,w).
+// Under cancellation (ah ~ -bh) the rounding of al+bl is no longer small next to the result:
+// the error stays below about u^2 (|a| + |b|) in absolute terms, which can be all of a
+// small result. Use df64 where differences of nearly equal values matter.
+df_double df_add_fast(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  precise float v = (a.lo + b.lo);
+  precise float w = (s.lo + v);
+  df_double z = df_fast_two_sum(s.hi, w);
+  return z;
+}
+
+// df_sub_fast: a - b = a + (-b) by the sloppy addition; the negation of b is exact.
+// Algorithm: SloppyDWPlusDW on (a, -b) (JMP Algorithm 5)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Section 3; Yang et al., arXiv:2404.05948, 2024
+// Bound: 3u^2 when a and b have opposite signs; unbounded relative error for equal signs (cancellation of the high words)
+// Flops: 12
+df_double df_sub_fast(df_double a, df_double b) {
+  precise float nh = (-b.hi);
+  df_double s = df_two_sum(a.hi, nh);
+  precise float v = (a.lo - b.lo);
+  precise float w = (s.lo + v);
+  df_double z = df_fast_two_sum(s.hi, w);
+  return z;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
+// Bound: exact
+// Flops: 5 (7 when |a| > 1e34)
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
+//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
+//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
+//        significand when nothing over- or underflows, so the halves are the same.
+// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
+// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
+// Inf; callers then fall back to the float result (df_finish).
+df_double df_split(float a) {
+  precise float aa = (abs(a));
+  if (aa > 1.0e34) {
+    precise float as = (a * 1.220703125e-4);
+    precise float gs = (as * 4097.0);
+    precise float ds = (as - gs);
+    precise float hs = (gs + ds);
+    precise float hb = (hs * 8192.0);
+    precise float lb = (a - hb);
+    return df_double(hb, lb);
+  }
+  precise float g = (a * 4097.0);
+  precise float d = (a - g);
+  precise float hi = (g + d);
+  precise float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 19
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
+// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  precise float p = (a * b);
+  df_double sa = df_split(a);
+  df_double sb = df_split(b);
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_mul_fast: a * b. Without FMA no product cheaper than DWTimesDW1 has a proved bound (its
+// one Fast2Sum is what keeps the result a double-word number for comparisons and
+// conversions), so the arithmetic is df_mul's; what df64-fast drops is df_mul's special-value
+// fix-up (df_finish): an overflowing product or an Inf/NaN operand gives NaN instead of the
+// IEEE result.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10; Dekker's mul2) with Dekker's TwoProd, no special-value fix-up
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2); Dekker 1971 (mul2)
+// Bound: 7u^2
+// Flops: 26 (with df_two_prod's 19)
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
+df_double df_mul_fast(df_double a, df_double b) {
+  df_double c = df_two_prod(a.hi, b.hi);
+  precise float tl = (a.hi * b.lo);
+  precise float th = (a.lo * b.hi);
+  precise float cl2 = (th + tl);
+  precise float cl3 = (c.lo + cl2);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  return z;
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  precise float az = (abs(z.hi));
+  if (az > 0.0 && az <= 3.40282347e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
+// df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN
+// (IEEE 754-2008 section 5.4.1; GLSL leaves a < 0 undefined, the drivers give NaN).
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
+// Bound: 25/8 u^2
+// Flops: 29
+// Steps (LLMPR Algorithm 8, our no-FMA form):
+//   sh   = RN(sqrt(ah))
+//   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
+//   r0   = RN(ah - p)                exact: ah/2 <= p <= 2ah (Sterbenz)
+//   rho1 = RN(r0 - e)                == RN(ah - sh^2), the value fma(-sh, sh, ah) returns
+//   rho2 = RN(al + rho1)
+//   sl   = RN(rho2 / (2 sh))
+//   (zh,zl) = Fast2Sum(sh, sl)
+// sh is guarded too: Mesa rewrites sqrt(x)*sqrt(x) to |x|, which would zero the residual.
+// So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
+// correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
+// few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
+// not proved). Special values end in df_finish(z, sh): a = +-0 gives sl = 0/0 = NaN and so
+// (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
+// Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
+df_double df_sqrt(df_double a) {
+  precise float sh = (sqrt(a.hi));
+  df_double sq = df_two_prod(sh, sh);
+  precise float r0 = (a.hi - sq.hi);
+  precise float rho1 = (r0 - sq.lo);
+  precise float rho2 = (a.lo + rho1);
+  precise float sh2 = (sh * 2.0);
+  precise float sl = (rho2 / sh2);
+  df_double z = df_fast_two_sum(sh, sl);
+  df_double r = df_finish(z, sh);
+  return r;
+}
+
+// df_div_fast: a / b as df_div, but the remainder's product b*th is not renormalised: the
+// two Fast2Sums of DWTimesFP1 are dropped (6 flops).
+// Algorithm: DWDivDW2 (JMP Algorithm 17) with the product (bh + bl) * th left as TwoProd(bh,th) + RN(bl*th), unrenormalised
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Algorithm 17 and Theorem 7.1 (15u^2 + 56u^3 for the renormalised form); Dekker 1971 (div2)
+// Bound: about 15u^2 + 2u^2 (estimate, not proved: the dropped renormalisation adds one rounding of size u^2 to the remainder)
+// Flops: 29 (with df_two_prod's 19)
+// Steps: th = RN(ah/bh); (ch,cl1) = TwoProd(bh,th); cl2 = RN(bl*th); rl = RN(cl1+cl2);
+//        pih = RN(ah-ch) (exact, Sterbenz: ch is within a factor 2 of ah); dl = RN(al-rl);
+//        d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).
+// b == 0 gives NaN, as df_div. Range: |th| and |bh| <= 8.3e34 (split).
+df_double df_div_fast(df_double a, df_double b) {
+  precise float th = (a.hi / b.hi);
+  df_double c = df_two_prod(b.hi, th);
+  precise float cl2 = (b.lo * th);
+  precise float rl = (c.lo + cl2);
+  precise float pih = (a.hi - c.hi);
+  precise float dl = (a.lo - rl);
+  precise float d = (pih + dl);
+  precise float tl = (d / b.hi);
+  df_double z = df_fast_two_sum(th, tl);
+  return z;
+}
+
+layout(std430, binding = 0) buffer Data {
+  df_double x[];
+};
+
+
+void main()
+{
+  uint i = gl_GlobalInvocationID.x;
+  df_double a = x[4u * i];
+  df_double b = x[4u * i + 1u];
+  x[4u * i + 2u] = df_div_fast(df_mul_fast(df_add_fast(a, b), df_sub_fast(a, b)), df_sqrt(a));
+  df_double c = x[4u * i + 3u];
+  c = df_add_fast(c, a);
+  x[4u * i + 3u] = c;
+}
