@@ -33,5 +33,6 @@ Command add_lower_command(CLI::App& app);
 Command add_verify_command(CLI::App& app);  // verify_command.cpp
 Command add_bench_command(CLI::App& app);   // bench_command.cpp
 Command add_demo_command(CLI::App& app);    // demo_command.cpp
+Command add_plan_command(CLI::App& app);    // plan_command.cpp
 
 }  // namespace doublet::cli

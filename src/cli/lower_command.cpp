@@ -3,8 +3,10 @@
 // --out-dir, lowered in parallel. Outputs are replaced atomically and only when the
 // shader lowered without errors.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <map>
 #include <memory>
 #include <string>
@@ -19,6 +21,7 @@
 #include "doublet/doublet.hpp"
 #include "job_runner.hpp"
 #include "lower_job.hpp"
+#include "plan/planner.hpp"
 #include "mode_args.hpp"
 
 namespace doublet::cli {
@@ -54,6 +57,7 @@ struct LowerArgs {
   std::vector<std::string> inputs;
   std::string output;  // empty or "-": stdout
   std::string out_dir;
+  std::string plan;  // --plan FILE from `doublet plan` (docs/plan.md)
   unsigned jobs = 0;   // 0: one per core
   std::string stage;
   std::string target = "es300";
@@ -173,6 +177,19 @@ int run_lower(const CLI::App& cmd, const LowerArgs& a) {
   std::string error;
   Options common = common_options(a, error);
   if (!error.empty()) return usage_error(cmd, error);
+  if (!a.plan.empty()) {  // the plan's modes first: --mode-for entries on the command line win
+    std::ifstream in(a.plan, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    Options from_plan;
+    Diagnostic d{a.plan, 0, 0, Severity::Error, "cannot read the plan file"};
+    if (!in || !plan::load_plan(text.str(), a.plan, &from_plan, &d)) {
+      std::cerr << format_diagnostic(d) << "\n";
+      return kExitInput;
+    }
+    if (common.mode == Mode::Df64) common.mode = from_plan.mode;
+    common.mode_for.insert(common.mode_for.begin(), from_plan.mode_for.begin(), from_plan.mode_for.end());
+  }
   std::optional<ColorChoice> color = parse_color_choice(a.color);
   if (!color) return usage_error(cmd, "--color must be auto, always or never");
 
@@ -235,6 +252,8 @@ Command add_lower_command(CLI::App& app) {
       ->type_name("FILE");
   cmd->add_flag("--MD", args->depfile, "(-MD) Write a depfile: OUT.d, or DIR/NAME.d with --out-dir");
   cmd->add_option("--MF", args->depfile_path, "(-MF FILE) Write the depfile to FILE (implies -MD)")->type_name("FILE");
+  cmd->add_option("--plan", args->plan, "Apply a plan file from `doublet plan` (modes per declaration/function)")
+      ->type_name("FILE");
   cmd->add_option("--MT", args->depfile_target, "(-MT TARGET) The depfile's target (default: OUT)")
       ->type_name("TARGET");
   cmd->add_option("--guard", args->guard,

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   commands.push_back(add_verify_command(app));
   commands.push_back(add_bench_command(app));
   commands.push_back(add_demo_command(app));
+  commands.push_back(add_plan_command(app));
   // Later: verify, bench, plan.
 
   try {

@@ -9,6 +9,8 @@
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
+#include "plan/planner.hpp"
+#include "plan/scene.hpp"
 #include "verify/report.hpp"
 #include "verify/sweep.hpp"
 #include "verify/verify.hpp"
@@ -21,6 +23,7 @@ namespace {
 struct VerifyArgs {
   std::string shader, stage, target = "es310", backend = "both", sabotage = "none";
   std::string spec, json;
+  std::string scene, plan;  // doublet plan: --scene FILE, --plan FILE (docs/plan.md)
   std::vector<std::string> ranges, defines, include_dirs;
   uint64_t samples = 1024, seed = 1;
   std::optional<double> min_bits;
@@ -76,6 +79,52 @@ int run_sweep(const VerifyArgs& a) {
   return within ? kExitOk : kExitBelowMinBits;
 }
 
+// --plan FILE: the plan's modes (command-line --mode-for entries, later, win). --scene FILE: its
+// ranges, relations and abs_error thresholds join the spec.
+int apply_scene_and_plan(const VerifyArgs& a, verify::VerifyOptions* o, plan::Scene* scene) {
+  Diagnostic d;
+  std::string text;
+  if (!a.plan.empty()) {
+    if (!read_file(a.plan, &text)) return input_error("cannot read plan '" + a.plan + "'");
+    Options from_plan;
+    if (!plan::load_plan(text, a.plan, &from_plan, &d)) return (std::cerr << format_diagnostic(d) << "\n", kExitInput);
+    if (o->lower.mode == Mode::Df64) o->lower.mode = from_plan.mode;
+    o->lower.mode_for.insert(o->lower.mode_for.begin(), from_plan.mode_for.begin(), from_plan.mode_for.end());
+  }
+  if (a.scene.empty()) return kExitOk;
+  if (!read_file(a.scene, &text)) return input_error("cannot read scene '" + a.scene + "'");
+  if (!plan::parse_scene(text, a.scene, scene, &d)) return (std::cerr << format_diagnostic(d) << "\n", kExitInput);
+  for (const auto& [name, range] : scene->inputs) {
+    verify::InputSpec& in = o->spec.inputs[name];
+    for (const plan::Interval& c : range.components) in.component_ranges.emplace_back(c.lo, c.hi);
+  }
+  for (const plan::Relation& r : scene->relations) o->spec.relations.push_back({r.a, r.b, r.abs_max});
+  for (const auto& [name, req] : scene->outputs) o->spec.outputs[name].max_abs_error = req.abs_error;
+  return kExitOk;
+}
+
+// Measured max |lowered - native| per scene output (all components, every backend) vs the promise.
+std::string scene_summary(const verify::VerifyReport& report, const plan::Scene& scene) {
+  std::string s = "\nscene promises (max |lowered - native| over every component and backend):\n";
+  for (const auto& [name, req] : scene.outputs) {
+    double worst = 0;
+    bool seen = false, ok = true;
+    for (const verify::BackendRun& run : report.runs)
+      for (const verify::OutputStats& st : run.outputs)
+        if (st.name == name || st.name.rfind(name + ".", 0) == 0 || st.name.rfind(name + " ", 0) == 0 ||
+            st.name.rfind(name + "[", 0) == 0) {
+          seen = true;
+          worst = std::max(worst, st.max_abs_err);
+          ok &= st.abs_passed();
+        }
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-20s measured %-10.3g promised %-10.3g %s\n", name.c_str(), worst,
+                  req.abs_error, !seen ? "NOT MEASURED" : ok ? "ok" : "EXCEEDED");
+    s += line;
+  }
+  return s;
+}
+
 int run_verify(const VerifyArgs& a) {
   if (!a.sweep.empty()) return run_sweep(a);
   if (a.shader.empty()) return input_error("SHADER is required (or --sweep OP|all)");
@@ -111,6 +160,8 @@ int run_verify(const VerifyArgs& a) {
     o.spec.inputs[name].lo = in.lo;
     o.spec.inputs[name].hi = in.hi;
   }
+  plan::Scene scene;
+  if (int rc = apply_scene_and_plan(a, &o, &scene); rc != kExitOk) return rc;
   std::string source;
   if (!read_file(a.shader, &source)) return input_error("cannot read '" + a.shader + "'");
 
@@ -123,6 +174,7 @@ int run_verify(const VerifyArgs& a) {
     if (!file.prepare(a.json, verify::to_json(report)) || !file.commit())
       return input_error("cannot write '" + a.json + "': " + file.error());
   }
+  if (!a.scene.empty()) (json_to_stdout ? std::cerr : std::cout) << scene_summary(report, scene);
   if (!report.input_error.empty()) return kExitInput;
   if (report.driver_failed()) return kExitDriver;
   return report.passed() ? kExitOk : kExitBelowMinBits;
@@ -146,6 +198,8 @@ Command add_verify_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "random seed (default 1)");
   cmd->add_option("--range", args->ranges, "NAME=LO:HI input range (repeatable)");
   cmd->add_option("--spec", args->spec, "JSON spec: input values/ranges, output thresholds (docs/verify.md)");
+  cmd->add_option("--scene", args->scene, "scene JSON (docs/plan.md): sample its ranges, fail above its abs_error");
+  cmd->add_option("--plan", args->plan, "lower with this plan file from `doublet plan` (docs/plan.md)");
   cmd->add_option("--json", args->json, "write the report as JSON to this file ('-': stdout)");
   cmd->add_option("--min-bits", args->min_bits, "exit 1 when any output keeps fewer correct bits");
   cmd->add_option("--backend", args->backend, "vulkan|gles|both (default both)")

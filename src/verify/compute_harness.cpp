@@ -6,6 +6,7 @@
 
 #include "doublet/split.hpp"
 #include "verify/inputs.hpp"
+#include "verify/relations.hpp"
 
 namespace doublet::verify {
 namespace {
@@ -164,6 +165,11 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
     it->output = out;
   }
 
+  relations_ = spec.relations;
+  for (const InputRelation& r : relations_)
+    for (const std::string& n : {r.a, r.b})
+      if (std::none_of(inputs_.begin(), inputs_.end(), [&](const Variable& v) { return v.name == n; }))
+        return "relation: no input named '" + n + "'";
   // Batched when every value is per invocation: one dispatch covers all samples.
   auto runtime_array = [](const Variable& v) { return !v.native.is_uniform && v.native.elements == 0; };
   const bool batched = !spec.array_length && spec.groups[0] * spec.groups[1] * spec.groups[2] == 1 &&
@@ -209,9 +215,17 @@ void ComputeHarness::generate(uint64_t seed) {
     for (const Variable& v : inputs_) {
       const size_t count = size_t{v.native.elements} * static_cast<size_t>(v.native.components);
       std::vector<double> vals(count);
-      for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input, v.native.is_double, d * count + k);
+      for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input.component(k % static_cast<size_t>(std::max(v.native.components, 1))), v.native.is_double, d * count + k);
       values_[d].push_back(std::move(vals));
     }
+  std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
+  for (uint64_t d = 0; d < dispatches_; ++d) {
+    std::vector<RelatedInput> related;
+    for (size_t i = 0; i < inputs_.size(); ++i)
+      related.push_back({inputs_[i].name, !inputs_[i].native.is_uniform, inputs_[i].native.components,
+                         inputs_[i].native.is_double, &inputs_[i].input, &values_[d][i]});
+    if (std::string note = apply_relations(relations_, related, rng); !note.empty() && d == 0) notes_.push_back(note);
+  }
 }
 
 std::vector<runner::ComputeJob> ComputeHarness::jobs(bool native) const {
@@ -318,6 +332,7 @@ std::vector<OutputStats> ComputeHarness::compare(const std::vector<runner::Compu
                                       static_cast<uint32_t>(worst_element / v.output.elements_per_invocation));
       if (v.native.elements > 1) s.worst_input = v.name + "[" + std::to_string(worst_element) + "] of " + s.worst_input;
       s.min_bits_required = v.output.min_bits.value_or(default_min_bits.value_or(-1));
+      s.max_abs_err_allowed = v.output.max_abs_error.value_or(-1);
       all.push_back(std::move(s));
     }
   }

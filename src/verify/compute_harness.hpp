@@ -66,6 +66,7 @@ class ComputeHarness {
   std::string native_glsl_, lowered_glsl_;
   std::vector<Variable> inputs_, outputs_;
   std::vector<std::string> notes_;
+  std::vector<InputRelation> relations_;  // scene relations, applied after drawing
   uint32_t array_length_ = 1;  // elements of runtime arrays
   uint32_t groups_[3] = {1, 1, 1};
   uint64_t dispatches_ = 1;

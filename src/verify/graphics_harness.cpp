@@ -4,6 +4,7 @@
 
 #include "doublet/split.hpp"
 #include "verify/inputs.hpp"
+#include "verify/relations.hpp"
 
 namespace doublet::verify {
 namespace {
@@ -89,6 +90,11 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
     it->output = out;
   }
 
+  relations_ = spec.relations;
+  for (const InputRelation& r : relations_)
+    for (const std::string& n : {r.a, r.b})
+      if (std::none_of(inputs_.begin(), inputs_.end(), [&](const Variable& v) { return v.name == n; }))
+        return "relation: no input named '" + n + "'";
   const bool uniforms = std::any_of(inputs_.begin(), inputs_.end(), [](const Variable& v) { return v.is_uniform; });
   per_draw_ = uniforms ? spec.array_length.value_or(kDefaultPerDraw) : static_cast<uint32_t>(std::min<uint64_t>(samples, kMaxPerDraw));
   per_draw_ = std::clamp<uint32_t>(per_draw_, 1, kMaxPerDraw);
@@ -103,9 +109,17 @@ void GraphicsHarness::generate(uint64_t seed) {
     for (const Variable& v : inputs_) {
       const size_t count = (v.is_uniform ? 1 : size_t{per_draw_}) * static_cast<size_t>(v.components);
       std::vector<double> vals(count);
-      for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input, v.is_double, d * count + k);
+      for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input.component(k % static_cast<size_t>(v.components)), v.is_double, d * count + k);
       values_[d].push_back(std::move(vals));
     }
+  std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
+  for (uint64_t d = 0; d < draws_; ++d) {
+    std::vector<RelatedInput> related;
+    for (size_t i = 0; i < inputs_.size(); ++i)
+      related.push_back({inputs_[i].name, !inputs_[i].is_uniform, inputs_[i].components, inputs_[i].is_double,
+                         &inputs_[i].input, &values_[d][i]});
+    if (std::string note = apply_relations(relations_, related, rng); !note.empty() && d == 0) notes_.push_back(note);
+  }
 }
 
 std::vector<runner::GraphicsJob> GraphicsHarness::jobs(bool native) const {
@@ -187,6 +201,7 @@ std::vector<OutputStats> GraphicsHarness::compare(const std::vector<runner::Grap
       OutputStats s = stats.finish();
       s.worst_input = describe_sample(s.worst_sample / per_draw_, static_cast<uint32_t>(s.worst_sample % per_draw_));
       s.min_bits_required = v.output.min_bits.value_or(default_min_bits.value_or(-1));
+      s.max_abs_err_allowed = v.output.max_abs_error.value_or(-1);
       all.push_back(std::move(s));
     }
   }

@@ -59,6 +59,7 @@ class GraphicsHarness {
   std::string native_glsl_, lowered_glsl_;
   std::vector<Variable> inputs_, outputs_;
   std::vector<std::string> notes_;
+  std::vector<InputRelation> relations_;  // scene relations, applied after drawing
   uint32_t per_draw_ = 1;
   uint64_t draws_ = 1;
   // values_[draw][input]: components values for a uniform, per_draw × components for a stage input.

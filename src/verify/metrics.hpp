@@ -27,7 +27,11 @@ struct OutputStats {
   std::string worst_input;        // filled by the caller from worst_sample
   double abs_floor = 0;
   double min_bits_required = -1;  // < 0: no requirement
-  bool passed() const { return min_bits_required < 0 || min_bits >= min_bits_required; }
+  double max_abs_err_allowed = -1;  // < 0: no requirement (a scene's abs_error)
+  bool abs_passed() const {
+    return max_abs_err_allowed < 0 || (class_mismatches == 0 && max_abs_err <= max_abs_err_allowed);
+  }
+  bool passed() const { return (min_bits_required < 0 || min_bits >= min_bits_required) && abs_passed(); }
 };
 
 // Accumulates samples, then computes the order statistics once.

@@ -43,7 +43,9 @@ std::string format_table(const VerifyReport& r) {
                     o.name.c_str(), o.type.c_str(), static_cast<unsigned long long>(o.samples), o.max_rel_err,
                     o.p99_rel_err, o.median_rel_err, o.max_abs_err, o.min_bits, o.p1_bits,
                     static_cast<unsigned long long>(o.class_mismatches),
-                    o.passed() ? "" : ("  FAIL (< " + fmt("%.1f", o.min_bits_required) + ")").c_str());
+                    o.passed()       ? ""
+                    : !o.abs_passed() ? ("  FAIL (max_abs > " + fmt("%.3g", o.max_abs_err_allowed) + ")").c_str()
+                                      : ("  FAIL (< " + fmt("%.1f", o.min_bits_required) + ")").c_str());
       s += line;
       if (o.min_bits < kMaxBits)
         s += "      worst: " + o.worst_input + " -> got " + hex(o.worst_got) + ", want " + hex(o.worst_want) + "\n";

@@ -28,6 +28,15 @@ std::string check_range(const InputSpec& in) {
 
 }  // namespace
 
+InputSpec InputSpec::component(size_t c) const {
+  if (component_ranges.empty()) return *this;
+  InputSpec s = *this;
+  const auto& r = component_ranges[component_ranges.size() == 1 ? 0 : c % component_ranges.size()];
+  s.lo = r.first;
+  s.hi = r.second;
+  return s;
+}
+
 std::string parse_range(const std::string& text, std::string* name, InputSpec* out) {
   const size_t eq = text.find('='), colon = text.find(':', eq == std::string::npos ? 0 : eq);
   if (eq == std::string::npos || eq == 0 || colon == std::string::npos)

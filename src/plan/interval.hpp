@@ -1,0 +1,63 @@
+// Closed intervals of reals for doublet's range analysis (docs/plan.md). Endpoints may be ±inf;
+// an operation whose endpoint products are undefined (0 × inf) returns the whole line. Endpoints
+// are computed in double without outward rounding: the analysis needs magnitudes to a few bits,
+// not enclosures to the last ulp.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace doublet::plan {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Interval {
+  double lo = -kInf, hi = kInf;
+
+  static Interval point(double x) { return {x, x}; }
+  static Interval top() { return {}; }
+  double mag() const { return std::max(std::fabs(lo), std::fabs(hi)); }  // max |x|
+  double mig() const { return lo > 0 ? lo : hi < 0 ? -hi : 0; }        // min |x|
+  bool bounded() const { return std::isfinite(lo) && std::isfinite(hi); }
+  bool contains_zero() const { return lo <= 0 && hi >= 0; }
+  bool operator==(const Interval&) const = default;
+};
+
+inline Interval join(Interval a, Interval b) { return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+inline Interval meet(Interval a, Interval b) {  // empty meets keep `a` (a relation cannot empty a range)
+  Interval m{std::max(a.lo, b.lo), std::min(a.hi, b.hi)};
+  return m.lo <= m.hi ? m : a;
+}
+
+inline Interval sane(double lo, double hi) {
+  if (std::isnan(lo) || std::isnan(hi)) return Interval::top();
+  return {lo, hi};
+}
+inline Interval operator+(Interval a, Interval b) { return sane(a.lo + b.lo, a.hi + b.hi); }
+inline Interval operator-(Interval a) { return {-a.hi, -a.lo}; }
+inline Interval operator-(Interval a, Interval b) { return a + (-b); }
+inline Interval operator*(Interval a, Interval b) {
+  const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+  for (double x : p)
+    if (std::isnan(x)) return Interval::top();
+  return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
+}
+inline Interval reciprocal(Interval b) {
+  if (b.contains_zero()) return Interval::top();
+  return {1 / b.hi, 1 / b.lo};
+}
+inline Interval operator/(Interval a, Interval b) { return a * reciprocal(b); }
+inline Interval abs(Interval a) { return a.lo >= 0 ? a : a.hi <= 0 ? -a : Interval{0, a.mag()}; }
+inline Interval square(Interval a) { Interval m = abs(a); return {m.lo * m.lo, m.hi * m.hi}; }
+inline Interval sqrt(Interval a) { return {std::sqrt(std::max(a.lo, 0.0)), std::sqrt(std::max(a.hi, 0.0))}; }
+
+// Half the spacing of floats at magnitude m: the largest error of rounding any |x| <= m to float
+// (round to nearest, m a normal float magnitude): 2^(floor(log2 m) - 24).
+inline double float_half_ulp(double m) {
+  if (!(m > 0)) return 0;
+  if (!std::isfinite(m)) return kInf;
+  return std::ldexp(1.0, std::ilogb(m) - 24);
+}
+
+}  // namespace doublet::plan
