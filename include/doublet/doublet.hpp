@@ -91,6 +91,10 @@ struct Options {
   // variable, a function (every overload), or FUNCTION.LOCAL for a local variable or parameter.
   // A later entry for the same NAME wins; a NAME the shader does not declare is an error.
   std::vector<std::pair<std::string, Mode>> mode_for;
+  // Whole-shader float-float optimizations (src/lower/optimize_df.hpp, docs/performance.md):
+  // cheaper rules of equal or better accuracy where the operands allow (x*x, a power of two, a
+  // float widened to double). Off: every operation is its general rule.
+  bool optimize = true;
 };
 
 // One member of a uniform or storage block after lowering (members of nested structs are listed

@@ -16,6 +16,7 @@
 #include "lower/lints.hpp"
 #include "lower/lower.hpp"
 #include "lower/matrix_helpers.hpp"
+#include "lower/optimize_df.hpp"
 #include "rules/rule_library.hpp"
 
 namespace doublet {
@@ -134,6 +135,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   result.manifest.mode = std::string(to_string(options.mode));
   if (!native && !passes::apply_modes(module, ctx, pragmas)) return result;
   if (!native && !passes::lower_doubles(module, ctx)) return result;
+  if (options.optimize && !passes::optimize_df(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
   if (!passes::check_target(module, ctx)) return result;
 
