@@ -2,6 +2,7 @@
 // (and optionally manifests and depfiles). One input goes to -o (or stdout); several go to
 // --out-dir, lowered in parallel. Outputs are replaced atomically and only when the
 // shader lowered without errors.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -63,6 +64,7 @@ struct LowerArgs {
   std::string target = "es300";
   std::vector<std::string> defines;
   std::vector<std::string> include_dirs;
+  std::vector<std::string> warnings;  // -Wno-NAME, -WNAME, -Werror, in order
   std::string manifest;
   bool depfile = false;         // -MD
   std::string depfile_path;     // -MF
@@ -75,6 +77,33 @@ struct LowerArgs {
   std::string mode;                   // --mode (empty: df64)
   std::vector<std::string> mode_for;  // --mode-for NAME=MODE
 };
+
+// -Wno-NAME silences lint NAME ("all": every lint), -WNAME turns it back on, -Werror makes
+// lint warnings errors; a later flag wins over an earlier one.
+template <typename Problem>
+void apply_warning_flags(const std::vector<std::string>& flags, Options& opt, Problem&& problem) {
+  std::vector<std::string_view> known = lint_names();
+  std::vector<std::string_view> on = known;
+  for (const std::string& flag : flags) {
+    const bool negated = flag.rfind("no-", 0) == 0;
+    const std::string name = negated ? flag.substr(3) : flag;
+    if (name == "error") {
+      opt.lint_errors = !negated;
+    } else if (name == "all") {
+      on = negated ? std::vector<std::string_view>{} : known;
+    } else if (std::find(known.begin(), known.end(), name) != known.end()) {
+      std::erase(on, name);
+      if (!negated) on.push_back(*std::find(known.begin(), known.end(), name));
+    } else {
+      std::string list;
+      for (std::string_view k : known) list += std::string(k) + ", ";
+      problem("-W" + flag + ": unknown warning (expected -Wno-NAME or -WNAME with NAME one of " + list +
+              "all; or -Werror)");
+    }
+  }
+  for (std::string_view k : known)
+    if (std::find(on.begin(), on.end(), k) == on.end()) opt.disabled_lints.emplace_back(k);
+}
 
 // Options shared by every input; the usage error, if any, in `error`.
 Options common_options(const LowerArgs& a, std::string& error) {
@@ -101,6 +130,7 @@ Options common_options(const LowerArgs& a, std::string& error) {
   else if (a.hi_suffix == a.lo_suffix)
     problem("--hi-suffix and --lo-suffix must differ");
   opt.include_dirs = a.include_dirs;
+  apply_warning_flags(a.warnings, opt, problem);
   opt.hi_suffix = a.hi_suffix;
   opt.lo_suffix = a.lo_suffix;
   opt.constant_range_errors = a.constant_range_errors;
@@ -247,6 +277,11 @@ Command add_lower_command(CLI::App& app) {
       ->allow_extra_args(false);
   cmd->add_option("-I,--include-dir", args->include_dirs, "Add a directory searched by #include")
       ->type_name("DIR")
+      ->allow_extra_args(false);
+  cmd->add_option("-W", args->warnings,
+                  "-Wno-NAME silences a lint (float-literal, wasted-double, smooth-double-varying; all), "
+                  "-WNAME turns it back on, -Werror makes lint warnings errors")
+      ->type_name("no-NAME|NAME|error")
       ->allow_extra_args(false);
   cmd->add_option("--manifest", args->manifest, "Write the interface manifest (JSON) to FILE; '-' with -o FILE: stdout")
       ->type_name("FILE");

@@ -231,7 +231,7 @@ class Lints {
     }
     if (t.kind == Token::Identifier) {
       if (i + 1 < tokens_.size() && tokens_[i + 1].text == "(") return {};
-      return definition_extent(t.text, i, 0);
+      return definition_extent(t.text, i);
     }
     if (t.kind != Token::Number) return {};
     // The literal alone when it is the value (`-0.1` is folded at the 0.1); otherwise a
@@ -279,8 +279,7 @@ class Lints {
 
   // The tokens defining `name`, used at token `use`: a `#define name BODY`, or a
   // `const DOUBLETYPE ... name = EXPR` before the use. Empty when not found.
-  std::vector<size_t> definition_extent(const std::string& name, size_t use, int depth) const {
-    if (depth > 8) return {};
+  std::vector<size_t> definition_extent(const std::string& name, size_t use) const {
     std::vector<size_t> out;
     // The last definition before the use wins, as for both macros and scopes.
     for (size_t k = use; k-- > 0;) {
