@@ -1,0 +1,193 @@
+// The range and error analysis on small shaders. Every expected number is derived by hand in the
+// comment next to it (interval arithmetic, derivatives, float spacing), never taken from a run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "plan/planner.hpp"
+
+namespace {
+
+using namespace doublet;
+using namespace doublet::plan;
+
+PlanOutcome run(const std::string& shader, const std::string& scene_json, Stage stage = Stage::Vertex) {
+  Scene scene;
+  Diagnostic d;
+  EXPECT_TRUE(parse_scene(scene_json, "scene.json", &scene, &d)) << format_diagnostic(d);
+  Options o;
+  o.stage = stage;
+  o.file_name = "test.vert";
+  return make_plan(shader, o, scene);
+}
+
+const PlanRow& row(const PlanOutcome& p, const std::string& name) {
+  for (const PlanRow& r : p.rows)
+    if (r.name == name) return r;
+  ADD_FAILURE() << "no row " << name;
+  static PlanRow none;
+  return none;
+}
+
+std::string mode_for(const PlanOutcome& p, const std::string& name) {
+  for (const auto& [n, m] : p.mode_for)
+    if (n == name) return std::string(to_string(m));
+  return "(none)";
+}
+
+TEST(PlanAnalysis, ProductRangeAndBudgets) {
+  const PlanOutcome p = run(R"(#version 450
+uniform double x;
+uniform double y;
+out double r;
+void main() { double z = x * y; r = z; }
+)", R"({"inputs": {"x": {"min": 1, "max": 2}, "y": {"min": -3, "max": 4}},
+        "outputs": {"r": {"abs_error": 1e-3}}})");
+  ASSERT_TRUE(p.ok);
+  // [1,2] * [-3,4]: endpoint products -3, 4, -6, 8 -> [-6, 8].
+  EXPECT_EQ(row(p, "main.z").range.lo, -6);
+  EXPECT_EQ(row(p, "main.z").range.hi, 8);
+  // r = x*y: dr/dx = y, |y| <= 4 -> budget 1e-3 / 4; dr/dy = x, |x| <= 2 -> 1e-3 / 2.
+  EXPECT_DOUBLE_EQ(row(p, "x").budget, 2.5e-4);
+  EXPECT_DOUBLE_EQ(row(p, "y").budget, 5e-4);
+  // z needs log2(8 / 1e-3) + 1 margin bit = 13.97 bits: float (24) is ample, so main runs in fp32.
+  EXPECT_NEAR(row(p, "main.z").bits, std::log2(8 / 1e-3) + 1, 1e-9);
+  EXPECT_EQ(mode_for(p, "main"), "fp32");
+  EXPECT_TRUE(p.feasible);
+}
+
+TEST(PlanAnalysis, QuotientAndSquareRootSensitivities) {
+  const PlanOutcome p = run(R"(#version 450
+uniform double x;
+uniform double y;
+out double q;
+out double s;
+void main() { q = x / y; s = sqrt(y); }
+)", R"({"inputs": {"x": {"min": 1, "max": 2}, "y": {"min": 4, "max": 8}},
+        "outputs": {"q": {"abs_error": 1e-3}, "s": {"abs_error": 1e-3}}})");
+  ASSERT_TRUE(p.ok);
+  // [1,2] / [4,8] = [1/8, 1/2]; sqrt([4,8]) = [2, 2.83].
+  EXPECT_DOUBLE_EQ(row(p, "q").range.lo, 0.125);
+  EXPECT_DOUBLE_EQ(row(p, "q").range.hi, 0.5);
+  EXPECT_DOUBLE_EQ(row(p, "s").range.lo, 2);
+  EXPECT_DOUBLE_EQ(row(p, "s").range.hi, std::sqrt(8.0));
+  // dq/dx = 1/y <= 1/4 -> budget(x) = 4e-3.
+  EXPECT_DOUBLE_EQ(row(p, "x").budget, 4e-3);
+  // dq/dy = x/y^2 <= 2/16 -> 8e-3; ds/dy = 1/(2 sqrt y) <= 1/4 -> 4e-3; the tighter one wins.
+  EXPECT_DOUBLE_EQ(row(p, "y").budget, 4e-3);
+}
+
+TEST(PlanAnalysis, RelationBoundsTheDifferenceAndPicksRte) {
+  const std::string shader = R"(#version 450
+uniform dvec3 a;
+uniform dvec3 b;
+out dvec3 d;
+void main() { dvec3 t = a - b; d = t; }
+)";
+  const PlanOutcome related = run(shader, R"({"inputs": {"a": {"abs_max": 1e6}, "b": {"abs_max": 1e6}},
+      "relations": [{"difference": ["a", "b"], "abs_max": 10}], "outputs": {"d": {"abs_error": 1e-3}}})");
+  ASSERT_TRUE(related.ok);
+  EXPECT_EQ(row(related, "main.t").range.lo, -10);
+  EXPECT_EQ(row(related, "main.t").range.hi, 10);
+  // Float reads of a and b round by half an ulp at 1e6 (2^(19-24) = 0.03 m): fp32 fails. rte
+  // subtracts the split values exactly and rounds |t| <= 10 once (2^(3-24) = 4.8e-7): it fits.
+  EXPECT_EQ(mode_for(related, "main"), "rte");
+
+  const PlanOutcome unrelated = run(shader, R"({"inputs": {"a": {"abs_max": 1e6}, "b": {"abs_max": 1e6}},
+      "outputs": {"d": {"abs_error": 1e-3}}})");
+  ASSERT_TRUE(unrelated.ok);
+  EXPECT_EQ(row(unrelated, "main.t").range.lo, -2e6);  // [-1e6, 1e6] - [-1e6, 1e6]
+  EXPECT_EQ(row(unrelated, "main.t").range.hi, 2e6);
+  // |t| up to 2e6: float's half ulp there is 2^(20-24) = 0.06 > 1e-3: t stays df64.
+  EXPECT_EQ(mode_for(unrelated, "main"), "(none)");
+  EXPECT_EQ(mode_for(unrelated, "main.t"), "(none)");
+}
+
+TEST(PlanAnalysis, MatrixTimesVector) {
+  const PlanOutcome p = run(R"(#version 450
+uniform dmat2 m;
+uniform dvec2 v;
+out dvec2 r;
+void main() { r = m * v; }
+)", R"({"inputs": {"m": {"abs_max": 1}, "v": {"min": 0, "max": 3}}, "outputs": {"r": {"abs_error": 1e-3}}})");
+  ASSERT_TRUE(p.ok);
+  // r_i = m_i0 v_0 + m_i1 v_1, each term in [-1,1] * [0,3] = [-3, 3]: r_i in [-6, 6].
+  EXPECT_EQ(row(p, "r").range.lo, -6);
+  EXPECT_EQ(row(p, "r").range.hi, 6);
+  // dr_i/dv_j = m_ij: a v error in every component moves r_i by up to |m_i0| + |m_i1| = 2.
+  EXPECT_DOUBLE_EQ(row(p, "v").budget, 5e-4);
+}
+
+TEST(PlanAnalysis, CalleeAnalysedWithTheArgumentInterval) {
+  const PlanOutcome p = run(R"(#version 450
+double sq(double a) { return a * a; }
+uniform double x;
+out double r;
+void main() { r = sq(x); }
+)", R"({"inputs": {"x": {"min": -3, "max": 2}}, "outputs": {"r": {"abs_error": 1e-3}}})");
+  ASSERT_TRUE(p.ok);
+  // Interval product without dependency tracking: [-3,2] * [-3,2] -> products 9, -6, -6, 4.
+  EXPECT_EQ(row(p, "r").range.lo, -6);
+  EXPECT_EQ(row(p, "r").range.hi, 9);
+  EXPECT_EQ(row(p, "sq.a").range.lo, -3);
+  EXPECT_EQ(row(p, "sq.a").range.hi, 2);
+}
+
+TEST(PlanAnalysis, LoopWidensToInfinityAndKeepsDf64) {
+  const PlanOutcome p = run(R"(#version 450
+uniform double x;
+uniform int n;
+out double r;
+void main() {
+  double s = 0.0lf;
+  for (int i = 0; i < n; ++i) s += x;
+  r = s;
+}
+)", R"({"inputs": {"x": {"min": 1, "max": 2}}, "outputs": {"r": {"abs_error": 1e-3}}})");
+  ASSERT_TRUE(p.ok);
+  // s grows by [1,2] every trip and the trip count is unknown: [0, +inf].
+  EXPECT_EQ(row(p, "main.s").range.lo, 0);
+  EXPECT_TRUE(std::isinf(row(p, "main.s").range.hi));
+  EXPECT_FALSE(p.feasible);  // no bound can be proven
+  EXPECT_TRUE(p.mode_for.empty());
+  EXPECT_EQ(row(p, "main.s").mode, Mode::Df64);
+}
+
+// The acceptance arithmetic (docs/plan.md): float's half spacing at |rel| <= 1e4 is
+// 2^(13-24) = 4.9e-4 m, within half of 1 mm; at 1e5 it is 2^(16-24) = 3.9e-3 m, not.
+TEST(PlanAnalysis, GlobeDemotesRelOnlyWhenFloatSpacingAllowsIt) {
+  const std::string shader = R"(#version 300 es
+layout(location = 0) in dvec3 position;
+uniform dvec3 eye;
+flat out dvec3 v_rel;
+void main() { dvec3 rel = position - eye; v_rel = rel; gl_Position = vec4(vec3(rel), 1.0); }
+)";
+  auto scene = [](const char* within, const char* abs_error) {
+    return std::string(R"({"inputs": {"position": {"abs_max": 6.4e6}, "eye": {"abs_max": 6.4e6}},
+        "relations": [{"difference": ["position", "eye"], "abs_max": )") + within +
+           R"(}], "outputs": {"v_rel": {"abs_error": )" + abs_error + "}}}";
+  };
+  const PlanOutcome near = run(shader, scene("1e4", "1e-3"));
+  ASSERT_TRUE(near.ok);
+  EXPECT_EQ(mode_for(near, "main.rel"), "fp32");
+  const PlanOutcome far = run(shader, scene("1e5", "1e-3"));
+  EXPECT_EQ(mode_for(far, "main.rel"), "(none)");
+  EXPECT_EQ(row(far, "main.rel").mode, Mode::Df64);
+  const PlanOutcome far_cm = run(shader, scene("1e5", "1e-2"));  // 3.9e-3 <= 1e-2 / 2
+  EXPECT_NE(mode_for(far_cm, "main.rel"), "(none)");
+}
+
+TEST(PlanAnalysis, UnknownSceneNamesAreErrorsAtTheirPlace) {
+  const PlanOutcome p = run(R"(#version 450
+uniform double x;
+out double r;
+void main() { r = x; }
+)", "{\"inputs\": {\"x\": {\"abs_max\": 1}, \"nope\": {\"abs_max\": 1}},\n \"outputs\": {\"r\": {\"abs_error\": 1}}}");
+  EXPECT_FALSE(p.ok);
+  ASSERT_FALSE(p.diagnostics.empty());
+  EXPECT_EQ(p.diagnostics[0].line, 1);
+  EXPECT_EQ(p.diagnostics[0].column, 42);  // the value of "nope"
+  EXPECT_NE(p.diagnostics[0].message.find("'nope'"), std::string::npos);
+}
+
+}  // namespace
