@@ -456,11 +456,14 @@ class Lints {
     for (const auto& v : module_.globals) {
       if (v->storage != ir::Storage::Out || !v->declared_type.contains_double() || v->interp == ir::Interp::Flat)
         continue;
+      // ES 1.00 (source or target) has no `flat`: a uniform is the only way to keep the precision.
+      const bool no_flat = ctx_.options.target == Target::Es100 || (module_.source_es && module_.source_version == 100);
       report(global_declaration(*v),
              "'" + v->name + "' is a double vertex output without 'flat': its fragment input must be flat "
              "(GLSL allows no smooth double input, and ES 3.00 links only matching qualifiers), and "
-             "interpolating hi and lo separately would keep only float precision; declare it flat, or pass the "
-             "value as a uniform",
+             "interpolating hi and lo separately would keep only float precision; " +
+                 std::string(no_flat ? "ES 1.00 has no 'flat', so pass the value as a uniform"
+                                     : "declare it flat, or pass the value as a uniform"),
              "smooth-double-varying");
     }
   }

@@ -186,6 +186,20 @@ TEST(SmoothDoubleVaryingLint, DoubleVertexOutputWithoutFlat) {
   EXPECT_NE(found[0].message.find("declare it flat, or pass the value as a uniform"), std::string::npos);
 }
 
+TEST(SmoothDoubleVaryingLint, Es100HasNoFlatSoTheAdviceIsAUniform) {
+  doublet::Options o = options(doublet::Stage::Vertex);
+  o.target = doublet::Target::Es100;
+  auto r = doublet::lower("#version 100\nattribute vec3 p;\nvarying dvec3 v_pos;\n"
+                          "void main() { v_pos = dvec3(p) * 2.0lf; gl_Position = vec4(p, 1.0); }\n", o);
+  ASSERT_TRUE(r.ok) << all(r);
+  auto found = lint(r, "smooth-double-varying");
+  ASSERT_EQ(found.size(), 1u) << all(r);
+  EXPECT_EQ(found[0].line, 3);
+  EXPECT_EQ(found[0].column, 15);
+  EXPECT_NE(found[0].message.find("ES 1.00 has no 'flat', so pass the value as a uniform"), std::string::npos)
+      << found[0].message;
+}
+
 // A smooth double fragment input never reaches the lint: GLSL forbids it and glslang says so.
 TEST(SmoothDoubleVaryingLint, SmoothDoubleFragmentInputIsAnError) {
   doublet::Options o = options(doublet::Stage::Fragment);
