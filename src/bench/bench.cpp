@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "bench/kernels.hpp"
+#include "bench/opcount.hpp"
 #include "runner/timed_compute.hpp"
 
 namespace doublet::bench {
@@ -38,6 +39,7 @@ struct Workload {
   double ops_per_dispatch = 0;
   int steps = 1;            // kernels: chain length; shaders: 1 (one invocation is one "op")
   int checked_buffer = -1;  // kernels: the output buffer whose values must stay finite
+  std::string source16;     // kernels: the source with 16 steps written out per loop trip (op counts)
 };
 
 // A user shader's buffers (its uniforms below): every reflected block gets its fixed part plus `elements` records of
@@ -91,6 +93,10 @@ Measurement measure(const BenchOptions& o, const Workload& w, runner::Backend ba
     return m;
   }
   m.size = shader_size(v.glsl);
+  if (!w.source16.empty()) {
+    const Variant v16 = make_variant(mode, backend, w.source16, o.target, w.name);
+    if (!v16.glsl.empty()) m.emitted_flops_per_step = float_ops_per_step(v.glsl, v16.glsl);
+  }
   runner::ComputeJob job;
   job.glsl = v.glsl;
   job.buffers = w.buffers;
@@ -166,6 +172,7 @@ bool run_bench(const BenchOptions& o, BenchReport* report, std::string* error) {
       w.groups = static_cast<uint32_t>((o.elements + kLocalSize - 1) / kLocalSize);
       w.ops_per_dispatch = static_cast<double>(w.groups) * kLocalSize * w.steps;
       w.checked_buffer = 1;
+      w.source16 = with_doubled_unroll(w.source, kernel_step(*k));
       work.push_back(std::move(w));
     }
   }

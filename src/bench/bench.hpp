@@ -42,6 +42,8 @@ struct Measurement {
   std::optional<double> time_vs_native;  // median / native's median, same op (native from lavapipe)
   bool finite_output = true;       // kernels: every stored value finite
   ShaderSize size;
+  // Kernels: float operations per step in the variant's SPIR-V (bench/opcount.hpp); -1 unknown.
+  double emitted_flops_per_step = -1;
 };
 
 struct BenchReport {

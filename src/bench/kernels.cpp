@@ -2,21 +2,36 @@
 
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
+#include <cstdlib>
+
+#include "rules/rule_library.hpp"
 
 namespace doublet::bench {
 
+namespace {
+// The "Flops:" count of the rule `name` at `width` (rules/*.glsl headers, which docs/rules.md
+// repeats and tests/rules checks); -1 when the library has no such rule.
+int rule_flops(const std::string& name, int width) {
+  for (const rules::RuleInfo& info : rules::RuleLibrary::builtin().info())
+    if (info.name == name && std::find(info.widths.begin(), info.widths.end(), width) != info.widths.end())
+      return std::atoi(info.flops.c_str());
+  return -1;
+}
+}  // namespace
+
 const std::vector<Kernel>& kernels() {
-  // Flops and bits are copied from docs/rules.md and docs/accuracy.md (GLES/lavapipe, es320);
-  // bench_doc_test checks the flops against docs/rules.md.
+  // Flops come from the rule headers (so they follow the rules); bits are copied from
+  // docs/accuracy.md (GLES/lavapipe, es320).
   static const std::vector<Kernel> k = {
-      {"add", "df_add", 21, 1, "47.68", 2048},
-      {"sub", "df_sub", 23, 1, "47.22", 2048},
-      {"mul", "df_mul", 27, 1, "46.35", 2048},
-      {"div", "df_div", 37, 1, "45.81", 2048},
-      {"sqrt", "df_sqrt", 29, 1, "46.73", 2048},
-      {"dot3", "df_dot (3)", 123, 5, "—", 1024},
-      {"length3", "df_length (2-4)", 200, 6, "—", 1024},
-      {"mat4", "df_mul_dmatCxR_dvecC (4 × df_dot 4)", 4 * 171, 28, "—", 256},
+      {"add", "df_add", rule_flops("df_add", 1), 1, "47.68", 2048},
+      {"sub", "df_sub", rule_flops("df_sub", 1), 1, "47.22", 2048},
+      {"mul", "df_mul", rule_flops("df_mul", 1), 1, "46.35", 2048},
+      {"div", "df_div", rule_flops("df_div", 1), 1, "45.81", 2048},
+      {"sqrt", "df_sqrt", rule_flops("df_sqrt", 1), 1, "46.73", 2048},
+      {"dot3", "df_dot (3)", rule_flops("df_dot", 3), 5, "—", 1024},
+      {"length3", "df_length (2-4)", rule_flops("df_length", 3), 6, "—", 1024},
+      {"mat4", "df_mul_dmatCxR_dvecC (4 × df_dot 4)", 4 * rule_flops("df_dot", 4), 28, "—", 256},
   };
   return k;
 }
@@ -50,6 +65,8 @@ Body body(const std::string& op) {
           "v = m * v;", "vec4(v)"};
 }
 }  // namespace
+
+std::string kernel_step(const Kernel& k) { return body(k.op).step; }
 
 std::string kernel_source(const Kernel& k, int steps) {
   const Body b = body(k.op);

@@ -28,6 +28,8 @@ inline constexpr int kUnroll = 8;      // steps written out per loop trip (keeps
 // binding 1 `vec4 outp[]`, binding 2 (mat4 only) `vec4 mcol[4]`. `steps` is rounded up to a
 // multiple of kUnroll.
 std::string kernel_source(const Kernel& k, int steps);
+// The one-step line kernel_source writes kUnroll times in its loop (e.g. "x = x + y;").
+std::string kernel_step(const Kernel& k);
 int rounded_steps(int steps);
 
 // Input buffers for `elements` invocations: values in [0.5, 1) so every chain stays finite.

@@ -27,6 +27,15 @@ std::string flops(const Kernel* k, Mode m) {
   return std::to_string(m == Mode::Df64 ? k->rule_flops : k->fp32_flops);
 }
 
+// Emitted float operations per step, and their excess over the documented count.
+std::string emitted(const Kernel* k, const Measurement& r) {
+  if (!k || r.emitted_flops_per_step < 0) return "—";
+  const double doc = r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g (%+.0f%%)", r.emitted_flops_per_step, 100.0 * (r.emitted_flops_per_step / doc - 1.0));
+  return buf;
+}
+
 std::string ratio(const std::optional<double>& r) { return r ? fixed(*r, 2) + "×" : "—"; }
 
 }  // namespace
@@ -42,13 +51,13 @@ std::string format_markdown(const BenchReport& report) {
          (clock != report.clocks.end() ? clock->second : "none (nothing ran)") + "\n\n";
     s += shader ? "| shader | mode | median ms | min ms | invocations/s | time / fp32 | time / native fp64 | SPIR-V instr | GLSL lines |\n"
                   "|---|---|---|---|---|---|---|---|---|\n"
-                : "| op | mode | flops/step | bits (docs) | median ms | min ms | ops/s | time / fp32 | time / native fp64 | SPIR-V instr | GLSL lines |\n"
-                  "|---|---|---|---|---|---|---|---|---|---|---|\n";
+                : "| op | mode | flops/step (docs) | emitted flops/step (SPIR-V) | bits (docs) | median ms | min ms | ops/s | time / fp32 | time / native fp64 | SPIR-V instr | GLSL lines |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Measurement& r : report.rows) {
       if (r.backend != b) continue;
       const Kernel* k = shader ? nullptr : find_kernel(r.op);
       s += "| " + r.op + " | " + mode_name(r.mode) + " | ";
-      if (!shader) s += flops(k, r.mode) + " | " + documented_bits(k, r.mode) + " | ";
+      if (!shader) s += flops(k, r.mode) + " | " + emitted(k, r) + " | " + documented_bits(k, r.mode) + " | ";
       if (!r.ok) {
         s += "not run | | | | | | |\n";
         continue;
@@ -99,8 +108,11 @@ std::string format_json(const BenchReport& report) {
     row["finite_output"] = r.finite_output;
     row["spirv_instructions"] = r.size.spirv_instructions;
     row["glsl_lines"] = r.size.glsl_lines;
-    if (const Kernel* k = o.shader_path.empty() ? find_kernel(r.op) : nullptr)
+    if (const Kernel* k = o.shader_path.empty() ? find_kernel(r.op) : nullptr) {
       row["flops_per_step"] = r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops;
+      row["emitted_flops_per_step"] =
+          r.emitted_flops_per_step >= 0 ? nlohmann::json(r.emitted_flops_per_step) : nlohmann::json(nullptr);
+    }
     j["results"].push_back(std::move(row));
   }
   j["notes"] = report.notes;

@@ -1,6 +1,7 @@
 // `doublet bench [SHADER]`: throughput per precision mode on lavapipe and Mesa GLES
 // (docs/modes.md). The work is doublet::bench::run_bench(); this file maps the command line to
 // BenchOptions and prints the Markdown table (and the JSON file with --json).
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -9,6 +10,8 @@
 
 #include "atomic_file.hpp"
 #include "bench/bench.hpp"
+#include "bench/compiler.hpp"
+#include "bench/handwritten.hpp"
 #include "bench/kernels.hpp"
 #include "bench/user_shader.hpp"
 #include "commands.hpp"
@@ -20,6 +23,9 @@ struct BenchArgs {
   std::vector<std::string> include_dirs;
   std::string shader, ops = "all", modes = "all", backend = "both", target = "es320", json;
   int elements = 16384, steps = 0, warmup = 2, reps = 7;
+  bool handwritten = false, compiler = false;
+  int lines = 5000;
+  int mandelbrot_size = 128, mandelbrot_iterations = 1000;
 };
 
 std::vector<std::string> split_commas(const std::string& s) {
@@ -30,7 +36,50 @@ std::vector<std::string> split_commas(const std::string& s) {
   return out;
 }
 
+int run_handwritten_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  bench::HandwrittenOptions o;
+  if (a.ops != "all") o.ops = split_commas(a.ops);
+  for (const std::string& op : o.ops)
+    if (std::find(bench::handwritten_ops().begin(), bench::handwritten_ops().end(), op) == bench::handwritten_ops().end())
+      return usage_error(cmd, "unknown op '" + op + "' for --handwritten (add,sub,mul,div,sqrt,mulf,mandelbrot)");
+  o.elements = a.elements;
+  o.steps = a.steps ? a.steps : 1024;
+  o.warmup = a.warmup;
+  o.repetitions = a.reps;
+  o.mandelbrot_size = a.mandelbrot_size;
+  o.mandelbrot_iterations = a.mandelbrot_iterations;
+  bench::HandwrittenReport report;
+  report.command = command_line;
+  std::string error;
+  if (!bench::run_handwritten(o, &report, &error)) {
+    std::cerr << "doublet bench: error: " << error << "\n";
+    return kExitInput;
+  }
+  std::cout << bench::format_handwritten_markdown(report) << std::flush;
+  for (const bench::HandwrittenRow& r : report.rows)
+    if (!r.ok) return 3;
+  return kExitOk;
+}
+
+int run_compiler_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  bench::CompilerOptions o;
+  o.lines = a.lines;
+  o.repetitions = a.reps;
+  const std::optional<Target> target = parse_target(a.target);
+  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
+    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  if (o.lines < 100) return usage_error(cmd, "--lines must be at least 100");
+  o.target = *target;
+  bench::CompilerReport report;
+  report.command = command_line;
+  const bool ok = bench::run_compiler_bench(o, &report);
+  std::cout << bench::format_compiler_markdown(report) << std::flush;
+  return ok ? kExitOk : 3;
+}
+
 int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  if (a.compiler) return run_compiler_command(cmd, a, command_line);
+  if (a.handwritten) return run_handwritten_command(cmd, a, command_line);
   bench::BenchOptions o;
   if (a.ops == "all") {
     for (const bench::Kernel& k : bench::kernels()) o.ops.push_back(k.op);
@@ -101,9 +150,28 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--warmup", args->warmup, "discarded dispatches before timing (default 2)");
   cmd->add_option("--reps", args->reps, "timed dispatches; the median is reported (default 7)");
   cmd->add_option("--json", args->json, "also write the results as JSON (keys: docs/modes.md)");
+  cmd->add_flag("--compiler", args->compiler,
+                "time doublet::lower against glslang's parse of the same generated shader (--lines, --reps, --target)");
+  cmd->add_option("--lines", args->lines, "--compiler: lines of the generated shader (default 5000)");
+  cmd->add_flag("--handwritten", args->handwritten,
+                "compare with a hand-written float-float library on Mesa GLES (ops add,sub,mul,div,sqrt,mulf,mandelbrot; "
+                "docs/performance.md)");
+  cmd->add_option("--mandelbrot-size", args->mandelbrot_size, "--handwritten: pixels per side (default 128)");
+  cmd->add_option("--mandelbrot-iterations", args->mandelbrot_iterations, "--handwritten: iteration limit (default 1000)");
   return {cmd, [cmd, args] {
             // The full command with every default spelled out, so the docs can quote it as run.
             const BenchArgs& a = *args;
+            if (a.compiler)
+              return run_bench_command(*cmd, a,
+                                       "doublet bench --compiler --lines " + std::to_string(a.lines) + " --reps " +
+                                           std::to_string(a.reps) + " --target " + a.target);
+            if (a.handwritten)
+              return run_bench_command(*cmd, a,
+                                       "doublet bench --handwritten --ops " + a.ops + " --elements " +
+                                           std::to_string(a.elements) + " --steps " + std::to_string(a.steps ? a.steps : 1024) +
+                                           " --warmup " + std::to_string(a.warmup) + " --reps " + std::to_string(a.reps) +
+                                           " --mandelbrot-size " + std::to_string(a.mandelbrot_size) +
+                                           " --mandelbrot-iterations " + std::to_string(a.mandelbrot_iterations));
             std::string line = "doublet bench" + (a.shader.empty() ? "" : " " + a.shader) + " --ops " + a.ops +
                                " --modes " + a.modes + " --backend " + a.backend + " --target " + a.target +
                                " --elements " + std::to_string(a.elements) +

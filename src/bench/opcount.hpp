@@ -1,0 +1,27 @@
+// Emitted float operations, counted in SPIR-V (what glslang makes of a variant's GLSL), for
+// comparison with the rules' documented flop counts (docs/rules.md): OpFAdd, OpFSub, OpFMul,
+// OpFDiv, OpFNegate, OpFMod/OpFRem, GLSL.std.450 extended instructions (sqrt, abs, floor, ...)
+// and OpSelect with a float result, each weighted by its result's component count
+// (OpDot: 2n - 1; OpVectorTimesScalar: n; OpMatrixTimesVector: 2 rows cols - rows).
+// Counts are dynamic along main(): an OpFunctionCall counts its callee's operations; both arms of
+// a branch are counted (the rules have no loops).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace doublet::bench {
+
+// Float operations of main(), callees included; -1 when the module has no main or is malformed.
+double count_main_float_ops(const std::vector<uint32_t>& spirv);
+
+// Float operations per step of a kernel: glsl8 and glsl16 are the same kernel with 8 and 16
+// steps written out in its loop; the difference / 8. -1 when either does not compile.
+double float_ops_per_step(const std::string& glsl8, const std::string& glsl16);
+
+// A kernel source (kernels.cpp / handwritten.cpp layout: kUnroll copies of the step line in the
+// loop) with the step lines doubled; empty when the layout is not recognised.
+std::string with_doubled_unroll(const std::string& source, const std::string& step_line);
+
+}  // namespace doublet::bench
