@@ -157,6 +157,10 @@ class Lints {
     };
     if (!on("float-literal") && !on("wasted-double") && !on("smooth-double-varying")) return;
     tokens_ = tokenize(source_);
+    for (size_t i = 0; i + 1 < tokens_.size(); ++i)
+      if (tokens_[i].in_directive && tokens_[i].text == "#" &&
+          (tokens_[i + 1].text == "include" || tokens_[i + 1].text == "line"))
+        foreign_locations_ = true;
     if (on("float-literal")) float_literals();
     if (on("wasted-double")) wasted_doubles();
     if (on("smooth-double-varying")) smooth_varyings();
@@ -215,7 +219,7 @@ class Lints {
       if (e.kind != ir::Expr::Kind::Const || !e.type.is_double() || e.loc.line <= 0) return;
       auto start = token_at(e.loc);
       if (!start) return;
-      for (size_t i : constant_extent(*start, e)) check_literal(i);
+      for (size_t i : constant_extent(*start, e)) check_literal(i, e);
     });
   }
 
@@ -323,7 +327,7 @@ class Lints {
     return is_const && is_double;
   }
 
-  void check_literal(size_t i) {
+  void check_literal(size_t i, const ir::Expr& constant) {
     const Token& t = tokens_[i];
     if (t.kind != Token::Number) return;
     auto digits = float_literal_digits(t.text);
@@ -331,6 +335,11 @@ class Lints {
     double as_double = parse_double(*digits);
     double as_float = static_cast<double>(parse_float(*digits));
     if (as_double == as_float || !std::isfinite(as_float)) return;
+    // With #include or #line, a location may belong to another file: only a literal that is
+    // itself one of the constant's values is taken to be its source.
+    if (foreign_locations_ && std::none_of(constant.values.begin(), constant.values.end(),
+                                           [&](const ir::Scalar& v) { return std::abs(v.d) == as_double; }))
+      return;
     if (!reported_literals_.insert(i).second) return;
     report({t.line, t.column},
            "float literal " + t.text + " becomes " + format_15(as_float) + " as a double; write " + *digits +
@@ -474,6 +483,7 @@ class Lints {
   Context& ctx_;
   std::vector<Finding> findings_;
   std::set<size_t> reported_literals_;
+  bool foreign_locations_ = false;  // #include/#line: IR locations may name other files' lines
 };
 
 }  // namespace

@@ -3,7 +3,9 @@
 // silenced or promoted through Options.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "doublet/doublet.hpp"
@@ -98,6 +100,28 @@ TEST(FloatLiteralLint, QuietWhenTheLiteralIsAFloatOrNotADouble) {
       "  o[1] = double(c) + double(3);\n"      // an int literal is exact
       "  o[2] = din * Q;\n";                   // an unused double constant is never reported
   auto r = doublet::lower(compute(body, "const double UNUSED = 0.3;\nconst double Q = 0.25;\n"), options());
+  ASSERT_TRUE(r.ok) << all(r);
+  EXPECT_TRUE(lint(r, "float-literal").empty()) << all(r);
+}
+
+// A constant from an #include'd file carries that file's line and column; the main file may
+// have a float literal at the same place, which must not be blamed.
+TEST(FloatLiteralLint, IncludedConstantsDoNotBlameTheMainFile) {
+  struct OneFile : doublet::Includer {
+    std::optional<doublet::IncludeResult> include(std::string_view, std::string_view) override {
+      // 0.7 at line 4, column 38 of inc.glsl
+      return doublet::IncludeResult{"inc.glsl", "// 1\n// 2\n// 3\ndouble scaled(double d) { return d * 0.7; }\n"};
+    }
+  } includer;
+  doublet::Options o = options();
+  o.includer = &includer;
+  auto r = doublet::lower("#version 310 es\n"
+                          "#include \"inc.glsl\"\n"
+                          "layout(local_size_x = 1) in;\n"
+                          "float padding_to_reach_col38 = 1.0 + 0.1;\n"  // 0.1 at column 38 (float context)
+                          "layout(std430, binding = 0) buffer B { double o; float fo; };\n"
+                          "void main() { o = scaled(o); fo = padding_to_reach_col38; }\n",
+                          o);
   ASSERT_TRUE(r.ok) << all(r);
   EXPECT_TRUE(lint(r, "float-literal").empty()) << all(r);
 }
