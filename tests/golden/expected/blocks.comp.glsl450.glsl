@@ -11,7 +11,7 @@ struct df_dmat4 {
   mat4 hi;
   mat4 lo;
 };
-// doublet float-float runtime: 21 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 22 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
@@ -428,6 +428,22 @@ df_double df_dot(df_dvec3 a, df_dvec3 b) {
   return r;
 }
 
+// df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
+// power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
+// double-word number. Replaces df_mul (27 flops) and df_div by a power of two.
+// Algorithm: exact scaling of both words by a power of two, then df_finish
+// Source: HFPA (2018), section 2.2 (multiplication by a power of the radix is exact); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 3
+// Range: exact while lo*p stays normal (|lo*p| >= 2^-126) and hi*p does not overflow; an
+// overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
+df_double df_mul_pow2(df_double a, float p) {
+  precise float h = (a.hi * p);
+  precise float l = (a.lo * p);
+  df_double r = df_finish(df_double(h, l), h);
+  return r;
+}
+
 df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
   return df_dvec4(vec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), vec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
 }
@@ -481,7 +497,7 @@ void main()
   df_dvec4 moved = df_mul_dmat4_dvec4(transform, df_make_dvec4_3_1(p.position, df_double(1.0, 0.0)));
   p.position = df_add(df_dvec3(moved.hi.xyz, moved.lo.xyz), df_mul(df_make_dvec3_2_1(offsets[i % 2u], df_double(0.0, 0.0)), df_splat_dvec3(dt)));
   store.particles[i] = p;
-  energies[i] = df_mul(df_mul(df_double(0.5, 0.0), p.mass), df_dot(p.position, p.position));
+  energies[i] = df_mul(df_mul_pow2(p.mass, 0.5), df_dot(p.position, p.position));
   if (i == 0u)
   {
     total = energies[0];

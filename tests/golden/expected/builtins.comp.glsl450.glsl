@@ -3,7 +3,7 @@ precision highp float;
 precision highp int;
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
 
-// doublet float-float runtime: 89 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 90 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 
@@ -1370,6 +1370,20 @@ df_double df_pack_double2x32(uvec2 v) {
   return x;
 }
 
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_dvec3 df_add_f(df_dvec3 a, vec3 b) {
+  df_dvec3 s = df_two_sum(a.hi, b);
+  precise vec3 v = (a.lo + s.lo);
+  df_dvec3 z = df_fast_two_sum(s.hi, v);
+  df_dvec3 r = df_finish(z, s.hi);
+  return r;
+}
+
 df_dvec3 df_make_dvec3_1_1_1(df_double a0, df_double a1, df_double a2) {
   return df_dvec3(vec3(a0.hi, a1.hi, a2.hi), vec3(a0.lo, a1.lo, a2.lo));
 }
@@ -1397,7 +1411,7 @@ void main()
   df_dvec3 v = df_make_dvec3_1_1_1(a, b, df_neg(a));
   df_dvec3 u = df_make_dvec3_1_1_1(b, df_double(1.0, 0.0), a);
   df_double s = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_sign(a), df_floor(a)), df_ceil(a)), df_trunc(a)), df_round(a)), df_round_even(a)), df_fract(a)), df_mod(a, b)), df_modf(a, ip)), df_min(a, b)), df_max(a, b)), df_clamp(a, df_double(0.0, 0.0), b)), df_mix(a, b, df_double(0.25, 0.0))), df_mix_bool(a, b, df_lt(a, b))), df_step(b, a)), df_smoothstep(df_double(0.0, 0.0), b, a)), df_fma(a, b, df_double(1.0, 0.0))), df_frexp(a, e)), df_ldexp(a, e)), df_abs(a)), df_sqrt(df_abs(a))), df_inversesqrt(df_abs(b))), df_length(v)), df_distance(v, u)), df_dot(v, u));
-  df_dvec3 g = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_cross(v, u), df_normalize(v)), df_faceforward(v, u, v)), df_reflect(v, u)), df_refract(df_normalize(v), df_normalize(u), df_double(0.5, 0.0))), df_mod(v, df_splat_dvec3(df_double(2.0, 0.0)))), df_modf(v, vi)), df_mix_bool(v, u, bvec3(true, false, true))), df_step(df_splat_dvec3(df_double(0.5, 0.0)), v)), df_ldexp(v, ivec3(e))), df_clamp(v, u, df_add(u, df_splat_dvec3(df_double(1.0, 0.0))))), df_abs(v)), df_floor(v)), df_fract(v)), df_sign(u));
+  df_dvec3 g = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_cross(v, u), df_normalize(v)), df_faceforward(v, u, v)), df_reflect(v, u)), df_refract(df_normalize(v), df_normalize(u), df_double(0.5, 0.0))), df_mod(v, df_splat_dvec3(df_double(2.0, 0.0)))), df_modf(v, vi)), df_mix_bool(v, u, bvec3(true, false, true))), df_step(df_splat_dvec3(df_double(0.5, 0.0)), v)), df_ldexp(v, ivec3(e))), df_clamp(v, u, df_add_f(u, vec3(1.0)))), df_abs(v)), df_floor(v)), df_fract(v)), df_sign(u));
   bool c = any(df_less_than(v, u)) || any(df_less_than_equal(v, g)) || all(df_greater_than(g, u)) || any(df_greater_than_equal(u, v)) || all(df_equal_components(v, g)) || any(df_not_equal_components(g, u));
   if (df_isnan(s) || df_isinf(s) || any(df_isnan(g)) || any(df_isinf(g)) || c)
   {

@@ -6,7 +6,7 @@ struct df_dvec4 {
   vec4 hi;
   vec4 lo;
 };
-// doublet float-float runtime: 32 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 33 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -617,6 +617,20 @@ float df_to_float(df_double a) {
   return r.hi;
 }
 
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  float v = ((a.lo + s.lo) - df_guard);
+  df_double z = df_fast_two_sum(s.hi, v);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
 df_dvec4 df_make_dvec4_2_1_1(df_dvec2 a0, df_double a1, df_double a2) {
   return df_dvec4(vec4(a0.hi.x, a0.hi.y, a1.hi, a2.hi), vec4(a0.lo.x, a0.lo.y, a1.lo, a2.lo));
 }
@@ -644,7 +658,7 @@ void main()
 {
   dir = df_dvec3(dir_hi, dir_lo);
   bias = df_double(bias_hi, bias_lo);
-  df_double x = df_add(df_add(df_from_int(cell.x), df_from_uint(id.y)), df_double(1.0, 0.0));
+  df_double x = df_add_f(df_add(df_from_int(cell.x), df_from_uint(id.y)), 1.0);
   df_dvec2 d2 = df_add(df_from_int(cell), df_from_uint(id));
   df_dvec4 d4 = df_make_dvec4_2_1_1(d2, x, df_double(1.0, 0.0));
   int n = df_to_int(x) + df_to_int(d2).y;

@@ -7,7 +7,7 @@ struct df_dmat4 {
   mat4 hi;
   mat4 lo;
 };
-// doublet float-float runtime: 28 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 27 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
@@ -474,15 +474,6 @@ df_double df_length(df_dvec3 a) {
   return z;
 }
 
-// df_from_float: the exact double-word (f, 0).
-// Algorithm: hi = f, lo = 0
-// Source: JMP 2017, Definition 1.4
-// Bound: exact
-// Flops: 0
-df_double df_from_float(float f) {
-  return df_double(f, float(0.0));
-}
-
 // df_add_f: a + b with b a plain float (b need not be a double-word).
 // Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
@@ -568,6 +559,6 @@ void main()
   world = df_dvec3(world_hi, world_lo);
   df_dvec4 p = df_mul_dmat4_dvec4(view, df_make_dvec4_3_1(df_sub(world, eye), df_double(1.0, 0.0)));
   vec4 h = imageLoad(heights, ivec2(uv * 16.0));
-  df_double d = df_add(df_length(df_dvec3(p.hi.xyz, p.lo.xyz)), df_from_float(h.x));
+  df_double d = df_add_f(df_length(df_dvec3(p.hi.xyz, p.lo.xyz)), h.x);
   color = texture(albedo, uv) * df_to_float(df_fract(d));
 }

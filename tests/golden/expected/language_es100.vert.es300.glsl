@@ -2,7 +2,7 @@
 precision highp float;
 precision highp int;
 
-// doublet float-float runtime: 26 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 25 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -281,53 +281,6 @@ df_double df_add(df_double a, df_double b) {
   return r;
 }
 
-// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
-// Bound: exact
-// Flops: 19
-// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
-//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
-//        (every product of halves and every partial sum is exact).
-// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
-// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
-df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
-  df_double sa = df_split(a);
-  df_double sb = df_split(b);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
-  return df_double(p, e);
-}
-
-// df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
-// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
-// Bound: 7u^2
-// Flops: 27
-// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
-//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
-// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
-// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
-df_double df_mul(df_double a, df_double b) {
-  df_double c = df_two_prod(a.hi, b.hi);
-  float tl = ((a.hi * b.lo) - df_guard);
-  float th = ((a.lo * b.hi) - df_guard);
-  float cl2 = ((th + tl) - df_guard);
-  float cl3 = ((c.lo + cl2) - df_guard);
-  df_double z = df_fast_two_sum(c.hi, cl3);
-  df_double r = df_finish(z, c.hi);
-  return r;
-}
-
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_dvec2(hi, lo) (not a normalized double-word).
 // Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
@@ -461,6 +414,22 @@ vec3 df_to_float(df_dvec3 a) {
   return r.hi;
 }
 
+// df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
+// power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
+// double-word number. Replaces df_mul (27 flops) and df_div by a power of two.
+// Algorithm: exact scaling of both words by a power of two, then df_finish
+// Source: HFPA (2018), section 2.2 (multiplication by a power of the radix is exact); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 3
+// Range: exact while lo*p stays normal (|lo*p| >= 2^-126) and hi*p does not overflow; an
+// overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
+df_double df_mul_pow2(df_double a, float p) {
+  float h = ((a.hi * p) - df_guard);
+  float l = ((a.lo * p) - df_guard);
+  df_double r = df_finish(df_double(h, l), h);
+  return r;
+}
+
 df_dvec3 df_splat_dvec3(df_double s) {
   return df_dvec3(vec3(s.hi), vec3(s.lo));
 }
@@ -520,7 +489,7 @@ void main()
   df_dvec3 eye = to_eye(camera.frame, position);
   df_double w = weigh(camera);
   history[0] = w;
-  history[1] = df_mul(history[0], df_double(0.5, 0.0));
+  history[1] = df_mul_pow2(history[0], 0.5);
   uv = df_mul(df_dvec2(eye.hi.xy, eye.lo.xy), df_splat_dvec2(history[1]));
   tint = vec4(df_to_float(w));
   if (df_equal(w, df_double(0.0, 0.0)))

@@ -14,7 +14,7 @@ struct df_dmat4 {
   mat4 hi;
   mat4 lo;
 };
-// doublet float-float runtime: 42 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 43 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -781,6 +781,20 @@ vec3 df_to_float(df_dvec3 a) {
   return r.hi;
 }
 
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  float v = ((a.lo + s.lo) - df_guard);
+  df_double z = df_fast_two_sum(s.hi, v);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
 // df_mul_dmat3_double: df_mul on each element (column by column), so each element has df_mul's bound (rules/arith.glsl).
 df_dmat3 df_mul_dmat3_double(df_dmat3 a, df_double b) {
   df_dvec3 c0 = df_mul(df_dvec3(a.hi[0], a.lo[0]), df_dvec3(vec3(b.hi), vec3(b.lo)));
@@ -1113,7 +1127,7 @@ void main()
   df_dmat3 n = df_mul_dmat3_double(df_inverse_dmat3(normal_basis), df_determinant_dmat3(normal_basis));
   n = df_sub_dmat3_dmat3(scaled(n, df_double(2.0, 0.0)), df_dmat3(mat3(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0), mat3(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)));
   df_assign_column_dmat3(n, 1, df_from_float(normal));
-  df_assign_element_dmat3(n, 2, column, df_add(df_component_dvec3(df_dvec3(n.hi[2], n.lo[2]), column), df_double(3.0, 0.0)));
+  df_assign_element_dmat3(n, 2, column, df_add_f(df_component_dvec3(df_dvec3(n.hi[2], n.lo[2]), column), 3.0));
   df_assign_column_dmat4(mvp, column, p);
   df_dmat2 w = df_div_dmat2_double(df_matrix_comp_mult_dmat2(warp[0], warp[1]), df_double(4.0, 0.0));
   w = df_add_dmat2_dmat2(df_neg_dmat2(w), df_mul_dmat2_dmat2(df_inverse_dmat2(warp[1]), warp[0]));

@@ -11,7 +11,7 @@ struct df_dvec3 {
   vec3 hi;
   vec3 lo;
 };
-// doublet float-float runtime: 18 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 20 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
 
@@ -302,6 +302,36 @@ vec4 df_to_float(df_dvec4 a) {
   return r.hi;
 }
 
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  precise float v = (a.lo + s.lo);
+  df_double z = df_fast_two_sum(s.hi, v);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
+// power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
+// double-word number. Replaces df_mul (27 flops) and df_div by a power of two.
+// Algorithm: exact scaling of both words by a power of two, then df_finish
+// Source: HFPA (2018), section 2.2 (multiplication by a power of the radix is exact); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 3
+// Range: exact while lo*p stays normal (|lo*p| >= 2^-126) and hi*p does not overflow; an
+// overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
+df_double df_mul_pow2(df_double a, float p) {
+  precise float h = (a.hi * p);
+  precise float l = (a.lo * p);
+  df_double r = df_finish(df_double(h, l), h);
+  return r;
+}
+
 df_double df_post_increment_double(inout df_double x) {
   df_double old = x;
   x = df_add(x, df_double(1.0, 0.0));
@@ -360,7 +390,7 @@ void main()
   df_double a = df_double(v.hi.x, v.lo.x);
   df_double b = df_double(v.hi.y, v.lo.y);
   a = df_add(a, b);
-  a = df_sub(a, df_double(0.5, 0.0));
+  a = df_add_f(a, -0.5);
   a = df_mul(a, df_neg(b));
   a = df_div(a, df_double(3.0, 0.0));
   df_double c = df_post_increment_double(a);
@@ -368,8 +398,8 @@ void main()
   df_dvec3 w = df_dvec3(v.hi.xyz, v.lo.xyz);
   df_assign_dvec3_xz(w, df_make_dvec2_1_1(a, b));
   df_assign_component_dvec3(w, 1, c);
-  df_assign_component_dvec3(w, k, df_add(df_component_dvec3(w, k), df_double(1.0, 0.0)));
-  df_assign_component_dvec3(w, 1, df_mul(df_double(w.hi.y, w.lo.y), df_double(2.0, 0.0)));
+  df_assign_component_dvec3(w, k, df_add_f(df_component_dvec3(w, k), 1.0));
+  df_assign_component_dvec3(w, 1, df_mul_pow2(df_double(w.hi.y, w.lo.y), 2.0));
   bool less = df_lt(a, b);
   bool ge = df_ge(a, b);
   df_double m = less ? a : (ge ? b : c);

@@ -6,7 +6,7 @@ struct df_dmat2 {
   mat2 hi;
   mat2 lo;
 };
-// doublet float-float runtime: 19 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 20 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -378,6 +378,20 @@ float df_to_float(df_double a) {
   return r.hi;
 }
 
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  float v = ((a.lo + s.lo) - df_guard);
+  df_double z = df_fast_two_sum(s.hi, v);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
 df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
   return df_dvec2(vec2(a0.hi, a1.hi), vec2(a0.lo, a1.lo));
 }
@@ -452,7 +466,7 @@ void main()
   {
   case 0:
     {
-      s = df_add(s, df_double(1.0, 0.0));
+      s = df_add_f(s, 1.0);
       break;
     }
   default:

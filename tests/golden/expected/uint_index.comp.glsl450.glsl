@@ -50,6 +50,35 @@ df_double df_from_float(float f) {
   return df_double(f, float(0.0));
 }
 
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
+// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
+// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 2
+vec2 df_to_float(df_dvec2 a) {
+  precise vec2 f = (a.hi + a.lo);
+  df_dvec2 r = df_finish(df_dvec2(f, vec2(0.0)), a.hi);
+  return r.hi;
+}
+
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
 // Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
@@ -80,54 +109,18 @@ df_double df_fast_two_sum(float a, float b) {
   return df_double(s, e);
 }
 
-// df_add: a + b.
-// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
-// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
-// Bound: 3u^2 + 13u^3
-// Flops: 21
-// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
-//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
-// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
-// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
-// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
-df_double df_add(df_double a, df_double b) {
-  df_double s = df_two_sum(a.hi, b.hi);
-  df_double t = df_two_sum(a.lo, b.lo);
-  precise float c = (s.lo + t.hi);
-  df_double v = df_fast_two_sum(s.hi, c);
-  precise float w = (t.lo + v.lo);
-  df_double z = df_fast_two_sum(v.hi, w);
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  precise float v = (a.lo + s.lo);
+  df_double z = df_fast_two_sum(s.hi, v);
   df_double r = df_finish(z, s.hi);
   return r;
-}
-
-// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
-// the caller's plain float result on the high words. One select per component, so the common
-// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
-// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
-// Algorithm: finiteness and zero test of hi, then selection
-// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
-// Bound: exact
-// Flops: 1 (plus 2 comparisons)
-// (width 2: the width-1 df_finish applied to each component)
-df_dvec2 df_finish(df_dvec2 z, vec2 f) {
-  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
-  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
-  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
-}
-
-// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
-// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
-// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
-// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
-// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
-// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
-// Bound: 0.5 ulp (correctly rounded to float)
-// Flops: 2
-vec2 df_to_float(df_dvec2 a) {
-  precise vec2 f = (a.hi + a.lo);
-  df_dvec2 r = df_finish(df_dvec2(f, vec2(0.0)), a.hi);
-  return r.hi;
 }
 
 df_dvec3 df_splat_dvec3(df_double s) {
@@ -162,7 +155,7 @@ void main()
   {
     v[i] = f(df_component_dvec3(p, int(i)));
     df_assign_component_dvec3(p, int(i), df_from_float(v[i].y));
-    df_assign_component_dvec3(p, int(i), df_add(df_component_dvec3(p, int(i)), df_double(1.0, 0.0)));
+    df_assign_component_dvec3(p, int(i), df_add_f(df_component_dvec3(p, int(i)), 1.0));
   }
   v[3] = df_to_float(df_dvec2(p.hi.xy, p.lo.xy));
 }
