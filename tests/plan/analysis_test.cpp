@@ -154,7 +154,7 @@ void main() {
 }
 
 // The acceptance arithmetic (docs/plan.md): float's half spacing at |rel| <= 1e4 is
-// 2^(13-24) = 4.9e-4 m, within half of 1 mm; at 1e5 it is 2^(16-24) = 3.9e-3 m, not.
+// 2^(13-24) = 4.9e-4 m, within half of the 1 mm slack; at 1e5 it is 2^(16-24) = 3.9e-3 m, not.
 TEST(PlanAnalysis, GlobeDemotesRelOnlyWhenFloatSpacingAllowsIt) {
   const std::string shader = R"(#version 300 es
 layout(location = 0) in dvec3 position;
