@@ -25,6 +25,7 @@ struct Token {
   std::string text;
   int line, column;
   bool in_directive;  // on a #-line (a #define body)
+  size_t offset = 0;  // byte offset in the source
 };
 
 std::vector<Token> tokenize(std::string_view s) {
@@ -62,7 +63,7 @@ std::vector<Token> tokenize(std::string_view s) {
     }
     if (c == '#' && line_start) directive = true;
     line_start = false;
-    Token t{Token::Punct, "", line, column, directive};
+    Token t{Token::Punct, "", line, column, directive, i};
     size_t n = 1;
     if (std::isdigit(static_cast<unsigned char>(c)) ||
         (c == '.' && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
@@ -219,14 +220,17 @@ class Lints {
       if (e.kind != ir::Expr::Kind::Const || !e.type.is_double() || e.loc.line <= 0) return;
       auto start = token_at(e.loc);
       if (!start) return;
-      for (size_t i : constant_extent(*start, e)) check_literal(i, e);
+      std::vector<size_t> extent = constant_extent(*start, e);
+      bool inexact_literal = false;
+      for (size_t i : extent) inexact_literal |= check_literal(i, e);
+      if (!inexact_literal && !foreign_locations_) check_float_expression(extent, e);
     });
   }
 
   // Tokens whose literals make up the constant `e` located at token `i`.
   std::vector<size_t> constant_extent(size_t i, const ir::Expr& e) const {
     const Token& t = tokens_[i];
-    if (t.kind == Token::Punct && t.text == ")") {  // a folded constructor or call: its argument list
+    if (t.kind == Token::Punct && t.text == ")") {  // a folded constructor: its argument list
       size_t open = matching_open(i);
       if (open == i) return {};
       std::vector<size_t> out;
@@ -327,23 +331,64 @@ class Lints {
     return is_const && is_double;
   }
 
-  void check_literal(size_t i, const ir::Expr& constant) {
+  // Reports token `i` when it is a float literal whose value is not a float; true for such a
+  // literal (reported now or before).
+  bool check_literal(size_t i, const ir::Expr& constant) {
     const Token& t = tokens_[i];
-    if (t.kind != Token::Number) return;
+    if (t.kind != Token::Number) return false;
     auto digits = float_literal_digits(t.text);
-    if (!digits) return;
+    if (!digits) return false;
     double as_double = parse_double(*digits);
     double as_float = static_cast<double>(parse_float(*digits));
-    if (as_double == as_float || !std::isfinite(as_float)) return;
+    if (as_double == as_float || !std::isfinite(as_float)) return false;
     // With #include or #line, a location may belong to another file: only a literal that is
     // itself one of the constant's values is taken to be its source.
     if (foreign_locations_ && std::none_of(constant.values.begin(), constant.values.end(),
                                            [&](const ir::Scalar& v) { return std::abs(v.d) == as_double; }))
-      return;
-    if (!reported_literals_.insert(i).second) return;
+      return false;
+    if (!reported_literals_.insert(i).second) return true;
     report({t.line, t.column},
            "float literal " + t.text + " becomes " + format_15(as_float) + " as a double; write " + *digits +
                "lf (doublet and glslang read it as " + *digits + "lf, GL drivers as the float)",
+           "float-literal");
+    return true;
+  }
+
+  // A folded float expression meeting a double (`double t = 1.0 / 3.0;`): GLSL
+  // computes it in float, so its value is a float widened, while glslang folds it in double.
+  // Made of float literals only (no lf literal, no double constructor, no variable), it is
+  // float arithmetic; when the folded value is not a float, the two readings differ.
+  void check_float_expression(const std::vector<size_t>& extent, const ir::Expr& e) {
+    if (extent.size() < 2) return;  // a lone literal is check_literal's
+    bool float_literal = false;
+    for (size_t k : extent) {
+      const Token& t = tokens_[k];
+      if (t.kind == Token::Number) {
+        if (float_literal_digits(t.text)) float_literal = true;
+        else if (t.text.find_first_of(".lL") != std::string::npos) return;  // 0.1lf: double arithmetic
+      } else if (t.kind == Token::Identifier) {
+        bool call = k + 1 < tokens_.size() && tokens_[k + 1].text == "(";
+        if (!call || double_type_names().count(t.text)) return;
+      }
+    }
+    if (!float_literal) return;
+    auto is_float = [](const ir::Scalar& v) { return static_cast<double>(static_cast<float>(v.d)) == v.d; };
+    auto inexact = std::find_if_not(e.values.begin(), e.values.end(), is_float);
+    if (inexact == e.values.end()) return;
+    if (!reported_literals_.insert(extent.front()).second) return;
+    const Token& first = tokens_[extent.front()];
+    const Token& last = tokens_[extent.back()];
+    std::string text(source_.substr(first.offset, last.offset + last.text.size() - first.offset));
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    if (text.size() > 60) text = text.substr(0, 57) + "...";
+    // `-(1.0 / 3.0)`: a negation outside the text is in the value.
+    size_t before = extent.front();
+    while (before > 0 && tokens_[before - 1].text == "(") --before;
+    double shown = before > 0 && tokens_[before - 1].text == "-" ? std::abs(inexact->d) : inexact->d;
+    report({first.line, first.column},
+           "float expression '" + text + "' is folded in double to " + format_15(shown) +
+               " (doublet and glslang keep that), but under the GLSL rules it is float arithmetic, which GL "
+               "drivers widen; write its literals with lf",
            "float-literal");
   }
 

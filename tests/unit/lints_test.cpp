@@ -104,6 +104,30 @@ TEST(FloatLiteralLint, QuietWhenTheLiteralIsAFloatOrNotADouble) {
   EXPECT_TRUE(lint(r, "float-literal").empty()) << all(r);
 }
 
+// Float arithmetic on exact float literals, folded by glslang in double: GLSL computes 1.0 / 3.0
+// in float (0.333333343267441 widened), glslang and doublet keep the double 1/3.
+TEST(FloatLiteralLint, FloatExpressionFoldedInDouble) {
+  const std::string body =
+      "  double t = 1.0 / 3.0;\n"                                  // 6
+      "  o[0] = t * din + din * double(2.0 / 3.0) + din * THIRD;\n"  // 7
+      "  o[1] = din * (1.0 / 4.0) + din * (1.0lf / 3.0) + din * (2.0 * 3.0);\n"  // 8: quiet
+      "  o[2] = din * -(1.0 / 3.0);\n";                                          // 9: the text's value
+  auto r = doublet::lower(compute(body, "const double THIRD = (1.0 + 0.0) / 3.0;\n"), options());
+  ASSERT_TRUE(r.ok) << all(r);
+  std::vector<std::string> got;
+  for (const auto& d : lint(r, "float-literal")) got.push_back(doublet::format_diagnostic(d));
+  const std::string tail =
+      " (doublet and glslang keep that), but under the GLSL rules it is float arithmetic, which GL drivers widen; "
+      "write its literals with lf [-Wfloat-literal]";
+  std::vector<std::string> want{
+      "l.comp:4:22: warning: float expression '(1.0 + 0.0) / 3.0' is folded in double to 0.333333333333333" + tail,
+      "l.comp:6:14: warning: float expression '1.0 / 3.0' is folded in double to 0.333333333333333" + tail,
+      "l.comp:7:33: warning: float expression '2.0 / 3.0' is folded in double to 0.666666666666667" + tail,
+      "l.comp:9:18: warning: float expression '1.0 / 3.0' is folded in double to 0.333333333333333" + tail,
+  };
+  EXPECT_EQ(got, want) << all(r);
+}
+
 // A constant from an #include'd file carries that file's line and column; the main file may
 // have a float literal at the same place, which must not be blamed.
 TEST(FloatLiteralLint, IncludedConstantsDoNotBlameTheMainFile) {
