@@ -406,6 +406,18 @@ class ModeApplier {
     return e;
   }
 
+  // Float built-ins the target lacks (GLSL ES 1.00 has no trunc, transpose, ...; frexp and ldexp
+  // need ES 3.10 or desktop 4.00). There float code calls the float-float rule instead.
+  bool has_float_builtin(const std::string& name) const {
+    static const std::set<std::string> missing_es100{"trunc", "round", "roundEven", "modf", "isnan", "isinf",
+                                                     "transpose", "determinant", "inverse", "outerProduct",
+                                                     "frexp", "ldexp"};
+    const Target t = ctx_.options.target;
+    if (t == Target::Es100) return !missing_es100.count(name);
+    if (t == Target::Es300 || t == Target::Glsl330) return name != "frexp" && name != "ldexp";
+    return true;
+  }
+
   ExprPtr fix_builtin(const ExprPtr& e, const ir::Type& original, bool involves_double) {
     for (auto& a : e->args) a = fix(a);
     if (!involves_double) return e;
@@ -416,14 +428,32 @@ class ModeApplier {
       return e;
     }
     Base base = arithmetic_base(arithmetic_);
+    const bool bool_mix = n == "mix" && e->args.size() == 3 && e->args[2]->type.base == Base::Bool;
+    if (base == Base::Float && (!has_float_builtin(n) || (bool_mix && ctx_.options.target == Target::Es100)))
+      base = Base::Double;  // the float-float rule, its result rounded where it is used
     size_t out_argument = e->args.size();
     if (n == "modf" && e->args.size() == 2) {  // modf(x, out i): computed in i's precision
       out_argument = 1;
       base = e->args[1]->type.base;
+      if (base == Base::Float && !has_float_builtin(n)) {
+        ctx_.error(e->loc, "modf has no float version on " + std::string(to_string(ctx_.options.target)) +
+                               ": give its out argument a float-float mode (rte, df64-fast or df64)");
+        return e;
+      }
     }
     for (size_t i = 0; i < e->args.size(); ++i)
       if (i != out_argument) e->args[i] = convert(e->args[i], base);
     if (original.base == Base::Double) e->type = original.with_base(base);
+    if (n == "fma" && base == Base::Float && e->args.size() == 3) {
+      // Float fma needs ES 3.20 or gpu_shader5; a float product and sum is what fp32 promises.
+      auto product = Expr::make(Kind::Binary, e->type, e->loc);
+      product->op = "*";
+      product->args = {e->args[0], e->args[1]};
+      auto sum = Expr::make(Kind::Binary, e->type, e->loc);
+      sum->op = "+";
+      sum->args = {product, e->args[2]};
+      return sum;
+    }
     return e;
   }
 
