@@ -14,8 +14,16 @@ namespace {
 // repeats and tests/rules checks); -1 when the library has no such rule.
 int rule_flops(const std::string& name, int width) {
   for (const rules::RuleInfo& info : rules::RuleLibrary::builtin().info())
-    if (info.name == name && std::find(info.widths.begin(), info.widths.end(), width) != info.widths.end())
+    if (info.name == name && std::find(info.widths.begin(), info.widths.end(), width) != info.widths.end()) {
+      // "210 (W = 4; 110 for W = 2, 160 for W = 3)": the count for this width where one is named.
+      const std::string at = " for W = " + std::to_string(width);
+      if (const size_t p = info.flops.find(at); p != std::string::npos) {
+        size_t start = info.flops.find_last_not_of("0123456789", p - 1);
+        start = start == std::string::npos ? 0 : start + 1;
+        return std::atoi(info.flops.c_str() + start);
+      }
       return std::atoi(info.flops.c_str());
+    }
   return -1;
 }
 }  // namespace

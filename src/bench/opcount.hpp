@@ -2,9 +2,10 @@
 // comparison with the rules' documented flop counts (docs/rules.md): OpFAdd, OpFSub, OpFMul,
 // OpFDiv, OpFNegate, OpFMod/OpFRem, GLSL.std.450 extended instructions (sqrt, abs, floor, ...)
 // and OpSelect with a float result, each weighted by its result's component count
-// (OpDot: 2n - 1; OpVectorTimesScalar: n; OpMatrixTimesVector: 2 rows cols - rows).
-// Counts are dynamic along main(): an OpFunctionCall counts its callee's operations; both arms of
-// a branch are counted (the rules have no loops).
+// (OpDot: 2n - 1; length: 2n; OpVectorTimesScalar: n; OpMatrixTimesVector: 2 rows cols - rows).
+// Counts are dynamic along main(): an OpFunctionCall counts its callee's operations along the
+// callee's cheapest entry-to-return path (the rules' branches are rare special cases: the scaled
+// split above 1e34, df_finish's fallback); main's own blocks are all counted once.
 #pragma once
 
 #include <cstdint>
