@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "frontend/frontend.hpp"
 #include "frontend/import.hpp"
@@ -35,6 +36,21 @@ std::string kind_of(const ir::Var* v) {
     case S::Local: return "local";
     default: return "global";
   }
+}
+
+// glslang places interface variables at their first use; the table wants the declaration.
+int declaration_line(std::string_view source, const std::string& name, int fallback) {
+  const std::regex decl("\\b(in|out|uniform|buffer|attribute|varying)\\b[^;{}]*\\b" + name + "\\b\\s*(\\[[^\\]]*\\])?\\s*;");
+  int line = 1;
+  size_t start = 0;
+  while (start < source.size()) {
+    const size_t end = std::min(source.find('\n', start), source.size());
+    const std::string text(source.substr(start, end - start));
+    if (std::regex_search(text, decl)) return line;
+    start = end + 1;
+    ++line;
+  }
+  return fallback;
 }
 
 // A cheaper candidate may spend at most half of each output's slack (requirement minus the
@@ -136,7 +152,7 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
     r.name = f ? f->name + "." + v->name : v->name;
     if (std::any_of(out.rows.begin(), out.rows.end(), [&](const PlanRow& x) { return x.name == r.name; })) continue;
     r.kind = kind_of(v);
-    r.line = v->loc.line;
+    r.line = is_interface(v) ? declaration_line(source, v->name, v->loc.line) : v->loc.line;
     r.range = Analysis::hull(a.range(v));
     for (const auto& [name, req] : scene.outputs) r.budget = std::min(r.budget, a.budget(name, v));
     const double m = r.range.mag();
@@ -152,6 +168,8 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
     }
     out.rows.push_back(r);
   }
+  std::stable_sort(out.rows.begin() + static_cast<long>(functions.size()), out.rows.end(),
+                   [](const PlanRow& x, const PlanRow& y) { return x.line < y.line; });
   return out;
 }
 
@@ -199,12 +217,7 @@ bool load_plan(std::string_view text, const std::string& file, Options* options,
   try {
     j = nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    *error = scene_diagnostic(located, "", "plan is not valid JSON: " + std::string(e.what()));
-    Scene s;
-    Diagnostic d;
-    // Reuse the scene parser's byte-position handling for the exact place.
-    if (!parse_scene(text, file, &s, &d)) *error = d;
-    error->message = "plan" + error->message.substr(error->message.find(" is not valid JSON"));
+    *error = json_syntax_diagnostic(text, file, "plan", e, e.byte);
     return false;
   }
   auto fail = [&](const std::string& pointer, const std::string& message) {

@@ -231,6 +231,14 @@ struct Parser {
 
 }  // namespace
 
+Diagnostic json_syntax_diagnostic(std::string_view text, const std::string& file, const std::string& what,
+                                  const std::exception& e, size_t byte) {
+  // `byte` is the 1-based offset of the character that stopped the parser.
+  std::string message = e.what();
+  if (const size_t p = message.find("parse error"); p != std::string::npos) message = message.substr(p);
+  return at_offset(file, text, byte > 0 ? byte - 1 : 0, what + " is not valid JSON: " + message);
+}
+
 size_t json_value_offset(std::string_view text, const std::string& pointer) {
   size_t at = skip_ws(text, 0);
   size_t i = 1;
@@ -257,10 +265,7 @@ bool parse_scene(std::string_view text, const std::string& file, Scene* out, Dia
   try {
     j = json::parse(text);
   } catch (const json::parse_error& e) {
-    // e.byte is the 1-based offset of the character that stopped the parser.
-    std::string what = e.what();
-    if (const size_t p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
-    *error = at_offset(file, text, e.byte > 0 ? e.byte - 1 : 0, "scene is not valid JSON: " + what);
+    *error = json_syntax_diagnostic(text, file, "scene", e, e.byte);
     return false;
   }
   Parser p{*out, {}, {}};

@@ -3,6 +3,7 @@
 // needs. Parsing only; names are checked against a shader later (check_scene_names).
 #pragma once
 
+#include <exception>
 #include <map>
 #include <string>
 #include <string_view>
@@ -44,6 +45,10 @@ bool parse_scene(std::string_view text, const std::string& file, Scene* out, Dia
 
 // A diagnostic at the JSON value `pointer` ("/inputs/position") of the scene's text.
 Diagnostic scene_diagnostic(const Scene& scene, const std::string& pointer, const std::string& message);
+
+// A diagnostic for nlohmann's parse_error `e` on `text` ("WHAT is not valid JSON: ...").
+Diagnostic json_syntax_diagnostic(std::string_view text, const std::string& file, const std::string& what,
+                                  const std::exception& e, size_t byte);
 
 // Byte offset of the value at JSON pointer `pointer` in valid JSON `text` (0 when not found).
 size_t json_value_offset(std::string_view text, const std::string& pointer);

@@ -20,10 +20,9 @@ std::string make_plan(const std::string& shader, const std::string& scene, const
   return out;
 }
 
-CliRun verify(const std::string& shader, const std::string& scene, const std::string& extra,
-              const std::string& target = "es300") {
-  return doublet("verify " + kScenes + "/" + shader + " --target " + target + " --samples 2048 --scene " + kScenes +
-                 "/" + scene + " " + extra);
+CliRun verify(const std::string& shader, const std::string& scene, const std::string& extra) {
+  return doublet("verify " + kScenes + "/" + shader + " --target es300 --samples 2048 --scene " + kScenes + "/" +
+                 scene + " " + extra);
 }
 
 TEST(PlanVerify, GlobePlanDemotesRelAndKeepsItsPromise) {
@@ -53,14 +52,12 @@ TEST(PlanVerify, Fp32EverywhereFailsTheGlobeScene) {
   EXPECT_NE(r.out.find("EXCEEDED"), std::string::npos) << r.out;
 }
 
-// es320 (the `precise` guard): with es300's uniform guard, lavapipe's vertex stage loses the
-// error term of position + velocity * dt in this working tree (docs/plan.md, limits).
 TEST(PlanVerify, OrbitKeepsDf64AndMeetsOneMicrometre) {
   const std::string plan = make_plan("orbit_step.vert", "orbit.scene.json", "orbit.plan.json");
-  CliRun r = verify("orbit_step.vert", "orbit.scene.json", "--plan " + plan, "es320");
+  CliRun r = verify("orbit_step.vert", "orbit.scene.json", "--plan " + plan);
   EXPECT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(r.out.find("EXCEEDED"), std::string::npos) << r.out;
-  r = verify("orbit_step.vert", "orbit.scene.json", "--mode fp32", "es320");
+  r = verify("orbit_step.vert", "orbit.scene.json", "--mode fp32");
   EXPECT_EQ(r.exit_code, 1) << r.out;
 }
 
