@@ -73,6 +73,9 @@ class Analysis {
  private:
   friend struct Forward;
   friend struct Backward;
+  friend void forward_pass(Analysis&, const ir::Function*, std::map<const ir::Var*, Box>,
+                           std::map<std::pair<const ir::Var*, const ir::Var*>, double>);
+  friend void backward_pass(Analysis&, const std::string&, const ir::Function*);
   double rounding(const ir::Expr* e, const Node& n, const Candidate& c) const;
   double storage_error(const ir::Var* v, const Candidate& c) const;
 
