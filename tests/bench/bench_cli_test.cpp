@@ -22,7 +22,7 @@ TEST(BenchCli, JsonHasTheDocumentedKeys) {
   std::ifstream in(json_path);
   const nlohmann::json j = nlohmann::json::parse(in);
   std::filesystem::remove(json_path);
-  // The keys docs/modes.md lists, at the top level and per result.
+  // The keys docs/performance.md lists, at the top level and per result.
   for (const char* key : {"command", "shader", "target", "elements", "warmup", "repetitions", "devices",
                           "clocks", "native_reference_backend", "results", "notes"})
     EXPECT_TRUE(j.contains(key)) << key;
@@ -30,13 +30,14 @@ TEST(BenchCli, JsonHasTheDocumentedKeys) {
   for (const auto& r : j["results"])
     for (const char* key : {"op", "backend", "mode", "ok", "not_applicable", "steps", "note", "seconds", "median_seconds", "min_seconds", "ops_per_second",
                             "time_vs_fp32", "time_vs_native", "finite_output", "spirv_instructions", "glsl_lines",
-                            "flops_per_step"})
+                            "flops_per_step", "emitted_flops_per_step"})
       EXPECT_TRUE(r.contains(key)) << key;
-  // Every documented key appears in docs/modes.md.
-  std::ifstream doc(std::string(DOUBLET_DOCS) + "/modes.md");
+  // Every documented key appears in docs/performance.md.
+  std::ifstream doc(std::string(DOUBLET_DOCS) + "/performance.md");
   std::stringstream ss;
   ss << doc.rdbuf();
-  for (const char* key : {"time_vs_fp32", "time_vs_native", "clocks", "spirv_instructions", "median_seconds"})
+  for (const char* key : {"time_vs_fp32", "time_vs_native", "clocks", "spirv_instructions", "median_seconds",
+                          "emitted_flops_per_step"})
     EXPECT_NE(ss.str().find(std::string("`") + key + "`"), std::string::npos) << key;
 }
 
@@ -55,6 +56,41 @@ TEST(BenchCli, UserShaderWithIncludesRunsInEveryMode) {
     EXPECT_TRUE(r["ok"].get<bool>()) << r["mode"] << " " << r["backend"] << ": " << r["note"];
     EXPECT_GT(r["ops_per_second"].get<double>(), 0);
   }
+}
+
+std::string run_capture(const std::string& args, int* status) {
+  const auto out = std::filesystem::temp_directory_path() / ("bench_out_" + std::to_string(::getpid()) + ".txt");
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench " + args + " > " + out.string() + " 2>&1";
+  *status = std::system(cmd.c_str());
+  std::ifstream in(out);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::filesystem::remove(out);
+  return ss.str();
+}
+
+// A tiny comparison with the hand-written library: every contender runs, the Mandelbrot row has an
+// agreement with native fp64, the per-op rows have bits. No timing thresholds.
+TEST(BenchCli, HandwrittenComparisonRunsEveryContender) {
+  int status = 0;
+  const std::string out = run_capture(
+      "--handwritten --ops add,mandelbrot --elements 256 --steps 16 --warmup 1 --reps 1 --mandelbrot-size 16 "
+      "--mandelbrot-iterations 50",
+      &status);
+  ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+  for (const char* row : {"| add | handwritten (ONE guard) |", "| add | doublet es310 -O0 |", "| add | doublet es320 |",
+                          "| mandelbrot | handwritten (ONE guard) |", "| mandelbrot | doublet es320 |"})
+    EXPECT_NE(out.find(row), std::string::npos) << row << "\n" << out;
+  EXPECT_NE(out.find("bits |"), std::string::npos) << out;
+  EXPECT_NE(out.find("pixels = native"), std::string::npos) << out;
+}
+
+TEST(BenchCli, CompilerSpeedPrintsTheRatioToAGlslangParse) {
+  int status = 0;
+  const std::string out = run_capture("--compiler --lines 300 --reps 1", &status);
+  ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+  EXPECT_NE(out.find("ratio lower / parse:"), std::string::npos) << out;
+  EXPECT_NE(out.find("glslang re-validation of the output"), std::string::npos) << out;
 }
 
 TEST(BenchCli, UnknownOpIsAUsageError) {
