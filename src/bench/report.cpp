@@ -19,11 +19,12 @@ std::string fixed(double v, int digits) {
 std::string documented_bits(const Kernel* k, Mode m) {
   if (m == Mode::Native) return "53";
   if (m == Mode::Fp32) return "≤ 24";
+  if (m != Mode::Df64) return "—";
   return k ? k->bits : "—";
 }
 
 std::string flops(const Kernel* k, Mode m) {
-  if (!k) return "—";
+  if (!k || m == Mode::Rte || m == Mode::Df64Fast) return "—";  // no single documented count
   return std::to_string(m == Mode::Df64 ? k->rule_flops : k->fp32_flops);
 }
 
@@ -32,6 +33,10 @@ std::string emitted(const Kernel* k, const Measurement& r) {
   if (!k || r.emitted_flops_per_step < 0) return "—";
   const double doc = r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops;
   char buf[64];
+  if (r.mode == Mode::Rte || r.mode == Mode::Df64Fast) {
+    std::snprintf(buf, sizeof buf, "%.4g", r.emitted_flops_per_step);
+    return buf;
+  }
   std::snprintf(buf, sizeof buf, "%.4g (%+.0f%%)", r.emitted_flops_per_step, 100.0 * (r.emitted_flops_per_step / doc - 1.0));
   return buf;
 }
@@ -109,7 +114,9 @@ std::string format_json(const BenchReport& report) {
     row["spirv_instructions"] = r.size.spirv_instructions;
     row["glsl_lines"] = r.size.glsl_lines;
     if (const Kernel* k = o.shader_path.empty() ? find_kernel(r.op) : nullptr) {
-      row["flops_per_step"] = r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops;
+      row["flops_per_step"] = r.mode == Mode::Rte || r.mode == Mode::Df64Fast
+                                  ? nlohmann::json(nullptr)
+                                  : nlohmann::json(r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops);
       row["emitted_flops_per_step"] =
           r.emitted_flops_per_step >= 0 ? nlohmann::json(r.emitted_flops_per_step) : nlohmann::json(nullptr);
     }

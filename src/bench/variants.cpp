@@ -10,14 +10,21 @@ namespace doublet::bench {
 const char* mode_name(Mode m) {
   switch (m) {
     case Mode::Fp32: return "fp32";
+    case Mode::Rte: return "rte";
+    case Mode::Df64Fast: return "df64-fast";
     case Mode::Df64: return "df64";
     case Mode::Native: return "native";
   }
   return "?";
 }
 
+const std::vector<Mode>& all_bench_modes() {
+  static const std::vector<Mode> modes{Mode::Fp32, Mode::Rte, Mode::Df64Fast, Mode::Df64, Mode::Native};
+  return modes;
+}
+
 std::optional<Mode> parse_mode(const std::string& s) {
-  for (Mode m : {Mode::Fp32, Mode::Df64, Mode::Native})
+  for (Mode m : all_bench_modes())
     if (s == mode_name(m)) return m;
   return std::nullopt;
 }
@@ -63,33 +70,30 @@ std::string demote_doubles(const std::string& s) {
 Variant make_variant(Mode mode, runner::Backend backend, const std::string& source, Target target,
                      const std::string& file_name) {
   Variant v;
-  switch (mode) {
-    case Mode::Fp32:
-      v.glsl = with_es_header(demote_doubles(source));
-      break;
-    case Mode::Native:
-      if (backend == runner::Backend::Gles) v.note = "GLES has no fp64", v.not_applicable = true;
-      else v.glsl = source;
-      break;
-    case Mode::Df64: {
-      if (backend == runner::Backend::Gles && !target_is_es(target)) {
-        v.note = "desktop target " + std::string(to_string(target)) + " does not run on GLES";
-        v.not_applicable = true;
-        break;
-      }
-      Options o;
-      o.stage = Stage::Compute;
-      o.target = target;
-      o.file_name = file_name;
-      Result r = lower(source, o);
-      if (r.ok) {
-        v.glsl = std::move(r.output);
-      } else {
-        v.note = "doublet::lower failed:";
-        for (const Diagnostic& d : r.diagnostics) v.note += " " + format_diagnostic(d) + ";";
-      }
-      break;
-    }
+  if (mode == Mode::Native) {
+    if (backend == runner::Backend::Gles) v.note = "GLES has no fp64", v.not_applicable = true;
+    else v.glsl = source;
+    return v;
+  }
+  if (backend == runner::Backend::Gles && !target_is_es(target)) {
+    v.note = "desktop target " + std::string(to_string(target)) + " does not run on GLES";
+    v.not_applicable = true;
+    return v;
+  }
+  Options o;
+  o.stage = Stage::Compute;
+  o.target = target;
+  o.file_name = file_name;
+  o.mode = mode == Mode::Fp32     ? doublet::Mode::Fp32
+           : mode == Mode::Rte    ? doublet::Mode::Rte
+           : mode == Mode::Df64Fast ? doublet::Mode::Df64Fast
+                                  : doublet::Mode::Df64;
+  Result r = lower(source, o);
+  if (r.ok) {
+    v.glsl = std::move(r.output);
+  } else {
+    v.note = "doublet::lower --mode " + std::string(mode_name(mode)) + " failed:";
+    for (const Diagnostic& d : r.diagnostics) v.note += " " + format_diagnostic(d) + ";";
   }
   return v;
 }

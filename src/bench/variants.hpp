@@ -1,19 +1,22 @@
 // The shader each mode runs, derived from one double-precision compute shader:
-//   fp32   — every double type demoted to its float counterpart (what users ship without doublet);
-//   df64   — doublet::lower with its default guard for the target (float-float);
+//   fp32, rte, df64-fast, df64 — doublet::lower with that Options::mode (docs/modes.md) and the
+//            target's default guard (fp32: every double demoted to float, what users ship
+//            without doublet; df64: float-float with the accurate rules);
 //   native — the original text (fp64 on lavapipe; GLES has no doubles).
 #pragma once
 
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "doublet/doublet.hpp"
 #include "runner/runner.hpp"
 
 namespace doublet::bench {
 
-enum class Mode { Fp32, Df64, Native };
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Native };
+const std::vector<Mode>& all_bench_modes();  // in that order
 const char* mode_name(Mode);
 std::optional<Mode> parse_mode(const std::string&);
 
@@ -23,11 +26,12 @@ struct Variant {
   bool not_applicable = false;  // the backend cannot run this mode at all (not a failure)
 };
 
-// `source` is a "#version 450" compute shader with doubles. `target` is the df64 lowering target
-// (es310/es320/glsl450); fp32 text uses "#version 320 es" so both backends take it as-is.
+// `source` is a "#version 450" compute shader with doubles. `target` is the lowering target
+// (es310/es320/glsl450) of every mode but native.
 Variant make_variant(Mode, runner::Backend, const std::string& source, Target target, const std::string& file_name);
 
-// Word-wise demotion: double → float, dvecN → vecN, dmat… → mat…, and the `lf`/`LF` literal suffix dropped.
+// Word-wise demotion: double → float, dvecN → vecN, dmat… → mat…, and the `lf`/`LF` literal suffix dropped
+// (the bench's fp32 used this before the compiler had --mode fp32; kept for the demos' comparison).
 std::string demote_doubles(const std::string& source);
 
 // Size of a variant: SPIR-V instructions as glslang compiles it (0 when it does not compile for
