@@ -12,6 +12,7 @@
 #include "bench/bench.hpp"
 #include "bench/compiler.hpp"
 #include "bench/handwritten.hpp"
+#include "bench/plot.hpp"
 #include "bench/kernels.hpp"
 #include "bench/user_shader.hpp"
 #include "commands.hpp"
@@ -21,7 +22,7 @@ namespace {
 
 struct BenchArgs {
   std::vector<std::string> include_dirs;
-  std::string shader, ops = "all", modes = "all", backend = "both", target = "es320", json;
+  std::string shader, ops = "all", modes = "all", backend = "both", target = "es320", json, plot;
   int elements = 16384, steps = 0, warmup = 2, reps = 7;
   bool handwritten = false, compiler = false;
   int lines = 5000;
@@ -131,6 +132,14 @@ int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string
       return kExitInput;
     }
   }
+  if (!a.plot.empty()) {
+    int points = 0;
+    if (std::string e = bench::write_cost_plot(report, a.plot, &points); !e.empty()) {
+      std::cerr << "doublet bench: error: " << e << "\n";
+      return kExitInput;
+    }
+    std::cerr << "doublet bench: wrote " << a.plot << " (" << points << " points)\n";
+  }
   for (const bench::Measurement& r : report.rows)
     if (!r.ok && !r.not_applicable) return 3;  // a driver (or the lowering) failed
   return kExitOk;
@@ -152,6 +161,7 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--warmup", args->warmup, "discarded dispatches before timing (default 2)");
   cmd->add_option("--reps", args->reps, "timed dispatches; the median is reported (default 7)");
   cmd->add_option("--json", args->json, "also write the results as JSON (keys: docs/modes.md)");
+  cmd->add_option("--plot", args->plot, "also write a PNG of cost (time / fp32, log) against bits per mode (docs/performance.md)");
   cmd->add_flag("--compiler", args->compiler,
                 "time doublet::lower against glslang's parse of the same generated shader (--lines, --reps, --target)");
   cmd->add_option("--lines", args->lines, "--compiler: lines of the generated shader (default 5000)");

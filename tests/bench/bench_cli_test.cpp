@@ -93,6 +93,21 @@ TEST(BenchCli, CompilerSpeedPrintsTheRatioToAGlslangParse) {
   EXPECT_NE(out.find("glslang re-validation of the output"), std::string::npos) << out;
 }
 
+TEST(BenchCli, PlotWritesAPng) {
+  const auto png = std::filesystem::temp_directory_path() / ("bench_plot_" + std::to_string(::getpid()) + ".png");
+  int status = 0;
+  const std::string out = run_capture("--ops add --modes fp32,df64,native --elements 128 --steps 8 --warmup 1 --reps 1 --plot " +
+                                          png.string(),
+                                      &status);
+  ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+  std::ifstream in(png, std::ios::binary);
+  char sig[8] = {};
+  in.read(sig, 8);
+  EXPECT_EQ(std::string(sig + 1, 3), "PNG");
+  EXPECT_NE(out.find("(5 points)"), std::string::npos) << out;  // fp32 x2, df64 x2, native on lavapipe
+  std::filesystem::remove(png);
+}
+
 TEST(BenchCli, UnknownOpIsAUsageError) {
   const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench --ops nope > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());
