@@ -21,7 +21,7 @@ using Kind = ir::Expr::Kind;
 bool is_real(const ir::Type& t) { return t.base == Base::Float || t.base == Base::Double; }
 
 bool same_shape(const ir::Type& a, const ir::Type& b) {
-  return a.base == b.base && a.vec == b.vec && a.cols == b.cols && a.array_dims == b.array_dims;
+  return a.base == b.base && a.vec == b.vec && a.cols == b.cols && a.array_dims == b.array_dims && a.name == b.name;
 }
 
 bool is_pure(const ExprPtr& e) {
@@ -73,6 +73,7 @@ class ModeApplier {
       for (const auto& p : f->params) demote_if_fp32(*p);
       for (ir::Var* local : locals_[f.get()]) demote_if_fp32(*local);
     }
+    check_overloads();
     arithmetic_ = global_;
     for (size_t i = 0; i < module_.globals.size(); ++i)
       if (module_.global_inits[i])
@@ -219,6 +220,22 @@ class ModeApplier {
   void demote_if_fp32(ir::Var& v) {
     if (v.block || v.type.base != Base::Double || storage_mode(&v) != Mode::Fp32) return;
     v.type = v.type.with_base(Base::Float);
+  }
+
+  // f(double) demoted to f(float) next to an existing f(float): two bodies for one signature.
+  void check_overloads() {
+    const auto& fs = module_.functions;
+    for (size_t i = 0; i < fs.size(); ++i)
+      for (size_t j = 0; j < i; ++j) {
+        if (fs[i]->name != fs[j]->name || fs[i]->params.size() != fs[j]->params.size()) continue;
+        bool same = true;
+        for (size_t k = 0; k < fs[i]->params.size(); ++k)
+          same &= same_shape(fs[i]->params[k]->type, fs[j]->params[k]->type);
+        if (same)
+          ctx_.error(fs[i]->loc, "with its mode, this overload of '" + fs[i]->name + "' has the same parameter "
+                                 "types as the one on line " + std::to_string(fs[j]->loc.line) +
+                                 " (fp32 stores doubles as floats); give one of them a float-float mode");
+      }
   }
 
   // ---- conversions ------------------------------------------------------------------------

@@ -260,6 +260,23 @@ void main() {
       << messages(r);
 }
 
+TEST(Modes, Fp32OverloadThatCollidesWithAFloatOneIsAnError) {
+  const char* src = R"(#version 300 es
+precision highp float;
+uniform double a;
+out vec4 color;
+float f(float x) { return x; }
+double f(double x) { return x * 2.0lf; }
+void main() { color = vec4(float(f(a)) + f(1.0)); }
+)";
+  EXPECT_TRUE(doublet::lower(src, options()).ok);
+  auto r = doublet::lower(src, options(Mode::Fp32));
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(contains(messages(r), R"(modes\.frag:6:\d+: error: with its mode, this overload of 'f' has the same )"
+                                    R"(parameter types as the one on line 5)"))
+      << messages(r);
+}
+
 TEST(Modes, ParseAndSpellEveryMode) {
   for (Mode m : {Mode::Fp32, Mode::Rte, Mode::Df64Fast, Mode::Df64, Mode::Native})
     EXPECT_EQ(doublet::parse_mode(doublet::to_string(m)), m);
