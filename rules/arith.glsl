@@ -99,14 +99,14 @@ $DF df_add_f($DF a, $F b) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 // @widths 1 2 3 4
 $DF df_mul($DF a, $DF b) {
@@ -124,10 +124,10 @@ $DF df_mul($DF a, $DF b) {
 // Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
 // Bound: 1.5u^2 + 4u^3
-// Flops: 28
+// Flops: 30
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
 //        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // @widths 1 2 3 4
 $DF df_mul_f($DF a, $F b) {
   $DF c = df_two_prod(a.hi, b);
@@ -143,14 +143,14 @@ $DF df_mul_f($DF a, $F b) {
 // Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 15u^2 + 56u^3
-// Flops: 37
+// Flops: 39
 // Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
 //        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
 //        df_finish(z, th).
 // The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
 // which adds about 2.5u^2 (tl carries the error).
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
-// Range: any finite a, b with the quotient within float range (the split is scaled).
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 // @widths 1 2 3 4
 $DF df_div($DF a, $DF b) {
   $PRECISE $F th = $G(a.hi / b.hi);

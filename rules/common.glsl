@@ -153,7 +153,7 @@ $DF df_round_even($DF a) {
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
-// Flops: 92
+// Flops: 96
 // @widths 1 2 3 4
 $DF df_mod($DF a, $DF b) {
   $DF q = df_div(a, b);
@@ -191,7 +191,7 @@ $DF df_clamp($DF x, $DF lo, $DF hi) {
 // Algorithm: AccurateDWPlusDW, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mix); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r) + 10u^2 * abs(a * (y - x)) (absolute, first order)
-// Flops: 71
+// Flops: 73
 // @widths 1 2 3 4
 $DF df_mix($DF x, $DF y, $DF a) {
   $DF d = df_sub(y, x);
@@ -235,7 +235,7 @@ $DF df_step($DF edge, $DF x) {
 // Algorithm: AccurateDWPlusDW, DWDivDW2, clamp, DWTimesDW1
 // Source: GLSL 4.60 (2019) section 8.3 (smoothstep); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 55u^2 (absolute; the result is in [0, 1])
-// Flops: 184
+// Flops: 190
 // @widths 1 2 3 4
 $DF df_smoothstep($DF e0, $DF e1, $DF x) {
   $DF n = df_sub(x, e0);
@@ -275,7 +275,7 @@ $B df_isinf($DF a) {
 // Algorithm: DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r) + 7u^2 * abs(a * b) (absolute, first order)
-// Flops: 48
+// Flops: 50
 // @widths 1 2 3 4
 $DF df_fma($DF a, $DF b, $DF c) {
   $DF p = df_mul(a, b);

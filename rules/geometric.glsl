@@ -23,7 +23,7 @@
 // Algorithm: DWTimesDW1 (JMP Algorithm 10)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Muller, Rideau, ACM TOMS 48(1), 2022
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // @widths 1
 df_double df_dot($DF a, $DF b) {
   $DF z = df_mul(a, b);
@@ -34,7 +34,7 @@ df_double df_dot($DF a, $DF b) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 10u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 75
+// Flops: 79
 // @widths 2
 // @uses df_add:1
 df_double df_dot($DF a, $DF b) {
@@ -49,7 +49,7 @@ df_double df_dot($DF a, $DF b) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 123
+// Flops: 129
 // @widths 3
 // @uses df_add:1
 df_double df_dot($DF a, $DF b) {
@@ -66,7 +66,7 @@ df_double df_dot($DF a, $DF b) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 3 AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 171
+// Flops: 179
 // @widths 4
 // @uses df_add:1
 df_double df_dot($DF a, $DF b) {
@@ -98,7 +98,7 @@ df_double df_length($DF a) {
 // Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 9.625u^2
-// Flops: 200 (W = 4; 104 for W = 2, 152 for W = 3)
+// Flops: 210 (W = 4; 110 for W = 2, 160 for W = 3)
 // Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
 // @widths 2 3 4
 // @uses df_sqrt:1
@@ -113,7 +113,7 @@ df_double df_length($DF a) {
 // Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_length
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 12.625u^2
-// Flops: 223 (W = 4)
+// Flops: 233 (W = 4)
 // @widths 1 2 3 4
 // @uses df_sub:W df_length:W
 df_double df_distance($DF a, $DF b) {
@@ -126,7 +126,7 @@ df_double df_distance($DF a, $DF b) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(a_j b_k) + abs(a_k b_j)) per component (absolute, first order)
-// Flops: 77
+// Flops: 81
 // @widths 3
 df_dvec3 df_cross(df_dvec3 a, df_dvec3 b) {
   df_dvec3 p = df_mul(df_dvec3(a.hi.yzx, a.lo.yzx), df_dvec3(b.hi.zxy, b.lo.zxy));
@@ -139,7 +139,7 @@ df_dvec3 df_cross(df_dvec3 a, df_dvec3 b) {
 // Algorithm: df_length, then DWDivDW2 (JMP Algorithm 17) per component
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 24.625u^2
-// Flops: 348 (W = 4)
+// Flops: 366 (W = 4)
 // Range: |a|^2 must not overflow float, as for df_length.
 // @widths 2 3 4
 // @uses df_length:W df_div:W
@@ -154,7 +154,7 @@ $DF df_normalize($DF a) {
 // Algorithm: df_dot, then selection
 // Source: GLSL 4.60 (2019) section 8.5 (faceforward); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: exact
-// Flops: 173 (W = 4)
+// Flops: 181 (W = 4)
 // @widths 1 2 3 4
 // @uses df_dot:W df_neg:W
 $DF df_faceforward($DF n, $DF i, $DF nref) {
@@ -171,7 +171,7 @@ $DF df_faceforward($DF n, $DF i, $DF nref) {
 // Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.5 (reflect); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r_i) + 20u^2 * 2S abs(n_i) (absolute per component, first order)
-// Flops: 235 (W = 4)
+// Flops: 245 (W = 4)
 // @widths 1 2 3 4
 // @uses df_dot:W df_add:1 df_mul:W df_sub:W
 $DF df_reflect($DF i, $DF n) {
@@ -188,7 +188,7 @@ $DF df_reflect($DF i, $DF n) {
 // Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW, SQRTDWtoDW (LLMPR Algorithm 8)
 // Source: GLSL 4.60 (2019) section 8.5 (refract); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 60u^2 * (abs(eta i_j) + (abs(eta d) + sqrt(k)) abs(n_j)) (absolute per component, first order, k not near 0)
-// Flops: 459 (W = 4)
+// Flops: 481 (W = 4)
 // @widths 1 2 3 4
 // @uses df_dot:W df_mul:1,W df_sub:1,W df_add:1 df_sqrt:1
 $DF df_refract($DF i, $DF n, df_double eta) {

@@ -274,6 +274,8 @@ Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage) {
                           : (c.stage == GraphicsStage::Vertex ? doublet::Stage::Vertex : doublet::Stage::Fragment);
     opt.target = c.target;
     opt.file_name = std::string(row.name) + ".glsl";
+    // The previous rules predate the whole-shader optimizer's substitutes (rules/opt.glsl).
+    if (sabotage == Sabotage::BaselineRules) opt.optimize = false;
     auto lowered = doublet::lower(source, opt);
     if (!lowered.ok) {
       for (const auto& d : lowered.diagnostics) o.error += doublet::format_diagnostic(d) + "\n";

@@ -11,7 +11,7 @@ struct df_dmat4 {
   mat4 hi;
   mat4 lo;
 };
-// doublet float-float runtime: 22 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 20 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
@@ -19,28 +19,14 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
 // Bound: exact
-// Flops: 5 (7 when |a| > 1e34)
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
-//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
-//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
-//        significand when nothing over- or underflows, so the halves are the same.
-// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
-// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
-// Inf; callers then fall back to the float result (df_finish).
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
 df_double df_split(float a) {
-  float aa = ((abs(a)) - df_guard);
-  if (aa > 1.0e34) {
-    float as = ((a * 1.220703125e-4) - df_guard);
-    float gs = ((as * 4097.0) - df_guard);
-    float ds = ((as - gs) - df_guard);
-    float hs = ((gs + ds) - df_guard);
-    float hb = ((hs * 8192.0) - df_guard);
-    float lb = ((a - hb) - df_guard);
-    return df_double(hb, lb);
-  }
   float g = ((a * 4097.0) - df_guard);
   float d = ((a - g) - df_guard);
   float hi = ((g + d) - df_guard);
@@ -48,52 +34,66 @@ df_double df_split(float a) {
   return df_double(hi, lo);
 }
 
-// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_dvec4(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
 // Bound: exact
-// Flops: 5 (7 when |a| > 1e34)
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
-//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
-//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
-//        significand when nothing over- or underflows, so the halves are the same.
-// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
-// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
-// Inf; callers then fall back to the float result (df_finish).
-// (width 4: the width-1 df_split applied to each component)
-df_dvec4 df_split(vec4 a) {
-  df_double r0 = df_split(a.x);
-  df_double r1 = df_split(a.y);
-  df_double r2 = df_split(a.z);
-  df_double r3 = df_split(a.w);
-  return df_dvec4(vec4(r0.hi, r1.hi, r2.hi, r3.hi), vec4(r0.lo, r1.lo, r2.lo, r3.lo));
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  float p = ((a * b) - df_guard);
+  float aa = ((abs(a)) - df_guard);
+  float ab = ((abs(b)) - df_guard);
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  float as = ((a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0))) - df_guard);
+  float bs = ((b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0))) - df_guard);
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  float hh = ((sa.hi * sb.hi) - df_guard);
+  float hl = ((sa.hi * sb.lo) - df_guard);
+  float lh = ((sa.lo * sb.hi) - df_guard);
+  float ll = ((sa.lo * sb.lo) - df_guard);
+  float t1 = ((hh - p) - df_guard);
+  float t2 = ((t1 + hl) - df_guard);
+  float t3 = ((t2 + lh) - df_guard);
+  float e = ((t3 + ll) - df_guard);
+  return df_double(p, e);
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
 // Bound: exact
-// Flops: 19
-// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
-// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// (width 4: the width-1 df_two_prod applied to each component)
 df_dvec4 df_two_prod(vec4 a, vec4 b) {
-  vec4 p = ((a * b) - df_guard);
-  df_dvec4 sa = df_split(a);
-  df_dvec4 sb = df_split(b);
-  vec4 hh = ((sa.hi * sb.hi) - df_guard);
-  vec4 hl = ((sa.hi * sb.lo) - df_guard);
-  vec4 lh = ((sa.lo * sb.hi) - df_guard);
-  vec4 ll = ((sa.lo * sb.lo) - df_guard);
-  vec4 t1 = ((hh - p) - df_guard);
-  vec4 t2 = ((t1 + hl) - df_guard);
-  vec4 t3 = ((t2 + lh) - df_guard);
-  vec4 e = ((t3 + ll) - df_guard);
-  return df_dvec4(p, e);
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  df_double r2 = df_two_prod(a.z, b.z);
+  df_double r3 = df_two_prod(a.w, b.w);
+  return df_dvec4(vec4(r0.hi, r1.hi, r2.hi, r3.hi), vec4(r0.lo, r1.lo, r2.lo, r3.lo));
 }
 
 // df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
@@ -144,14 +144,14 @@ df_dvec4 df_finish(df_dvec4 z, vec4 f) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
   df_dvec4 c = df_two_prod(a.hi, b.hi);
@@ -219,7 +219,7 @@ df_double df_add(df_double a, df_double b) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 3 AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 171
+// Flops: 179
 df_double df_dot(df_dvec4 a, df_dvec4 b) {
   df_dvec4 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -232,51 +232,28 @@ df_double df_dot(df_dvec4 a, df_dvec4 b) {
   return r;
 }
 
-// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
-// Bound: exact
-// Flops: 5 (7 when |a| > 1e34)
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
-//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
-//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
-//        significand when nothing over- or underflows, so the halves are the same.
-// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
-// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
-// Inf; callers then fall back to the float result (df_finish).
-// (width 3: the width-1 df_split applied to each component)
-df_dvec3 df_split(vec3 a) {
-  df_double r0 = df_split(a.x);
-  df_double r1 = df_split(a.y);
-  df_double r2 = df_split(a.z);
-  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
-}
-
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
 // Bound: exact
-// Flops: 19
-// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
-// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// (width 3: the width-1 df_two_prod applied to each component)
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
-  df_dvec3 sa = df_split(a);
-  df_dvec3 sb = df_split(b);
-  vec3 hh = ((sa.hi * sb.hi) - df_guard);
-  vec3 hl = ((sa.hi * sb.lo) - df_guard);
-  vec3 lh = ((sa.lo * sb.hi) - df_guard);
-  vec3 ll = ((sa.lo * sb.lo) - df_guard);
-  vec3 t1 = ((hh - p) - df_guard);
-  vec3 t2 = ((t1 + hl) - df_guard);
-  vec3 t3 = ((t2 + lh) - df_guard);
-  vec3 e = ((t3 + ll) - df_guard);
-  return df_dvec3(p, e);
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  df_double r2 = df_two_prod(a.z, b.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
 }
 
 // df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
@@ -310,14 +287,14 @@ df_dvec3 df_finish(df_dvec3 z, vec3 f) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b.hi);
@@ -367,41 +344,15 @@ df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
   return r;
 }
 
-// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
-// Bound: exact
-// Flops: 19
-// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
-//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
-//        (every product of halves and every partial sum is exact).
-// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
-// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
-df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
-  df_double sa = df_split(a);
-  df_double sb = df_split(b);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
-  return df_double(p, e);
-}
-
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
@@ -418,7 +369,7 @@ df_double df_mul(df_double a, df_double b) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 123
+// Flops: 129
 df_double df_dot(df_dvec3 a, df_dvec3 b) {
   df_dvec3 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);

@@ -2,35 +2,21 @@
 precision highp float;
 precision highp int;
 
-// doublet float-float runtime: 73 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 72 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
 // Bound: exact
-// Flops: 5 (7 when |a| > 1e34)
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
-//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
-//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
-//        significand when nothing over- or underflows, so the halves are the same.
-// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
-// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
-// Inf; callers then fall back to the float result (df_finish).
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
 df_double df_split(float a) {
-  float aa = ((abs(a)) - df_guard);
-  if (aa > 1.0e34) {
-    float as = ((a * 1.220703125e-4) - df_guard);
-    float gs = ((as * 4097.0) - df_guard);
-    float ds = ((as - gs) - df_guard);
-    float hs = ((gs + ds) - df_guard);
-    float hb = ((hs * 8192.0) - df_guard);
-    float lb = ((a - hb) - df_guard);
-    return df_double(hb, lb);
-  }
   float g = ((a * 4097.0) - df_guard);
   float d = ((a - g) - df_guard);
   float hi = ((g + d) - df_guard);
@@ -38,51 +24,65 @@ df_double df_split(float a) {
   return df_double(hi, lo);
 }
 
-// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_dvec3(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
 // Bound: exact
-// Flops: 5 (7 when |a| > 1e34)
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
-//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
-//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
-//        significand when nothing over- or underflows, so the halves are the same.
-// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
-// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
-// Inf; callers then fall back to the float result (df_finish).
-// (width 3: the width-1 df_split applied to each component)
-df_dvec3 df_split(vec3 a) {
-  df_double r0 = df_split(a.x);
-  df_double r1 = df_split(a.y);
-  df_double r2 = df_split(a.z);
-  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  float p = ((a * b) - df_guard);
+  float aa = ((abs(a)) - df_guard);
+  float ab = ((abs(b)) - df_guard);
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  float as = ((a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0))) - df_guard);
+  float bs = ((b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0))) - df_guard);
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  float hh = ((sa.hi * sb.hi) - df_guard);
+  float hl = ((sa.hi * sb.lo) - df_guard);
+  float lh = ((sa.lo * sb.hi) - df_guard);
+  float ll = ((sa.lo * sb.lo) - df_guard);
+  float t1 = ((hh - p) - df_guard);
+  float t2 = ((t1 + hl) - df_guard);
+  float t3 = ((t2 + lh) - df_guard);
+  float e = ((t3 + ll) - df_guard);
+  return df_double(p, e);
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
 // Bound: exact
-// Flops: 19
-// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
-// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// (width 3: the width-1 df_two_prod applied to each component)
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
-  df_dvec3 sa = df_split(a);
-  df_dvec3 sb = df_split(b);
-  vec3 hh = ((sa.hi * sb.hi) - df_guard);
-  vec3 hl = ((sa.hi * sb.lo) - df_guard);
-  vec3 lh = ((sa.lo * sb.hi) - df_guard);
-  vec3 ll = ((sa.lo * sb.lo) - df_guard);
-  vec3 t1 = ((hh - p) - df_guard);
-  vec3 t2 = ((t1 + hl) - df_guard);
-  vec3 t3 = ((t2 + lh) - df_guard);
-  vec3 e = ((t3 + ll) - df_guard);
-  return df_dvec3(p, e);
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  df_double r2 = df_two_prod(a.z, b.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
 }
 
 // df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
@@ -132,14 +132,14 @@ df_dvec3 df_finish(df_dvec3 z, vec3 f) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b.hi);
@@ -207,7 +207,7 @@ df_double df_add(df_double a, df_double b) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 123
+// Flops: 129
 df_double df_dot(df_dvec3 a, df_dvec3 b) {
   df_dvec3 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -218,38 +218,12 @@ df_double df_dot(df_dvec3 a, df_dvec3 b) {
   return r;
 }
 
-// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
-// Bound: exact
-// Flops: 19
-// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
-//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
-//        (every product of halves and every partial sum is exact).
-// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
-// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
-df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
-  df_double sa = df_split(a);
-  df_double sb = df_split(b);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
-  return df_double(p, e);
-}
-
 // df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN
 // (IEEE 754-2008 section 5.4.1; GLSL leaves a < 0 undefined, the drivers give NaN).
 // Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
 // Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
 // Bound: 25/8 u^2
-// Flops: 29
+// Flops: 31
 // Steps (LLMPR Algorithm 8, our no-FMA form):
 //   sh   = RN(sqrt(ah))
 //   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
@@ -284,7 +258,7 @@ df_double df_sqrt(df_double a) {
 // Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 9.625u^2
-// Flops: 200 (W = 4; 104 for W = 2, 152 for W = 3)
+// Flops: 210 (W = 4; 110 for W = 2, 160 for W = 3)
 // Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
 df_double df_length(df_dvec3 a) {
   df_double d = df_dot(a, a);
@@ -296,10 +270,10 @@ df_double df_length(df_dvec3 a) {
 // Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
 // Bound: 1.5u^2 + 4u^3
-// Flops: 28
+// Flops: 30
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
 //        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 df_dvec3 df_mul_f(df_dvec3 a, vec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b);
   vec3 cl2 = ((a.lo * b) - df_guard);
@@ -314,14 +288,14 @@ df_dvec3 df_mul_f(df_dvec3 a, vec3 b) {
 // Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 15u^2 + 56u^3
-// Flops: 37
+// Flops: 39
 // Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
 //        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
 //        df_finish(z, th).
 // The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
 // which adds about 2.5u^2 (tl carries the error).
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
-// Range: any finite a, b with the quotient within float range (the split is scaled).
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
   vec3 th = ((a.hi / b.hi) - df_guard);
   df_dvec3 r = df_mul_f(b, th);
@@ -338,7 +312,7 @@ df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
 // Algorithm: df_length, then DWDivDW2 (JMP Algorithm 17) per component
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 24.625u^2
-// Flops: 348 (W = 4)
+// Flops: 366 (W = 4)
 // Range: |a|^2 must not overflow float, as for df_length.
 df_dvec3 df_normalize(df_dvec3 a) {
   df_double n = df_length(a);
@@ -428,10 +402,10 @@ df_double df_sub(df_double a, df_double b) {
 // Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
 // Bound: 1.5u^2 + 4u^3
-// Flops: 28
+// Flops: 30
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
 //        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 df_double df_mul_f(df_double a, float b) {
   df_double c = df_two_prod(a.hi, b);
   float cl2 = ((a.lo * b) - df_guard);
@@ -446,14 +420,14 @@ df_double df_mul_f(df_double a, float b) {
 // Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 15u^2 + 56u^3
-// Flops: 37
+// Flops: 39
 // Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
 //        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
 //        df_finish(z, th).
 // The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
 // which adds about 2.5u^2 (tl carries the error).
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
-// Range: any finite a, b with the quotient within float range (the split is scaled).
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_double df_div(df_double a, df_double b) {
   float th = ((a.hi / b.hi) - df_guard);
   df_double r = df_mul_f(b, th);
@@ -490,14 +464,14 @@ df_double df_clamp(df_double x, df_double lo, df_double hi) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
@@ -516,7 +490,7 @@ df_double df_mul(df_double a, df_double b) {
 // Algorithm: AccurateDWPlusDW, DWDivDW2, clamp, DWTimesDW1
 // Source: GLSL 4.60 (2019) section 8.3 (smoothstep); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 55u^2 (absolute; the result is in [0, 1])
-// Flops: 184
+// Flops: 190
 df_double df_smoothstep(df_double e0, df_double e1, df_double x) {
   df_double n = df_sub(x, e0);
   df_double d = df_sub(e1, e0);
@@ -552,7 +526,7 @@ df_double df_floor(df_double a) {
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
-// Flops: 92
+// Flops: 96
 df_double df_mod(df_double a, df_double b) {
   df_double q = df_div(a, b);
   df_double f = df_floor(q);
@@ -661,7 +635,7 @@ df_double df_round_even(df_double a) {
 // Algorithm: DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r) + 7u^2 * abs(a * b) (absolute, first order)
-// Flops: 48
+// Flops: 50
 df_double df_fma(df_double a, df_double b, df_double c) {
   df_double p = df_mul(a, b);
   df_double r = df_add(p, c);
@@ -744,7 +718,7 @@ df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
 // Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.5 (reflect); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r_i) + 20u^2 * 2S abs(n_i) (absolute per component, first order)
-// Flops: 235 (W = 4)
+// Flops: 245 (W = 4)
 df_dvec3 df_reflect(df_dvec3 i, df_dvec3 n) {
   df_double d = df_dot(n, i);
   df_double d2 = df_add(d, d);
@@ -757,7 +731,7 @@ df_dvec3 df_reflect(df_dvec3 i, df_dvec3 n) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(a_j b_k) + abs(a_k b_j)) per component (absolute, first order)
-// Flops: 77
+// Flops: 81
 df_dvec3 df_cross(df_dvec3 a, df_dvec3 b) {
   df_dvec3 p = df_mul(df_dvec3(a.hi.yzx, a.lo.yzx), df_dvec3(b.hi.zxy, b.lo.zxy));
   df_dvec3 q = df_mul(df_dvec3(a.hi.zxy, a.lo.zxy), df_dvec3(b.hi.yzx, b.lo.yzx));
@@ -769,7 +743,7 @@ df_dvec3 df_cross(df_dvec3 a, df_dvec3 b) {
 // Algorithm: AccurateDWPlusDW, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mix); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 3u^2 * abs(r) + 10u^2 * abs(a * (y - x)) (absolute, first order)
-// Flops: 71
+// Flops: 73
 df_dvec3 df_mix(df_dvec3 x, df_dvec3 y, df_dvec3 a) {
   df_dvec3 d = df_sub(y, x);
   df_dvec3 p = df_mul(a, d);
@@ -782,7 +756,7 @@ df_dvec3 df_mix(df_dvec3 x, df_dvec3 y, df_dvec3 a) {
 // Algorithm: df_dot, then selection
 // Source: GLSL 4.60 (2019) section 8.5 (faceforward); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: exact
-// Flops: 173 (W = 4)
+// Flops: 181 (W = 4)
 df_dvec3 df_faceforward(df_dvec3 n, df_dvec3 i, df_dvec3 nref) {
   df_double d = df_dot(nref, i);
   if (d.hi < 0.0) {
@@ -798,7 +772,7 @@ df_dvec3 df_faceforward(df_dvec3 n, df_dvec3 i, df_dvec3 nref) {
 // Algorithm: df_dot, DWTimesDW1, AccurateDWPlusDW, SQRTDWtoDW (LLMPR Algorithm 8)
 // Source: GLSL 4.60 (2019) section 8.5 (refract); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 60u^2 * (abs(eta i_j) + (abs(eta d) + sqrt(k)) abs(n_j)) (absolute per component, first order, k not near 0)
-// Flops: 459 (W = 4)
+// Flops: 481 (W = 4)
 df_dvec3 df_refract(df_dvec3 i, df_dvec3 n, df_double eta) {
   df_double d = df_dot(n, i);
   df_double one = df_double(1.0, 0.0);
@@ -1046,7 +1020,7 @@ vec3 df_to_float(df_dvec3 a) {
 // Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_length
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 12.625u^2
-// Flops: 223 (W = 4)
+// Flops: 233 (W = 4)
 df_double df_distance(df_dvec3 a, df_dvec3 b) {
   df_dvec3 d = df_sub(a, b);
   df_double r = df_length(d);
@@ -1057,7 +1031,7 @@ df_double df_distance(df_dvec3 a, df_dvec3 b) {
 // Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), then DWDivDW2 (JMP Algorithm 17)
 // Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 18.125u^2
-// Flops: 66
+// Flops: 70
 df_double df_inversesqrt(df_double a) {
   df_double s = df_sqrt(a);
   df_double r = df_div(df_double(float(1.0), float(0.0)), s);

@@ -2,34 +2,20 @@
 precision highp float;
 precision highp int;
 
-// doublet float-float runtime: 21 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 20 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
 // Bound: exact
-// Flops: 5 (7 when |a| > 1e34)
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
-//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
-//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
-//        significand when nothing over- or underflows, so the halves are the same.
-// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
-// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
-// Inf; callers then fall back to the float result (df_finish).
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
 df_double df_split(float a) {
-  precise float aa = (abs(a));
-  if (aa > 1.0e34) {
-    precise float as = (a * 1.220703125e-4);
-    precise float gs = (as * 4097.0);
-    precise float ds = (as - gs);
-    precise float hs = (gs + ds);
-    precise float hb = (hs * 8192.0);
-    precise float lb = (a - hb);
-    return df_double(hb, lb);
-  }
   precise float g = (a * 4097.0);
   precise float d = (a - g);
   precise float hi = (g + d);
@@ -38,20 +24,31 @@ df_double df_split(float a) {
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
 // Bound: exact
-// Flops: 19
-// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
-// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   precise float p = (a * b);
-  df_double sa = df_split(a);
-  df_double sb = df_split(b);
+  precise float aa = (abs(a));
+  precise float ab = (abs(b));
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  precise float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  precise float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
   precise float hh = (sa.hi * sb.hi);
   precise float hl = (sa.hi * sb.lo);
   precise float lh = (sa.lo * sb.hi);
@@ -94,14 +91,14 @@ df_double df_finish(df_double z, float f) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
@@ -114,50 +111,27 @@ df_double df_mul(df_double a, df_double b) {
   return r;
 }
 
-// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_dvec2(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12), on a * 2^-13 when |a| > 1e34
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of C*a)
-// Bound: exact
-// Flops: 5 (7 when |a| > 1e34)
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi). C*a overflows above
-//        FLT_MAX/4097 ~ 8.3e34, so for |a| > 1e34 the split is taken of as = RN(a*2^-13)
-//        (exact) and hi = RN(hs*2^13) (exact): Veltkamp's roundings depend only on the
-//        significand when nothing over- or underflows, so the halves are the same.
-// Range: every finite a; the branch is per component, and only values above 1e34 take it, so
-// small operands are split unscaled (no underflow). For |a| > FLT_MAX*(1 - 2^-13) hi rounds to
-// Inf; callers then fall back to the float result (df_finish).
-// (width 2: the width-1 df_split applied to each component)
-df_dvec2 df_split(vec2 a) {
-  df_double r0 = df_split(a.x);
-  df_double r1 = df_split(a.y);
-  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
-}
-
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
 // Bound: exact
-// Flops: 19
-// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b);
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
 //        (every product of halves and every partial sum is exact).
-// Range: exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows (or an operand is Inf or NaN) p is
-// the IEEE result and e is not finite: the callers' df_finish then returns (p, 0).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// (width 2: the width-1 df_two_prod applied to each component)
 df_dvec2 df_two_prod(vec2 a, vec2 b) {
-  precise vec2 p = (a * b);
-  df_dvec2 sa = df_split(a);
-  df_dvec2 sb = df_split(b);
-  precise vec2 hh = (sa.hi * sb.hi);
-  precise vec2 hl = (sa.hi * sb.lo);
-  precise vec2 lh = (sa.lo * sb.hi);
-  precise vec2 ll = (sa.lo * sb.lo);
-  precise vec2 t1 = (hh - p);
-  precise vec2 t2 = (t1 + hl);
-  precise vec2 t3 = (t2 + lh);
-  precise vec2 e = (t3 + ll);
-  return df_dvec2(p, e);
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
 }
 
 // df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
@@ -190,14 +164,14 @@ df_dvec2 df_finish(df_dvec2 z, vec2 f) {
 }
 
 // df_mul: a * b.
-// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (scaled Veltkamp split, C = 4097), then df_finish
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
 // Bound: 7u^2
-// Flops: 27
+// Flops: 29
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
 // The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
   df_dvec2 c = df_two_prod(a.hi, b.hi);
@@ -251,7 +225,7 @@ df_double df_add(df_double a, df_double b) {
 // Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
 // Bound: 10u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
-// Flops: 75
+// Flops: 79
 df_double df_dot(df_dvec2 a, df_dvec2 b) {
   df_dvec2 m = df_mul(a, b);
   df_double x = df_double(m.hi.x, m.lo.x);
@@ -265,7 +239,7 @@ df_double df_dot(df_dvec2 a, df_dvec2 b) {
 // Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
 // Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
 // Bound: 25/8 u^2
-// Flops: 29
+// Flops: 31
 // Steps (LLMPR Algorithm 8, our no-FMA form):
 //   sh   = RN(sqrt(ah))
 //   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
@@ -300,7 +274,7 @@ df_double df_sqrt(df_double a) {
 // Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 9.625u^2
-// Flops: 200 (W = 4; 104 for W = 2, 152 for W = 3)
+// Flops: 210 (W = 4; 110 for W = 2, 160 for W = 3)
 // Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
 df_double df_length(df_dvec2 a) {
   df_double d = df_dot(a, a);
@@ -312,10 +286,10 @@ df_double df_length(df_dvec2 a) {
 // Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
 // Bound: 1.5u^2 + 4u^3
-// Flops: 28
+// Flops: 30
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
 //        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
-// Range: any finite operands whose product is within float range (the split is scaled).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
 df_double df_mul_f(df_double a, float b) {
   df_double c = df_two_prod(a.hi, b);
   precise float cl2 = (a.lo * b);
@@ -330,14 +304,14 @@ df_double df_mul_f(df_double a, float b) {
 // Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
 // Bound: 15u^2 + 56u^3
-// Flops: 37
+// Flops: 39
 // Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
 //        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
 //        df_finish(z, th).
 // The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
 // which adds about 2.5u^2 (tl carries the error).
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
-// Range: any finite a, b with the quotient within float range (the split is scaled).
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_double df_div(df_double a, df_double b) {
   precise float th = (a.hi / b.hi);
   df_double r = df_mul_f(b, th);
