@@ -1,8 +1,8 @@
 // optimize_df: whole-shader rewrites of the lowered IR (after lower_doubles), where a rule call's
 // operands allow a cheaper rule of equal or better accuracy (rules/opt.glsl, docs/rules.md):
 //   df_mul(a, 2^k) / df_mul(2^k, a) / df_div(a, 2^k) / df_mul_f(a, 2^k)  -> df_mul_pow2(a, p)   exact, 3 flops
-//   df_mul(x, x) with x the same side-effect-free expression            -> df_sqr(x)           20 flops, bit-identical
-//   df_mul(a, f) with f's lo known zero                                 -> df_mul_f2(a, f)     25 flops, 3u^2
+//   df_mul(x, x) with x the same side-effect-free expression            -> df_sqr(x)           19 flops, bit-identical
+//   df_mul(a, f) with f's lo known zero                                 -> df_mul_f2(a, f)     27 flops, 3u^2
 //   df_add(a, f) / df_sub(a, f) / df_sub(f, a) with f's lo known zero   -> df_add_f(...)       11 flops, 2u^2
 //   both operands' lo known zero: df_add/df_sub -> df_two_sum, df_mul -> df_two_prod        exact
 // "lo known zero": df_from_float(f), a df constant whose lo words are all 0, or a df_splat_* of one.
