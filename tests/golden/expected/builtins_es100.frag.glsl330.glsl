@@ -1053,14 +1053,14 @@ float df_to_float(df_double a) {
 }
 
 // df_mul_f2: a * b with b a plain float (the lo word of the double operand known to be zero).
-// Cheaper than df_mul (27) and more accurate (3u^2 against 7u^2).
+// Cheaper than df_mul (29) and more accurate (3u^2 against 7u^2).
 // Algorithm: DWTimesFP2 (JMP Algorithm 8) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, section 4
 // Bound: 3u^2
-// Flops: 25
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3);
 //        df_finish(z, ch).
-// Range and special values: as df_mul (the same scaled split, the same df_finish).
+// Range and special values: as df_mul (the same TwoProd, the same df_finish).
 df_dvec3 df_mul_f2(df_dvec3 a, vec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b);
   vec3 cl2 = ((a.lo * b) - df_guard);
@@ -1072,7 +1072,7 @@ df_dvec3 df_mul_f2(df_dvec3 a, vec3 b) {
 
 // df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
 // power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
-// double-word number. Replaces df_mul (27 flops) and df_div by a power of two.
+// double-word number. Replaces df_mul (29 flops) and df_div by a power of two.
 // Algorithm: exact scaling of both words by a power of two, then df_finish
 // Source: HFPA (2018), section 2.2 (multiplication by a power of the radix is exact); JMP 2017, Definition 1.4
 // Bound: exact

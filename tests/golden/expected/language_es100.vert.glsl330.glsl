@@ -393,7 +393,7 @@ vec3 df_to_float(df_dvec3 a) {
 
 // df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
 // power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
-// double-word number. Replaces df_mul (27 flops) and df_div by a power of two.
+// double-word number. Replaces df_mul (29 flops) and df_div by a power of two.
 // Algorithm: exact scaling of both words by a power of two, then df_finish
 // Source: HFPA (2018), section 2.2 (multiplication by a power of the radix is exact); JMP 2017, Definition 1.4
 // Bound: exact

@@ -199,14 +199,14 @@ df_double df_add_f(df_double a, float b) {
 }
 
 // df_mul_f2: a * b with b a plain float (the lo word of the double operand known to be zero).
-// Cheaper than df_mul (27) and more accurate (3u^2 against 7u^2).
+// Cheaper than df_mul (29) and more accurate (3u^2 against 7u^2).
 // Algorithm: DWTimesFP2 (JMP Algorithm 8) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, section 4
 // Bound: 3u^2
-// Flops: 25
+// Flops: 27
 // Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3);
 //        df_finish(z, ch).
-// Range and special values: as df_mul (the same scaled split, the same df_finish).
+// Range and special values: as df_mul (the same TwoProd, the same df_finish).
 df_double df_mul_f2(df_double a, float b) {
   df_double c = df_two_prod(a.hi, b);
   float cl2 = ((a.lo * b) - df_guard);
