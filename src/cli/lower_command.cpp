@@ -217,8 +217,7 @@ int run_lower(const CLI::App& cmd, const LowerArgs& a) {
       std::cerr << format_diagnostic(d) << "\n";
       return kExitInput;
     }
-    if (common.mode == Mode::Df64) common.mode = from_plan.mode;
-    common.mode_for.insert(common.mode_for.begin(), from_plan.mode_for.begin(), from_plan.mode_for.end());
+    merge_plan_modes(from_plan, common);
   }
   std::optional<ColorChoice> color = parse_color_choice(a.color);
   if (!color) return usage_error(cmd, "--color must be auto, always or never");

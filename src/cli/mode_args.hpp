@@ -30,4 +30,12 @@ inline std::string apply_mode_args(const std::string& mode, const std::vector<st
   return {};
 }
 
+// Puts the modes of a plan file (`doublet plan`) under the command line's: the plan's mode is
+// taken unless --mode chose another than the default df64, and the plan's entries go before the
+// --mode-for entries, so those (later) win.
+inline void merge_plan_modes(const Options& plan, Options& options) {
+  if (options.mode == Mode::Df64) options.mode = plan.mode;
+  options.mode_for.insert(options.mode_for.begin(), plan.mode_for.begin(), plan.mode_for.end());
+}
+
 }  // namespace doublet::cli

@@ -88,8 +88,7 @@ int apply_scene_and_plan(const VerifyArgs& a, verify::VerifyOptions* o, plan::Sc
     if (!read_file(a.plan, &text)) return input_error("cannot read plan '" + a.plan + "'");
     Options from_plan;
     if (!plan::load_plan(text, a.plan, &from_plan, &d)) return (std::cerr << format_diagnostic(d) << "\n", kExitInput);
-    if (o->lower.mode == Mode::Df64) o->lower.mode = from_plan.mode;
-    o->lower.mode_for.insert(o->lower.mode_for.begin(), from_plan.mode_for.begin(), from_plan.mode_for.end());
+    merge_plan_modes(from_plan, o->lower);
   }
   if (a.scene.empty()) return kExitOk;
   if (!read_file(a.scene, &text)) return input_error("cannot read scene '" + a.scene + "'");

@@ -50,6 +50,31 @@ std::string type_name(const Type& t) {
   return std::string(vecp) + std::to_string(t.vec);
 }
 
+ExprPtr make_node(Expr::Kind k, const std::string& name, Type type, std::vector<ExprPtr> args, Loc loc) {
+  auto e = Expr::make(k, std::move(type), loc);
+  e->name = name;
+  e->args = std::move(args);
+  return e;
+}
+
+bool is_pure(const ExprPtr& e) {
+  switch (e->kind) {
+    case Expr::Kind::Sym:
+    case Expr::Kind::Const: return true;
+    case Expr::Kind::Member: return is_pure(e->args[0]);
+    case Expr::Kind::Index: return is_pure(e->args[0]) && is_pure(e->args[1]);
+    default: return false;
+  }
+}
+
+ExprPtr clone(const ExprPtr& e) {
+  auto c = std::make_shared<Expr>(*e);
+  for (auto& a : c->args) a = clone(a);
+  return c;
+}
+
+bool is_compound_arithmetic(const std::string& op) { return op == "+=" || op == "-=" || op == "*=" || op == "/="; }
+
 std::string array_suffix(const Type& t) {
   std::string s;
   for (int d : t.array_dims) s += d > 0 ? "[" + std::to_string(d) + "]" : "[]";

@@ -130,6 +130,15 @@ struct Expr {
   }
 };
 
+// A node of kind `k` (Call, Builtin, Construct, ...) named `name` over `args`.
+ExprPtr make_node(Expr::Kind k, const std::string& name, Type type, std::vector<ExprPtr> args, Loc loc);
+// True for an access with no side effects: a variable, a constant, members and indices of those.
+bool is_pure(const ExprPtr& e);
+// A deep copy of an expression tree (the variables it names are shared, not copied).
+ExprPtr clone(const ExprPtr& e);
+// "+=", "-=", "*=", "/=".
+bool is_compound_arithmetic(const std::string& op);
+
 struct Stmt;
 using StmtPtr = std::shared_ptr<Stmt>;
 

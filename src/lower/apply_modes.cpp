@@ -24,23 +24,8 @@ bool same_shape(const ir::Type& a, const ir::Type& b) {
   return a.base == b.base && a.vec == b.vec && a.cols == b.cols && a.array_dims == b.array_dims && a.name == b.name;
 }
 
-bool is_pure(const ExprPtr& e) {
-  switch (e->kind) {
-    case Kind::Sym:
-    case Kind::Const: return true;
-    case Kind::Member: return is_pure(e->args[0]);
-    case Kind::Index: return is_pure(e->args[0]) && is_pure(e->args[1]);
-    default: return false;
-  }
-}
-
-ExprPtr clone(const ExprPtr& e) {
-  auto c = std::make_shared<Expr>(*e);
-  for (auto& a : c->args) a = clone(a);
-  return c;
-}
-
-bool is_compound(const std::string& op) { return op == "+=" || op == "-=" || op == "*=" || op == "/="; }
+using ir::clone;
+using ir::is_pure;
 bool is_arithmetic(const std::string& op) { return op == "+" || op == "-" || op == "*" || op == "/"; }
 bool is_comparison(const std::string& op) {
   return op == "<" || op == ">" || op == "<=" || op == ">=" || op == "==" || op == "!=";
@@ -343,7 +328,7 @@ class ModeApplier {
     }
     if (!involves_double) return e;
     const Base arithmetic = arithmetic_base(arithmetic_);
-    if (is_compound(op)) {
+    if (ir::is_compound_arithmetic(op)) {
       if (a->type.base == arithmetic || !is_real(a->type)) {
         b = convert(b, arithmetic);
         e->type = a->type;

@@ -63,22 +63,7 @@ using Kind = ir::Expr::Kind;
 
 std::string float_type_name(int width) { return width == 1 ? "float" : "vec" + std::to_string(width); }
 
-bool is_pure(const ExprPtr& e) {
-  switch (e->kind) {
-    case Kind::Sym:
-    case Kind::Const: return true;
-    case Kind::Member: return is_pure(e->args[0]);
-    case Kind::Index: return is_pure(e->args[0]) && is_pure(e->args[1]);
-    default: return false;
-  }
-}
-
-ExprPtr call(Kind kind, const std::string& name, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
-  auto e = Expr::make(kind, std::move(type), loc);
-  e->name = name;
-  e->args = std::move(args);
-  return e;
-}
+using ir::is_pure;
 
 ExprPtr member(const ExprPtr& base, const std::string& name, ir::Type type) {
   auto e = Expr::make(Kind::Member, std::move(type), base->loc);
@@ -166,7 +151,7 @@ class DoubleLowering {
   // ---- helpers ---------------------------------------------------------------
   ExprPtr rule(const std::string& name, int width, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
     ctx_.use_rule(name, width);
-    return call(Kind::Call, name, std::move(type), std::move(args), loc);
+    return ir::make_node(Kind::Call, name, std::move(type), std::move(args), loc);
   }
 
   ExprPtr splat(const ExprPtr& scalar, int width) {
@@ -174,7 +159,7 @@ class DoubleLowering {
     std::string name = "df_splat_" + df_type_name(width).substr(3);
     ctx_.add_helper(name, df_type_name(width) + " " + name + "(df_double s) {\n  return " + df_type_name(width) + "(" +
                               float_type_name(width) + "(s.hi), " + float_type_name(width) + "(s.lo));\n}\n");
-    return call(Kind::Call, name, df_type(width), {scalar}, scalar->loc);
+    return ir::make_node(Kind::Call, name, df_type(width), {scalar}, scalar->loc);
   }
 
   // Component selection (swizzle letters) of a df vector, as a new df value.
@@ -186,12 +171,12 @@ class DoubleLowering {
                        ir::scalar_type(ir::Base::Float, width));
       auto lo = member(member(base, "lo", ir::scalar_type(ir::Base::Float, src)), letters,
                        ir::scalar_type(ir::Base::Float, width));
-      return call(Kind::Construct, "", df_type(width), {hi, lo}, loc);
+      return ir::make_node(Kind::Construct, "", df_type(width), {hi, lo}, loc);
     }
     std::string name = "df_swizzle_" + df_type_name(src).substr(3) + "_" + letters;
     ctx_.add_helper(name, df_type_name(width) + " " + name + "(" + df_type_name(src) + " v) {\n  return " +
                               df_type_name(width) + "(v.hi." + letters + ", v.lo." + letters + ");\n}\n");
-    return call(Kind::Call, name, df_type(width), {base}, loc);
+    return ir::make_node(Kind::Call, name, df_type(width), {base}, loc);
   }
 
   // Converts any scalar/vector value to the df type of the same width.
@@ -231,7 +216,7 @@ class DoubleLowering {
   ExprPtr lower(const ExprPtr& e) {
     if (is_matrix_lvalue_write(e)) return lower_matrix_write(e);
     if (is_component_lvalue_write(e)) return lower_component_write(e);
-    if (e->kind == Kind::Binary && is_compound(e->op) && e->args[0]->type.is_double()) return lower_compound(e);
+    if (e->kind == Kind::Binary && ir::is_compound_arithmetic(e->op) && e->args[0]->type.is_double()) return lower_compound(e);
     if (e->kind == Kind::Unary && e->op.find("++") + e->op.find("--") != 2 * std::string::npos &&
         e->args[0]->type.is_double()) {
       if (e->args[0]->type.is_matrix() || (e->args[0]->kind == Kind::Index && e->args[0]->args[0]->type.is_matrix())) {
@@ -251,7 +236,7 @@ class DoubleLowering {
       case Kind::Const: return was_double ? split_constant(e) : e;
       case Kind::Unary:
         if (was_double && e->op == "-" && matrix::is_matrix(e->type))
-          return call(Kind::Call, matrix::negate(ctx_, matrix::cols(e->type), matrix::rows(e->type)), e->type, e->args,
+          return ir::make_node(Kind::Call, matrix::negate(ctx_, matrix::cols(e->type), matrix::rows(e->type)), e->type, e->args,
                       e->loc);
         if (was_double && e->op == "-") return rule("df_neg", df_width(e->type), e->type, e->args, e->loc);
         return e;
@@ -314,7 +299,7 @@ class DoubleLowering {
       h->values = his;
       auto l = Expr::make(Kind::Const, word_type, e->loc);
       l->values = los;
-      return call(Kind::Construct, "", is_matrix ? elem_type : df_type(width), {h, l}, e->loc);
+      return ir::make_node(Kind::Construct, "", is_matrix ? elem_type : df_type(width), {h, l}, e->loc);
     };
     if (!e->type.is_array()) return element(0);
     auto arr = Expr::make(Kind::Construct, e->type, e->loc);
@@ -322,12 +307,8 @@ class DoubleLowering {
     return arr;
   }
 
-  static bool is_compound(const std::string& op) {
-    return op == "+=" || op == "-=" || op == "*=" || op == "/=";
-  }
-
   static bool is_assignment(const ExprPtr& e) {
-    return (e->kind == Kind::Binary && (e->op == "=" || is_compound(e->op)));
+    return (e->kind == Kind::Binary && (e->op == "=" || ir::is_compound_arithmetic(e->op)));
   }
 
   // `v.xz = e`, `v[i] += e`: a write to part of a double vector.
@@ -373,12 +354,12 @@ class DoubleLowering {
       std::string name = "df_assign_" + src_name.substr(3) + "_" + lhs->name;
       ctx_.add_helper(name, dst_name + " " + name + "(inout " + src_name + " v, " + dst_name + " x) {\n  v.hi." +
                                 lhs->name + " = x.hi;\n  v.lo." + lhs->name + " = x.lo;\n  return x;\n}\n");
-      return call(Kind::Call, name, df_type(width), {base, rhs}, e->loc);
+      return ir::make_node(Kind::Call, name, df_type(width), {base, rhs}, e->loc);
     }
     std::string name = "df_assign_component_" + src_name.substr(3);
     ctx_.add_helper(name, "df_double " + name + "(inout " + src_name +
                               " v, int i, df_double x) {\n  v.hi[i] = x.hi;\n  v.lo[i] = x.lo;\n  return x;\n}\n");
-    return call(Kind::Call, name, df_type(1), {base, int_index(lower(lhs->args[1])), rhs}, e->loc);
+    return ir::make_node(Kind::Call, name, df_type(1), {base, int_index(lower(lhs->args[1])), rhs}, e->loc);
   }
 
   ExprPtr lower_compound(const ExprPtr& e) {
@@ -424,13 +405,13 @@ class DoubleLowering {
     ctx_.add_helper(name, type + " " + name + "(inout " + type + " x) {\n" +
                               (pre ? update + "  return x;\n" : "  " + type + " old = x;\n" + update + "  return old;\n") +
                               "}\n");
-    return call(Kind::Call, name, target->type, {target}, e->loc);
+    return ir::make_node(Kind::Call, name, target->type, {target}, e->loc);
   }
 
   // The component helpers take an `int` index; GLSL has no implicit uint → int.
   static ExprPtr int_index(const ExprPtr& index) {
     if (index->type.base != ir::Base::Uint) return index;
-    return call(Kind::Construct, "", ir::scalar_type(ir::Base::Int), {index}, index->loc);
+    return ir::make_node(Kind::Construct, "", ir::scalar_type(ir::Base::Int), {index}, index->loc);
   }
 
   ExprPtr component(const ExprPtr& base, const ExprPtr& index, ir::Loc loc) {
@@ -442,7 +423,7 @@ class DoubleLowering {
     std::string name = "df_component_" + df_type_name(src).substr(3);
     ctx_.add_helper(name, "df_double " + name + "(" + df_type_name(src) +
                               " v, int i) {\n  return df_double(v.hi[i], v.lo[i]);\n}\n");
-    return call(Kind::Call, name, df_type(1), {base, int_index(index)}, loc);
+    return ir::make_node(Kind::Call, name, df_type(1), {base, int_index(index)}, loc);
   }
 
   ExprPtr lower_binary(const ExprPtr& e) {
@@ -454,7 +435,7 @@ class DoubleLowering {
     const std::string& op = e->op;
     if (op == "=") return e;
     if (matrices && (op == "==" || op == "!="))
-      return call(Kind::Call, matrix::equal(ctx_, matrix::cols(a->type), matrix::rows(a->type), op == "!="),
+      return ir::make_node(Kind::Call, matrix::equal(ctx_, matrix::cols(a->type), matrix::rows(a->type), op == "!="),
                   ir::scalar_type(ir::Base::Bool), {a, b}, e->loc);
     if (op == "+" || op == "-" || op == "*" || op == "/") return arithmetic(op, a, b, e->loc);
     static const std::map<std::string, std::string> compare{{"<", "df_lt"}, {"<=", "df_le"}, {">", "df_gt"},
@@ -556,7 +537,7 @@ class DoubleLowering {
       // mat4(dmat4), mat3(dmat4): round each element to float, then resize as GLSL does.
       const ExprPtr& a = e->args[0];
       int c = matrix::cols(a->type), r = matrix::rows(a->type);
-      auto converted = call(Kind::Call, matrix::to_float(ctx_, c, r), float_matrix(c, r), {a}, e->loc);
+      auto converted = ir::make_node(Kind::Call, matrix::to_float(ctx_, c, r), float_matrix(c, r), {a}, e->loc);
       if (c == e->type.cols && r == e->type.vec) return converted;
       e->args = {converted};
       return e;
@@ -613,7 +594,7 @@ class DoubleLowering {
     std::string f = float_type_name(width);
     ctx_.add_helper(name, df_type_name(width) + " " + name + "(" + params + ") {\n  return " + df_type_name(width) + "(" +
                               f + "(" + hi + "), " + f + "(" + lo + "));\n}\n");
-    return call(Kind::Call, name, df_type(width), parts, loc);
+    return ir::make_node(Kind::Call, name, df_type(width), parts, loc);
   }
 
   void check_out_arguments(const ExprPtr& e) {
@@ -644,9 +625,9 @@ class DoubleLowering {
         index->args = {member(m, w, float_matrix(c, r)), j};
         return index;
       };
-      return call(Kind::Construct, "", df_type(r), {word("hi"), word("lo")}, loc);
+      return ir::make_node(Kind::Construct, "", df_type(r), {word("hi"), word("lo")}, loc);
     }
-    return call(Kind::Call, matrix::column(ctx_, c, r), df_type(r), {m, j}, loc);
+    return ir::make_node(Kind::Call, matrix::column(ctx_, c, r), df_type(r), {m, j}, loc);
   }
 
   static bool is_double_matrix(const ir::Type& t) { return t.is_double() && t.is_matrix() && !t.is_array(); }
@@ -683,9 +664,9 @@ class DoubleLowering {
       rhs = arithmetic(e->op.substr(0, 1), current, rhs, e->loc);
     }
     if (!is_df(rhs->type)) rhs = to_df(rhs);
-    if (element) return call(Kind::Call, matrix::assign_element(ctx_, c, r), df_type(1), {m, j, i, rhs}, e->loc);
+    if (element) return ir::make_node(Kind::Call, matrix::assign_element(ctx_, c, r), df_type(1), {m, j, i, rhs}, e->loc);
     if (df_width(rhs->type) < r) rhs = splat(rhs, r);
-    return call(Kind::Call, matrix::assign_column(ctx_, c, r), df_type(r), {m, j, rhs}, e->loc);
+    return ir::make_node(Kind::Call, matrix::assign_column(ctx_, c, r), df_type(r), {m, j, rhs}, e->loc);
   }
 
   ExprPtr matrix_arithmetic(const std::string& op, ExprPtr a, ExprPtr b, ir::Loc loc) {
@@ -694,15 +675,15 @@ class DoubleLowering {
     if (!mb && !is_df(b->type)) b = to_df(b);
     if (op == "*" && ma && mb) {
       int inner = matrix::cols(a->type), r = matrix::rows(a->type), c = matrix::cols(b->type);
-      return call(Kind::Call, matrix::times_matrix(ctx_, inner, r, c), matrix::type(c, r), {a, b}, loc);
+      return ir::make_node(Kind::Call, matrix::times_matrix(ctx_, inner, r, c), matrix::type(c, r), {a, b}, loc);
     }
     if (op == "*" && ma && df_width(b->type) > 1) {
       int c = matrix::cols(a->type), r = matrix::rows(a->type);
-      return call(Kind::Call, matrix::times_vector(ctx_, c, r), df_type(r), {a, b}, loc);
+      return ir::make_node(Kind::Call, matrix::times_vector(ctx_, c, r), df_type(r), {a, b}, loc);
     }
     if (op == "*" && mb && df_width(a->type) > 1) {
       int c = matrix::cols(b->type), r = matrix::rows(b->type);
-      return call(Kind::Call, matrix::vector_times(ctx_, c, r), df_type(c), {a, b}, loc);
+      return ir::make_node(Kind::Call, matrix::vector_times(ctx_, c, r), df_type(c), {a, b}, loc);
     }
     static const std::map<std::string, std::string> names{{"+", "df_add"}, {"-", "df_sub"}, {"*", "df_mul"}, {"/", "df_div"}};
     auto it = names.find(op);
@@ -715,7 +696,7 @@ class DoubleLowering {
     using Operand = matrix::Operand;
     std::string name = matrix::elementwise(ctx_, it->second, c, r, ma ? Operand::Matrix : Operand::Scalar,
                                            mb ? Operand::Matrix : Operand::Scalar);
-    return call(Kind::Call, name, matrix::type(c, r), {a, b}, loc);
+    return ir::make_node(Kind::Call, name, matrix::type(c, r), {a, b}, loc);
   }
 
   // Null when `e` is not a matrix built-in.
@@ -725,22 +706,22 @@ class DoubleLowering {
     if (n == "matrixCompMult" && matrix::is_matrix(args[0]->type)) {
       int c = matrix::cols(args[0]->type), r = matrix::rows(args[0]->type);
       using Operand = matrix::Operand;
-      return call(Kind::Call, matrix::elementwise(ctx_, "df_mul", c, r, Operand::Matrix, Operand::Matrix),
+      return ir::make_node(Kind::Call, matrix::elementwise(ctx_, "df_mul", c, r, Operand::Matrix, Operand::Matrix),
                   matrix::type(c, r), args, e->loc);
     }
     if (n == "transpose") {
       int c = matrix::cols(args[0]->type), r = matrix::rows(args[0]->type);
-      return call(Kind::Call, matrix::transpose(ctx_, c, r), matrix::type(r, c), args, e->loc);
+      return ir::make_node(Kind::Call, matrix::transpose(ctx_, c, r), matrix::type(r, c), args, e->loc);
     }
     if (n == "determinant")
-      return call(Kind::Call, matrix::determinant(ctx_, matrix::cols(args[0]->type)), df_type(1), args, e->loc);
+      return ir::make_node(Kind::Call, matrix::determinant(ctx_, matrix::cols(args[0]->type)), df_type(1), args, e->loc);
     if (n == "inverse") {
       int size = matrix::cols(args[0]->type);
-      return call(Kind::Call, matrix::inverse(ctx_, size), matrix::type(size, size), args, e->loc);
+      return ir::make_node(Kind::Call, matrix::inverse(ctx_, size), matrix::type(size, size), args, e->loc);
     }
     if (n == "outerProduct") {
       int r = df_width(args[0]->type), c = df_width(args[1]->type);
-      return call(Kind::Call, matrix::outer_product(ctx_, c, r), matrix::type(c, r), args, e->loc);
+      return ir::make_node(Kind::Call, matrix::outer_product(ctx_, c, r), matrix::type(c, r), args, e->loc);
     }
     return nullptr;
   }
@@ -751,17 +732,17 @@ class DoubleLowering {
       const ExprPtr& a = e->args[0];
       if (matrix::is_matrix(a->type)) {
         if (matrix::cols(a->type) == c && matrix::rows(a->type) == r) return a;
-        return call(Kind::Call, matrix::resize(ctx_, matrix::cols(a->type), matrix::rows(a->type), c, r), e->type, {a},
+        return ir::make_node(Kind::Call, matrix::resize(ctx_, matrix::cols(a->type), matrix::rows(a->type), c, r), e->type, {a},
                     e->loc);
       }
       if (a->type.is_matrix()) {  // dmat4(mat4): hi is the float matrix, lo is zero
         ExprPtr hi = a;
-        if (a->type.cols != c || a->type.vec != r) hi = call(Kind::Construct, "", float_matrix(c, r), {a}, e->loc);
-        auto zero = call(Kind::Construct, "", float_matrix(c, r), {float_const(0.0f, e->loc)}, e->loc);
-        return call(Kind::Construct, "", e->type, {hi, zero}, e->loc);
+        if (a->type.cols != c || a->type.vec != r) hi = ir::make_node(Kind::Construct, "", float_matrix(c, r), {a}, e->loc);
+        auto zero = ir::make_node(Kind::Construct, "", float_matrix(c, r), {float_const(0.0f, e->loc)}, e->loc);
+        return ir::make_node(Kind::Construct, "", e->type, {hi, zero}, e->loc);
       }
       if (a->type.vec == 1 || (is_df(a->type) && df_width(a->type) == 1))
-        return call(Kind::Call, matrix::diagonal(ctx_, c, r), e->type, {to_df(a)}, e->loc);
+        return ir::make_node(Kind::Call, matrix::diagonal(ctx_, c, r), e->type, {to_df(a)}, e->loc);
     }
     std::vector<ExprPtr> parts;
     std::vector<int> widths;
@@ -773,7 +754,7 @@ class DoubleLowering {
       parts.push_back(to_df(a));
       widths.push_back(df_width(parts.back()->type));
     }
-    return call(Kind::Call, matrix::from_components(ctx_, c, r, widths), e->type, parts, e->loc);
+    return ir::make_node(Kind::Call, matrix::from_components(ctx_, c, r, widths), e->type, parts, e->loc);
   }
 
   ir::Module& module_;

@@ -17,10 +17,7 @@ using ir::ExprPtr;
 using Kind = ir::Expr::Kind;
 
 ExprPtr make_call(const std::string& name, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
-  auto e = Expr::make(Kind::Call, std::move(type), loc);
-  e->name = name;
-  e->args = std::move(args);
-  return e;
+  return ir::make_node(Kind::Call, name, std::move(type), std::move(args), loc);
 }
 
 bool is_const_zero(const ExprPtr& e) {

@@ -14,14 +14,18 @@ for linkage in static shared; do
         -DLINK_SHARED_DOUBLET=$shared >"$work/configure-$linkage.log"
   cmake --build "$build" -j2 >"$work/build-$linkage.log"
   if [ "$linkage" = shared ]; then
-    ldd "$build/lower_assets" | grep -q "libdoublet.so" || { echo "not linked to libdoublet.so"; exit 1; }
+    # Capture first: under pipefail, `ldd | grep -q` fails when grep exits before ldd
+    # finishes writing (SIGPIPE), which made this check flaky in CI.
+    libs=$(ldd "$build/lower_assets")
+    grep -q "libdoublet.so" <<<"$libs" || { echo "not linked to libdoublet.so:"; echo "$libs"; exit 1; }
   fi
   "$build/lower_assets" "$src/examples/shaders" "$out" --target es310 -j 4 | tee "$work/run-$linkage.log"
   grep -q "3 of 3 shaders lowered to es310" "$work/run-$linkage.log"
   for f in globe_rte.vert mandelbrot_deep_zoom.frag orbit_step.comp; do
     [ -s "$out/$f" ] && [ -s "$out/$f.json" ] || { echo "missing output for $f"; exit 1; }
     grep -q '^#version 310 es' "$out/$f"
-    ! grep -v '^ *//' "$out/$f" | grep -qwE 'double|dvec[234]' || { echo "$f still has doubles"; exit 1; }
+    code=$(grep -v '^ *//' "$out/$f" || true)
+    ! grep -qwE 'double|dvec[234]' <<<"$code" || { echo "$f still has doubles"; exit 1; }
   done
   grep -q '"position_hi"' "$out/globe_rte.vert.json"
 done

@@ -1,40 +1,28 @@
-// Runs the doublet CLI with stdout and stderr captured (plan tests).
+// Runs the doublet CLI with stdout and stderr captured together (plan tests), through the
+// CLI tests' process runner (tests/cli/test_support.hpp).
 #pragma once
 
-#include <sys/wait.h>
-
-#include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 #include <string>
+
+#include "test_support.hpp"
 
 namespace plan_test {
 
+using ::doublet::cli_test::read_file;
+using ::doublet::cli_test::write_file;
+
 struct CliRun {
   int exit_code = -1;
-  std::string out;
+  std::string out;  // stdout and stderr, interleaved as the program wrote them
 };
 
-inline CliRun doublet(const std::string& args) {
-  CliRun r;
-  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+// `args` is split by the shell, like a command line typed in a terminal.
+inline CliRun run_doublet(const std::string& args) {
+  const auto r = ::doublet::cli_test::run_process(
+      "/bin/sh", {"-c", std::string(DOUBLET_CLI_PATH) + " " + args + " 2>&1"}, std::filesystem::current_path());
+  return {r.exit_code, r.out};
 }
-
-inline std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-inline void write_file(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 const std::string kScenes = DOUBLET_SCENES;
 

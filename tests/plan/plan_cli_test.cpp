@@ -16,7 +16,7 @@ std::string temp(const std::string& name) { return (fs::temp_directory_path() / 
 TEST(PlanCli, GlobeTableAndPlanFile) {
   const std::string out = temp("globe.plan.json");
   fs::remove(out);
-  const CliRun r = doublet("plan " + kScenes + "/globe_rte.vert --scene " + kScenes + "/globe.scene.json -o " + out);
+  const CliRun r = run_doublet("plan " + kScenes + "/globe_rte.vert --scene " + kScenes + "/globe.scene.json -o " + out);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   for (const char* column : {"value", "line", "range", "bits", "mode", "flops"})
     EXPECT_NE(r.out.find(column), std::string::npos) << column;
@@ -28,10 +28,10 @@ TEST(PlanCli, GlobeTableAndPlanFile) {
 
 TEST(PlanCli, FarEyeAndOrbitKeepDf64) {
   const std::string out = temp("far.plan.json");
-  CliRun r = doublet("plan " + kScenes + "/globe_rte.vert --scene " + kScenes + "/globe_far_eye.scene.json -o " + out);
+  CliRun r = run_doublet("plan " + kScenes + "/globe_rte.vert --scene " + kScenes + "/globe_far_eye.scene.json -o " + out);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(nlohmann::json::parse(read_file(out))["mode_for"], nlohmann::json::object());
-  r = doublet("plan " + kScenes + "/orbit_step.vert --scene " + kScenes + "/orbit.scene.json -o " + out);
+  r = run_doublet("plan " + kScenes + "/orbit_step.vert --scene " + kScenes + "/orbit.scene.json -o " + out);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_EQ(nlohmann::json::parse(read_file(out))["mode_for"], nlohmann::json::object());
   EXPECT_EQ(r.out.find(" fp32 "), std::string::npos) << r.out;
@@ -40,23 +40,23 @@ TEST(PlanCli, FarEyeAndOrbitKeepDf64) {
 TEST(PlanCli, BadScenesExit2WithPosition) {
   const std::string scene = temp("bad.scene.json");
   write_file(scene, "{\n  \"outputs\": {\"v_rel\": {\"abs_error\": \"lots\"}}\n}\n");
-  CliRun r = doublet("plan " + kScenes + "/globe_rte.vert --scene " + scene);
+  CliRun r = run_doublet("plan " + kScenes + "/globe_rte.vert --scene " + scene);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find(scene + ":2:38: error: abs_error must be a positive number"), std::string::npos) << r.out;
 
   write_file(scene, "{\"outputs\": {\"nowhere\": {\"abs_error\": 1}}}");
-  r = doublet("plan " + kScenes + "/globe_rte.vert --scene " + scene);
+  r = run_doublet("plan " + kScenes + "/globe_rte.vert --scene " + scene);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find(scene + ":1:25: error: the shader has no output"), std::string::npos) << r.out;
 
   write_file(scene, "not json");
-  r = doublet("plan " + kScenes + "/globe_rte.vert --scene " + scene);
+  r = run_doublet("plan " + kScenes + "/globe_rte.vert --scene " + scene);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find(scene + ":1:"), std::string::npos) << r.out;
 
-  r = doublet("plan " + kScenes + "/globe_rte.vert --scene " + temp("missing.json"));
+  r = run_doublet("plan " + kScenes + "/globe_rte.vert --scene " + temp("missing.json"));
   EXPECT_EQ(r.exit_code, 2) << r.out;
-  r = doublet("plan " + kScenes + "/globe_rte.vert");  // --scene is required: a usage error
+  r = run_doublet("plan " + kScenes + "/globe_rte.vert");  // --scene is required: a usage error
   EXPECT_EQ(r.exit_code, 1) << r.out;
 }
 
@@ -65,7 +65,7 @@ TEST(PlanCli, InfeasibleSceneExits1) {
   const std::string scene = temp("tight.scene.json");
   write_file(scene, read_file(kScenes + "/globe.scene.json").replace(
                         read_file(kScenes + "/globe.scene.json").find("\"abs_error\": 1e-4"), 17, "\"abs_error\": 1e-6"));
-  const CliRun r = doublet("plan " + kScenes + "/globe_rte.vert --scene " + scene);
+  const CliRun r = run_doublet("plan " + kScenes + "/globe_rte.vert --scene " + scene);
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_NE(r.out.find("v_height"), std::string::npos);
 }
@@ -73,17 +73,17 @@ TEST(PlanCli, InfeasibleSceneExits1) {
 TEST(PlanCli, LowerAppliesThePlanAndRejectsBadPlans) {
   const std::string plan = temp("apply.plan.json");
   write_file(plan, R"({"version": 1, "mode": "df64", "mode_for": {"main.rel": "fp32"}})");
-  CliRun r = doublet("lower " + kScenes + "/globe_rte.vert --plan " + plan);
+  CliRun r = run_doublet("lower " + kScenes + "/globe_rte.vert --plan " + plan);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("  vec3 rel = "), std::string::npos) << r.out;  // stored as float
-  r = doublet("lower " + kScenes + "/globe_rte.vert");
+  r = run_doublet("lower " + kScenes + "/globe_rte.vert");
   EXPECT_EQ(r.out.find("  vec3 rel = "), std::string::npos);  // without the plan it stays df64
 
   write_file(plan, "{\"version\": 1, \"mode_for\": {\"main.rel\": 32}}");
-  r = doublet("lower " + kScenes + "/globe_rte.vert --plan " + plan);
+  r = run_doublet("lower " + kScenes + "/globe_rte.vert --plan " + plan);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find(plan + ":1:41: error:"), std::string::npos) << r.out;
-  r = doublet("lower " + kScenes + "/globe_rte.vert --plan " + temp("no_such_plan.json"));
+  r = run_doublet("lower " + kScenes + "/globe_rte.vert --plan " + temp("no_such_plan.json"));
   EXPECT_EQ(r.exit_code, 2) << r.out;
 }
 

@@ -15,13 +15,13 @@ std::string temp(const std::string& name) { return (fs::temp_directory_path() / 
 
 std::string make_plan(const std::string& shader, const std::string& scene, const std::string& name) {
   const std::string out = temp(name);
-  const CliRun r = doublet("plan " + kScenes + "/" + shader + " --scene " + kScenes + "/" + scene + " -o " + out);
+  const CliRun r = run_doublet("plan " + kScenes + "/" + shader + " --scene " + kScenes + "/" + scene + " -o " + out);
   EXPECT_EQ(r.exit_code, 0) << r.out;
   return out;
 }
 
 CliRun verify(const std::string& shader, const std::string& scene, const std::string& extra) {
-  return doublet("verify " + kScenes + "/" + shader + " --target es300 --samples 2048 --scene " + kScenes + "/" +
+  return run_doublet("verify " + kScenes + "/" + shader + " --target es300 --samples 2048 --scene " + kScenes + "/" +
                  scene + " " + extra);
 }
 
