@@ -26,8 +26,8 @@
 // Flops: 2
 // @widths 1 2 3 4
 $DF df_neg($DF a) {
-  $PRECISE $F h = $G(-a.hi);
-  $PRECISE $F l = $G(-a.lo);
+  $PRECISE $F h = $SAFE(-a.hi);
+  $PRECISE $F l = $SAFE(-a.lo);
   return $DF(h, l);
 }
 
@@ -42,7 +42,7 @@ $DF df_neg($DF a) {
 // @widths 1 2 3 4
 // @per-component
 $DF df_finish($DF z, $F f) {
-  $PRECISE $F az = $G(abs(z.hi));
+  $PRECISE $F az = $SAFE(abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -63,9 +63,9 @@ $DF df_finish($DF z, $F f) {
 $DF df_add($DF a, $DF b) {
   $DF s = df_two_sum(a.hi, b.hi);
   $DF t = df_two_sum(a.lo, b.lo);
-  $PRECISE $F c = $G(s.lo + t.hi);
+  $PRECISE $F c = $SAFE(s.lo + t.hi);
   $DF v = df_fast_two_sum(s.hi, c);
-  $PRECISE $F w = $G(t.lo + v.lo);
+  $PRECISE $F w = $SAFE(t.lo + v.lo);
   $DF z = df_fast_two_sum(v.hi, w);
   $DF r = df_finish(z, s.hi);
   return r;
@@ -92,7 +92,7 @@ $DF df_sub($DF a, $DF b) {
 // @widths 1 2 3 4
 $DF df_add_f($DF a, $F b) {
   $DF s = df_two_sum(a.hi, b);
-  $PRECISE $F v = $G(a.lo + s.lo);
+  $PRECISE $F v = $SAFE(a.lo + s.lo);
   $DF z = df_fast_two_sum(s.hi, v);
   $DF r = df_finish(z, s.hi);
   return r;
@@ -111,10 +111,10 @@ $DF df_add_f($DF a, $F b) {
 // @widths 1 2 3 4
 $DF df_mul($DF a, $DF b) {
   $DF c = df_two_prod(a.hi, b.hi);
-  $PRECISE $F tl = $G(a.hi * b.lo);
-  $PRECISE $F th = $G(a.lo * b.hi);
-  $PRECISE $F cl2 = $G(th + tl);
-  $PRECISE $F cl3 = $G(c.lo + cl2);
+  $PRECISE $F tl = $SAFE(a.hi * b.lo);
+  $PRECISE $F th = $SAFE(a.lo * b.hi);
+  $PRECISE $F cl2 = $SAFE(th + tl);
+  $PRECISE $F cl3 = $SAFE(c.lo + cl2);
   $DF z = df_fast_two_sum(c.hi, cl3);
   $DF r = df_finish(z, c.hi);
   return r;
@@ -131,9 +131,9 @@ $DF df_mul($DF a, $DF b) {
 // @widths 1 2 3 4
 $DF df_mul_f($DF a, $F b) {
   $DF c = df_two_prod(a.hi, b);
-  $PRECISE $F cl2 = $G(a.lo * b);
+  $PRECISE $F cl2 = $SAFE(a.lo * b);
   $DF t = df_fast_two_sum(c.hi, cl2);
-  $PRECISE $F tl2 = $G(t.lo + c.lo);
+  $PRECISE $F tl2 = $SAFE(t.lo + c.lo);
   $DF z = df_fast_two_sum(t.hi, tl2);
   $DF r = df_finish(z, c.hi);
   return r;
@@ -155,10 +155,10 @@ $DF df_mul_f($DF a, $F b) {
 $DF df_div($DF a, $DF b) {
   $PRECISE $F th = $G(a.hi / b.hi);
   $DF r = df_mul_f(b, th);
-  $PRECISE $F pih = $G(a.hi - r.hi);
-  $PRECISE $F dl = $G(a.lo - r.lo);
-  $PRECISE $F d = $G(pih + dl);
-  $PRECISE $F tl = $G(d / b.hi);
+  $PRECISE $F pih = $SAFE(a.hi - r.hi);
+  $PRECISE $F dl = $SAFE(a.lo - r.lo);
+  $PRECISE $F d = $SAFE(pih + dl);
+  $PRECISE $F tl = $SAFE(d / b.hi);
   $DF z = df_fast_two_sum(th, tl);
   $DF q = df_finish(z, th);
   return q;

@@ -12,7 +12,8 @@
 // Notation: u = 2^-24 (binary32 unit roundoff); RN(x) = x rounded to nearest-even float.
 // "Exact" assumes no overflow and no underflow of the error term (|result| > ~2^-102;
 // vertex and fragment stages flush subnormals on Mesa, compute keeps them).
-// Guarding: every float operation is a $PRECISE temporary wrapped in $G(...), see
+// Guarding: every float operation is a $PRECISE temporary wrapped in $G(...) or, where no later
+// step cancels against it, $SAFE(...) (no Uniform guard subtraction), see
 // docs/rules-format.md. Without it Mesa's inexact algebra folds the error terms to 0.
 // FMA is never used: llvmpipe does not fuse fma(), so TwoProd is Dekker's (Veltkamp split).
 
@@ -26,10 +27,10 @@
 $DF df_two_sum($F a, $F b) {
   $PRECISE $F s = $G(a + b);
   $PRECISE $F bb = $G(s - a);
-  $PRECISE $F ab = $G(s - bb);
-  $PRECISE $F da = $G(a - ab);
-  $PRECISE $F db = $G(b - bb);
-  $PRECISE $F e = $G(da + db);
+  $PRECISE $F ab = $SAFE(s - bb);
+  $PRECISE $F da = $SAFE(a - ab);
+  $PRECISE $F db = $SAFE(b - bb);
+  $PRECISE $F e = $SAFE(da + db);
   return $DF(s, e);
 }
 
@@ -44,7 +45,7 @@ $DF df_two_sum($F a, $F b) {
 $DF df_fast_two_sum($F a, $F b) {
   $PRECISE $F s = $G(a + b);
   $PRECISE $F z = $G(s - a);
-  $PRECISE $F e = $G(b - z);
+  $PRECISE $F e = $SAFE(b - z);
   return $DF(s, e);
 }
 
@@ -61,8 +62,8 @@ $DF df_fast_two_sum($F a, $F b) {
 $DF df_split($F a) {
   $PRECISE $F g = $G(a * 4097.0);
   $PRECISE $F d = $G(a - g);
-  $PRECISE $F hi = $G(g + d);
-  $PRECISE $F lo = $G(a - hi);
+  $PRECISE $F hi = $SAFE(g + d);
+  $PRECISE $F lo = $SAFE(a - hi);
   return $DF(hi, lo);
 }
 
@@ -86,21 +87,21 @@ $DF df_split($F a) {
 // @per-component
 $DF df_two_prod($F a, $F b) {
   $PRECISE $F p = $G(a * b);
-  $PRECISE $F aa = $G(abs(a));
-  $PRECISE $F ab = $G(abs(b));
+  $PRECISE $F aa = $SAFE(abs(a));
+  $PRECISE $F ab = $SAFE(abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  $PRECISE $F as = $G(a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
-  $PRECISE $F bs = $G(b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  $PRECISE $F as = $SAFE(a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  $PRECISE $F bs = $SAFE(b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
   $DF sa = df_split(as);
   $DF sb = df_split(bs);
-  $PRECISE $F hh = $G(sa.hi * sb.hi);
-  $PRECISE $F hl = $G(sa.hi * sb.lo);
-  $PRECISE $F lh = $G(sa.lo * sb.hi);
-  $PRECISE $F ll = $G(sa.lo * sb.lo);
-  $PRECISE $F t1 = $G(hh - p);
-  $PRECISE $F t2 = $G(t1 + hl);
-  $PRECISE $F t3 = $G(t2 + lh);
-  $PRECISE $F e = $G(t3 + ll);
+  $PRECISE $F hh = $SAFE(sa.hi * sb.hi);
+  $PRECISE $F hl = $SAFE(sa.hi * sb.lo);
+  $PRECISE $F lh = $SAFE(sa.lo * sb.hi);
+  $PRECISE $F ll = $SAFE(sa.lo * sb.lo);
+  $PRECISE $F t1 = $SAFE(hh - p);
+  $PRECISE $F t2 = $SAFE(t1 + hl);
+  $PRECISE $F t3 = $SAFE(t2 + lh);
+  $PRECISE $F e = $SAFE(t3 + ll);
   return $DF(p, e);
 }

@@ -28,8 +28,8 @@
 // @widths 1 2 3 4
 $DF df_add_fast($DF a, $DF b) {
   $DF s = df_two_sum(a.hi, b.hi);
-  $PRECISE $F v = $G(a.lo + b.lo);
-  $PRECISE $F w = $G(s.lo + v);
+  $PRECISE $F v = $SAFE(a.lo + b.lo);
+  $PRECISE $F w = $SAFE(s.lo + v);
   $DF z = df_fast_two_sum(s.hi, w);
   return z;
 }
@@ -41,10 +41,10 @@ $DF df_add_fast($DF a, $DF b) {
 // Flops: 12
 // @widths 1 2 3 4
 $DF df_sub_fast($DF a, $DF b) {
-  $PRECISE $F nh = $G(-b.hi);
+  $PRECISE $F nh = $SAFE(-b.hi);
   $DF s = df_two_sum(a.hi, nh);
-  $PRECISE $F v = $G(a.lo - b.lo);
-  $PRECISE $F w = $G(s.lo + v);
+  $PRECISE $F v = $SAFE(a.lo - b.lo);
+  $PRECISE $F w = $SAFE(s.lo + v);
   $DF z = df_fast_two_sum(s.hi, w);
   return z;
 }
@@ -63,10 +63,10 @@ $DF df_sub_fast($DF a, $DF b) {
 // @widths 1 2 3 4
 $DF df_mul_fast($DF a, $DF b) {
   $DF c = df_two_prod(a.hi, b.hi);
-  $PRECISE $F tl = $G(a.hi * b.lo);
-  $PRECISE $F th = $G(a.lo * b.hi);
-  $PRECISE $F cl2 = $G(th + tl);
-  $PRECISE $F cl3 = $G(c.lo + cl2);
+  $PRECISE $F tl = $SAFE(a.hi * b.lo);
+  $PRECISE $F th = $SAFE(a.lo * b.hi);
+  $PRECISE $F cl2 = $SAFE(th + tl);
+  $PRECISE $F cl3 = $SAFE(c.lo + cl2);
   $DF z = df_fast_two_sum(c.hi, cl3);
   return z;
 }
@@ -85,12 +85,12 @@ $DF df_mul_fast($DF a, $DF b) {
 $DF df_div_fast($DF a, $DF b) {
   $PRECISE $F th = $G(a.hi / b.hi);
   $DF c = df_two_prod(b.hi, th);
-  $PRECISE $F cl2 = $G(b.lo * th);
-  $PRECISE $F rl = $G(c.lo + cl2);
-  $PRECISE $F pih = $G(a.hi - c.hi);
-  $PRECISE $F dl = $G(a.lo - rl);
-  $PRECISE $F d = $G(pih + dl);
-  $PRECISE $F tl = $G(d / b.hi);
+  $PRECISE $F cl2 = $SAFE(b.lo * th);
+  $PRECISE $F rl = $SAFE(c.lo + cl2);
+  $PRECISE $F pih = $SAFE(a.hi - c.hi);
+  $PRECISE $F dl = $SAFE(a.lo - rl);
+  $PRECISE $F d = $SAFE(pih + dl);
+  $PRECISE $F tl = $SAFE(d / b.hi);
   $DF z = df_fast_two_sum(th, tl);
   return z;
 }

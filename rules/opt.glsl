@@ -26,8 +26,8 @@
 // overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
 // @widths 1 2 3 4
 $DF df_mul_pow2($DF a, $F p) {
-  $PRECISE $F h = $G(a.hi * p);
-  $PRECISE $F l = $G(a.lo * p);
+  $PRECISE $F h = $SAFE(a.hi * p);
+  $PRECISE $F l = $SAFE(a.lo * p);
   $DF r = df_finish($DF(h, l), h);
   return r;
 }
@@ -50,16 +50,16 @@ $DF df_mul_pow2($DF a, $F p) {
 $DF df_sqr($DF a) {
   $PRECISE $F p = $G(a.hi * a.hi);
   $DF s = df_split(a.hi);
-  $PRECISE $F hh = $G(s.hi * s.hi);
-  $PRECISE $F hl = $G(s.hi * s.lo);
-  $PRECISE $F hl2 = $G(hl + hl);
-  $PRECISE $F ll = $G(s.lo * s.lo);
-  $PRECISE $F t1 = $G(hh - p);
-  $PRECISE $F t2 = $G(t1 + hl2);
-  $PRECISE $F e = $G(t2 + ll);
-  $PRECISE $F c = $G(a.hi * a.lo);
-  $PRECISE $F c2 = $G(c + c);
-  $PRECISE $F cl3 = $G(e + c2);
+  $PRECISE $F hh = $SAFE(s.hi * s.hi);
+  $PRECISE $F hl = $SAFE(s.hi * s.lo);
+  $PRECISE $F hl2 = $SAFE(hl + hl);
+  $PRECISE $F ll = $SAFE(s.lo * s.lo);
+  $PRECISE $F t1 = $SAFE(hh - p);
+  $PRECISE $F t2 = $SAFE(t1 + hl2);
+  $PRECISE $F e = $SAFE(t2 + ll);
+  $PRECISE $F c = $SAFE(a.hi * a.lo);
+  $PRECISE $F c2 = $SAFE(c + c);
+  $PRECISE $F cl3 = $SAFE(e + c2);
   $DF z = df_fast_two_sum(p, cl3);
   $DF r = df_finish(z, p);
   return r;
@@ -77,8 +77,8 @@ $DF df_sqr($DF a) {
 // @widths 1 2 3 4
 $DF df_mul_f2($DF a, $F b) {
   $DF c = df_two_prod(a.hi, b);
-  $PRECISE $F cl2 = $G(a.lo * b);
-  $PRECISE $F cl3 = $G(c.lo + cl2);
+  $PRECISE $F cl2 = $SAFE(a.lo * b);
+  $PRECISE $F cl3 = $SAFE(c.lo + cl2);
   $DF z = df_fast_two_sum(c.hi, cl3);
   $DF r = df_finish(z, c.hi);
   return r;

@@ -34,11 +34,11 @@
 $DF df_sqrt($DF a) {
   $PRECISE $F sh = $G(sqrt(a.hi));
   $DF sq = df_two_prod(sh, sh);
-  $PRECISE $F r0 = $G(a.hi - sq.hi);
-  $PRECISE $F rho1 = $G(r0 - sq.lo);
-  $PRECISE $F rho2 = $G(a.lo + rho1);
-  $PRECISE $F sh2 = $G(sh * 2.0);
-  $PRECISE $F sl = $G(rho2 / sh2);
+  $PRECISE $F r0 = $SAFE(a.hi - sq.hi);
+  $PRECISE $F rho1 = $SAFE(r0 - sq.lo);
+  $PRECISE $F rho2 = $SAFE(a.lo + rho1);
+  $PRECISE $F sh2 = $SAFE(sh * 2.0);
+  $PRECISE $F sl = $SAFE(rho2 / sh2);
   $DF z = df_fast_two_sum(sh, sl);
   $DF r = df_finish(z, sh);
   return r;

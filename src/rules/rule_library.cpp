@@ -109,7 +109,7 @@ struct Subst {
 };
 
 // Replaces the placeholders of docs/rules-format.md. Returns false (and sets *error) on an
-// unknown placeholder or an unbalanced $G(.
+// unknown placeholder or an unbalanced $G( or $SAFE(.
 bool substitute(std::string_view in, const Subst& s, std::string& out, std::string* error) {
   for (size_t i = 0; i < in.size(); ++i) {
     if (in[i] != '$') {
@@ -119,9 +119,9 @@ bool substitute(std::string_view in, const Subst& s, std::string& out, std::stri
     size_t j = i + 1;
     while (j < in.size() && std::isupper(static_cast<unsigned char>(in[j]))) ++j;
     std::string key(in.substr(i + 1, j - i - 1));
-    if (key == "G") {
+    if (key == "G" || key == "SAFE") {
       if (j >= in.size() || in[j] != '(') {
-        *error = "$G must be followed by '('";
+        *error = "$" + key + " must be followed by '('";
         return false;
       }
       int depth = 0;
@@ -131,12 +131,14 @@ bool substitute(std::string_view in, const Subst& s, std::string& out, std::stri
         if (in[k] == ')' && --depth == 0) break;
       }
       if (k >= in.size()) {
-        *error = "unbalanced parentheses in $G(...)";
+        *error = "unbalanced parentheses in $" + key + "(...)";
         return false;
       }
       std::string inner;
       if (!substitute(in.substr(j + 1, k - j - 1), s, inner, error)) return false;
-      if (s.guard == GuardStyle::Uniform)
+      // $SAFE(e): a step no later step of the rule cancels against (docs/rules.md, "The
+      // optimizer guard"): `precise` where the target has it, no uniform subtraction.
+      if (s.guard == GuardStyle::Uniform && key == "G")
         // Subtract the +0 guard: x - 0 == x for every x including -0 (x + 0 turns -0 into +0).
         out += "((" + inner + ") - " + s.guard_uniform + ")";
       else

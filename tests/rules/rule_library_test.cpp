@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
@@ -231,7 +233,53 @@ bool has_arithmetic(const std::string& expr) {
 // The optimizer guard: every float temporary that computes anything is $PRECISE and $G(...);
 // no arithmetic anywhere else (returns, arguments, conditions). Integer statements are exempt
 // (integer arithmetic is exact and cannot be rewritten inexactly).
+// Per rule function, the float temporaries its source declares $SAFE(...) (steps no later step
+// cancels against, which need no Uniform guard; docs/rules.md, "The optimizer guard").
+std::map<std::string, std::set<std::string>> safe_temporaries() {
+  std::map<std::string, std::set<std::string>> safe;
+  const std::regex function(R"(^\S+ (\w+)\(.*\) \{$)");
+  const std::regex safe_decl(R"(\$PRECISE \$F (\w+) = \$SAFE\()");
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(DOUBLET_SOURCE_DIR) + "/rules")) {
+    std::ifstream in(entry.path());
+    std::string line, current;
+    std::smatch m;
+    while (std::getline(in, line)) {
+      if (std::regex_match(line, m, function)) current = m[1];
+      else if (std::regex_search(line, m, safe_decl)) safe[current].insert(m[1]);
+    }
+  }
+  return safe;
+}
+
+TEST(RuleLibrary, EveryFloatTemporaryIsGuardedOrDeclaredSafe) {
+  const std::regex temporary(R"(\$PRECISE \$F \w+ = (\$\w+\()?)");
+  int safe_count = 0, guarded_count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(DOUBLET_SOURCE_DIR) + "/rules")) {
+    std::ifstream in(entry.path());
+    std::string line;
+    std::smatch m;
+    while (std::getline(in, line)) {
+      if (!std::regex_search(line, m, temporary)) continue;
+      SCOPED_TRACE(entry.path().filename().string() + ": " + line);
+      EXPECT_TRUE(m[1] == "$G(" || m[1] == "$SAFE(") << "a float temporary must be $G(...) or $SAFE(...)";
+      (m[1] == "$SAFE(" ? safe_count : guarded_count)++;
+    }
+  }
+  // The first steps of every error-free transformation stay guarded: this test fails if a
+  // sweeping edit marks everything safe.
+  EXPECT_GT(guarded_count, 0);
+  EXPECT_GT(safe_count, 0);
+  const auto safe = safe_temporaries();
+  for (const auto& [fn, steps] : std::map<std::string, std::vector<std::string>>{
+           {"df_two_sum", {"s", "bb"}}, {"df_fast_two_sum", {"s", "z"}}, {"df_split", {"g", "d"}},
+           {"df_two_prod", {"p"}}}) {
+    for (const auto& step : steps) EXPECT_EQ(safe.count(fn) ? safe.at(fn).count(step) : 0u, 0u) << fn << "." << step;
+  }
+}
+
 TEST(RuleLibrary, EveryFloatOperationIsGuarded) {
+  const auto safe = safe_temporaries();
+  const std::regex function_name(R"(^\S+ (\w+)\()");
   const std::regex decl(R"(^(precise\s+)?(\w+)\s+(\w+)\s*=\s*([\s\S]*)$)");
   const std::regex int_type(R"(^(int|uint|bool|[iub]vec[234])$)");
   const std::regex float_type(R"(^(float|vec[234])$)");
@@ -255,10 +303,15 @@ TEST(RuleLibrary, EveryFloatOperationIsGuarded) {
             const std::string type = m[2], rhs = trim(m[4]);
             if (std::regex_match(type, int_type)) continue;
             if (std::regex_match(type, float_type)) {
-              if (g == GuardStyle::Uniform) {
+              std::smatch fn;
+              const bool declared_safe = std::regex_search(f.signature, fn, function_name) &&
+                                         safe.count(fn[1].str()) && safe.at(fn[1].str()).count(m[3].str());
+              if (g == GuardStyle::Uniform && !declared_safe) {
                 EXPECT_TRUE(rhs.rfind("((", 0) == 0 && rhs.size() > 13 &&
                             rhs.compare(rhs.size() - 13, 13, ") - df_guard)") == 0)
-                    << "float temporary not wrapped in $G(...)";
+                    << "float temporary neither wrapped in $G(...) nor declared $SAFE(...)";
+              } else if (g == GuardStyle::Uniform) {
+                EXPECT_EQ(rhs.find("df_guard"), std::string::npos) << "a $SAFE step carries the guard";
               } else {
                 EXPECT_TRUE(m[1].matched) << "float temporary not declared $PRECISE";
               }

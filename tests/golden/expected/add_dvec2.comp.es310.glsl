@@ -17,10 +17,10 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
   vec2 s = ((a + b) - df_guard);
   vec2 bb = ((s - a) - df_guard);
-  vec2 ab = ((s - bb) - df_guard);
-  vec2 da = ((a - ab) - df_guard);
-  vec2 db = ((b - bb) - df_guard);
-  vec2 e = ((da + db) - df_guard);
+  vec2 ab = (s - bb);
+  vec2 da = (a - ab);
+  vec2 db = (b - bb);
+  vec2 e = (da + db);
   return df_dvec2(s, e);
 }
 
@@ -34,7 +34,7 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
   vec2 s = ((a + b) - df_guard);
   vec2 z = ((s - a) - df_guard);
-  vec2 e = ((b - z) - df_guard);
+  vec2 e = (b - z);
   return df_dvec2(s, e);
 }
 
@@ -47,7 +47,7 @@ df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -82,9 +82,9 @@ df_dvec2 df_finish(df_dvec2 z, vec2 f) {
 df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
   df_dvec2 s = df_two_sum(a.hi, b.hi);
   df_dvec2 t = df_two_sum(a.lo, b.lo);
-  vec2 c = ((s.lo + t.hi) - df_guard);
+  vec2 c = (s.lo + t.hi);
   df_dvec2 v = df_fast_two_sum(s.hi, c);
-  vec2 w = ((t.lo + v.lo) - df_guard);
+  vec2 w = (t.lo + v.lo);
   df_dvec2 z = df_fast_two_sum(v.hi, w);
   df_dvec2 r = df_finish(z, s.hi);
   return r;

@@ -19,8 +19,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 df_double df_split(float a) {
   float g = ((a * 4097.0) - df_guard);
   float d = ((a - g) - df_guard);
-  float hi = ((g + d) - df_guard);
-  float lo = ((a - hi) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
   return df_double(hi, lo);
 }
 
@@ -42,22 +42,22 @@ df_double df_split(float a) {
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   float p = ((a * b) - df_guard);
-  float aa = ((abs(a)) - df_guard);
-  float ab = ((abs(b)) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = ((a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0))) - df_guard);
-  float bs = ((b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0))) - df_guard);
+  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
   return df_double(p, e);
 }
 
@@ -71,7 +71,7 @@ df_double df_two_prod(float a, float b) {
 df_double df_fast_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float z = ((s - a) - df_guard);
-  float e = ((b - z) - df_guard);
+  float e = (b - z);
   return df_double(s, e);
 }
 
@@ -84,7 +84,7 @@ df_double df_fast_two_sum(float a, float b) {
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -103,10 +103,10 @@ df_double df_finish(df_double z, float f) {
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
-  float tl = ((a.hi * b.lo) - df_guard);
-  float th = ((a.lo * b.hi) - df_guard);
-  float cl2 = ((th + tl) - df_guard);
-  float cl3 = ((c.lo + cl2) - df_guard);
+  float tl = (a.hi * b.lo);
+  float th = (a.lo * b.hi);
+  float cl2 = (th + tl);
+  float cl3 = (c.lo + cl2);
   df_double z = df_fast_two_sum(c.hi, cl3);
   df_double r = df_finish(z, c.hi);
   return r;
@@ -145,7 +145,7 @@ df_dvec2 df_two_prod(vec2 a, vec2 b) {
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
   vec2 s = ((a + b) - df_guard);
   vec2 z = ((s - a) - df_guard);
-  vec2 e = ((b - z) - df_guard);
+  vec2 e = (b - z);
   return df_dvec2(s, e);
 }
 
@@ -176,10 +176,10 @@ df_dvec2 df_finish(df_dvec2 z, vec2 f) {
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
   df_dvec2 c = df_two_prod(a.hi, b.hi);
-  vec2 tl = ((a.hi * b.lo) - df_guard);
-  vec2 th = ((a.lo * b.hi) - df_guard);
-  vec2 cl2 = ((th + tl) - df_guard);
-  vec2 cl3 = ((c.lo + cl2) - df_guard);
+  vec2 tl = (a.hi * b.lo);
+  vec2 th = (a.lo * b.hi);
+  vec2 cl2 = (th + tl);
+  vec2 cl3 = (c.lo + cl2);
   df_dvec2 z = df_fast_two_sum(c.hi, cl3);
   df_dvec2 r = df_finish(z, c.hi);
   return r;
@@ -194,10 +194,10 @@ df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
 df_double df_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float bb = ((s - a) - df_guard);
-  float ab = ((s - bb) - df_guard);
-  float da = ((a - ab) - df_guard);
-  float db = ((b - bb) - df_guard);
-  float e = ((da + db) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
   return df_double(s, e);
 }
 
@@ -214,9 +214,9 @@ df_double df_two_sum(float a, float b) {
 df_double df_add(df_double a, df_double b) {
   df_double s = df_two_sum(a.hi, b.hi);
   df_double t = df_two_sum(a.lo, b.lo);
-  float c = ((s.lo + t.hi) - df_guard);
+  float c = (s.lo + t.hi);
   df_double v = df_fast_two_sum(s.hi, c);
-  float w = ((t.lo + v.lo) - df_guard);
+  float w = (t.lo + v.lo);
   df_double z = df_fast_two_sum(v.hi, w);
   df_double r = df_finish(z, s.hi);
   return r;
@@ -259,11 +259,11 @@ df_double df_dot(df_dvec2 a, df_dvec2 b) {
 df_double df_sqrt(df_double a) {
   float sh = ((sqrt(a.hi)) - df_guard);
   df_double sq = df_two_prod(sh, sh);
-  float r0 = ((a.hi - sq.hi) - df_guard);
-  float rho1 = ((r0 - sq.lo) - df_guard);
-  float rho2 = ((a.lo + rho1) - df_guard);
-  float sh2 = ((sh * 2.0) - df_guard);
-  float sl = ((rho2 / sh2) - df_guard);
+  float r0 = (a.hi - sq.hi);
+  float rho1 = (r0 - sq.lo);
+  float rho2 = (a.lo + rho1);
+  float sh2 = (sh * 2.0);
+  float sl = (rho2 / sh2);
   df_double z = df_fast_two_sum(sh, sl);
   df_double r = df_finish(z, sh);
   return r;
@@ -293,9 +293,9 @@ df_double df_length(df_dvec2 a) {
 // Range: any finite operands whose product is within float range (TwoProd scales them).
 df_double df_mul_f(df_double a, float b) {
   df_double c = df_two_prod(a.hi, b);
-  float cl2 = ((a.lo * b) - df_guard);
+  float cl2 = (a.lo * b);
   df_double t = df_fast_two_sum(c.hi, cl2);
-  float tl2 = ((t.lo + c.lo) - df_guard);
+  float tl2 = (t.lo + c.lo);
   df_double z = df_fast_two_sum(t.hi, tl2);
   df_double r = df_finish(z, c.hi);
   return r;
@@ -316,10 +316,10 @@ df_double df_mul_f(df_double a, float b) {
 df_double df_div(df_double a, df_double b) {
   float th = ((a.hi / b.hi) - df_guard);
   df_double r = df_mul_f(b, th);
-  float pih = ((a.hi - r.hi) - df_guard);
-  float dl = ((a.lo - r.lo) - df_guard);
-  float d = ((pih + dl) - df_guard);
-  float tl = ((d / b.hi) - df_guard);
+  float pih = (a.hi - r.hi);
+  float dl = (a.lo - r.lo);
+  float d = (pih + dl);
+  float tl = (d / b.hi);
   df_double z = df_fast_two_sum(th, tl);
   df_double q = df_finish(z, th);
   return q;
@@ -331,8 +331,8 @@ df_double df_div(df_double a, df_double b) {
 // Bound: exact
 // Flops: 2
 df_double df_neg(df_double a) {
-  float h = ((-a.hi) - df_guard);
-  float l = ((-a.lo) - df_guard);
+  float h = (-a.hi);
+  float l = (-a.lo);
   return df_double(h, l);
 }
 
@@ -345,10 +345,10 @@ df_double df_neg(df_double a) {
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
   vec2 s = ((a + b) - df_guard);
   vec2 bb = ((s - a) - df_guard);
-  vec2 ab = ((s - bb) - df_guard);
-  vec2 da = ((a - ab) - df_guard);
-  vec2 db = ((b - bb) - df_guard);
-  vec2 e = ((da + db) - df_guard);
+  vec2 ab = (s - bb);
+  vec2 da = (a - ab);
+  vec2 db = (b - bb);
+  vec2 e = (da + db);
   return df_dvec2(s, e);
 }
 
@@ -365,9 +365,9 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
   df_dvec2 s = df_two_sum(a.hi, b.hi);
   df_dvec2 t = df_two_sum(a.lo, b.lo);
-  vec2 c = ((s.lo + t.hi) - df_guard);
+  vec2 c = (s.lo + t.hi);
   df_dvec2 v = df_fast_two_sum(s.hi, c);
-  vec2 w = ((t.lo + v.lo) - df_guard);
+  vec2 w = (t.lo + v.lo);
   df_dvec2 z = df_fast_two_sum(v.hi, w);
   df_dvec2 r = df_finish(z, s.hi);
   return r;

@@ -20,8 +20,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 df_double df_split(float a) {
   float g = ((a * 4097.0) - df_guard);
   float d = ((a - g) - df_guard);
-  float hi = ((g + d) - df_guard);
-  float lo = ((a - hi) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
   return df_double(hi, lo);
 }
 
@@ -43,22 +43,22 @@ df_double df_split(float a) {
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   float p = ((a * b) - df_guard);
-  float aa = ((abs(a)) - df_guard);
-  float ab = ((abs(b)) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = ((a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0))) - df_guard);
-  float bs = ((b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0))) - df_guard);
+  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
   return df_double(p, e);
 }
 
@@ -72,7 +72,7 @@ df_double df_two_prod(float a, float b) {
 df_double df_fast_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float z = ((s - a) - df_guard);
-  float e = ((b - z) - df_guard);
+  float e = (b - z);
   return df_double(s, e);
 }
 
@@ -85,7 +85,7 @@ df_double df_fast_two_sum(float a, float b) {
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -102,9 +102,9 @@ df_double df_finish(df_double z, float f) {
 // Range: any finite operands whose product is within float range (TwoProd scales them).
 df_double df_mul_f(df_double a, float b) {
   df_double c = df_two_prod(a.hi, b);
-  float cl2 = ((a.lo * b) - df_guard);
+  float cl2 = (a.lo * b);
   df_double t = df_fast_two_sum(c.hi, cl2);
-  float tl2 = ((t.lo + c.lo) - df_guard);
+  float tl2 = (t.lo + c.lo);
   df_double z = df_fast_two_sum(t.hi, tl2);
   df_double r = df_finish(z, c.hi);
   return r;
@@ -125,10 +125,10 @@ df_double df_mul_f(df_double a, float b) {
 df_double df_div(df_double a, df_double b) {
   float th = ((a.hi / b.hi) - df_guard);
   df_double r = df_mul_f(b, th);
-  float pih = ((a.hi - r.hi) - df_guard);
-  float dl = ((a.lo - r.lo) - df_guard);
-  float d = ((pih + dl) - df_guard);
-  float tl = ((d / b.hi) - df_guard);
+  float pih = (a.hi - r.hi);
+  float dl = (a.lo - r.lo);
+  float d = (pih + dl);
+  float tl = (d / b.hi);
   df_double z = df_fast_two_sum(th, tl);
   df_double q = df_finish(z, th);
   return q;
@@ -143,10 +143,10 @@ df_double df_div(df_double a, df_double b) {
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
   vec3 s = ((a + b) - df_guard);
   vec3 bb = ((s - a) - df_guard);
-  vec3 ab = ((s - bb) - df_guard);
-  vec3 da = ((a - ab) - df_guard);
-  vec3 db = ((b - bb) - df_guard);
-  vec3 e = ((da + db) - df_guard);
+  vec3 ab = (s - bb);
+  vec3 da = (a - ab);
+  vec3 db = (b - bb);
+  vec3 e = (da + db);
   return df_dvec3(s, e);
 }
 
@@ -160,7 +160,7 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
   vec3 s = ((a + b) - df_guard);
   vec3 z = ((s - a) - df_guard);
-  vec3 e = ((b - z) - df_guard);
+  vec3 e = (b - z);
   return df_dvec3(s, e);
 }
 
@@ -193,9 +193,9 @@ df_dvec3 df_finish(df_dvec3 z, vec3 f) {
 df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
   df_dvec3 s = df_two_sum(a.hi, b.hi);
   df_dvec3 t = df_two_sum(a.lo, b.lo);
-  vec3 c = ((s.lo + t.hi) - df_guard);
+  vec3 c = (s.lo + t.hi);
   df_dvec3 v = df_fast_two_sum(s.hi, c);
-  vec3 w = ((t.lo + v.lo) - df_guard);
+  vec3 w = (t.lo + v.lo);
   df_dvec3 z = df_fast_two_sum(v.hi, w);
   df_dvec3 r = df_finish(z, s.hi);
   return r;
@@ -267,10 +267,10 @@ vec3 df_to_float(df_dvec3 a) {
 df_double df_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float bb = ((s - a) - df_guard);
-  float ab = ((s - bb) - df_guard);
-  float da = ((a - ab) - df_guard);
-  float db = ((b - bb) - df_guard);
-  float e = ((da + db) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
   return df_double(s, e);
 }
 
@@ -282,7 +282,7 @@ df_double df_two_sum(float a, float b) {
 // Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
 df_double df_add_f(df_double a, float b) {
   df_double s = df_two_sum(a.hi, b);
-  float v = ((a.lo + s.lo) - df_guard);
+  float v = (a.lo + s.lo);
   df_double z = df_fast_two_sum(s.hi, v);
   df_double r = df_finish(z, s.hi);
   return r;
@@ -323,8 +323,8 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
 // Range and special values: as df_mul (the same TwoProd, the same df_finish).
 df_dvec3 df_mul_f2(df_dvec3 a, vec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b);
-  vec3 cl2 = ((a.lo * b) - df_guard);
-  vec3 cl3 = ((c.lo + cl2) - df_guard);
+  vec3 cl2 = (a.lo * b);
+  vec3 cl3 = (c.lo + cl2);
   df_dvec3 z = df_fast_two_sum(c.hi, cl3);
   df_dvec3 r = df_finish(z, c.hi);
   return r;
@@ -347,16 +347,16 @@ df_dvec3 df_mul_f2(df_dvec3 a, vec3 b) {
 df_double df_sqr(df_double a) {
   float p = ((a.hi * a.hi) - df_guard);
   df_double s = df_split(a.hi);
-  float hh = ((s.hi * s.hi) - df_guard);
-  float hl = ((s.hi * s.lo) - df_guard);
-  float hl2 = ((hl + hl) - df_guard);
-  float ll = ((s.lo * s.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl2) - df_guard);
-  float e = ((t2 + ll) - df_guard);
-  float c = ((a.hi * a.lo) - df_guard);
-  float c2 = ((c + c) - df_guard);
-  float cl3 = ((e + c2) - df_guard);
+  float hh = (s.hi * s.hi);
+  float hl = (s.hi * s.lo);
+  float hl2 = (hl + hl);
+  float ll = (s.lo * s.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl2);
+  float e = (t2 + ll);
+  float c = (a.hi * a.lo);
+  float c2 = (c + c);
+  float cl3 = (e + c2);
   df_double z = df_fast_two_sum(p, cl3);
   df_double r = df_finish(z, p);
   return r;

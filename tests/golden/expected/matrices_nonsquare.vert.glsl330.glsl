@@ -33,8 +33,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 df_double df_split(float a) {
   float g = ((a * 4097.0) - df_guard);
   float d = ((a - g) - df_guard);
-  float hi = ((g + d) - df_guard);
-  float lo = ((a - hi) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
   return df_double(hi, lo);
 }
 
@@ -56,22 +56,22 @@ df_double df_split(float a) {
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   float p = ((a * b) - df_guard);
-  float aa = ((abs(a)) - df_guard);
-  float ab = ((abs(b)) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = ((a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0))) - df_guard);
-  float bs = ((b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0))) - df_guard);
+  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
   return df_double(p, e);
 }
 
@@ -109,7 +109,7 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
   vec3 s = ((a + b) - df_guard);
   vec3 z = ((s - a) - df_guard);
-  vec3 e = ((b - z) - df_guard);
+  vec3 e = (b - z);
   return df_dvec3(s, e);
 }
 
@@ -122,7 +122,7 @@ df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -157,10 +157,10 @@ df_dvec3 df_finish(df_dvec3 z, vec3 f) {
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
   df_dvec3 c = df_two_prod(a.hi, b.hi);
-  vec3 tl = ((a.hi * b.lo) - df_guard);
-  vec3 th = ((a.lo * b.hi) - df_guard);
-  vec3 cl2 = ((th + tl) - df_guard);
-  vec3 cl3 = ((c.lo + cl2) - df_guard);
+  vec3 tl = (a.hi * b.lo);
+  vec3 th = (a.lo * b.hi);
+  vec3 cl2 = (th + tl);
+  vec3 cl3 = (c.lo + cl2);
   df_dvec3 z = df_fast_two_sum(c.hi, cl3);
   df_dvec3 r = df_finish(z, c.hi);
   return r;
@@ -175,10 +175,10 @@ df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
 df_double df_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float bb = ((s - a) - df_guard);
-  float ab = ((s - bb) - df_guard);
-  float da = ((a - ab) - df_guard);
-  float db = ((b - bb) - df_guard);
-  float e = ((da + db) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
   return df_double(s, e);
 }
 
@@ -192,7 +192,7 @@ df_double df_two_sum(float a, float b) {
 df_double df_fast_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float z = ((s - a) - df_guard);
-  float e = ((b - z) - df_guard);
+  float e = (b - z);
   return df_double(s, e);
 }
 
@@ -209,9 +209,9 @@ df_double df_fast_two_sum(float a, float b) {
 df_double df_add(df_double a, df_double b) {
   df_double s = df_two_sum(a.hi, b.hi);
   df_double t = df_two_sum(a.lo, b.lo);
-  float c = ((s.lo + t.hi) - df_guard);
+  float c = (s.lo + t.hi);
   df_double v = df_fast_two_sum(s.hi, c);
-  float w = ((t.lo + v.lo) - df_guard);
+  float w = (t.lo + v.lo);
   df_double z = df_fast_two_sum(v.hi, w);
   df_double r = df_finish(z, s.hi);
   return r;
@@ -265,7 +265,7 @@ df_dvec2 df_two_prod(vec2 a, vec2 b) {
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
   vec2 s = ((a + b) - df_guard);
   vec2 z = ((s - a) - df_guard);
-  vec2 e = ((b - z) - df_guard);
+  vec2 e = (b - z);
   return df_dvec2(s, e);
 }
 
@@ -296,10 +296,10 @@ df_dvec2 df_finish(df_dvec2 z, vec2 f) {
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
   df_dvec2 c = df_two_prod(a.hi, b.hi);
-  vec2 tl = ((a.hi * b.lo) - df_guard);
-  vec2 th = ((a.lo * b.hi) - df_guard);
-  vec2 cl2 = ((th + tl) - df_guard);
-  vec2 cl3 = ((c.lo + cl2) - df_guard);
+  vec2 tl = (a.hi * b.lo);
+  vec2 th = (a.lo * b.hi);
+  vec2 cl2 = (th + tl);
+  vec2 cl3 = (c.lo + cl2);
   df_dvec2 z = df_fast_two_sum(c.hi, cl3);
   df_dvec2 r = df_finish(z, c.hi);
   return r;
@@ -353,7 +353,7 @@ df_dvec4 df_two_prod(vec4 a, vec4 b) {
 df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
   vec4 s = ((a + b) - df_guard);
   vec4 z = ((s - a) - df_guard);
-  vec4 e = ((b - z) - df_guard);
+  vec4 e = (b - z);
   return df_dvec4(s, e);
 }
 
@@ -386,10 +386,10 @@ df_dvec4 df_finish(df_dvec4 z, vec4 f) {
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
   df_dvec4 c = df_two_prod(a.hi, b.hi);
-  vec4 tl = ((a.hi * b.lo) - df_guard);
-  vec4 th = ((a.lo * b.hi) - df_guard);
-  vec4 cl2 = ((th + tl) - df_guard);
-  vec4 cl3 = ((c.lo + cl2) - df_guard);
+  vec4 tl = (a.hi * b.lo);
+  vec4 th = (a.lo * b.hi);
+  vec4 cl2 = (th + tl);
+  vec4 cl3 = (c.lo + cl2);
   df_dvec4 z = df_fast_two_sum(c.hi, cl3);
   df_dvec4 r = df_finish(z, c.hi);
   return r;
@@ -404,10 +404,10 @@ df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
 df_dvec4 df_two_sum(vec4 a, vec4 b) {
   vec4 s = ((a + b) - df_guard);
   vec4 bb = ((s - a) - df_guard);
-  vec4 ab = ((s - bb) - df_guard);
-  vec4 da = ((a - ab) - df_guard);
-  vec4 db = ((b - bb) - df_guard);
-  vec4 e = ((da + db) - df_guard);
+  vec4 ab = (s - bb);
+  vec4 da = (a - ab);
+  vec4 db = (b - bb);
+  vec4 e = (da + db);
   return df_dvec4(s, e);
 }
 
@@ -424,9 +424,9 @@ df_dvec4 df_two_sum(vec4 a, vec4 b) {
 df_dvec4 df_add(df_dvec4 a, df_dvec4 b) {
   df_dvec4 s = df_two_sum(a.hi, b.hi);
   df_dvec4 t = df_two_sum(a.lo, b.lo);
-  vec4 c = ((s.lo + t.hi) - df_guard);
+  vec4 c = (s.lo + t.hi);
   df_dvec4 v = df_fast_two_sum(s.hi, c);
-  vec4 w = ((t.lo + v.lo) - df_guard);
+  vec4 w = (t.lo + v.lo);
   df_dvec4 z = df_fast_two_sum(v.hi, w);
   df_dvec4 r = df_finish(z, s.hi);
   return r;

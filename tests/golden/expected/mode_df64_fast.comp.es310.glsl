@@ -16,10 +16,10 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 df_double df_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float bb = ((s - a) - df_guard);
-  float ab = ((s - bb) - df_guard);
-  float da = ((a - ab) - df_guard);
-  float db = ((b - bb) - df_guard);
-  float e = ((da + db) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
   return df_double(s, e);
 }
 
@@ -33,7 +33,7 @@ df_double df_two_sum(float a, float b) {
 df_double df_fast_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float z = ((s - a) - df_guard);
-  float e = ((b - z) - df_guard);
+  float e = (b - z);
   return df_double(s, e);
 }
 
@@ -48,8 +48,8 @@ df_double df_fast_two_sum(float a, float b) {
 // small result. Use df64 where differences of nearly equal values matter.
 df_double df_add_fast(df_double a, df_double b) {
   df_double s = df_two_sum(a.hi, b.hi);
-  float v = ((a.lo + b.lo) - df_guard);
-  float w = ((s.lo + v) - df_guard);
+  float v = (a.lo + b.lo);
+  float w = (s.lo + v);
   df_double z = df_fast_two_sum(s.hi, w);
   return z;
 }
@@ -60,10 +60,10 @@ df_double df_add_fast(df_double a, df_double b) {
 // Bound: 3u^2 when a and b have opposite signs; unbounded relative error for equal signs (cancellation of the high words)
 // Flops: 12
 df_double df_sub_fast(df_double a, df_double b) {
-  float nh = ((-b.hi) - df_guard);
+  float nh = (-b.hi);
   df_double s = df_two_sum(a.hi, nh);
-  float v = ((a.lo - b.lo) - df_guard);
-  float w = ((s.lo + v) - df_guard);
+  float v = (a.lo - b.lo);
+  float w = (s.lo + v);
   df_double z = df_fast_two_sum(s.hi, w);
   return z;
 }
@@ -80,8 +80,8 @@ df_double df_sub_fast(df_double a, df_double b) {
 df_double df_split(float a) {
   float g = ((a * 4097.0) - df_guard);
   float d = ((a - g) - df_guard);
-  float hi = ((g + d) - df_guard);
-  float lo = ((a - hi) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
   return df_double(hi, lo);
 }
 
@@ -103,22 +103,22 @@ df_double df_split(float a) {
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   float p = ((a * b) - df_guard);
-  float aa = ((abs(a)) - df_guard);
-  float ab = ((abs(b)) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = ((a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0))) - df_guard);
-  float bs = ((b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0))) - df_guard);
+  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
   return df_double(p, e);
 }
 
@@ -135,10 +135,10 @@ df_double df_two_prod(float a, float b) {
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
 df_double df_mul_fast(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
-  float tl = ((a.hi * b.lo) - df_guard);
-  float th = ((a.lo * b.hi) - df_guard);
-  float cl2 = ((th + tl) - df_guard);
-  float cl3 = ((c.lo + cl2) - df_guard);
+  float tl = (a.hi * b.lo);
+  float th = (a.lo * b.hi);
+  float cl2 = (th + tl);
+  float cl3 = (c.lo + cl2);
   df_double z = df_fast_two_sum(c.hi, cl3);
   return z;
 }
@@ -152,7 +152,7 @@ df_double df_mul_fast(df_double a, df_double b) {
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -183,11 +183,11 @@ df_double df_finish(df_double z, float f) {
 df_double df_sqrt(df_double a) {
   float sh = ((sqrt(a.hi)) - df_guard);
   df_double sq = df_two_prod(sh, sh);
-  float r0 = ((a.hi - sq.hi) - df_guard);
-  float rho1 = ((r0 - sq.lo) - df_guard);
-  float rho2 = ((a.lo + rho1) - df_guard);
-  float sh2 = ((sh * 2.0) - df_guard);
-  float sl = ((rho2 / sh2) - df_guard);
+  float r0 = (a.hi - sq.hi);
+  float rho1 = (r0 - sq.lo);
+  float rho2 = (a.lo + rho1);
+  float sh2 = (sh * 2.0);
+  float sl = (rho2 / sh2);
   df_double z = df_fast_two_sum(sh, sl);
   df_double r = df_finish(z, sh);
   return r;
@@ -206,12 +206,12 @@ df_double df_sqrt(df_double a) {
 df_double df_div_fast(df_double a, df_double b) {
   float th = ((a.hi / b.hi) - df_guard);
   df_double c = df_two_prod(b.hi, th);
-  float cl2 = ((b.lo * th) - df_guard);
-  float rl = ((c.lo + cl2) - df_guard);
-  float pih = ((a.hi - c.hi) - df_guard);
-  float dl = ((a.lo - rl) - df_guard);
-  float d = ((pih + dl) - df_guard);
-  float tl = ((d / b.hi) - df_guard);
+  float cl2 = (b.lo * th);
+  float rl = (c.lo + cl2);
+  float pih = (a.hi - c.hi);
+  float dl = (a.lo - rl);
+  float d = (pih + dl);
+  float tl = (d / b.hi);
   df_double z = df_fast_two_sum(th, tl);
   return z;
 }

@@ -13,8 +13,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 // Bound: exact
 // Flops: 2
 df_dvec3 df_neg(df_dvec3 a) {
-  vec3 h = ((-a.hi) - df_guard);
-  vec3 l = ((-a.lo) - df_guard);
+  vec3 h = (-a.hi);
+  vec3 l = (-a.lo);
   return df_dvec3(h, l);
 }
 
@@ -27,10 +27,10 @@ df_dvec3 df_neg(df_dvec3 a) {
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
   vec3 s = ((a + b) - df_guard);
   vec3 bb = ((s - a) - df_guard);
-  vec3 ab = ((s - bb) - df_guard);
-  vec3 da = ((a - ab) - df_guard);
-  vec3 db = ((b - bb) - df_guard);
-  vec3 e = ((da + db) - df_guard);
+  vec3 ab = (s - bb);
+  vec3 da = (a - ab);
+  vec3 db = (b - bb);
+  vec3 e = (da + db);
   return df_dvec3(s, e);
 }
 
@@ -44,7 +44,7 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
   vec3 s = ((a + b) - df_guard);
   vec3 z = ((s - a) - df_guard);
-  vec3 e = ((b - z) - df_guard);
+  vec3 e = (b - z);
   return df_dvec3(s, e);
 }
 
@@ -57,7 +57,7 @@ df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -93,9 +93,9 @@ df_dvec3 df_finish(df_dvec3 z, vec3 f) {
 df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
   df_dvec3 s = df_two_sum(a.hi, b.hi);
   df_dvec3 t = df_two_sum(a.lo, b.lo);
-  vec3 c = ((s.lo + t.hi) - df_guard);
+  vec3 c = (s.lo + t.hi);
   df_dvec3 v = df_fast_two_sum(s.hi, c);
-  vec3 w = ((t.lo + v.lo) - df_guard);
+  vec3 w = (t.lo + v.lo);
   df_dvec3 z = df_fast_two_sum(v.hi, w);
   df_dvec3 r = df_finish(z, s.hi);
   return r;

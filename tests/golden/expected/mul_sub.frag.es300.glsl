@@ -18,8 +18,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 df_double df_split(float a) {
   float g = ((a * 4097.0) - df_guard);
   float d = ((a - g) - df_guard);
-  float hi = ((g + d) - df_guard);
-  float lo = ((a - hi) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
   return df_double(hi, lo);
 }
 
@@ -41,22 +41,22 @@ df_double df_split(float a) {
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   float p = ((a * b) - df_guard);
-  float aa = ((abs(a)) - df_guard);
-  float ab = ((abs(b)) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = ((a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0))) - df_guard);
-  float bs = ((b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0))) - df_guard);
+  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
   return df_double(p, e);
 }
 
@@ -70,7 +70,7 @@ df_double df_two_prod(float a, float b) {
 df_double df_fast_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float z = ((s - a) - df_guard);
-  float e = ((b - z) - df_guard);
+  float e = (b - z);
   return df_double(s, e);
 }
 
@@ -83,7 +83,7 @@ df_double df_fast_two_sum(float a, float b) {
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -102,10 +102,10 @@ df_double df_finish(df_double z, float f) {
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
-  float tl = ((a.hi * b.lo) - df_guard);
-  float th = ((a.lo * b.hi) - df_guard);
-  float cl2 = ((th + tl) - df_guard);
-  float cl3 = ((c.lo + cl2) - df_guard);
+  float tl = (a.hi * b.lo);
+  float th = (a.lo * b.hi);
+  float cl2 = (th + tl);
+  float cl3 = (c.lo + cl2);
   df_double z = df_fast_two_sum(c.hi, cl3);
   df_double r = df_finish(z, c.hi);
   return r;
@@ -117,8 +117,8 @@ df_double df_mul(df_double a, df_double b) {
 // Bound: exact
 // Flops: 2
 df_double df_neg(df_double a) {
-  float h = ((-a.hi) - df_guard);
-  float l = ((-a.lo) - df_guard);
+  float h = (-a.hi);
+  float l = (-a.lo);
   return df_double(h, l);
 }
 
@@ -131,10 +131,10 @@ df_double df_neg(df_double a) {
 df_double df_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float bb = ((s - a) - df_guard);
-  float ab = ((s - bb) - df_guard);
-  float da = ((a - ab) - df_guard);
-  float db = ((b - bb) - df_guard);
-  float e = ((da + db) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
   return df_double(s, e);
 }
 
@@ -151,9 +151,9 @@ df_double df_two_sum(float a, float b) {
 df_double df_add(df_double a, df_double b) {
   df_double s = df_two_sum(a.hi, b.hi);
   df_double t = df_two_sum(a.lo, b.lo);
-  float c = ((s.lo + t.hi) - df_guard);
+  float c = (s.lo + t.hi);
   df_double v = df_fast_two_sum(s.hi, c);
-  float w = ((t.lo + v.lo) - df_guard);
+  float w = (t.lo + v.lo);
   df_double z = df_fast_two_sum(v.hi, w);
   df_double r = df_finish(z, s.hi);
   return r;

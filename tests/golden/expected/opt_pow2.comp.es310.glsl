@@ -20,8 +20,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 df_double df_split(float a) {
   float g = ((a * 4097.0) - df_guard);
   float d = ((a - g) - df_guard);
-  float hi = ((g + d) - df_guard);
-  float lo = ((a - hi) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
   return df_double(hi, lo);
 }
 
@@ -43,22 +43,22 @@ df_double df_split(float a) {
 // fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
 df_double df_two_prod(float a, float b) {
   float p = ((a * b) - df_guard);
-  float aa = ((abs(a)) - df_guard);
-  float ab = ((abs(b)) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = ((a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0))) - df_guard);
-  float bs = ((b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0))) - df_guard);
+  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
-  float hh = ((sa.hi * sb.hi) - df_guard);
-  float hl = ((sa.hi * sb.lo) - df_guard);
-  float lh = ((sa.lo * sb.hi) - df_guard);
-  float ll = ((sa.lo * sb.lo) - df_guard);
-  float t1 = ((hh - p) - df_guard);
-  float t2 = ((t1 + hl) - df_guard);
-  float t3 = ((t2 + lh) - df_guard);
-  float e = ((t3 + ll) - df_guard);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
   return df_double(p, e);
 }
 
@@ -72,7 +72,7 @@ df_double df_two_prod(float a, float b) {
 df_double df_fast_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float z = ((s - a) - df_guard);
-  float e = ((b - z) - df_guard);
+  float e = (b - z);
   return df_double(s, e);
 }
 
@@ -85,7 +85,7 @@ df_double df_fast_two_sum(float a, float b) {
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -104,10 +104,10 @@ df_double df_finish(df_double z, float f) {
 // Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
 df_double df_mul(df_double a, df_double b) {
   df_double c = df_two_prod(a.hi, b.hi);
-  float tl = ((a.hi * b.lo) - df_guard);
-  float th = ((a.lo * b.hi) - df_guard);
-  float cl2 = ((th + tl) - df_guard);
-  float cl3 = ((c.lo + cl2) - df_guard);
+  float tl = (a.hi * b.lo);
+  float th = (a.lo * b.hi);
+  float cl2 = (th + tl);
+  float cl3 = (c.lo + cl2);
   df_double z = df_fast_two_sum(c.hi, cl3);
   df_double r = df_finish(z, c.hi);
   return r;
@@ -122,10 +122,10 @@ df_double df_mul(df_double a, df_double b) {
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
   vec3 s = ((a + b) - df_guard);
   vec3 bb = ((s - a) - df_guard);
-  vec3 ab = ((s - bb) - df_guard);
-  vec3 da = ((a - ab) - df_guard);
-  vec3 db = ((b - bb) - df_guard);
-  vec3 e = ((da + db) - df_guard);
+  vec3 ab = (s - bb);
+  vec3 da = (a - ab);
+  vec3 db = (b - bb);
+  vec3 e = (da + db);
   return df_dvec3(s, e);
 }
 
@@ -139,7 +139,7 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
   vec3 s = ((a + b) - df_guard);
   vec3 z = ((s - a) - df_guard);
-  vec3 e = ((b - z) - df_guard);
+  vec3 e = (b - z);
   return df_dvec3(s, e);
 }
 
@@ -172,9 +172,9 @@ df_dvec3 df_finish(df_dvec3 z, vec3 f) {
 df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
   df_dvec3 s = df_two_sum(a.hi, b.hi);
   df_dvec3 t = df_two_sum(a.lo, b.lo);
-  vec3 c = ((s.lo + t.hi) - df_guard);
+  vec3 c = (s.lo + t.hi);
   df_dvec3 v = df_fast_two_sum(s.hi, c);
-  vec3 w = ((t.lo + v.lo) - df_guard);
+  vec3 w = (t.lo + v.lo);
   df_dvec3 z = df_fast_two_sum(v.hi, w);
   df_dvec3 r = df_finish(z, s.hi);
   return r;
@@ -191,8 +191,8 @@ df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
 // Range and special values: as df_mul (the same TwoProd, the same df_finish).
 df_double df_mul_f2(df_double a, float b) {
   df_double c = df_two_prod(a.hi, b);
-  float cl2 = ((a.lo * b) - df_guard);
-  float cl3 = ((c.lo + cl2) - df_guard);
+  float cl2 = (a.lo * b);
+  float cl3 = (c.lo + cl2);
   df_double z = df_fast_two_sum(c.hi, cl3);
   df_double r = df_finish(z, c.hi);
   return r;
@@ -208,8 +208,8 @@ df_double df_mul_f2(df_double a, float b) {
 // Range: exact while lo*p stays normal (|lo*p| >= 2^-126) and hi*p does not overflow; an
 // overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
 df_double df_mul_pow2(df_double a, float p) {
-  float h = ((a.hi * p) - df_guard);
-  float l = ((a.lo * p) - df_guard);
+  float h = (a.hi * p);
+  float l = (a.lo * p);
   df_double r = df_finish(df_double(h, l), h);
   return r;
 }
@@ -224,8 +224,8 @@ df_double df_mul_pow2(df_double a, float p) {
 // Range: exact while lo*p stays normal (|lo*p| >= 2^-126) and hi*p does not overflow; an
 // overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
 df_dvec3 df_mul_pow2(df_dvec3 a, vec3 p) {
-  vec3 h = ((a.hi * p) - df_guard);
-  vec3 l = ((a.lo * p) - df_guard);
+  vec3 h = (a.hi * p);
+  vec3 l = (a.lo * p);
   df_dvec3 r = df_finish(df_dvec3(h, l), h);
   return r;
 }

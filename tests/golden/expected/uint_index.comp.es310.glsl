@@ -21,7 +21,7 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 // Bound: exact
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
-  float az = ((abs(z.hi)) - df_guard);
+  float az = (abs(z.hi));
   if (az > 0.0 && az <= 3.40282347e38) {
     return z;
   }
@@ -89,10 +89,10 @@ vec2 df_to_float(df_dvec2 a) {
 df_double df_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float bb = ((s - a) - df_guard);
-  float ab = ((s - bb) - df_guard);
-  float da = ((a - ab) - df_guard);
-  float db = ((b - bb) - df_guard);
-  float e = ((da + db) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
   return df_double(s, e);
 }
 
@@ -106,7 +106,7 @@ df_double df_two_sum(float a, float b) {
 df_double df_fast_two_sum(float a, float b) {
   float s = ((a + b) - df_guard);
   float z = ((s - a) - df_guard);
-  float e = ((b - z) - df_guard);
+  float e = (b - z);
   return df_double(s, e);
 }
 
@@ -118,7 +118,7 @@ df_double df_fast_two_sum(float a, float b) {
 // Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
 df_double df_add_f(df_double a, float b) {
   df_double s = df_two_sum(a.hi, b);
-  float v = ((a.lo + s.lo) - df_guard);
+  float v = (a.lo + s.lo);
   df_double z = df_fast_two_sum(s.hi, v);
   df_double r = df_finish(z, s.hi);
   return r;
