@@ -23,15 +23,19 @@ $DF df_sign($DF a) {
 
 // df_floor: largest integer <= x. hi not an integer: floor(hi); else hi + floor(lo), joined by
 // Fast2Sum (|floor(lo)| <= |hi| since |lo| <= ulp(hi)/2 and |hi| >= 1).
-// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is an integer
-// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Special values: +-0 and +-Inf are integers whose lo is 0 (or, for an input Inf, NaN): they
+// are returned as (hi, 0), as native floor does; the Fast2Sum would give +0 for -0 and
+// Inf - Inf = NaN in lo. NaN fails f == hi and gives (NaN, 0).
+// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is a nonzero finite integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum); IEEE 754-2008 section 5.9
 // Bound: exact
-// Flops: 5
+// Flops: 6 (plus 2 comparisons)
 // @widths 1 2 3 4
 // @per-component
 $DF df_floor($DF a) {
   $PRECISE $F f = $G(floor(a.hi));
-  if (f == a.hi) {
+  $PRECISE $F af = $SAFE(abs(f));
+  if (f == a.hi && af > 0.0 && af <= 3.40282347e38) {
     $PRECISE $F g = $G(floor(a.lo));
     $DF r = df_fast_two_sum(a.hi, g);
     return r;
@@ -39,28 +43,27 @@ $DF df_floor($DF a) {
   return $DF(f, $F(0.0));
 }
 
-// df_ceil: smallest integer >= x (the mirror of df_floor).
-// Algorithm: ceil of hi, or Fast2Sum(hi, ceil(lo)) when hi is an integer
-// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// df_ceil: smallest integer >= x, as -floor(-x): negation is exact, and the zero results get
+// native's signs (ceil(-0.5) = -0, ceil(-1 + 2^-30) = -0), which hi + ceil(lo) would give as +0.
+// Algorithm: df_neg, df_floor, df_neg
+// Source: JMP 2017, Definition 1.4; IEEE 754-2008 section 5.9 (ceil(x) = -floor(-x))
 // Bound: exact
-// Flops: 5
+// Flops: 10 (plus 2 comparisons)
 // @widths 1 2 3 4
 // @per-component
+// @uses df_neg:1 df_floor:1
 $DF df_ceil($DF a) {
-  $PRECISE $F c = $G(ceil(a.hi));
-  if (c == a.hi) {
-    $PRECISE $F g = $G(ceil(a.lo));
-    $DF r = df_fast_two_sum(a.hi, g);
-    return r;
-  }
-  return $DF(c, $F(0.0));
+  $DF n = df_neg(a);
+  $DF f = df_floor(n);
+  $DF r = df_neg(f);
+  return r;
 }
 
 // df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
 // Algorithm: df_ceil or df_floor by the sign of hi
 // Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
 // Bound: exact
-// Flops: 5
+// Flops: 10
 // @widths 1 2 3 4
 // @per-component
 $DF df_trunc($DF a) {
@@ -74,21 +77,25 @@ $DF df_trunc($DF a) {
 
 // df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
 // TwoSum(hi, -floor(hi)) is exact and lo is added with DWPlusFP (exact when hi >= 0 or
-// |hi| >= 1, where hi - floor(hi) is a float).
-// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
+// |hi| >= 1, where hi - floor(hi) is a float). Special values: for +-Inf, hi is an "integer"
+// and lo - floor(lo) is 0; df_finish then returns (hi - floor(hi), 0) = (NaN, 0), native's
+// x - floor(x) (and +0 for every other integer, as before).
+// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4); df_finish for integers
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 19
+// Flops: 21
 // @widths 1 2 3 4
 // @per-component
-// @uses df_two_sum:1 df_add_f:1
+// @uses df_two_sum:1 df_add_f:1 df_finish:1
 $DF df_fract($DF a) {
   $PRECISE $F f = $G(floor(a.hi));
   if (f == a.hi) {
     $PRECISE $F g = $G(floor(a.lo));
     $PRECISE $F ng = $G(0.0 - g);
     $DF r = df_two_sum(a.lo, ng);
-    return r;
+    $PRECISE $F d = $G(a.hi - f);
+    $DF q = df_finish(r, d);
+    return q;
   }
   $PRECISE $F nf = $G(0.0 - f);
   $DF t = df_two_sum(a.hi, nf);
@@ -100,7 +107,7 @@ $DF df_fract($DF a) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 35
+// Flops: 38
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 // @widths 1 2 3 4
 // @per-component
@@ -121,7 +128,7 @@ $DF df_round($DF a) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 41
+// Flops: 44
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 // @widths 1 2 3 4
@@ -153,7 +160,7 @@ $DF df_round_even($DF a) {
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
-// Flops: 96
+// Flops: 97
 // @widths 1 2 3 4
 $DF df_mod($DF a, $DF b) {
   $DF q = df_div(a, b);
@@ -167,7 +174,7 @@ $DF df_mod($DF a, $DF b) {
 // Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 28
+// Flops: 33
 // @widths 1 2 3 4
 $DF df_modf($DF a, out $DF i) {
   i = df_trunc(a);

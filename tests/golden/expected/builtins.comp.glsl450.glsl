@@ -44,13 +44,17 @@ df_double df_fast_two_sum(float a, float b) {
 
 // df_floor: largest integer <= x. hi not an integer: floor(hi); else hi + floor(lo), joined by
 // Fast2Sum (|floor(lo)| <= |hi| since |lo| <= ulp(hi)/2 and |hi| >= 1).
-// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is an integer
-// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Special values: +-0 and +-Inf are integers whose lo is 0 (or, for an input Inf, NaN): they
+// are returned as (hi, 0), as native floor does; the Fast2Sum would give +0 for -0 and
+// Inf - Inf = NaN in lo. NaN fails f == hi and gives (NaN, 0).
+// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is a nonzero finite integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum); IEEE 754-2008 section 5.9
 // Bound: exact
-// Flops: 5
+// Flops: 6 (plus 2 comparisons)
 df_double df_floor(df_double a) {
   precise float f = (floor(a.hi));
-  if (f == a.hi) {
+  precise float af = (abs(f));
+  if (f == a.hi && af > 0.0 && af <= 3.40282347e38) {
     precise float g = (floor(a.lo));
     df_double r = df_fast_two_sum(a.hi, g);
     return r;
@@ -111,26 +115,24 @@ df_double df_add(df_double a, df_double b) {
   return r;
 }
 
-// df_ceil: smallest integer >= x (the mirror of df_floor).
-// Algorithm: ceil of hi, or Fast2Sum(hi, ceil(lo)) when hi is an integer
-// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// df_ceil: smallest integer >= x, as -floor(-x): negation is exact, and the zero results get
+// native's signs (ceil(-0.5) = -0, ceil(-1 + 2^-30) = -0), which hi + ceil(lo) would give as +0.
+// Algorithm: df_neg, df_floor, df_neg
+// Source: JMP 2017, Definition 1.4; IEEE 754-2008 section 5.9 (ceil(x) = -floor(-x))
 // Bound: exact
-// Flops: 5
+// Flops: 10 (plus 2 comparisons)
 df_double df_ceil(df_double a) {
-  precise float c = (ceil(a.hi));
-  if (c == a.hi) {
-    precise float g = (ceil(a.lo));
-    df_double r = df_fast_two_sum(a.hi, g);
-    return r;
-  }
-  return df_double(c, float(0.0));
+  df_double n = df_neg(a);
+  df_double f = df_floor(n);
+  df_double r = df_neg(f);
+  return r;
 }
 
 // df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
 // Algorithm: df_ceil or df_floor by the sign of hi
 // Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
 // Bound: exact
-// Flops: 5
+// Flops: 10
 df_double df_trunc(df_double a) {
   if (a.hi < 0.0) {
     df_double c = df_ceil(a);
@@ -156,18 +158,22 @@ df_double df_add_f(df_double a, float b) {
 
 // df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
 // TwoSum(hi, -floor(hi)) is exact and lo is added with DWPlusFP (exact when hi >= 0 or
-// |hi| >= 1, where hi - floor(hi) is a float).
-// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
+// |hi| >= 1, where hi - floor(hi) is a float). Special values: for +-Inf, hi is an "integer"
+// and lo - floor(lo) is 0; df_finish then returns (hi - floor(hi), 0) = (NaN, 0), native's
+// x - floor(x) (and +0 for every other integer, as before).
+// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4); df_finish for integers
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 19
+// Flops: 21
 df_double df_fract(df_double a) {
   precise float f = (floor(a.hi));
   if (f == a.hi) {
     precise float g = (floor(a.lo));
     precise float ng = (0.0 - g);
     df_double r = df_two_sum(a.lo, ng);
-    return r;
+    precise float d = (a.hi - f);
+    df_double q = df_finish(r, d);
+    return q;
   }
   precise float nf = (0.0 - f);
   df_double t = df_two_sum(a.hi, nf);
@@ -179,7 +185,7 @@ df_double df_fract(df_double a) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 35
+// Flops: 38
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 df_double df_round(df_double a) {
   df_double f = df_floor(a);
@@ -197,7 +203,7 @@ df_double df_round(df_double a) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 41
+// Flops: 44
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 df_double df_round_even(df_double a) {
@@ -354,7 +360,7 @@ df_double df_sub(df_double a, df_double b) {
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
-// Flops: 96
+// Flops: 97
 df_double df_mod(df_double a, df_double b) {
   df_double q = df_div(a, b);
   df_double f = df_floor(q);
@@ -367,7 +373,7 @@ df_double df_mod(df_double a, df_double b) {
 // Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 28
+// Flops: 33
 df_double df_modf(df_double a, out df_double i) {
   i = df_trunc(a);
   df_double r = df_sub(a, i);
@@ -894,10 +900,13 @@ df_dvec3 df_refract(df_dvec3 i, df_dvec3 n, df_double eta) {
 
 // df_floor: largest integer <= x. hi not an integer: floor(hi); else hi + floor(lo), joined by
 // Fast2Sum (|floor(lo)| <= |hi| since |lo| <= ulp(hi)/2 and |hi| >= 1).
-// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is an integer
-// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Special values: +-0 and +-Inf are integers whose lo is 0 (or, for an input Inf, NaN): they
+// are returned as (hi, 0), as native floor does; the Fast2Sum would give +0 for -0 and
+// Inf - Inf = NaN in lo. NaN fails f == hi and gives (NaN, 0).
+// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is a nonzero finite integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum); IEEE 754-2008 section 5.9
 // Bound: exact
-// Flops: 5
+// Flops: 6 (plus 2 comparisons)
 // (width 3: the width-1 df_floor applied to each component)
 df_dvec3 df_floor(df_dvec3 a) {
   df_double r0 = df_floor(df_double(a.hi.x, a.lo.x));
@@ -913,7 +922,7 @@ df_dvec3 df_floor(df_dvec3 a) {
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
-// Flops: 96
+// Flops: 97
 df_dvec3 df_mod(df_dvec3 a, df_dvec3 b) {
   df_dvec3 q = df_div(a, b);
   df_dvec3 f = df_floor(q);
@@ -926,7 +935,7 @@ df_dvec3 df_mod(df_dvec3 a, df_dvec3 b) {
 // Algorithm: df_ceil or df_floor by the sign of hi
 // Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
 // Bound: exact
-// Flops: 5
+// Flops: 10
 // (width 3: the width-1 df_trunc applied to each component)
 df_dvec3 df_trunc(df_dvec3 a) {
   df_double r0 = df_trunc(df_double(a.hi.x, a.lo.x));
@@ -939,7 +948,7 @@ df_dvec3 df_trunc(df_dvec3 a) {
 // Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 28
+// Flops: 33
 df_dvec3 df_modf(df_dvec3 a, out df_dvec3 i) {
   i = df_trunc(a);
   df_dvec3 r = df_sub(a, i);
@@ -1036,11 +1045,13 @@ df_dvec3 df_abs(df_dvec3 a) {
 
 // df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
 // TwoSum(hi, -floor(hi)) is exact and lo is added with DWPlusFP (exact when hi >= 0 or
-// |hi| >= 1, where hi - floor(hi) is a float).
-// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
+// |hi| >= 1, where hi - floor(hi) is a float). Special values: for +-Inf, hi is an "integer"
+// and lo - floor(lo) is 0; df_finish then returns (hi - floor(hi), 0) = (NaN, 0), native's
+// x - floor(x) (and +0 for every other integer, as before).
+// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4); df_finish for integers
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 19
+// Flops: 21
 // (width 3: the width-1 df_fract applied to each component)
 df_dvec3 df_fract(df_dvec3 a) {
   df_double r0 = df_fract(df_double(a.hi.x, a.lo.x));

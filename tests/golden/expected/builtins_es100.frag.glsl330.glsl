@@ -357,18 +357,22 @@ df_double df_add_f(df_double a, float b) {
 
 // df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
 // TwoSum(hi, -floor(hi)) is exact and lo is added with DWPlusFP (exact when hi >= 0 or
-// |hi| >= 1, where hi - floor(hi) is a float).
-// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4)
+// |hi| >= 1, where hi - floor(hi) is a float). Special values: for +-Inf, hi is an "integer"
+// and lo - floor(lo) is 0; df_finish then returns (hi - floor(hi), 0) = (NaN, 0), native's
+// x - floor(x) (and +0 for every other integer, as before).
+// Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4); df_finish for integers
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 19
+// Flops: 21
 df_double df_fract(df_double a) {
   float f = ((floor(a.hi)) - df_guard);
   if (f == a.hi) {
     float g = ((floor(a.lo)) - df_guard);
     float ng = ((0.0 - g) - df_guard);
     df_double r = df_two_sum(a.lo, ng);
-    return r;
+    float d = ((a.hi - f) - df_guard);
+    df_double q = df_finish(r, d);
+    return q;
   }
   float nf = ((0.0 - f) - df_guard);
   df_double t = df_two_sum(a.hi, nf);
@@ -505,13 +509,17 @@ df_double df_smoothstep(df_double e0, df_double e1, df_double x) {
 
 // df_floor: largest integer <= x. hi not an integer: floor(hi); else hi + floor(lo), joined by
 // Fast2Sum (|floor(lo)| <= |hi| since |lo| <= ulp(hi)/2 and |hi| >= 1).
-// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is an integer
-// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Special values: +-0 and +-Inf are integers whose lo is 0 (or, for an input Inf, NaN): they
+// are returned as (hi, 0), as native floor does; the Fast2Sum would give +0 for -0 and
+// Inf - Inf = NaN in lo. NaN fails f == hi and gives (NaN, 0).
+// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is a nonzero finite integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum); IEEE 754-2008 section 5.9
 // Bound: exact
-// Flops: 5
+// Flops: 6 (plus 2 comparisons)
 df_double df_floor(df_double a) {
   float f = ((floor(a.hi)) - df_guard);
-  if (f == a.hi) {
+  float af = (abs(f));
+  if (f == a.hi && af > 0.0 && af <= 3.40282347e38) {
     float g = ((floor(a.lo)) - df_guard);
     df_double r = df_fast_two_sum(a.hi, g);
     return r;
@@ -526,7 +534,7 @@ df_double df_floor(df_double a) {
 // Algorithm: DWDivDW2, df_floor, DWTimesDW1, AccurateDWPlusDW
 // Source: GLSL 4.60 (2019) section 8.3 (mod); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 10u^2 * (abs(x) + abs(y)) (absolute) when floor(x / y) is exact
-// Flops: 96
+// Flops: 97
 df_double df_mod(df_double a, df_double b) {
   df_double q = df_div(a, b);
   df_double f = df_floor(q);
@@ -547,26 +555,24 @@ df_double df_step(df_double edge, df_double x) {
   return df_double(1.0, 0.0);
 }
 
-// df_ceil: smallest integer >= x (the mirror of df_floor).
-// Algorithm: ceil of hi, or Fast2Sum(hi, ceil(lo)) when hi is an integer
-// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// df_ceil: smallest integer >= x, as -floor(-x): negation is exact, and the zero results get
+// native's signs (ceil(-0.5) = -0, ceil(-1 + 2^-30) = -0), which hi + ceil(lo) would give as +0.
+// Algorithm: df_neg, df_floor, df_neg
+// Source: JMP 2017, Definition 1.4; IEEE 754-2008 section 5.9 (ceil(x) = -floor(-x))
 // Bound: exact
-// Flops: 5
+// Flops: 10 (plus 2 comparisons)
 df_double df_ceil(df_double a) {
-  float c = ((ceil(a.hi)) - df_guard);
-  if (c == a.hi) {
-    float g = ((ceil(a.lo)) - df_guard);
-    df_double r = df_fast_two_sum(a.hi, g);
-    return r;
-  }
-  return df_double(c, float(0.0));
+  df_double n = df_neg(a);
+  df_double f = df_floor(n);
+  df_double r = df_neg(f);
+  return r;
 }
 
 // df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
 // Algorithm: df_ceil or df_floor by the sign of hi
 // Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
 // Bound: exact
-// Flops: 5
+// Flops: 10
 df_double df_trunc(df_double a) {
   if (a.hi < 0.0) {
     df_double c = df_ceil(a);
@@ -580,7 +586,7 @@ df_double df_trunc(df_double a) {
 // Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 28
+// Flops: 33
 df_double df_modf(df_double a, out df_double i) {
   i = df_trunc(a);
   df_double r = df_sub(a, i);
@@ -591,7 +597,7 @@ df_double df_modf(df_double a, out df_double i) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 35
+// Flops: 38
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 df_double df_round(df_double a) {
   df_double f = df_floor(a);
@@ -609,7 +615,7 @@ df_double df_round(df_double a) {
 // Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 41
+// Flops: 44
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 df_double df_round_even(df_double a) {
@@ -979,10 +985,13 @@ df_dvec3 df_abs(df_dvec3 a) {
 
 // df_floor: largest integer <= x. hi not an integer: floor(hi); else hi + floor(lo), joined by
 // Fast2Sum (|floor(lo)| <= |hi| since |lo| <= ulp(hi)/2 and |hi| >= 1).
-// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is an integer
-// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum)
+// Special values: +-0 and +-Inf are integers whose lo is 0 (or, for an input Inf, NaN): they
+// are returned as (hi, 0), as native floor does; the Fast2Sum would give +0 for -0 and
+// Inf - Inf = NaN in lo. NaN fails f == hi and gives (NaN, 0).
+// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is a nonzero finite integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum); IEEE 754-2008 section 5.9
 // Bound: exact
-// Flops: 5
+// Flops: 6 (plus 2 comparisons)
 // (width 3: the width-1 df_floor applied to each component)
 df_dvec3 df_floor(df_dvec3 a) {
   df_double r0 = df_floor(df_double(a.hi.x, a.lo.x));
