@@ -16,6 +16,8 @@ std::vector<std::string> rewrite_gcc_style_args(int argc, char** argv) {
     if (a == "--") options_ended = true;
     if (a == "-MD") {
       args.emplace_back("--MD");
+    } else if (a == "-O0") {
+      args.emplace_back("--no-optimize");
     } else if (a.starts_with("-MF") || a.starts_with("-MT")) {
       std::string name = "--" + std::string(a.substr(1, 2));
       args.push_back(a.size() == 3 ? name : name + "=" + std::string(a.substr(3)));

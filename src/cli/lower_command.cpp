@@ -74,6 +74,7 @@ struct LowerArgs {
   std::string lo_suffix = "_lo";
   std::string color = "auto";
   bool constant_range_errors = false;
+  bool no_optimize = false;           // -O0
   std::string mode;                   // --mode (empty: df64)
   std::vector<std::string> mode_for;  // --mode-for NAME=MODE
 };
@@ -134,6 +135,7 @@ Options common_options(const LowerArgs& a, std::string& error) {
   opt.hi_suffix = a.hi_suffix;
   opt.lo_suffix = a.lo_suffix;
   opt.constant_range_errors = a.constant_range_errors;
+  opt.optimize = !a.no_optimize;
   opt.guard = a.guard == "precise" ? GuardKind::Precise : a.guard == "uniform" ? GuardKind::Uniform : GuardKind::Auto;
   if (std::string mode_error = apply_mode_args(a.mode, a.mode_for, opt); !mode_error.empty()) problem(mode_error);
   return opt;
@@ -299,6 +301,9 @@ Command add_lower_command(CLI::App& app) {
       ->type_name("S");
   cmd->add_option("--lo-suffix", args->lo_suffix, "Suffix of the low part of split variables (default _lo)")
       ->type_name("S");
+  cmd->add_flag("--no-optimize", args->no_optimize,
+                "(-O0) Skip the whole-shader optimizer: every double operation gets its general rule "
+                "(docs/performance.md, optimize_df)");
   cmd->add_flag("--constant-range-errors", args->constant_range_errors,
                 "Make double constants too small for float-float (e.g. 1e-300lf) errors, not warnings");
   cmd->add_option("--color", args->color, "Colour diagnostics: auto (terminal, no NO_COLOR), always, never")

@@ -53,6 +53,32 @@ TEST_F(ModeFlags, ModeForNamesOneDeclaration) {
   EXPECT_TRUE(has(out, "uniform vec3 eye_hi;")) << out;
 }
 
+// -O0 (--no-optimize) turns the whole-shader optimizer off: a square keeps the general product.
+TEST_F(ModeFlags, NoOptimizeKeepsTheGeneralRules) {
+  write_file(dir / "sq.comp", R"(#version 450
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) buffer B { double x; double y; };
+void main() { y = x * x; }
+)");
+  const std::vector<std::string> base{"lower", "sq.comp", "--target", "es310", "-o"};
+  auto with = [&](std::vector<std::string> args, std::vector<std::string> extra) {
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  ProcessResult r = run_process(DOUBLET_CLI_PATH, with(base, {"opt.comp"}), dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* flag : {"-O0", "--no-optimize"}) {
+    SCOPED_TRACE(flag);
+    r = run_process(DOUBLET_CLI_PATH, with(base, {"o0.comp", flag}), dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string optimized = read_file(dir / "opt.comp"), plain = read_file(dir / "o0.comp");
+    EXPECT_TRUE(has(optimized, "df_double df_sqr(")) << optimized;
+    EXPECT_FALSE(has(optimized, "df_double df_mul(")) << optimized;
+    EXPECT_TRUE(has(plain, "df_double df_mul(")) << plain;
+    EXPECT_FALSE(has(plain, "df_double df_sqr(")) << plain;
+  }
+}
+
 TEST_F(ModeFlags, BadValuesAreUsageErrors) {
   ProcessResult r = lower({"--mode", "double"});
   EXPECT_EQ(r.exit_code, 1);
