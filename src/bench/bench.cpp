@@ -40,7 +40,58 @@ struct Workload {
   int steps = 1;            // kernels: chain length; shaders: 1 (one invocation is one "op")
   int checked_buffer = -1;  // kernels: the output buffer whose values must stay finite
   std::string source16;     // kernels: the source with 16 steps written out per loop trip (op counts)
+  std::string accuracy_source;           // kernels: kUnroll steps storing hi and lo (kernel_accuracy_source)
+  std::vector<long double> native_values;  // kernels: that source's results in native fp64 on lavapipe
 };
+
+// hi + lo of each element's outp[i].xy.
+std::vector<long double> hi_lo_values(const std::vector<uint8_t>& out) {
+  std::vector<long double> v(out.size() / 16);
+  for (size_t i = 0; i < v.size(); ++i) {
+    float w[2];
+    std::memcpy(w, out.data() + 16 * i, 8);
+    v[i] = static_cast<long double>(w[0]) + static_cast<long double>(w[1]);
+  }
+  return v;
+}
+
+runner::ComputeJob compute_job(const Workload& w, const std::string& glsl) {
+  runner::ComputeJob job;
+  job.glsl = glsl;
+  job.buffers = w.buffers;
+  job.uniforms = w.uniforms;
+  job.groups_x = w.groups;
+  return job;
+}
+
+// The accuracy run of one variant against native fp64 (Measurement::bits); -1 when it cannot run.
+double measured_bits(const BenchOptions& o, const Workload& w, runner::Backend backend, Mode mode, std::string* error) {
+  if (w.native_values.empty()) return -1;
+  const Variant v = make_variant(mode, backend, w.accuracy_source, o.target, w.name);
+  if (v.glsl.empty()) return -1;
+  const runner::ComputeResult r = runner::run_compute(backend, compute_job(w, v.glsl));
+  if (!r.ok) {
+    *error = "accuracy run: " + r.error;
+    return -1;
+  }
+  const std::vector<long double> got = hi_lo_values(r.buffers[1]);
+  long double worst = 0;
+  for (size_t i = 0; i < got.size() && i < w.native_values.size(); ++i) {
+    const long double want = w.native_values[i];
+    const long double rel = want == 0 ? std::fabs(got[i]) : std::fabs(got[i] - want) / std::fabs(want);
+    if (!(rel <= worst)) worst = std::isnan(static_cast<double>(rel)) ? INFINITY : rel;
+  }
+  return worst == 0 ? 53.0 : std::min(53.0, -std::log2(static_cast<double>(worst)));
+}
+
+// Native fp64 of the accuracy source on lavapipe: the reference every mode's bits compare with.
+void run_native_reference(const BenchOptions& o, Workload* w, std::vector<std::string>* notes) {
+  const Variant v = make_variant(Mode::Native, runner::Backend::Vulkan, w->accuracy_source, o.target, w->name);
+  if (v.glsl.empty()) return;
+  const runner::ComputeResult r = runner::run_compute(runner::Backend::Vulkan, compute_job(*w, v.glsl));
+  if (r.ok) w->native_values = hi_lo_values(r.buffers[1]);
+  else notes->push_back(w->name + ": no native fp64 reference, bits not measured: " + r.error);
+}
 
 // A user shader's buffers (its uniforms below): every reflected block gets its fixed part plus `elements` records of
 // its largest runtime array (twice over, as lowered layouts may be larger), filled with floats in
@@ -97,12 +148,7 @@ Measurement measure(const BenchOptions& o, const Workload& w, runner::Backend ba
     const Variant v16 = make_variant(mode, backend, w.source16, o.target, w.name);
     if (!v16.glsl.empty()) m.emitted_flops_per_step = float_ops_per_step(v.glsl, v16.glsl);
   }
-  runner::ComputeJob job;
-  job.glsl = v.glsl;
-  job.buffers = w.buffers;
-  job.uniforms = w.uniforms;
-  job.groups_x = w.groups;
-  const runner::TimedResult r = runner::run_compute_timed(backend, job, o.warmup, o.repetitions);
+  const runner::TimedResult r = runner::run_compute_timed(backend, compute_job(w, v.glsl), o.warmup, o.repetitions);
   if (!r.device.empty()) report->devices[backend_key(backend)] = r.device;
   if (!r.ok) {
     m.note = r.error;
@@ -119,6 +165,9 @@ Measurement measure(const BenchOptions& o, const Workload& w, runner::Backend ba
   }
   m.ops_per_second = w.ops_per_dispatch / m.median_seconds;
   if (w.checked_buffer >= 0) m.finite_output = all_finite(r.buffers[static_cast<size_t>(w.checked_buffer)]);
+  std::string accuracy_error;
+  m.bits = measured_bits(o, w, backend, mode, &accuracy_error);
+  if (!accuracy_error.empty()) m.note = accuracy_error;
   m.ok = true;
   return m;
 }
@@ -173,6 +222,8 @@ bool run_bench(const BenchOptions& o, BenchReport* report, std::string* error) {
       w.ops_per_dispatch = static_cast<double>(w.groups) * kLocalSize * w.steps;
       w.checked_buffer = 1;
       w.source16 = with_doubled_unroll(w.source, kernel_step(*k));
+      w.accuracy_source = kernel_accuracy_source(*k);
+      run_native_reference(o, &w, &report->notes);
       work.push_back(std::move(w));
     }
   }

@@ -44,6 +44,9 @@ struct Measurement {
   ShaderSize size;
   // Kernels: float operations per step in the variant's SPIR-V (bench/opcount.hpp); -1 unknown.
   double emitted_flops_per_step = -1;
+  // Kernels: -log2 of the worst relative error of kUnroll steps against native fp64 on lavapipe
+  // (same inputs; capped at 53, which the native row itself scores); -1 not measured.
+  double bits = -1;
 };
 
 struct BenchReport {

@@ -13,7 +13,6 @@ struct Kernel {
   std::string rule;      // the docs/rules.md row whose flop count one step costs in df64
   int rule_flops = 0;    // that row's "flops" (docs/rules.md); mat4 = 4 dot4
   int fp32_flops = 0;    // float operations of one step in fp32 (and fp64 operations natively)
-  std::string bits;      // measured worst-case bits of df64 (docs/accuracy.md), or "—"
   int default_steps = 0; // chain length when --steps is not given: fp32 dispatches of ~5 ms on
                          // llvmpipe, long enough that thread wake-ups do not dominate
 };
@@ -28,6 +27,10 @@ inline constexpr int kUnroll = 8;      // steps written out per loop trip (keeps
 // binding 1 `vec4 outp[]`, binding 2 (mat4 only) `vec4 mcol[4]`. `steps` is rounded up to a
 // multiple of kUnroll.
 std::string kernel_source(const Kernel& k, int steps);
+// The same chain of kUnroll steps on inputs that have lo words (inp[i] + inp[i].wzyx * 2^-24),
+// storing the result's hi and lo words (`x` or `v.x`, then x - double(float(x)), exact) in
+// outp[i].xy: what the bench's accuracy run compares with native fp64.
+std::string kernel_accuracy_source(const Kernel& k);
 // The one-step line kernel_source writes kUnroll times in its loop (e.g. "x = x + y;").
 std::string kernel_step(const Kernel& k);
 int rounded_steps(int steps);

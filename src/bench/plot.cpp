@@ -44,16 +44,8 @@ uint32_t colour(Mode m) {
   return 0xff000000u;
 }
 
-double bits_of(const Measurement& r) {
-  if (r.mode == Mode::Fp32) return 24;
-  if (r.mode == Mode::Native) return 53;
-  if (r.mode != Mode::Df64) return -1;
-  const Kernel* k = find_kernel(r.op);
-  if (!k) return -1;
-  char* end = nullptr;
-  const double b = std::strtod(k->bits.c_str(), &end);
-  return end != k->bits.c_str() ? b : -1;
-}
+// Measured bits (every mode of a kernel row); user shaders have none and are not plotted.
+double bits_of(const Measurement& r) { return r.bits; }
 
 }  // namespace
 
@@ -65,8 +57,8 @@ std::string write_cost_plot(const BenchReport& report, const std::string& path, 
   int drawn = 0;
   for (const Measurement& r : report.rows) {
     if (!r.ok || !r.time_vs_fp32) continue;
-    const double bits = bits_of(r);
-    if (bits < 0) continue;
+    if (bits_of(r) < 0) continue;
+    const double bits = std::max(bits_of(r), kMinBits);  // below 20 bits (rte, fp32 chains): the left edge
     const double ratio = std::min(std::max(*r.time_vs_fp32, 0.1), 1000.0);
     const int cx = px(bits) + (r.backend == runner::Backend::Gles ? 3 : -3), cy = py(ratio);
     for (int dy = -3; dy <= 3; ++dy)

@@ -15,12 +15,11 @@ std::string fixed(double v, int digits) {
   return buf;
 }
 
-// Accuracy of a mode as documented (docs/accuracy.md): the bench does not measure bits itself.
-std::string documented_bits(const Kernel* k, Mode m) {
-  if (m == Mode::Native) return "53";
-  if (m == Mode::Fp32) return "≤ 24";
-  if (m != Mode::Df64) return "—";
-  return k ? k->bits : "—";
+// Bits measured against native fp64 in the same run (Measurement::bits).
+std::string measured_bits(const Measurement& r) {
+  if (r.bits < 0) return "—";
+  if (r.mode == Mode::Native && r.backend == runner::Backend::Vulkan) return "53 (reference)";
+  return fixed(r.bits, 2);
 }
 
 std::string flops(const Kernel* k, Mode m) {
@@ -56,13 +55,13 @@ std::string format_markdown(const BenchReport& report) {
          (clock != report.clocks.end() ? clock->second : "none (nothing ran)") + "\n\n";
     s += shader ? "| shader | mode | median ms | min ms | invocations/s | time / fp32 | time / native fp64 | SPIR-V instr | GLSL lines |\n"
                   "|---|---|---|---|---|---|---|---|---|\n"
-                : "| op | mode | flops/step (docs) | emitted flops/step (SPIR-V) | bits (docs) | median ms | min ms | ops/s | time / fp32 | time / native fp64 | SPIR-V instr | GLSL lines |\n"
+                : "| op | mode | flops/step (docs) | emitted flops/step (SPIR-V) | bits (measured) | median ms | min ms | ops/s | time / fp32 | time / native fp64 | SPIR-V instr | GLSL lines |\n"
                   "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Measurement& r : report.rows) {
       if (r.backend != b) continue;
       const Kernel* k = shader ? nullptr : find_kernel(r.op);
       s += "| " + r.op + " | " + mode_name(r.mode) + " | ";
-      if (!shader) s += flops(k, r.mode) + " | " + emitted(k, r) + " | " + documented_bits(k, r.mode) + " | ";
+      if (!shader) s += flops(k, r.mode) + " | " + emitted(k, r) + " | " + measured_bits(r) + " | ";
       if (!r.ok) {
         s += "not run | | | | | | |\n";
         continue;
@@ -119,6 +118,7 @@ std::string format_json(const BenchReport& report) {
                                   : nlohmann::json(r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops);
       row["emitted_flops_per_step"] =
           r.emitted_flops_per_step >= 0 ? nlohmann::json(r.emitted_flops_per_step) : nlohmann::json(nullptr);
+      row["bits"] = r.bits >= 0 ? nlohmann::json(r.bits) : nlohmann::json(nullptr);
     }
     j["results"].push_back(std::move(row));
   }

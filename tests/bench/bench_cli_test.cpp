@@ -30,14 +30,24 @@ TEST(BenchCli, JsonHasTheDocumentedKeys) {
   for (const auto& r : j["results"])
     for (const char* key : {"op", "backend", "mode", "ok", "not_applicable", "steps", "note", "seconds", "median_seconds", "min_seconds", "ops_per_second",
                             "time_vs_fp32", "time_vs_native", "finite_output", "spirv_instructions", "glsl_lines",
-                            "flops_per_step", "emitted_flops_per_step"})
+                            "flops_per_step", "emitted_flops_per_step", "bits"})
       EXPECT_TRUE(r.contains(key)) << key;
+  // Bits are measured against native fp64 in the same run: fp32 cannot pass for float-float.
+  for (const auto& r : j["results"]) {
+    SCOPED_TRACE(r["op"].get<std::string>() + " " + r["mode"].get<std::string>() + " " + r["backend"].get<std::string>());
+    if (r["not_applicable"].get<bool>()) continue;
+    ASSERT_TRUE(r["bits"].is_number()) << r["note"];
+    const double bits = r["bits"].get<double>();
+    if (r["mode"] == "native") EXPECT_EQ(bits, 53.0);
+    if (r["mode"] == "df64") EXPECT_GE(bits, 43.0);
+    if (r["mode"] == "fp32") EXPECT_LE(bits, 24.5);
+  }
   // Every documented key appears in docs/performance.md.
   std::ifstream doc(std::string(DOUBLET_DOCS) + "/performance.md");
   std::stringstream ss;
   ss << doc.rdbuf();
   for (const char* key : {"time_vs_fp32", "time_vs_native", "clocks", "spirv_instructions", "median_seconds",
-                          "emitted_flops_per_step"})
+                          "emitted_flops_per_step", "bits"})
     EXPECT_NE(ss.str().find(std::string("`") + key + "`"), std::string::npos) << key;
 }
 
