@@ -148,6 +148,10 @@ struct Result {
   std::vector<Diagnostic> diagnostics;   // errors and warnings, in source order
   Manifest manifest;
   std::vector<std::string> included_files;
+  // Wall-clock seconds of each phase that finished, in order ("parse", "import", "lints", "modes",
+  // "lower", "optimize", "interfaces", "print", "validate"): where a lowering's time goes
+  // (`doublet bench --compiler` prints their medians).
+  std::vector<std::pair<std::string, double>> phase_seconds;
 };
 
 Result lower(std::string_view source, const Options& options);

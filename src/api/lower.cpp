@@ -1,5 +1,6 @@
 // doublet::lower: front end → import → lowering passes → print → re-validate.
 #include <algorithm>
+#include <chrono>
 #include <exception>
 #include <regex>
 #include <set>
@@ -112,6 +113,16 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     return result;
   }
 
+  // Each phase's wall-clock time goes to result.phase_seconds as the next one starts.
+  auto phase_start = std::chrono::steady_clock::now();
+  std::string phase_name = "parse";
+  auto next_phase = [&](const char* name) {
+    const auto now = std::chrono::steady_clock::now();
+    result.phase_seconds.emplace_back(phase_name, std::chrono::duration<double>(now - phase_start).count());
+    phase_start = now;
+    phase_name = name;
+    return true;
+  };
   frontend::ParsedShader parsed;
   if (!frontend::parse(source, options, parsed, diags)) return result;
   result.included_files = parsed.included_files;
@@ -126,18 +137,22 @@ Result lower_unchecked(std::string_view source, const Options& options) {
                            ")' is ignored: --mode native keeps every double"});
 
   ir::Module module;
+  next_phase("import");
   if (!frontend::import_module(parsed, options, module, diags)) return result;
+  parsed.release_ast();  // the IR owns everything now: free glslang's memory before the passes
 
   passes::Context ctx{options, diags};
+  next_phase("lints");
   passes::run_lints(module, source, ctx);  // on the IR as imported, before any pass rewrites it
   result.manifest.stage = std::string(to_string(*options.stage));
   result.manifest.target = std::string(to_string(options.target));
   result.manifest.mode = std::string(to_string(options.mode));
-  if (!native && !passes::apply_modes(module, ctx, pragmas)) return result;
-  if (!native && !passes::lower_doubles(module, ctx)) return result;
-  if (options.optimize && !passes::optimize_df(module, ctx)) return result;
-  if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
+  if (next_phase("modes") && !native && !passes::apply_modes(module, ctx, pragmas)) return result;
+  if (next_phase("lower") && !native && !passes::lower_doubles(module, ctx)) return result;
+  if (next_phase("optimize") && options.optimize && !passes::optimize_df(module, ctx)) return result;
+  if (next_phase("interfaces") && !passes::split_interfaces(module, ctx, result.manifest)) return result;
   if (!passes::check_target(module, ctx)) return result;
+  next_phase("print");
 
   emit::PrintOptions print_options;
   print_options.target = options.target;
@@ -173,7 +188,9 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   if (std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }))
     return result;
 
+  next_phase("validate");
   std::string log = emit::validate(printed.text, *options.stage, options.target);
+  next_phase("");
   if (!log.empty()) {
     // Quote the emitted lines glslang names, so the report is actionable.
     static const std::regex where(R"(ERROR: 0:(\d+):)");

@@ -148,7 +148,12 @@ bool run_compiler_bench(const CompilerOptions& o, CompilerReport* r) {
   // Interleaved, so a burst of load from elsewhere hits every measurement alike.
   for (int k = 0; k < o.repetitions; ++k) {
     r->parse_seconds.push_back(seconds([&] { glslang_parse(source, nullptr); }));
-    r->lower_seconds.push_back(seconds([&] { (void)lower(source, opt); }));
+    Result timed;
+    r->lower_seconds.push_back(seconds([&] { timed = lower(source, opt); }));
+    for (size_t p = 0; p < timed.phase_seconds.size(); ++p) {
+      if (r->phase_seconds.size() <= p) r->phase_seconds.push_back({timed.phase_seconds[p].first, {}});
+      r->phase_seconds[p].second.push_back(timed.phase_seconds[p].second);
+    }
     r->lower_unoptimized_seconds.push_back(seconds([&] { (void)lower(source, unopt); }));
     r->validate_seconds.push_back(seconds([&] { glslang_validate(output, o.target); }));
   }
@@ -186,6 +191,13 @@ std::string format_compiler_markdown(const CompilerReport& r) {
   row("doublet::lower (parse, import, passes, print, re-validate)", r.lower_seconds);
   row("doublet::lower without optimize_df", r.lower_unoptimized_seconds);
   row("of which could be: glslang re-validation of the output", r.validate_seconds);
+  out << "\nWhere doublet::lower's time goes (Result::phase_seconds; median ms, share of the lowering's median):\n\n"
+         "| phase | median ms | share |\n|---|---|---|\n";
+  for (const auto& [name, s] : r.phase_seconds) {
+    std::snprintf(buf, sizeof buf, "| %s | %.2f | %.0f%% |\n", name.c_str(), 1e3 * median_of(s),
+                  100 * median_of(s) / r.lower_median);
+    out << buf;
+  }
   std::snprintf(buf, sizeof buf,
                 "\nratio lower / parse: %.2fx (medians), %.2fx (minima); goal <= 1.5x\n"
                 "re-validation alone: %.2fx of a parse of the input (the output is %.1fx larger)\n",

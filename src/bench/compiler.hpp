@@ -29,6 +29,8 @@ struct CompilerReport {
   int lines = 0;               // lines of the generated input
   size_t input_bytes = 0, output_bytes = 0;
   std::vector<double> parse_seconds, lower_seconds, lower_unoptimized_seconds, validate_seconds;
+  // Per phase of doublet::lower (Result::phase_seconds), every repetition, in phase order.
+  std::vector<std::pair<std::string, std::vector<double>>> phase_seconds;
   double parse_median = 0, lower_median = 0, lower_unoptimized_median = 0, validate_median = 0;
   double parse_min = 0, lower_min = 0;
   double ratio_median = 0, ratio_min = 0;  // lower / parse

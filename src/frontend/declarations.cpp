@@ -38,17 +38,26 @@ class Placer {
     });
   }
 
+  // Adds `sign` for every reference to a local in `s` (the references ir::count_uses counts).
+  static void add_uses(const ir::StmtPtr& s, std::map<const ir::Var*, int>& uses, int sign) {
+    ir::visit(s, [&](const ir::ExprPtr& e) {
+      if (e->kind == Expr::Kind::Sym && e->var->storage == ir::Storage::Local) uses[e->var.get()] += sign;
+    });
+  }
+
   void place(std::vector<ir::StmtPtr>& list) {
+    // Uses of each local in list[i..]: counted once for the list, then each statement's own
+    // uses are taken off as i passes it (linear in the list, not quadratic).
+    std::map<const ir::Var*, int> remaining;
+    for (const auto& s : list) add_uses(s, remaining, +1);
     for (size_t i = 0; i < list.size(); ++i) {
       ir::StmtPtr& s = list[i];
-      if (const ir::Var* v = initialised_local(s); v && !declared_.count(v)) {
-        int within = 0;
-        for (size_t j = i; j < list.size(); ++j) within += ir::count_uses(list[j], v);
-        if (within == total_[v]) {
-          declared_.insert(v);
-          s = make_decl(s);
-        }
+      const ir::StmtPtr original = s;
+      if (const ir::Var* v = initialised_local(s); v && !declared_.count(v) && remaining[v] == total_[v]) {
+        declared_.insert(v);
+        s = make_decl(s);
       }
+      add_uses(original, remaining, -1);
       descend(s);
     }
   }

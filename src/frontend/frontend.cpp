@@ -19,6 +19,10 @@ namespace doublet::frontend {
 ParsedShader::ParsedShader() = default;
 ParsedShader::ParsedShader(ParsedShader&&) noexcept = default;
 ParsedShader::~ParsedShader() = default;
+void ParsedShader::release_ast() {
+  intermediate = nullptr;
+  shader.reset();
+}
 
 void ensure_glslang_initialized() {
   static std::once_flag once;

@@ -33,6 +33,7 @@ struct ParsedShader {
   ParsedShader();
   ParsedShader(ParsedShader&&) noexcept;
   ~ParsedShader();
+  void release_ast();  // frees glslang's AST (once the IR is imported)
 };
 
 // Reads the #version line the way the GLSL specs define it.
