@@ -87,7 +87,10 @@ bool Analysis::run(const ir::Module& module, const Scene& scene, std::vector<Dia
       ok = false;
       continue;
     }
-    const size_t n = static_cast<size_t>(components(it->second->type));
+    // An array of vectors or scalars (a buffer's `dvec3 position[]`): the range is per element.
+    const ir::Type& type = it->second->type;
+    const bool per_element = type.is_array() && type.base != ir::Base::Struct && type.base != ir::Base::Block;
+    const size_t n = static_cast<size_t>(components(per_element ? type.element() : type));
     if (range.components.size() != 1 && range.components.size() != n) {
       diagnostics->push_back(scene_diagnostic(scene, range.path, "'" + name + "' has " + std::to_string(n) +
                                                                      " components; give one range or " + std::to_string(n)));

@@ -20,6 +20,14 @@ struct Forward {
 
   const ir::Function* resolve(const Expr& call) const { return resolve_call(*a.module_, call); }
 
+  // The variable `x` reads directly: a symbol, or an element of an array symbol.
+  static const Var* direct_input(const ir::ExprPtr& x) {
+    if (x->kind == Expr::Kind::Sym) return x->var.get();
+    if (x->kind == Expr::Kind::Index && x->args[0]->kind == Expr::Kind::Sym && x->args[0]->type.is_array())
+      return x->args[0]->var.get();
+    return nullptr;
+  }
+
   Box read(const Var* v) {
     auto it = env.find(v);
     if (it != env.end()) return it->second;
@@ -97,9 +105,9 @@ struct Forward {
     if (op == "+") return map2(l, r, n, [](Interval x, Interval y) { return x + y; });
     if (op == "-") {
       Box d = map2(l, r, n, [](Interval x, Interval y) { return x - y; });
-      // A scene relation bounds a - b of two inputs read directly.
-      if (e.args[0]->kind == Expr::Kind::Sym && e.args[1]->kind == Expr::Kind::Sym) {
-        auto it = relations.find({e.args[0]->var.get(), e.args[1]->var.get()});
+      // A scene relation bounds a - b of two inputs read directly (or an element of an input array).
+      if (const Var *x = direct_input(e.args[0]), *y = direct_input(e.args[1]); x && y) {
+        auto it = relations.find({x, y});
         if (it != relations.end())
           for (Interval& c : d) c = meet(c, {-it->second, it->second});
       }
@@ -337,6 +345,8 @@ struct Forward {
             if (i.lo > i.hi) i = Interval::top();
           return record(&e, col, args);
         }
+        // An input array whose scene range is per element component: every element has that box.
+        if (t.is_array() && args[0].size() == n && n > 1) return record(&e, args[0], args);
         return record(&e, Box(n, Analysis::hull(args[0])), args);
       }
       case Expr::Kind::Comma: {

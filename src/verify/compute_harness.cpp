@@ -58,6 +58,14 @@ std::vector<uint32_t> buffer_sizes(const ShaderInterface& s, uint32_t array_leng
   return sizes;
 }
 
+// The split member `name` of a buffer block in the manifest (hi_offset/lo_offset set), or null.
+const BlockMember* find_split_member(const Manifest& manifest, const std::string& name) {
+  for (const auto& v : manifest.variables)
+    for (const auto& m : v.members)
+      if (m.name == name && m.hi_offset >= 0 && m.lo_offset >= 0 && m.matrix_stride == 0) return &m;
+  return nullptr;
+}
+
 const InterfaceVariable* find_in_manifest(const Manifest& manifest, const std::string& name) {
   for (const auto& v : manifest.variables)
     if (v.name == name) return &v;
@@ -96,6 +104,21 @@ std::string ComputeHarness::add_variable(const ShaderInterface& native_if, const
     return false;
   };
   slot_of(native_if, name, &v.native);
+  // A double buffer member lowered to a df_* struct (`dvec3 position[]` -> `df_dvec3
+  // position[]`): reflection sees a struct, the manifest gives where hi and lo live in each element.
+  Slot probe;
+  if (!is_uniform && (!slot_of(lowered_if, name, &probe) || probe.components == 0))
+    if (const BlockMember* m = find_split_member(manifest, name); m && v.native.components > 0) {
+      for (int offset : {m->hi_offset, m->lo_offset}) {
+        Slot s = v.native;
+        s.is_double = false;
+        s.offset = static_cast<uint32_t>(m->offset + offset);
+        s.stride = static_cast<uint32_t>(m->array_stride);
+        v.lowered.push_back(s);
+      }
+      (as_input ? inputs_ : outputs_).push_back(std::move(v));
+      return {};
+    }
   const InterfaceVariable* mv = find_in_manifest(manifest, name);
   const std::vector<std::string> lowered_names =
       mv && mv->split && mv->lowered_names.size() == 2 ? mv->lowered_names : std::vector<std::string>{name};
@@ -202,7 +225,21 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
   // Sized for the largest count (members verify does not feed get room too; over-allocating is harmless).
   native_sizes_ = buffer_sizes(native_if, array_length_ * max_per_invocation);
   lowered_sizes_ = buffer_sizes(lowered_if, array_length_ * max_per_invocation);
-  const size_t n = std::max(native_sizes_.size(), lowered_sizes_.size());
+  size_t n = std::max(native_sizes_.size(), lowered_sizes_.size());
+  native_sizes_.resize(n, 16);
+  lowered_sizes_.resize(n, 16);
+  // Split members placed from the manifest (reflection sees their df_* elements as struct
+  // fields, not as an array): make room for every element of them too.
+  for (auto* list : {&inputs_, &outputs_})
+    for (const Variable& v : *list)
+      for (const Slot& s : v.lowered) {
+        if (s.is_uniform || s.binding < 0 || s.elements == 0) continue;
+        if (lowered_sizes_.size() <= static_cast<size_t>(s.binding)) lowered_sizes_.resize(static_cast<size_t>(s.binding) + 1, 16);
+        const uint32_t end = s.offset + (s.elements - 1) * s.stride + static_cast<uint32_t>(s.components) * width(s.is_double);
+        uint32_t& size = lowered_sizes_[static_cast<size_t>(s.binding)];
+        size = std::max(size, (end + 15) / 16 * 16);
+      }
+  n = std::max(native_sizes_.size(), lowered_sizes_.size());
   native_sizes_.resize(n, 16);
   lowered_sizes_.resize(n, 16);
   return {};

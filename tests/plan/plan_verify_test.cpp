@@ -46,6 +46,21 @@ TEST(PlanVerify, FarEyeKeepsDf64AndADemotedRelFails) {
   EXPECT_NE(r.out.find("EXCEEDED"), std::string::npos) << r.out;
 }
 
+// Compute: the scene's range applies to every element of a buffer array, and verify fills the
+// lowered buffer's df_dvec3 elements (hi and lo) from the manifest.
+TEST(PlanVerify, ComputeBufferArrayKeepsItsPromiseAndFp32DoesNot) {
+  const std::string plan = make_plan("globe_rte.comp", "globe_compute.scene.json", "compute.plan.json");
+  const std::string base = "verify " + kScenes + "/globe_rte.comp --target es310 --samples 2048 --scene " + kScenes +
+                           "/globe_compute.scene.json ";
+  CliRun r = run_doublet(base + "--plan " + plan);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("rel[].z"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("EXCEEDED"), std::string::npos) << r.out;
+  r = run_doublet(base + "--mode fp32");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("EXCEEDED"), std::string::npos) << r.out;
+}
+
 TEST(PlanVerify, Fp32EverywhereFailsTheGlobeScene) {
   const CliRun r = verify("globe_rte.vert", "globe.scene.json", "--mode fp32");
   EXPECT_EQ(r.exit_code, 1) << r.out;
