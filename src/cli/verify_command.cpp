@@ -1,6 +1,7 @@
 // `doublet verify SHADER ...`: run the shader natively in fp64 and lowered on real drivers and
 // report per-output accuracy (docs/verify.md). The work is doublet::verify::verify(); this file
 // only turns the command line into VerifyOptions and the report into output and an exit code.
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -174,6 +175,14 @@ int run_verify(const VerifyArgs& a) {
       return input_error("cannot write '" + a.json + "': " + file.error());
   }
   if (!a.scene.empty()) (json_to_stdout ? std::cerr : std::cout) << scene_summary(report, scene);
+  // With no threshold anywhere, PASS only says both versions ran: say so, so that a pipeline
+  // does not take it for an accuracy check (docs/verify.md, exit codes).
+  const bool any_threshold = o.min_bits || !a.scene.empty() ||
+                             std::any_of(o.spec.outputs.begin(), o.spec.outputs.end(),
+                                         [](const auto& out) { return out.second.min_bits.has_value(); });
+  if (report.input_error.empty() && !any_threshold)
+    std::cerr << "doublet verify: note: no accuracy threshold (--min-bits B, a spec's min_bits or --scene): "
+                 "the result says only that both versions ran\n";
   if (!report.input_error.empty()) return kExitInput;
   if (report.driver_failed()) return kExitDriver;
   return report.passed() ? kExitOk : kExitBelowMinBits;

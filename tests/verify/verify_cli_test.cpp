@@ -45,6 +45,18 @@ TEST(VerifyCli, PassesAt44BitsAndPrintsTheProbeFirst) {
   EXPECT_NE(r.out.find("result: PASS"), std::string::npos);
 }
 
+// Without any threshold a PASS says only that both versions ran, and verify says so.
+TEST(VerifyCli, NoThresholdIsSaidOutLoud) {
+  const std::string note = "note: no accuracy threshold";
+  const std::string plain = kArith + " --backend gles";
+  CliRun r = doublet(plain);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find(note), std::string::npos) << r.out;
+  r = doublet(plain + " --min-bits 40");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find(note), std::string::npos) << r.out;
+}
+
 TEST(VerifyCli, SabotageExitsOne) {
   for (const char* s : {"drop-lo", "drop-guard"}) {
     const CliRun r = doublet(kArith + " --min-bits 44 --backend gles --sabotage " + s);
