@@ -121,7 +121,6 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     result.phase_seconds.emplace_back(phase_name, std::chrono::duration<double>(now - phase_start).count());
     phase_start = now;
     phase_name = name;
-    return true;
   };
   frontend::ParsedShader parsed;
   if (!frontend::parse(source, options, parsed, diags)) return result;
@@ -147,10 +146,14 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   result.manifest.stage = std::string(to_string(*options.stage));
   result.manifest.target = std::string(to_string(options.target));
   result.manifest.mode = std::string(to_string(options.mode));
-  if (next_phase("modes") && !native && !passes::apply_modes(module, ctx, pragmas)) return result;
-  if (next_phase("lower") && !native && !passes::lower_doubles(module, ctx)) return result;
-  if (next_phase("optimize") && options.optimize && !passes::optimize_df(module, ctx)) return result;
-  if (next_phase("interfaces") && !passes::split_interfaces(module, ctx, result.manifest)) return result;
+  next_phase("modes");
+  if (!native && !passes::apply_modes(module, ctx, pragmas)) return result;
+  next_phase("lower");
+  if (!native && !passes::lower_doubles(module, ctx)) return result;
+  next_phase("optimize");
+  if (options.optimize && !passes::optimize_df(module, ctx)) return result;
+  next_phase("interfaces");
+  if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
   if (!passes::check_target(module, ctx)) return result;
   next_phase("print");
 

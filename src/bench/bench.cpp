@@ -47,11 +47,7 @@ struct Workload {
 // hi + lo of each element's outp[i].xy.
 std::vector<long double> hi_lo_values(const std::vector<uint8_t>& out) {
   std::vector<long double> v(out.size() / 16);
-  for (size_t i = 0; i < v.size(); ++i) {
-    float w[2];
-    std::memcpy(w, out.data() + 16 * i, 8);
-    v[i] = static_cast<long double>(w[0]) + static_cast<long double>(w[1]);
-  }
+  for (size_t i = 0; i < v.size(); ++i) v[i] = stored_hi_lo(out, i);
   return v;
 }
 
@@ -75,13 +71,12 @@ double measured_bits(const BenchOptions& o, const Workload& w, runner::Backend b
     return -1;
   }
   const std::vector<long double> got = hi_lo_values(r.buffers[1]);
-  long double worst = 0;
+  WorstRelativeError error_of;
   for (size_t i = 0; i < got.size() && i < w.native_values.size(); ++i) {
     const long double want = w.native_values[i];
-    const long double rel = want == 0 ? std::fabs(got[i]) : std::fabs(got[i] - want) / std::fabs(want);
-    if (!(rel <= worst)) worst = std::isnan(static_cast<double>(rel)) ? INFINITY : rel;
+    error_of.add(want == 0 ? std::fabs(got[i]) : std::fabs(got[i] - want) / std::fabs(want));
   }
-  return worst == 0 ? 53.0 : std::min(53.0, -std::log2(static_cast<double>(worst)));
+  return std::min(53.0, error_of.bits(53.0));
 }
 
 // Native fp64 of the accuracy source on lavapipe: the reference every mode's bits compare with.

@@ -341,16 +341,13 @@ double kernel_bits(const std::string& op, const std::string& glsl, int elements,
     *error = r.error;
     return -1;
   }
-  long double worst = 0;
+  WorstRelativeError error_of;
   for (int i = 0; i < elements; ++i) {
-    float out[2];
-    std::memcpy(out, r.buffers[1].data() + 16 * static_cast<size_t>(i), 8);
-    const long double got = static_cast<long double>(out[0]) + static_cast<long double>(out[1]);
+    const long double got = stored_hi_lo(r.buffers[1], static_cast<size_t>(i));
     const long double ref = reference(op, &inputs.words[4 * static_cast<size_t>(i)], kAccuracySteps);
-    const long double rel = std::fabs(got - ref) / std::fabs(ref);
-    if (!(rel <= worst)) worst = std::isnan(static_cast<double>(rel)) ? INFINITY : rel;
+    error_of.add(std::fabs(got - ref) / std::fabs(ref));
   }
-  return worst == 0 ? 64.0 : -std::log2(static_cast<double>(worst));
+  return error_of.bits(64.0);
 }
 
 bool run_handwritten(const HandwrittenOptions& o, HandwrittenReport* report, std::string* error) {

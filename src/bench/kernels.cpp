@@ -89,6 +89,12 @@ std::string kernel_accuracy_source(const Kernel& k) {
   return s;
 }
 
+long double stored_hi_lo(const std::vector<uint8_t>& outp, size_t i) {
+  float w[2];
+  std::memcpy(w, outp.data() + 16 * i, 8);
+  return static_cast<long double>(w[0]) + static_cast<long double>(w[1]);
+}
+
 std::string kernel_source(const Kernel& k, int steps) {
   const Body b = body(k.op);
   std::string unrolled;

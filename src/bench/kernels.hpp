@@ -3,6 +3,9 @@
 // driver can neither skip nor overlap steps) and stores the result so nothing is dead code.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,6 +34,18 @@ std::string kernel_source(const Kernel& k, int steps);
 // storing the result's hi and lo words (`x` or `v.x`, then x - double(float(x)), exact) in
 // outp[i].xy: what the bench's accuracy run compares with native fp64.
 std::string kernel_accuracy_source(const Kernel& k);
+// hi + lo of element i of an accuracy run's `vec4 outp[]` (hi in .x, lo in .y).
+long double stored_hi_lo(const std::vector<uint8_t>& outp, size_t i);
+
+// The worst relative error of an accuracy run, as bits: a NaN error counts as infinitely bad.
+struct WorstRelativeError {
+  long double worst = 0;
+  void add(long double rel) {
+    if (!(rel <= worst)) worst = std::isnan(static_cast<double>(rel)) ? INFINITY : rel;
+  }
+  double bits(double if_exact) const { return worst == 0 ? if_exact : -std::log2(static_cast<double>(worst)); }
+};
+
 // The one-step line kernel_source writes kUnroll times in its loop (e.g. "x = x + y;").
 std::string kernel_step(const Kernel& k);
 int rounded_steps(int steps);

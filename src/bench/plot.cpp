@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "bench/kernels.hpp"
 #include "demo/png_image.hpp"
 
 namespace doublet::bench {
@@ -44,9 +43,6 @@ uint32_t colour(Mode m) {
   return 0xff000000u;
 }
 
-// Measured bits (every mode of a kernel row); user shaders have none and are not plotted.
-double bits_of(const Measurement& r) { return r.bits; }
-
 }  // namespace
 
 std::string write_cost_plot(const BenchReport& report, const std::string& path, int* points) {
@@ -57,8 +53,8 @@ std::string write_cost_plot(const BenchReport& report, const std::string& path, 
   int drawn = 0;
   for (const Measurement& r : report.rows) {
     if (!r.ok || !r.time_vs_fp32) continue;
-    if (bits_of(r) < 0) continue;
-    const double bits = std::max(bits_of(r), kMinBits);  // below 20 bits (rte, fp32 chains): the left edge
+    if (r.bits < 0) continue;  // not measured (user shaders)
+    const double bits = std::max(r.bits, kMinBits);  // below 20 bits (rte, fp32 chains): the left edge
     const double ratio = std::min(std::max(*r.time_vs_fp32, 0.1), 1000.0);
     const int cx = px(bits) + (r.backend == runner::Backend::Gles ? 3 : -3), cy = py(ratio);
     for (int dy = -3; dy <= 3; ++dy)

@@ -41,6 +41,18 @@ double read_value(const std::vector<uint8_t>& bytes, size_t at, bool is_double) 
   return f;
 }
 
+// One past the last byte of `elements` elements of `element_bytes` each, `stride` apart from `offset`.
+uint32_t end_of_elements(uint32_t offset, uint32_t elements, uint32_t stride, uint32_t element_bytes) {
+  return offset + (elements > 0 ? (elements - 1) * stride : 0) + element_bytes;
+}
+
+// Grows `sizes` so that binding `binding` holds `end` bytes.
+void make_room(std::vector<uint32_t>& sizes, int binding, uint32_t end) {
+  if (sizes.size() <= static_cast<size_t>(binding)) sizes.resize(static_cast<size_t>(binding) + 1, 16);
+  uint32_t& size = sizes[static_cast<size_t>(binding)];
+  size = std::max(size, end);
+}
+
 // Bytes each binding needs, with runtime arrays holding `array_length` elements.
 std::vector<uint32_t> buffer_sizes(const ShaderInterface& s, uint32_t array_length) {
   std::vector<uint32_t> sizes;
@@ -49,10 +61,8 @@ std::vector<uint32_t> buffer_sizes(const ShaderInterface& s, uint32_t array_leng
     if (block.binding < 0) continue;
     const uint32_t elements = m.array_size == 0 ? array_length : m.array_size;
     const uint32_t element_bytes = std::max<uint32_t>(m.components, 1) * width(m.is_double) * 4;  // generous for non-numeric
-    const uint32_t end = m.offset + (elements > 0 ? (elements - 1) * m.array_stride : 0) + element_bytes;
-    if (sizes.size() <= static_cast<size_t>(block.binding)) sizes.resize(static_cast<size_t>(block.binding) + 1, 16);
-    uint32_t& size = sizes[static_cast<size_t>(block.binding)];
-    size = std::max({size, end, block.fixed_size});
+    make_room(sizes, block.binding,
+              std::max(end_of_elements(m.offset, elements, m.array_stride, element_bytes), block.fixed_size));
   }
   for (uint32_t& size : sizes) size = (size + 15) / 16 * 16;
   return sizes;
@@ -225,21 +235,16 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
   // Sized for the largest count (members verify does not feed get room too; over-allocating is harmless).
   native_sizes_ = buffer_sizes(native_if, array_length_ * max_per_invocation);
   lowered_sizes_ = buffer_sizes(lowered_if, array_length_ * max_per_invocation);
-  size_t n = std::max(native_sizes_.size(), lowered_sizes_.size());
-  native_sizes_.resize(n, 16);
-  lowered_sizes_.resize(n, 16);
   // Split members placed from the manifest (reflection sees their df_* elements as struct
   // fields, not as an array): make room for every element of them too.
   for (auto* list : {&inputs_, &outputs_})
     for (const Variable& v : *list)
-      for (const Slot& s : v.lowered) {
-        if (s.is_uniform || s.binding < 0 || s.elements == 0) continue;
-        if (lowered_sizes_.size() <= static_cast<size_t>(s.binding)) lowered_sizes_.resize(static_cast<size_t>(s.binding) + 1, 16);
-        const uint32_t end = s.offset + (s.elements - 1) * s.stride + static_cast<uint32_t>(s.components) * width(s.is_double);
-        uint32_t& size = lowered_sizes_[static_cast<size_t>(s.binding)];
-        size = std::max(size, (end + 15) / 16 * 16);
-      }
-  n = std::max(native_sizes_.size(), lowered_sizes_.size());
+      for (const Slot& s : v.lowered)
+        if (!s.is_uniform && s.binding >= 0 && s.elements > 0)
+          make_room(lowered_sizes_, s.binding,
+                    (end_of_elements(s.offset, s.elements, s.stride,
+                                     static_cast<uint32_t>(s.components) * width(s.is_double)) + 15) / 16 * 16);
+  const size_t n = std::max(native_sizes_.size(), lowered_sizes_.size());
   native_sizes_.resize(n, 16);
   lowered_sizes_.resize(n, 16);
   return {};

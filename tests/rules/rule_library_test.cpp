@@ -230,41 +230,40 @@ bool has_arithmetic(const std::string& expr) {
   return false;
 }
 
-// The optimizer guard: every float temporary that computes anything is $PRECISE and $G(...);
-// no arithmetic anywhere else (returns, arguments, conditions). Integer statements are exempt
-// (integer arithmetic is exact and cannot be rewritten inexactly).
+// Calls f(file name, line) for every line of every rules/*.glsl source.
+template <typename F>
+void for_each_rule_source_line(F&& f) {
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(DOUBLET_SOURCE_DIR) + "/rules")) {
+    std::ifstream in(entry.path());
+    for (std::string line; std::getline(in, line);) f(entry.path().filename().string(), line);
+  }
+}
+
 // Per rule function, the float temporaries its source declares $SAFE(...) (steps no later step
 // cancels against, which need no Uniform guard; docs/rules.md, "The optimizer guard").
 std::map<std::string, std::set<std::string>> safe_temporaries() {
   std::map<std::string, std::set<std::string>> safe;
   const std::regex function(R"(^\S+ (\w+)\(.*\) \{$)");
   const std::regex safe_decl(R"(\$PRECISE \$F (\w+) = \$SAFE\()");
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(DOUBLET_SOURCE_DIR) + "/rules")) {
-    std::ifstream in(entry.path());
-    std::string line, current;
+  std::string current;
+  for_each_rule_source_line([&](const std::string&, const std::string& line) {
     std::smatch m;
-    while (std::getline(in, line)) {
-      if (std::regex_match(line, m, function)) current = m[1];
-      else if (std::regex_search(line, m, safe_decl)) safe[current].insert(m[1]);
-    }
-  }
+    if (std::regex_match(line, m, function)) current = m[1];
+    else if (std::regex_search(line, m, safe_decl)) safe[current].insert(m[1]);
+  });
   return safe;
 }
 
 TEST(RuleLibrary, EveryFloatTemporaryIsGuardedOrDeclaredSafe) {
   const std::regex temporary(R"(\$PRECISE \$F \w+ = (\$\w+\()?)");
   int safe_count = 0, guarded_count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(DOUBLET_SOURCE_DIR) + "/rules")) {
-    std::ifstream in(entry.path());
-    std::string line;
+  for_each_rule_source_line([&](const std::string& file, const std::string& line) {
     std::smatch m;
-    while (std::getline(in, line)) {
-      if (!std::regex_search(line, m, temporary)) continue;
-      SCOPED_TRACE(entry.path().filename().string() + ": " + line);
-      EXPECT_TRUE(m[1] == "$G(" || m[1] == "$SAFE(") << "a float temporary must be $G(...) or $SAFE(...)";
-      (m[1] == "$SAFE(" ? safe_count : guarded_count)++;
-    }
-  }
+    if (!std::regex_search(line, m, temporary)) return;
+    SCOPED_TRACE(file + ": " + line);
+    EXPECT_TRUE(m[1] == "$G(" || m[1] == "$SAFE(") << "a float temporary must be $G(...) or $SAFE(...)";
+    (m[1] == "$SAFE(" ? safe_count : guarded_count)++;
+  });
   // The first steps of every error-free transformation stay guarded: this test fails if a
   // sweeping edit marks everything safe.
   EXPECT_GT(guarded_count, 0);
@@ -277,6 +276,10 @@ TEST(RuleLibrary, EveryFloatTemporaryIsGuardedOrDeclaredSafe) {
   }
 }
 
+// The optimizer guard: every float temporary that computes anything is $PRECISE and wrapped in
+// $G(...) or, where its source says $SAFE(...), carries no Uniform guard; no arithmetic anywhere
+// else (returns, arguments, conditions). Integer statements are exempt (integer arithmetic is
+// exact and cannot be rewritten inexactly).
 TEST(RuleLibrary, EveryFloatOperationIsGuarded) {
   const auto safe = safe_temporaries();
   const std::regex function_name(R"(^\S+ (\w+)\()");
