@@ -169,7 +169,10 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     request.es_version = target_is_es(options.target) ? target_version(options.target) : 320;
     rules::EmitResult emitted = rules::RuleLibrary::builtin().emit(request);
     if (!emitted.ok) {
-      diags.push_back({options.file_name, 0, 0, Severity::Error, emitted.error});
+      // A rule the target lacks: point at the first expression that needs it.
+      auto use = ctx.rule_first_use.find(emitted.error_rule);
+      ir::Loc at = use != ctx.rule_first_use.end() ? use->second : ir::Loc{};
+      diags.push_back({options.file_name, at.line, at.column, Severity::Error, emitted.error});
       return result;
     }
     std::string helpers;

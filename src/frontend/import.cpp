@@ -206,11 +206,8 @@ class Importer {
 
   // ---- expressions -------------------------------------------------------
   ir::ExprPtr constant(const TConstUnionArray& values, const TType& type, const TSourceLoc& loc) {
+    if (type.getBasicType() == EbtStruct || type.getBasicType() == EbtBlock) return struct_constant(values, type, loc);
     auto e = ir::Expr::make(ir::Expr::Kind::Const, import_type(type, loc), loc_of(loc));
-    if (type.getBasicType() == EbtStruct || type.getBasicType() == EbtBlock) {
-      error(loc, "constant structures are not supported yet; use a constructor");
-      return e;
-    }
     for (int i = 0; i < values.size(); ++i) {
       ir::Scalar s;
       const TConstUnion& c = values[i];
@@ -232,6 +229,26 @@ class Importer {
         default: error(loc, "unsupported constant type"); break;
       }
       e->values.push_back(s);
+    }
+    return e;
+  }
+
+  // glslang folds `S(1.0lf, 2)` (and arrays of such) into one flat list of
+  // scalars: rebuild the constructors, member by member, so the passes see
+  // each double member as a value of its own.
+  ir::ExprPtr struct_constant(const TConstUnionArray& values, const TType& type, const TSourceLoc& loc) {
+    auto e = ir::Expr::make(ir::Expr::Kind::Construct, import_type(type, loc), loc_of(loc));
+    int start = 0;
+    auto take = [&](const TType& part) {
+      const int size = part.computeNumComponents();
+      e->args.push_back(constant(TConstUnionArray(values, start, size), part, loc));
+      start += size;
+    };
+    if (type.isArray()) {
+      const TType element(type, 0);
+      for (int i = 0; i < type.getOuterArraySize(); ++i) take(element);
+    } else {
+      for (const TTypeLoc& member : *type.getStruct()) take(*member.type);
     }
     return e;
   }

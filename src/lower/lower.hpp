@@ -24,6 +24,7 @@ struct Context {
   const Options& options;
   std::vector<Diagnostic>& diagnostics;
   std::vector<rules::RuleRef> rules_used;        // runtime functions called
+  std::map<std::string, ir::Loc> rule_first_use; // where each rule is first called (for diagnostics)
   std::vector<std::string> helper_order;         // generated helpers, in dependency order
   std::map<std::string, std::string> helpers;    // name → GLSL definition
   std::vector<int> widths_used;                  // df struct widths referenced

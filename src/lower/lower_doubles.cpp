@@ -151,6 +151,7 @@ class DoubleLowering {
   // ---- helpers ---------------------------------------------------------------
   ExprPtr rule(const std::string& name, int width, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
     ctx_.use_rule(name, width);
+    ctx_.rule_first_use.emplace(name, loc);
     return ir::make_node(Kind::Call, name, std::move(type), std::move(args), loc);
   }
 

@@ -656,6 +656,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
           root = it->second;
         if (!(root == r)) msg += ", needed by " + root.name;
         result.error = msg;
+        result.error_rule = root.name;
         return result;
       }
     }

@@ -46,6 +46,7 @@ struct EmitResult {
   bool ok = false;
   std::string text;            // struct definitions, guard uniform, functions: dependency order
   std::string error;           // e.g. "df_to_uint is not available on ES 1.00"
+  std::string error_rule;      // the requested rule the error is about (to place the diagnostic)
 };
 
 // What one chunk's header says (for documentation and tests).
