@@ -80,6 +80,39 @@ std::string matrix_struct_types(std::vector<std::pair<int, int>> shapes) {
   return out;
 }
 
+// glslang's re-validation is the authority on which built-in variables and functions a target
+// and stage have (gl_ClipDistance on ES, gl_FragDepth or texelFetch on ES 1.00, ...). When it
+// rejects one the user's shader uses, say so at the use instead of an internal error.
+bool report_builtins_the_target_lacks(const std::string& log,
+                                      const std::map<std::string, emit::PrintResult::BuiltinUse>& first_use,
+                                      const Options& options, std::vector<Diagnostic>& diags) {
+  static const char* const kMissing[] = {"' : undeclared identifier", "' : no matching overloaded function found"};
+  std::set<std::string> reported;
+  for (size_t start = 0; start < log.size();) {
+    size_t end = log.find('\n', start);
+    if (end == std::string::npos) end = log.size();
+    const std::string_view line(log.data() + start, end - start);
+    start = end + 1;
+    for (const char* missing : kMissing) {
+      const size_t tail = line.find(missing);
+      const size_t open = tail == std::string_view::npos ? tail : line.rfind('\'', tail == 0 ? 0 : tail - 1);
+      if (open == std::string_view::npos) continue;
+      const std::string name(line.substr(open + 1, tail - open - 1));
+      auto use = first_use.find(name);
+      if (use == first_use.end() || !reported.insert(name).second) continue;
+      const std::string target(to_string(options.target));
+      const std::string& written = use->second.source_name;
+      const char* stage = *options.stage == Stage::Vertex ? "vertex" : *options.stage == Stage::Fragment ? "fragment" : "compute";
+      std::string message = "the built-in '" + written + "'" + (written != name ? " (" + name + " there)" : "") +
+                            (name.rfind("gl_", 0) == 0 ? " does not exist in " : " has no such overload in ") + target +
+                            " " + stage + " shaders; remove it";
+      if (options.target != Target::Glsl450) message += ", or target glsl450 (desktop GLSL 4.50 has it)";
+      diags.push_back({options.file_name, use->second.loc.line, use->second.loc.column, Severity::Error, message});
+    }
+  }
+  return !reported.empty();
+}
+
 Result lower_unchecked(std::string_view source, const Options& options) {
   ScopedCLocale c_locale;  // '.' in every number printed or read, whatever the application's locale
   Result result;
@@ -197,6 +230,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   next_phase("validate");
   std::string log = emit::validate(printed.text, *options.stage, options.target);
   next_phase("");
+  if (!log.empty() && report_builtins_the_target_lacks(log, printed.builtin_first_use, options, diags)) return result;
   if (!log.empty()) {
     // Quote the emitted lines glslang names, so the report is actionable.
     static const std::regex where(R"(ERROR: 0:(\d+):)");

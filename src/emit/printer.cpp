@@ -52,7 +52,7 @@ class Printer {
       out_ << "\n" << signature(*f) << "\n";
       statement(f->body, 0);
     }
-    return {out_.str(), diags_};
+    return {out_.str(), diags_, builtin_first_use_};
   }
 
  private:
@@ -378,7 +378,10 @@ class Printer {
 
   std::string expr(const ir::ExprPtr& e) {
     switch (e->kind) {
-      case Expr::Kind::Sym: return symbol(*e->var);
+      case Expr::Kind::Sym:
+        if (e->var->storage == ir::Storage::BuiltIn)
+          builtin_first_use_.emplace(symbol(*e->var), PrintResult::BuiltinUse{e->loc, e->var->name});
+        return symbol(*e->var);
       case Expr::Kind::Const: return constant(*e);
       case Expr::Kind::Unary: {
         const std::string& op = e->op;
@@ -395,7 +398,9 @@ class Printer {
       case Expr::Kind::Ternary:
         return operand(e->args[0], 4, false) + " ? " + operand(e->args[1], 4, false) + " : " + operand(e->args[2], 4, false);
       case Expr::Kind::Call: return call(e->name, e->args);
-      case Expr::Kind::Builtin: return call(builtin_name(*e), e->args);
+      case Expr::Kind::Builtin:
+        builtin_first_use_.emplace(builtin_name(*e), PrintResult::BuiltinUse{e->loc, e->name});
+        return call(builtin_name(*e), e->args);
       case Expr::Kind::Construct: return call(ir::type_name(e->type) + ir::array_suffix(e->type), e->args);
       case Expr::Kind::Member: return operand(e->args[0], 17, false) + "." + e->name;
       case Expr::Kind::Index: {
@@ -426,6 +431,7 @@ class Printer {
   std::vector<Diagnostic> diags_;
   const ir::Var* frag_output_ = nullptr;
   bool frag_color_declared_ = false;
+  std::map<std::string, PrintResult::BuiltinUse> builtin_first_use_;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 // qualifiers the target accepts, ES 1.00 built-in names.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,13 @@ struct PrintOptions {
 struct PrintResult {
   std::string text;
   std::vector<Diagnostic> diagnostics;  // constructs the target cannot express
+  // Where each built-in function or gl_* variable the text names (as printed) is first used:
+  // lets a re-validation error about a built-in the target lacks point at the user's code.
+  struct BuiltinUse {
+    ir::Loc loc;
+    std::string source_name;  // as the user wrote it (texture) where the target spells it otherwise (texture2D)
+  };
+  std::map<std::string, BuiltinUse> builtin_first_use;
 };
 
 PrintResult print(const ir::Module& module, const PrintOptions& options, const std::string& file_name);

@@ -1,0 +1,86 @@
+// Built-ins a target lacks (issue 12): a positioned diagnostic naming the built-in, the target and
+// the stage, never "internal error: the lowered shader is not valid".
+#include <gtest/gtest.h>
+
+#include "doublet/doublet.hpp"
+
+namespace {
+
+doublet::Result lower_for(const std::string& source, doublet::Stage stage, doublet::Target target) {
+  doublet::Options o;
+  o.stage = stage;
+  o.target = target;
+  o.file_name = "user.glsl";
+  return doublet::lower(source, o);
+}
+
+struct Case {
+  const char* what;
+  doublet::Stage stage;
+  doublet::Target target;
+  std::string source;
+  int line, column;
+  std::string expected;  // start of the message
+};
+
+TEST(TargetBuiltins, MissingBuiltinIsAPositionedDiagnosticNotAnInternalError) {
+  const std::string vertex_ids =
+      "#version 450\nuniform double k;\nvoid main() {\n  gl_Position = vec4(float(k));\n"
+      "  gl_PointSize = float(gl_VertexID);\n}\n";
+  const std::string clip =
+      "#version 450\nuniform double k;\nvoid main() {\n  gl_Position = vec4(float(k));\n"
+      "  gl_ClipDistance[0] = 1.0;\n}\n";
+  const std::string depth =
+      "#version 450\nuniform double k;\nout vec4 c;\nvoid main() {\n  c = vec4(1.0);\n"
+      "  gl_FragDepth = float(k);\n}\n";
+  const std::string lod =
+      "#version 450\nuniform sampler2D s;\nuniform double k;\nin vec2 uv;\nout vec4 c;\n"
+      "void main() {\n  c = textureLod(s, uv, float(k));\n}\n";
+  const Case cases[] = {
+      {"gl_VertexID on es100", doublet::Stage::Vertex, doublet::Target::Es100, vertex_ids, 5, 24,
+       "the built-in 'gl_VertexID' does not exist in es100 vertex shaders"},
+      {"gl_ClipDistance on es300", doublet::Stage::Vertex, doublet::Target::Es300, clip, 5, 3,
+       "the built-in 'gl_ClipDistance' does not exist in es300 vertex shaders"},
+      {"gl_ClipDistance on es320", doublet::Stage::Vertex, doublet::Target::Es320, clip, 5, 3,
+       "the built-in 'gl_ClipDistance' does not exist in es320 vertex shaders"},
+      {"gl_FragDepth on es100", doublet::Stage::Fragment, doublet::Target::Es100, depth, 6, 3,
+       "the built-in 'gl_FragDepth' does not exist in es100 fragment shaders"},
+      {"textureLod in an es100 fragment shader", doublet::Stage::Fragment, doublet::Target::Es100, lod, 7, 33,  // glslang places a call at its ')' 
+       "the built-in 'textureLod' (texture2DLod there) has no such overload in es100 fragment shaders"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    doublet::Result r = lower_for(c.source, c.stage, c.target);
+    ASSERT_FALSE(r.ok);
+    ASSERT_FALSE(r.diagnostics.empty());
+    const doublet::Diagnostic& d = r.diagnostics.front();
+    EXPECT_EQ(d.message.rfind(c.expected, 0), 0u) << doublet::format_diagnostic(d);
+    EXPECT_EQ(d.message.find("internal error"), std::string::npos) << d.message;
+    EXPECT_EQ(d.line, c.line) << doublet::format_diagnostic(d);
+    EXPECT_EQ(d.column, c.column) << doublet::format_diagnostic(d);
+  }
+}
+
+TEST(TargetBuiltins, TargetsThatHaveTheBuiltinStillLowerIt) {
+  const std::string clip =
+      "#version 450\nuniform double k;\nvoid main() {\n  gl_Position = vec4(float(k));\n"
+      "  gl_ClipDistance[0] = float(k);\n}\n";
+  for (doublet::Target t : {doublet::Target::Glsl330, doublet::Target::Glsl450}) {
+    doublet::Result r = lower_for(clip, doublet::Stage::Vertex, t);
+    EXPECT_TRUE(r.ok) << (r.diagnostics.empty() ? "" : doublet::format_diagnostic(r.diagnostics[0]));
+  }
+}
+
+// A rule the target lacks (isnan on ES 1.00) is reported where the shader asks for it.
+TEST(TargetBuiltins, RuleTheTargetLacksPointsAtItsUse) {
+  doublet::Result r = lower_for("#version 450\nuniform double k;\nout vec4 c;\nvoid main() {\n"
+                                "  c = vec4(isnan(k) ? 1.0 : 0.0);\n}\n",
+                                doublet::Stage::Fragment, doublet::Target::Es100);
+  ASSERT_FALSE(r.ok);
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_EQ(r.diagnostics[0].line, 5) << doublet::format_diagnostic(r.diagnostics[0]);
+  EXPECT_GT(r.diagnostics[0].column, 0);
+  EXPECT_NE(r.diagnostics[0].message.find("df_isnan is not available on ES 1.00"), std::string::npos);
+}
+
+}  // namespace
