@@ -47,6 +47,8 @@ enum class Expect {
               // (vertex/fragment: float precision, 2^-126 absolute)
   TinyOperand,  // an operand below ~2^-114: compute matches (2^-44); vertex/fragment flush the
                 // split's low half, so the product keeps only ~12 bits (2^-11 relative)
+  ZeroWithSignOfX,  // GLSL's rule over Mesa's: a zero with the sign of the input x (modf of
+                    // +-0: "the same sign as x"; native fp64 gives +0 for -0)
 };
 
 enum class Sabotage { None, BaselineRules, AddGuard };
@@ -59,6 +61,8 @@ struct Row {
   // Which sabotage must turn the row red (where it did not already fail before the fix).
   bool red_with_baseline = false;
   bool red_with_add_guard = false;
+  // Statements before `double r = expr;` (for built-ins with out parameters: frexp, modf).
+  const char* prelude = "";
 };
 
 const std::vector<Row>& rows() {
@@ -115,6 +119,46 @@ const std::vector<Row>& rows() {
        {{kNaN, 1.0}, {1.0, kNaN}, {kNaN, kNaN}, {1.0, 1.0}}},
       {"compare_self_nan", "(x != x ? 1.0lf : 0.0lf) + (x == x ? 2.0lf : 0.0lf)", {{kNaN, 0}, {1.0, 0}}},
       {"isnan_isinf", "(isnan(x) ? 1.0lf : 0.0lf) + (isinf(x) ? 2.0lf : 0.0lf)", {{kNaN, 0}, {kInf, 0}, {-kInf, 0}, {1.0, 0}}},
+      // Issue 13. ldexp beyond float range: (Inf, 0), never (Inf, -Inf) (whose words add to NaN,
+      // and which compares unequal to an infinity); exponents beyond +-254 are not clamped.
+      {"ldexp_overflow_is_inf", "ldexp(x, int(y)) == ldexp(sign(x), int(y)) ? 1.0lf : 0.0lf",
+       {{1.0 - 0x1p-30, 1100}, {-1.0 + 0x1p-30, 1100}, {0x1.8p0 - 0x1p-40, 1030}}},
+      {"ldexp_overflow", "ldexp(x, int(y))", {{1.0 - 0x1p-30, 1100}, {-1.0 + 0x1p-30, 1100}, {0x1p-100, 250}, {3e38, 1}}},
+      {"ldexp_underflow", "ldexp(x, int(y))",
+       {{0x1p120, -280}, {-0x1p120, -280}, {0x1.8p-100, -40}, {0x1.8p0 + 0x1p-30, -135}, {1.0, -160}}, Expect::Tiny},
+      {"ldexp_from_subnormal", "ldexp(x, int(y))", {{0x1p-140, 270}, {-0x1.8p-140, 100}}},
+      // round/roundEven/trunc/ceil of x in (-1, 0) and modf's fraction of a negative integer are -0.
+      {"round_signed_zero", "round(x)", {{-0.3, 0}, {-0.0, 0}, {0.3, 0}, {-0.7, 0}, {-1e-30, 0}, {-2.75, 0}}},
+      {"round_even_signed_zero", "roundEven(x)", {{-0.3, 0}, {-0.5, 0}, {-0.0, 0}, {0.5, 0}, {-1.5, 0}, {-1e-30, 0}}},
+      {"trunc_signed_zero", "trunc(x) + ceil(y)", {{-0.3, -0.7}, {-0.0, -0.0}, {0.3, -0.2}, {-1e-30, -0.5}, {-2.5, 0.5}}},
+      {.name = "modf_fraction_signed_zero", .expr = "f",
+       .inputs = {{-3.0, 0}, {3.0, 0}, {0.0, 0}, {-2.5, 0}, {-0.25, 0}, {-0x1p30 - 0x1p-10, 0}, {-0x1p40, 0}},
+       .prelude = "double ip; double f = modf(x, ip);"},
+      {.name = "modf_whole_signed_zero", .expr = "ip",
+       .inputs = {{-3.0, 0}, {-0.25, 0}, {0.25, 0}, {-0x1p30 - 0x1p-10, 0}},
+       .prelude = "double ip; double f = modf(x, ip);"},
+      {.name = "modf_of_zero", .expr = "f * 2.0lf + ip", .inputs = {{-0.0, 0}, {0.0, 0}}, .expect = Expect::ZeroWithSignOfX,
+       .prelude = "double ip; double f = modf(x, ip);"},
+      // frexp: mantissa in [0.5, 1) and the exponent for tiny values; 0, -0, Inf, NaN as native.
+      {.name = "frexp_mantissa", .expr = "m",
+       .inputs = {{0x1p-120 - 0x1p-147, 0}, {-0x1.8p-126, 0}, {0.0, 0}, {-0.0, 0}, {3.0, 0}, {-0x1p-126, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_exponent", .expr = "double(e)",
+       .inputs = {{0x1p-120 - 0x1p-147, 0}, {-0x1.8p-126, 0}, {0.0, 0}, {-0.0, 0}, {3.0, 0}, {-0x1p-126, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_subnormal_mantissa", .expr = "m", .inputs = {{1e-40, 0}, {-3e-42, 0}, {0x1p-149, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_subnormal_exponent", .expr = "double(e)", .inputs = {{1e-40, 0}, {-3e-42, 0}, {0x1p-149, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_special_mantissa", .expr = "m", .inputs = {{kInf, 0}, {-kInf, 0}, {kNaN, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_special_exponent", .expr = "double(e)", .inputs = {{kInf, 0}, {-kInf, 0}, {kNaN, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      // length/normalize/distance across float's exponent range: the squares would leave it.
+      {"length_large", "length(dvec3(x, y, x))", {{3e19, 4e19}, {-1e30, 2e30}, {1.5e38, 1e38}, {2e38, 3e38}, {1.0, 2.0}}},
+      {"length_small", "length(dvec2(x, y))", {{3e-25, -4e-25}, {1e-30, 2e-30}, {1e-20, 1e-19}, {-1e-19, 0.0}, {0.0, 0.0}}},
+      {"normalize_extremes", "normalize(dvec3(x, y, x)).y", {{3e19, -4e19}, {1e30, 2e30}, {3e-25, 4e-25}, {1e-35, -2e-35}, {1.0, 2.0}}},
+      {"distance_extremes", "distance(dvec2(x, y), dvec2(y, x))", {{3e19, -4e19}, {1e-30, 3e-30}, {1e37, -1e37}}},
   };
   return r;
 }
@@ -161,6 +205,7 @@ std::string shader(const Row& row, bool compute, GraphicsStage stage) {
   }
   s += "void main() {\n  vec4 w = " + in + ";\n";
   s += "  double x = double(w.x) + double(w.y);\n  double y = double(w.z) + double(w.w);\n";
+  s += std::string("  ") + row.prelude + "\n";
   s += "  double r = " + std::string(row.expr) + ";\n";
   s += "  float hi = float(r);\n";
   s += "  " + out + " = vec4(hi, float(r - double(hi)), 0.0, 0.0);\n";
@@ -341,7 +386,7 @@ std::string describe(float hi, float lo) {
 }
 
 // Empty when the lowered result `got` is what `want` (native) implies for this row.
-std::string judge(Expect expect, bool compute, std::pair<float, float> want, std::pair<float, float> got) {
+std::string judge(Expect expect, bool compute, double x, std::pair<float, float> want, std::pair<float, float> got) {
   const float wh = want.first, gh = got.first;
   // The value: hi alone when it is not finite (r - Inf is NaN), else hi + lo.
   auto value = [](std::pair<float, float> p) {
@@ -349,6 +394,8 @@ std::string judge(Expect expect, bool compute, std::pair<float, float> want, std
   };
   const double w = value(want), g = value(got);
   const std::string seen = "native " + describe(want.first, want.second) + ", lowered " + describe(got.first, got.second);
+  if (expect == Expect::ZeroWithSignOfX)
+    return g == 0 && std::signbit(gh) == std::signbit(x) ? "" : "expected a zero with the sign of x: " + seen;
   if (std::isnan(wh)) return std::isnan(gh) ? "" : "expected NaN: " + seen;
   if (std::isinf(wh)) return gh == wh ? "" : "expected the same infinity: " + seen;
   if (expect == Expect::Saturates) {
@@ -379,7 +426,7 @@ std::string check(const Row& row, const Config& c, Sabotage sabotage) {
   if (!lowered.error.empty()) return "lowered run failed: " + lowered.error;
   std::string failures;
   for (size_t i = 0; i < row.inputs.size(); ++i) {
-    std::string f = judge(row.expect, c.compute, native.results[i], lowered.results[i]);
+    std::string f = judge(row.expect, c.compute, row.inputs[i].first, native.results[i], lowered.results[i]);
     if (!f.empty()) {
       char in[96];
       std::snprintf(in, sizeof in, "x=%a y=%a: ", row.inputs[i].first, row.inputs[i].second);
