@@ -536,4 +536,18 @@ TEST(ExtremesHostSplit, SplitCheckedReportsOutOfRange) {
   EXPECT_EQ(p.hi, FLT_MAX);
 }
 
+// join() keeps the sign of a zero: (-0, +0) is -0 (verify joins every lowered output with it).
+TEST(ExtremesHostSplit, JoinKeepsTheSignOfZero) {
+  EXPECT_TRUE(std::signbit(doublet::join(-0.0f, 0.0f)));
+  EXPECT_TRUE(std::signbit(doublet::join(-0.0f, -0.0f)));
+  EXPECT_FALSE(std::signbit(doublet::join(0.0f, -0.0f)));
+  EXPECT_EQ(doublet::join(1.0f, -0x1p-30f), 1.0 - 0x1p-30);
+  EXPECT_TRUE(std::signbit(doublet::join(doublet::split(-0.0))));
+  const float hi[] = {-0.0f, 2.0f}, lo[] = {0.0f, 0x1p-25f};
+  double x[2];
+  doublet::join(hi, lo, x);
+  EXPECT_TRUE(std::signbit(x[0]));
+  EXPECT_EQ(x[1], 2.0 + 0x1p-25);
+}
+
 }  // namespace
