@@ -51,7 +51,9 @@ enum class Expect {
                     // +-0: "the same sign as x"; native fp64 gives +0 for -0)
 };
 
-enum class Sabotage { None, BaselineRules, AddGuard };
+// BaselineRules: the rules of commit 16ff2c0 (before special values, issue 7);
+// RulesBeforeIssue13: those of commit 86dc5f7 (before the fixes of issue 13).
+enum class Sabotage { None, BaselineRules, RulesBeforeIssue13, AddGuard };
 
 struct Row {
   const char* name;
@@ -231,40 +233,49 @@ std::vector<float> packed_inputs(const Row& row) {
 
 // ---- sabotage: the previous rule text ----------------------------------------------------------
 
-const doublet::rules::RuleLibrary& baseline_library() {
-  static const doublet::rules::RuleLibrary lib = [] {
-    std::vector<std::pair<std::string, std::string>> files;
-    for (const auto& e : std::filesystem::directory_iterator(DOUBLET_EXTREMES_BASELINE_DIR)) {
-      std::ifstream f(e.path());
-      std::stringstream ss;
-      ss << f.rdbuf();
-      files.emplace_back(e.path().filename().string(), ss.str());
-    }
-    std::sort(files.begin(), files.end());
-    std::string error;
-    auto parsed = doublet::rules::RuleLibrary::parse(files, &error);
-    if (!parsed) {
-      std::fprintf(stderr, "baseline rules do not parse: %s\n", error.c_str());
-      std::abort();
-    }
-    return std::move(*parsed);
-  }();
-  return lib;
+// The rule library of the .glsl files in `dir` (parsed once per directory).
+const doublet::rules::RuleLibrary& library_in(const std::string& dir) {
+  static std::map<std::string, doublet::rules::RuleLibrary> cache;
+  auto it = cache.find(dir);
+  if (it != cache.end()) return it->second;
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    std::ifstream f(e.path());
+    std::stringstream ss;
+    ss << f.rdbuf();
+    files.emplace_back(e.path().filename().string(), ss.str());
+  }
+  std::sort(files.begin(), files.end());
+  std::string error;
+  auto parsed = doublet::rules::RuleLibrary::parse(files, &error);
+  if (!parsed) {
+    std::fprintf(stderr, "rules in %s do not parse: %s\n", dir.c_str(), error.c_str());
+    std::abort();
+  }
+  return cache.emplace(dir, std::move(*parsed)).first->second;
 }
 
 // Replaces the emitted runtime (from its "// doublet float-float runtime" line to the last rule
-// function) with the baseline rules' emission of the same user-called functions. The shaders
-// here are scalar, so every call is at width 1.
-std::string splice_baseline(const std::string& lowered, bool precise, std::string* error) {
+// function) with `rules`' emission of the same user-called functions, at every width they have
+// (the shader's vectors are dvec2 or dvec3; unused instances are harmless).
+std::string splice_rules(const std::string& lowered, const doublet::rules::RuleLibrary& rules, bool precise,
+                         std::string* error) {
   const size_t begin = lowered.find("// doublet float-float runtime");
   if (begin == std::string::npos) {
     *error = "no runtime in the lowered shader";
     return {};
   }
   // The runtime is a run of paragraphs (blank-line separated) of comments, struct and guard
-  // lines and df_ functions.
+  // lines and df_ functions. Functions that are no rule (the lowering's generated helpers, e.g.
+  // df_make_dvec2_1_1) are kept, after the replacement runtime.
   size_t end = begin;
   const std::regex function(R"(^(\w+) (df_\w+)\()");
+  std::string kept;
+  auto is_rule = [](const std::string& name) {
+    for (int width = 1; width <= 4; ++width)
+      if (doublet::rules::RuleLibrary::builtin().has({name, width})) return true;
+    return false;
+  };
   while (end < lowered.size()) {
     size_t next = lowered.find("\n\n", end);
     if (next == std::string::npos) next = lowered.size();
@@ -275,7 +286,9 @@ std::string splice_baseline(const std::string& lowered, bool precise, std::strin
       std::istringstream in(para);
       for (std::string line; std::getline(in, line);) {
         if (line.rfind("//", 0) == 0) continue;
-        ok = std::regex_search(line, function);
+        std::smatch m;
+        ok = std::regex_search(line, m, function);
+        if (ok && !is_rule(m[2])) kept += para + "\n\n";
         break;
       }
     }
@@ -285,14 +298,15 @@ std::string splice_baseline(const std::string& lowered, bool precise, std::strin
   std::string before = lowered.substr(0, begin), after = lowered.substr(end);
   std::set<std::string> called;
   const std::regex call(R"(\b(df_\w+)\()");
-  for (const std::string* part : {&before, &after})
+  for (const std::string* part : {&before, &kept, &after})
     for (std::sregex_iterator it(part->begin(), part->end(), call), e; it != e; ++it) called.insert((*it)[1]);
   doublet::rules::EmitRequest req;
   for (const auto& name : called)
-    if (baseline_library().has({name, 1})) req.used.push_back({name, 1});
+    for (int width = 1; width <= 4; ++width)
+      if (rules.has({name, width})) req.used.push_back({name, width});
   req.guard = precise ? doublet::rules::GuardStyle::Precise : doublet::rules::GuardStyle::Uniform;
   req.es_version = 320;
-  auto emitted = baseline_library().emit(req);
+  auto emitted = rules.emit(req);
   if (!emitted.ok) {
     *error = emitted.error;
     return {};
@@ -304,7 +318,7 @@ std::string splice_baseline(const std::string& lowered, bool precise, std::strin
       size_t at = text.find(s);
       if (at != std::string::npos) text.erase(at, std::strlen(s));
     }
-  return before + text + "\n" + after;
+  return before + text + "\n" + kept + after;
 }
 
 std::string add_guard(std::string text) {
@@ -331,7 +345,7 @@ Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage) {
     opt.target = c.target;
     opt.file_name = std::string(row.name) + ".glsl";
     // The previous rules predate the whole-shader optimizer's substitutes (rules/opt.glsl).
-    if (sabotage == Sabotage::BaselineRules) opt.optimize = false;
+    if (sabotage == Sabotage::BaselineRules || sabotage == Sabotage::RulesBeforeIssue13) opt.optimize = false;
     auto lowered = doublet::lower(source, opt);
     if (!lowered.ok) {
       for (const auto& d : lowered.diagnostics) o.error += doublet::format_diagnostic(d) + "\n";
@@ -339,7 +353,10 @@ Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage) {
     }
     glsl = lowered.output;
     const bool precise = lowered.manifest.guard.kind == "precise";
-    if (sabotage == Sabotage::BaselineRules) glsl = splice_baseline(glsl, precise, &o.error);
+    if (sabotage == Sabotage::BaselineRules)
+      glsl = splice_rules(glsl, library_in(DOUBLET_EXTREMES_BASELINE_DIR), precise, &o.error);
+    if (sabotage == Sabotage::RulesBeforeIssue13)
+      glsl = splice_rules(glsl, library_in(DOUBLET_EXTREMES_BEFORE_ISSUE13_DIR), precise, &o.error);
     if (sabotage == Sabotage::AddGuard) glsl = add_guard(glsl);
     if (!o.error.empty()) return o;
   }
@@ -470,6 +487,31 @@ TEST(ExtremesSabotage, PreviousRulesTurnTheFixedRowsRed) {
   }
   std::printf("previous rules: %d of %d flagged rows red\n", red, flagged);
   EXPECT_EQ(still_green, "") << "rows that should fail with the previous rules but pass";
+}
+
+// The rows issue 13 fixed fail with the rules before it (tests/extremes/rules_before_issue13/).
+TEST(ExtremesSabotage, RulesBeforeIssue13TurnItsRowsRed) {
+  const std::set<std::string> fixed = {
+      "ldexp_overflow_is_inf", "ldexp_underflow", "ldexp_from_subnormal", "round_signed_zero",
+      "round_even_signed_zero", "modf_fraction_signed_zero", "modf_of_zero", "frexp_mantissa",
+      "frexp_subnormal_mantissa", "frexp_subnormal_exponent", "frexp_special_exponent",
+      "length_large", "length_small", "normalize_extremes", "distance_extremes"};
+  int red = 0;
+  std::string still_green;
+  for (const auto& row : rows()) {
+    if (!fixed.count(row.name)) continue;
+    std::string failures;
+    for (const auto& c : configs()) failures += check(row, c, Sabotage::RulesBeforeIssue13);
+    if (failures.find("lowered run failed") != std::string::npos) ADD_FAILURE() << failures;
+    if (!failures.empty()) {
+      ++red;
+      std::printf("%s with the rules before issue 13: %s", row.name, failures.substr(0, failures.find('\n') + 1).c_str());
+    } else {
+      still_green += std::string(row.name) + " ";
+    }
+  }
+  std::printf("rules before issue 13: %d of %zu rows red\n", red, fixed.size());
+  EXPECT_EQ(still_green, "") << "rows that should fail with the rules before issue 13 but pass";
 }
 
 // Adding the uniform guard's zero (x + 0) instead of subtracting it loses the sign of -0.
