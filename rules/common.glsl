@@ -103,37 +103,56 @@ $DF df_fract($DF a) {
   return s;
 }
 
+// df_next_integer: f + 1 for an integer-valued f, with the sign of zero native round gives:
+// f = -1 (x in [-1, 0) rounded up) gives -0. Computed as -((-f) - 1): negation is exact and
+// (-f) - 1 is the mirror image of f + 1, whose zero is +0 (IEEE 754-2008 section 6.3).
+// Algorithm: df_neg, DWPlusFP (JMP Algorithm 4), df_neg
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2; IEEE 754-2008 section 6.3
+// Bound: exact
+// Flops: 15
+// Range: exact for the integers df_floor returns (f + 1 is a double-word integer).
+// @widths 1 2 3 4
+// @uses df_neg:W df_add_f:W
+$DF df_next_integer($DF f) {
+  $DF n = df_neg(f);
+  $DF m = df_add_f(n, $F(-1.0));
+  $DF r = df_neg(m);
+  return r;
+}
+
 // df_round: nearest integer, halves away from zero (GLSL lets the implementation choose).
-// Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
+// A result of zero has the sign of x (round(-0.3) = -0), as native fp64 gives.
+// Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 38
+// Flops: 42
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 // @widths 1 2 3 4
 // @per-component
-// @uses df_floor:1 df_fract:1 df_add_f:1
+// @uses df_floor:1 df_fract:1 df_next_integer:1
 $DF df_round($DF a) {
   $DF f = df_floor(a);
   $DF d = df_fract(a);
   bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
   bool tie = d.hi == 0.5 && d.lo == 0.0;
   if (above || (tie && a.hi >= 0.0)) {
-    $DF u = df_add_f(f, 1.0);
+    $DF u = df_next_integer(f);
     return u;
   }
   return f;
 }
 
-// df_round_even: nearest integer, halves to the even neighbour (roundEven).
-// Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
+// df_round_even: nearest integer, halves to the even neighbour (roundEven). A result of zero
+// has the sign of x (roundEven(-0.5) = -0), as native fp64 gives.
+// Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 44
+// Flops: 48
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 // @widths 1 2 3 4
 // @per-component
-// @uses df_floor:1 df_fract:1 df_add_f:1
+// @uses df_floor:1 df_fract:1 df_next_integer:1
 $DF df_round_even($DF a) {
   $DF f = df_floor(a);
   $DF d = df_fract(a);
@@ -147,7 +166,7 @@ $DF df_round_even($DF a) {
   bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
   bool tie = d.hi == 0.5 && d.lo == 0.0;
   if (above || (tie && parity == 0.5)) {
-    $DF u = df_add_f(f, 1.0);
+    $DF u = df_next_integer(f);
     return u;
   }
   return f;
@@ -170,15 +189,40 @@ $DF df_mod($DF a, $DF b) {
   return r;
 }
 
-// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign.
-// Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
+// df_modf_fraction: x - i for i = trunc(x), with x's sign (GLSL: "the same sign as x"): for
+// negative x it is -(i - x), the mirror image of x - i, so a zero fraction is -0 (modf(-3) = -0);
+// for +-0 it is x itself; +-Inf gives NaN (Inf - Inf), as native fp64 does.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6) of x and -i, or of i and -x then df_neg
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1; GLSL 4.60 (2019) section 8.3 (modf); IEEE 754-2008 section 6.3
+// Bound: 3u^2
+// Flops: 25
+// @widths 1 2 3 4
+// @per-component
+// @uses df_sub:1 df_neg:1
+$DF df_modf_fraction($DF a, $DF i) {
+  if (a.hi < 0.0) {
+    $DF d = df_sub(i, a);
+    $DF n = df_neg(d);
+    return n;
+  }
+  if (a.hi == 0.0) {
+    return $DF(a.hi, $F(0.0));
+  }
+  $DF r = df_sub(a, i);
+  return r;
+}
+
+// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign
+// (modf(-3) = (-0, -3), modf(-0) = (-0, -0); native fp64 on Mesa gives +0 for both parts of -0).
+// Algorithm: df_trunc, then df_modf_fraction (AccurateDWPlusDW)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 33
+// Flops: 35
 // @widths 1 2 3 4
+// @uses df_trunc:W df_modf_fraction:W
 $DF df_modf($DF a, out $DF i) {
   i = df_trunc(a);
-  $DF r = df_sub(a, i);
+  $DF r = df_modf_fraction(a, i);
   return r;
 }
 
@@ -290,65 +334,83 @@ $DF df_fma($DF a, $DF b, $DF c) {
   return r;
 }
 
-// df_exp2i: the bit patterns of two floats whose product is 2^e, -252 <= e <= 254 (exact factors
-// built from exponent bits; intBitsToFloat needs ES 3.00). Beyond that range the caller's product over/underflows anyway.
+// df_exp2i: the bit patterns of three floats whose product is 2^e, -300 <= e <= 300 (each factor
+// is 2^k with |k| <= 100, a normal float; intBitsToFloat needs ES 3.00). 300 is beyond every
+// float-float result: 2^-149 * 2^300 overflows and 2^128 * 2^-300 underflows to 0, so clamping
+// e there changes nothing.
 // Algorithm: IEEE 754 binary32 exponent field
 // Source: IEEE 754-2008 section 3.4 (binary interchange format encodings)
 // Bound: exact
 // Flops: 0 (integer operations)
 // @widths 1
 // @min-es 300
-ivec2 df_exp2i(int e) {
-  int c = clamp(e, -252, 254);
-  int e1 = c / 2;
-  int e2 = c - e1;
+ivec3 df_exp2i(int e) {
+  int c = clamp(e, -300, 300);
+  int e1 = c / 3;
+  int e2 = (c - e1) / 2;
+  int e3 = c - e1 - e2;
   int b1 = (e1 + 127) << 23;
   int b2 = (e2 + 127) << 23;
-  return ivec2(b1, b2);
+  int b3 = (e3 + 127) << 23;
+  return ivec3(b1, b2, b3);
 }
 
-// df_ldexp: x * 2^e, both words scaled by powers of two (exact unless over/underflow).
-// Algorithm: scaling of hi and lo by 2^e in two exact steps
+// df_ldexp: x * 2^e, both words scaled by powers of two in three exact steps, then df_finish:
+// a result beyond float range is (+-Inf, 0) (lo alone would overflow to an infinity of the
+// other sign, and Inf + -Inf is NaN), one below it (+-0, 0) with x's sign.
+// Algorithm: scaling of hi and lo by 2^e in three exact steps, then df_finish
 // Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 4
+// Flops: 7 (plus 2 comparisons)
+// Range: exact while the result is a normal float-float; into float's subnormal range each word
+// is rounded (at most twice), within one subnormal ulp (2^-149) absolute.
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
-// @uses df_exp2i:1
+// @uses df_exp2i:1 df_finish:1
 $DF df_ldexp($DF a, $I e) {
-  ivec2 b = df_exp2i(e);
+  ivec3 b = df_exp2i(e);
   $PRECISE float s1 = $G(intBitsToFloat(b.x));
   $PRECISE float s2 = $G(intBitsToFloat(b.y));
+  $PRECISE float s3 = $G(intBitsToFloat(b.z));
   $PRECISE $F h1 = $G(a.hi * s1);
-  $PRECISE $F h = $G(h1 * s2);
+  $PRECISE $F h2 = $G(h1 * s2);
+  $PRECISE $F h = $G(h2 * s3);
   $PRECISE $F l1 = $G(a.lo * s1);
-  $PRECISE $F l = $G(l1 * s2);
-  return $DF(h, l);
+  $PRECISE $F l2 = $G(l1 * s2);
+  $PRECISE $F l = $G(l2 * s3);
+  $DF z = $DF(h, l);
+  $DF r = df_finish(z, h);
+  return r;
 }
 
-// df_frexp: x = m * 2^e with 0.5 <= |m| < 1 (m = 0, e = 0 for x = 0). The exponent is hi's;
-// when hi = +-2^k and lo has the opposite sign, |x| < 2^k, so e is one less.
-// Algorithm: exponent field of hi, corrected by the sign of lo, then df_ldexp
+// df_frexp: x = m * 2^e with 0.5 <= |m| < 1. The exponent is hi's; when hi = +-2^k and lo has
+// the opposite sign, |x| < 2^k, so e is one less. A subnormal hi is first scaled by 2^64 (exact)
+// to read its exponent. +-0 gives (+-0, e = 0); +-Inf and NaN give m = x and e = 1025, the
+// values native fp64 gives on Mesa (GLSL leaves them undefined).
+// Algorithm: exponent field of hi (of hi * 2^64 when subnormal), corrected by the sign of lo, then df_ldexp
 // Source: IEEE 754-2008 section 5.3.3 (logB); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 4
-// Range: hi must be a normal float (|x| >= 2^-126); Inf and NaN give undefined results, as in GLSL.
+// Flops: 9 (plus 4 comparisons)
 // @widths 1
 // @min-es 300
 // @uses df_ldexp:1
 $DF df_frexp($DF a, out $I e) {
-  if (a.hi == 0.0) {
-    e = 0;
-    return $DF(0.0, 0.0);
+  $PRECISE $F ah = $SAFE(abs(a.hi));
+  if (!(ah > 0.0 && ah <= 3.40282347e38)) {
+    e = ah == 0.0 ? 0 : 1025;
+    return $DF(a.hi, 0.0);
   }
-  int bits = floatBitsToInt(a.hi);
-  int k = ((bits >> 23) & 255) - 126;
+  bool subnormal = ah < 1.17549435e-38;
+  $PRECISE $F scale = $SAFE(subnormal ? 1.8446744073709552e19 : 1.0);
+  $PRECISE $F h = $SAFE(a.hi * scale);
+  int bits = floatBitsToInt(h);
+  int k = ((bits >> 23) & 255) - (subnormal ? 190 : 126);
   int mantissa = bits & 8388607;
   bool below = mantissa == 0 && ((a.hi > 0.0 && a.lo < 0.0) || (a.hi < 0.0 && a.lo > 0.0));
   int exponent = below ? k - 1 : k;
-  int scale = 0 - exponent;
+  int undo = 0 - exponent;
   e = exponent;
-  $DF m = df_ldexp(a, scale);
+  $DF m = df_ldexp(a, undo);
   return m;
 }

@@ -92,20 +92,63 @@ df_double df_length($DF a) {
   return z;
 }
 
-// df_length: sqrt(dot(a, a)), W = 2..4. No cancellation in dot(a, a), so its error is
+// df_norm_scale: (s, 1/s), powers of two that bring the largest component of hi into
+// [2^-36, 2^60] (as hypot does): s = 2^-90 when some |hi_i| > 2^60, 2^90 when every |hi_i| < 2^-36,
+// else 1. Then the squares of the scaled vector neither overflow (4 * 2^120 < 2^128) nor lose
+// their error terms to underflow (the largest square is >= 2^-72, its low words >= ~2^-120),
+// and scaling is exact. Values in [2^-36, 2^60] take s = 1: bit for bit the unscaled result.
+// +-Inf scales to +-Inf; NaN fails both tests and is not scaled.
+// Algorithm: two threshold tests on abs(hi), selection of power-of-two constants
+// Source: IEEE 754-2008 section 9.2 (hypot: scaling to avoid spurious overflow and underflow); Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, section 5 (scaled norms)
+// Bound: exact
+// Flops: 4 (W = 4: one abs per component; plus 2 vector comparisons and 4 selects)
+// @widths 2 3 4
+vec2 df_norm_scale($F h) {
+  $PRECISE $F ah = $SAFE(abs(h));
+  bool big = any(greaterThan(ah, $F(1.152921504606846976e18)));
+  bool small = all(lessThan(ah, $F(1.4551915228366851806640625e-11)));
+  $PRECISE float down = $SAFE(big ? 8.0779356694631608874161005085933746e-28 : 1.0);
+  $PRECISE float s = $SAFE(small ? 1.237940039285380274899124224e27 : down);
+  $PRECISE float up = $SAFE(big ? 1.237940039285380274899124224e27 : 1.0);
+  $PRECISE float back = $SAFE(small ? 8.0779356694631608874161005085933746e-28 : up);
+  return vec2(s, back);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+// @widths 1 2 3 4
+$DF df_scale_pow2($DF a, float s) {
+  $PRECISE $F h = $SAFE(a.hi * s);
+  $PRECISE $F l = $SAFE(a.lo * s);
+  return $DF(h, l);
+}
+
+// df_length: sqrt(dot(a, a)), W = 2..4, on a scaled by df_norm_scale and scaled back, so any
+// vector whose length is within float range gets it (the squares alone would overflow above
+// |a| ~ 1.8e19 and underflow below ~1e-19). No cancellation in dot(a, a), so its error is
 // relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
-// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order).
-// Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
+// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order). A length beyond float range is
+// (+Inf, 0) (df_finish); one below it tapers into float's subnormals as the scaled-back words
+// round.
+// Algorithm: df_norm_scale, df_dot(a, a), SQRTDWtoDW (LLMPR Algorithm 8), scaled back, df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 9.625u^2
-// Flops: 210 (W = 4; 110 for W = 2, 160 for W = 3)
-// Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
+// Flops: 225 (W = 4; 119 for W = 2, 172 for W = 3)
+// Range: every vector (scaled); exact scaling, so the bound holds for lengths in [2^-100, FLT_MAX].
 // @widths 2 3 4
-// @uses df_sqrt:1
+// @uses df_norm_scale:W df_scale_pow2:W,1 df_sqrt:1 df_finish:1
 df_double df_length($DF a) {
-  df_double d = df_dot(a, a);
-  df_double z = df_sqrt(d);
-  return z;
+  $PRECISE vec2 k = $SAFE(df_norm_scale(a.hi));
+  $DF b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  df_double z = df_scale_pow2(n, k.y);
+  df_double r = df_finish(z, z.hi);
+  return r;
 }
 
 // df_distance: length(a - b). The difference of exact inputs is one AccurateDWPlusDW per
@@ -113,7 +156,7 @@ df_double df_length($DF a) {
 // Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_length
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 12.625u^2
-// Flops: 233 (W = 4)
+// Flops: 248 (W = 4)
 // @widths 1 2 3 4
 // @uses df_sub:W df_length:W
 df_double df_distance($DF a, $DF b) {
@@ -135,17 +178,21 @@ df_dvec3 df_cross(df_dvec3 a, df_dvec3 b) {
   return r;
 }
 
-// df_normalize: a / length(a) per component (width 1: sign(a), exact).
-// Algorithm: df_length, then DWDivDW2 (JMP Algorithm 17) per component
+// df_normalize: a / length(a) per component (width 1: sign(a), exact), computed on a scaled by
+// df_norm_scale (a / |a| does not change when a is scaled by a power of two), so every vector
+// whose components are within float range normalizes, however long or short.
+// Algorithm: df_norm_scale, df_dot, SQRTDWtoDW (LLMPR Algorithm 8), then DWDivDW2 (JMP Algorithm 17) per component
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 24.625u^2
-// Flops: 366 (W = 4)
-// Range: |a|^2 must not overflow float, as for df_length.
+// Flops: 378 (W = 4)
 // @widths 2 3 4
-// @uses df_length:W df_div:W
+// @uses df_norm_scale:W df_scale_pow2:W df_dot:W df_sqrt:1 df_div:W
 $DF df_normalize($DF a) {
-  df_double n = df_length(a);
-  $DF r = df_div(a, $DF($F(n.hi), $F(n.lo)));
+  $PRECISE vec2 k = $SAFE(df_norm_scale(a.hi));
+  $DF b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  $DF r = df_div(b, $DF($F(n.hi), $F(n.lo)));
   return r;
 }
 

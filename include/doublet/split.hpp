@@ -26,8 +26,12 @@ inline FloatPair split(double x) {
   return {hi, lo};
 }
 
-inline double join(FloatPair p) { return static_cast<double>(p.hi) + static_cast<double>(p.lo); }
-inline double join(float hi, float lo) { return static_cast<double>(hi) + static_cast<double>(lo); }
+// hi + lo, except that a zero keeps hi's sign: (-0, +0) joins to -0 (IEEE's -0 + +0 is +0).
+inline double join(float hi, float lo) {
+  if (hi == 0 && lo == 0) return static_cast<double>(hi);
+  return static_cast<double>(hi) + static_cast<double>(lo);
+}
+inline double join(FloatPair p) { return join(p.hi, p.lo); }
 
 enum class SplitStatus {
   Exact,      // hi + lo == x
@@ -74,7 +78,7 @@ inline void split_interleaved(std::span<const double> x, std::size_t components,
 }
 
 inline void join(std::span<const float> hi, std::span<const float> lo, std::span<double> x) {
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(hi[i]) + static_cast<double>(lo[i]);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = join(hi[i], lo[i]);
 }
 
 }  // namespace doublet

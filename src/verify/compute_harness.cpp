@@ -260,6 +260,8 @@ void ComputeHarness::generate(uint64_t seed) {
       for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input.component(k % static_cast<size_t>(std::max(v.native.components, 1))), v.native.is_double, d * count + k);
       values_[d].push_back(std::move(vals));
     }
+  beyond_float_range_ = gen.beyond_float_range();
+  if (beyond_float_range_ > 0) notes_.push_back(beyond_float_range_note(beyond_float_range_));
   std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
   for (uint64_t d = 0; d < dispatches_; ++d) {
     std::vector<RelatedInput> related;
@@ -362,7 +364,8 @@ std::vector<OutputStats> ComputeHarness::compare(const std::vector<runner::Compu
             got = join(static_cast<float>(read(v.lowered[0], lowered[d], e, c)),
                        static_cast<float>(read(v.lowered[0], lowered[d], e, c + 1)));
           } else if (v.lowered.size() == 2) {
-            got = read(v.lowered[0], lowered[d], e, c) + read(v.lowered[1], lowered[d], e, c);
+            got = join(static_cast<float>(read(v.lowered[0], lowered[d], e, c)),
+                       static_cast<float>(read(v.lowered[1], lowered[d], e, c)));
           } else {
             got = read(v.lowered[0], lowered[d], e, c);
           }

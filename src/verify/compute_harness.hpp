@@ -36,6 +36,7 @@ class ComputeHarness {
                                    std::optional<double> default_min_bits) const;
 
   const std::vector<std::string>& notes() const { return notes_; }
+  uint64_t inputs_beyond_float_range() const { return beyond_float_range_; }
   std::vector<std::string> describe_inputs() const;
   uint64_t dispatches() const { return dispatches_; }
 
@@ -66,6 +67,7 @@ class ComputeHarness {
   std::string native_glsl_, lowered_glsl_;
   std::vector<Variable> inputs_, outputs_;
   std::vector<std::string> notes_;
+  uint64_t beyond_float_range_ = 0;  // input values fed as +-Inf (InputGenerator)
   std::vector<InputRelation> relations_;  // scene relations, applied after drawing
   uint32_t array_length_ = 1;  // elements of runtime arrays
   uint32_t groups_[3] = {1, 1, 1};

@@ -112,6 +112,8 @@ void GraphicsHarness::generate(uint64_t seed) {
       for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input.component(k % static_cast<size_t>(v.components)), v.is_double, d * count + k);
       values_[d].push_back(std::move(vals));
     }
+  beyond_float_range_ = gen.beyond_float_range();
+  if (beyond_float_range_ > 0) notes_.push_back(beyond_float_range_note(beyond_float_range_));
   std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ull);
   for (uint64_t d = 0; d < draws_; ++d) {
     std::vector<RelatedInput> related;
@@ -193,7 +195,7 @@ std::vector<OutputStats> GraphicsHarness::compare(const std::vector<runner::Grap
             want = join(static_cast<float>(want), static_cast<float>(want_v[k + 1]));
             got = join(static_cast<float>(got), static_cast<float>(hi_v[k + 1]));
           } else if (v.lowered.size() == 2) {
-            got += lowered[d].outputs.at(v.lowered[1])[k];
+            got = join(static_cast<float>(got), static_cast<float>(lowered[d].outputs.at(v.lowered[1])[k]));
           }
           stats.add(got, want, d * per_draw_ + s);
         }

@@ -37,6 +37,7 @@ class GraphicsHarness {
                                    std::optional<double> default_min_bits) const;
 
   const std::vector<std::string>& notes() const { return notes_; }
+  uint64_t inputs_beyond_float_range() const { return beyond_float_range_; }
   std::vector<std::string> describe_inputs() const;
   uint64_t draws() const { return draws_; }
 
@@ -59,6 +60,7 @@ class GraphicsHarness {
   std::string native_glsl_, lowered_glsl_;
   std::vector<Variable> inputs_, outputs_;
   std::vector<std::string> notes_;
+  uint64_t beyond_float_range_ = 0;  // input values fed as +-Inf (InputGenerator)
   std::vector<InputRelation> relations_;  // scene relations, applied after drawing
   uint32_t per_draw_ = 1;
   uint64_t draws_ = 1;

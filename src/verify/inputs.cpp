@@ -27,7 +27,16 @@ double InputGenerator::draw(const InputSpec& spec) {
 
 double InputGenerator::next(const InputSpec& spec, bool is_double, uint64_t index) {
   const double x = spec.values.empty() ? draw(spec) : spec.values[index % spec.values.size()];
-  return representable(x, is_double);
+  const double kept = representable(x, is_double);
+  if (std::isfinite(x) && std::isinf(kept)) ++beyond_float_range_;
+  return kept;
+}
+
+std::string beyond_float_range_note(uint64_t count) {
+  if (count == 0) return {};
+  return std::to_string(count) +
+         " input value(s) beyond float range (|x| > 3.4028235e38) were given to both shaders as +-Inf: "
+         "a float-float or float input cannot hold them (keep ranges within +-3.4e38 to compare finite values)";
 }
 
 }  // namespace doublet::verify

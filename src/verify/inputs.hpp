@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <random>
+#include <string>
 
 #include "verify/spec.hpp"
 
@@ -18,11 +19,19 @@ class InputGenerator {
   explicit InputGenerator(uint64_t seed) : rng_(seed) {}
   // Value number `index` of a variable (index counts samples × components, for cycling "values").
   double next(const InputSpec& spec, bool is_double, uint64_t index);
+  // How many finite values next() drew beyond float range (|x| > FLT_MAX, after the split's
+  // rounding) and so returned as +-Inf: neither a float-float pair nor a float holds them.
+  uint64_t beyond_float_range() const { return beyond_float_range_; }
 
  private:
   double draw(const InputSpec& spec);
   std::mt19937_64 rng_;
+  uint64_t beyond_float_range_ = 0;
 };
+
+// The note verify prints (and writes in the JSON report's "notes") when `count` input values
+// were beyond float range; empty when there were none.
+std::string beyond_float_range_note(uint64_t count);
 
 // The value a double input keeps after the hi/lo split (or a float input after rounding).
 double representable(double x, bool is_double);

@@ -72,6 +72,7 @@ std::string to_json(const VerifyReport& r) {
   j["error"] = r.input_error.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.input_error);
   j["inputs"] = r.inputs;
   j["notes"] = r.notes;
+  j["inputs_beyond_float_range"] = r.inputs_beyond_float_range;
   j["runs"] = nlohmann::json::array();
   for (const BackendRun& run : r.runs) {
     nlohmann::json jr;

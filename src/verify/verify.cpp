@@ -52,6 +52,7 @@ void run_compute_stage(const std::string& native_glsl, const Result& lowered, co
   }
   harness.generate(options.seed);
   report->notes = harness.notes();
+  report->inputs_beyond_float_range = harness.inputs_beyond_float_range();
   report->inputs = harness.describe_inputs();
   report->dispatches = harness.dispatches();
 
@@ -97,6 +98,7 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
   }
   harness.generate(options.seed);
   report->notes = harness.notes();
+  report->inputs_beyond_float_range = harness.inputs_beyond_float_range();
   if (t == Target::Es300)
     report->notes.push_back("es300 text runs as #version 310 es (the capture's storage buffers need 3.10; the "
                             "shader text is otherwise unchanged)");

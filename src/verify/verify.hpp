@@ -43,6 +43,7 @@ struct VerifyReport {
   uint64_t samples = 0, seed = 0, dispatches = 0;
   std::string input_error;  // non-empty: bad input (shader, spec, options): nothing ran
   std::vector<std::string> notes;  // inputs left at zero, outputs not compared, skipped backends
+  uint64_t inputs_beyond_float_range = 0;  // finite input values fed to both shaders as +-Inf
   std::vector<std::string> inputs; // "u (uniform double)", "x[] (buffer In, dvec2)", ...
   std::vector<BackendRun> runs;
   std::string lowered_glsl;

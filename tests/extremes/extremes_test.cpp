@@ -47,9 +47,13 @@ enum class Expect {
               // (vertex/fragment: float precision, 2^-126 absolute)
   TinyOperand,  // an operand below ~2^-114: compute matches (2^-44); vertex/fragment flush the
                 // split's low half, so the product keeps only ~12 bits (2^-11 relative)
+  ZeroWithSignOfX,  // GLSL's rule over Mesa's: a zero with the sign of the input x (modf of
+                    // +-0: "the same sign as x"; native fp64 gives +0 for -0)
 };
 
-enum class Sabotage { None, BaselineRules, AddGuard };
+// BaselineRules: the rules of commit 16ff2c0 (before special values, issue 7);
+// RulesBeforeIssue13: those of commit 86dc5f7 (before the fixes of issue 13).
+enum class Sabotage { None, BaselineRules, RulesBeforeIssue13, AddGuard };
 
 struct Row {
   const char* name;
@@ -59,6 +63,8 @@ struct Row {
   // Which sabotage must turn the row red (where it did not already fail before the fix).
   bool red_with_baseline = false;
   bool red_with_add_guard = false;
+  // Statements before `double r = expr;` (for built-ins with out parameters: frexp, modf).
+  const char* prelude = "";
 };
 
 const std::vector<Row>& rows() {
@@ -115,6 +121,46 @@ const std::vector<Row>& rows() {
        {{kNaN, 1.0}, {1.0, kNaN}, {kNaN, kNaN}, {1.0, 1.0}}},
       {"compare_self_nan", "(x != x ? 1.0lf : 0.0lf) + (x == x ? 2.0lf : 0.0lf)", {{kNaN, 0}, {1.0, 0}}},
       {"isnan_isinf", "(isnan(x) ? 1.0lf : 0.0lf) + (isinf(x) ? 2.0lf : 0.0lf)", {{kNaN, 0}, {kInf, 0}, {-kInf, 0}, {1.0, 0}}},
+      // Issue 13. ldexp beyond float range: (Inf, 0), never (Inf, -Inf) (whose words add to NaN,
+      // and which compares unequal to an infinity); exponents beyond +-254 are not clamped.
+      {"ldexp_overflow_is_inf", "ldexp(x, int(y)) == ldexp(sign(x), int(y)) ? 1.0lf : 0.0lf",
+       {{1.0 - 0x1p-30, 1100}, {-1.0 + 0x1p-30, 1100}, {0x1.8p0 - 0x1p-40, 1030}}},
+      {"ldexp_overflow", "ldexp(x, int(y))", {{1.0 - 0x1p-30, 1100}, {-1.0 + 0x1p-30, 1100}, {0x1p-100, 250}, {3e38, 1}}},
+      {"ldexp_underflow", "ldexp(x, int(y))",
+       {{0x1p120, -280}, {-0x1p120, -280}, {0x1.8p-100, -40}, {0x1.8p0 + 0x1p-30, -135}, {1.0, -160}}, Expect::Tiny},
+      {"ldexp_from_subnormal", "ldexp(x, int(y))", {{0x1p-140, 270}, {-0x1.8p-140, 100}}},
+      // round/roundEven/trunc/ceil of x in (-1, 0) and modf's fraction of a negative integer are -0.
+      {"round_signed_zero", "round(x)", {{-0.3, 0}, {-0.0, 0}, {0.3, 0}, {-0.7, 0}, {-1e-30, 0}, {-2.75, 0}}},
+      {"round_even_signed_zero", "roundEven(x)", {{-0.3, 0}, {-0.5, 0}, {-0.0, 0}, {0.5, 0}, {-1.5, 0}, {-1e-30, 0}}},
+      {"trunc_signed_zero", "trunc(x) + ceil(y)", {{-0.3, -0.7}, {-0.0, -0.0}, {0.3, -0.2}, {-1e-30, -0.5}, {-2.5, 0.5}}},
+      {.name = "modf_fraction_signed_zero", .expr = "f",
+       .inputs = {{-3.0, 0}, {3.0, 0}, {0.0, 0}, {-2.5, 0}, {-0.25, 0}, {-0x1p30 - 0x1p-10, 0}, {-0x1p40, 0}},
+       .prelude = "double ip; double f = modf(x, ip);"},
+      {.name = "modf_whole_signed_zero", .expr = "ip",
+       .inputs = {{-3.0, 0}, {-0.25, 0}, {0.25, 0}, {-0x1p30 - 0x1p-10, 0}},
+       .prelude = "double ip; double f = modf(x, ip);"},
+      {.name = "modf_of_zero", .expr = "f * 2.0lf + ip", .inputs = {{-0.0, 0}, {0.0, 0}}, .expect = Expect::ZeroWithSignOfX,
+       .prelude = "double ip; double f = modf(x, ip);"},
+      // frexp: mantissa in [0.5, 1) and the exponent for tiny values; 0, -0, Inf, NaN as native.
+      {.name = "frexp_mantissa", .expr = "m",
+       .inputs = {{0x1p-120 - 0x1p-147, 0}, {-0x1.8p-126, 0}, {0.0, 0}, {-0.0, 0}, {3.0, 0}, {-0x1p-126, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_exponent", .expr = "double(e)",
+       .inputs = {{0x1p-120 - 0x1p-147, 0}, {-0x1.8p-126, 0}, {0.0, 0}, {-0.0, 0}, {3.0, 0}, {-0x1p-126, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_subnormal_mantissa", .expr = "m", .inputs = {{1e-40, 0}, {-3e-42, 0}, {0x1p-149, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_subnormal_exponent", .expr = "double(e)", .inputs = {{1e-40, 0}, {-3e-42, 0}, {0x1p-149, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_special_mantissa", .expr = "m", .inputs = {{kInf, 0}, {-kInf, 0}, {kNaN, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      {.name = "frexp_special_exponent", .expr = "double(e)", .inputs = {{kInf, 0}, {-kInf, 0}, {kNaN, 0}},
+       .prelude = "int e; double m = frexp(x, e);"},
+      // length/normalize/distance across float's exponent range: the squares would leave it.
+      {"length_large", "length(dvec3(x, y, x))", {{3e19, 4e19}, {-1e30, 2e30}, {1.5e38, 1e38}, {2e38, 3e38}, {1.0, 2.0}}},
+      {"length_small", "length(dvec2(x, y))", {{3e-25, -4e-25}, {1e-30, 2e-30}, {1e-20, 1e-19}, {-1e-19, 0.0}, {0.0, 0.0}}},
+      {"normalize_extremes", "normalize(dvec3(x, y, x)).y", {{3e19, -4e19}, {1e30, 2e30}, {3e-25, 4e-25}, {1e-35, -2e-35}, {1.0, 2.0}}},
+      {"distance_extremes", "distance(dvec2(x, y), dvec2(y, x))", {{3e19, -4e19}, {1e-30, 3e-30}, {1e37, -1e37}}},
   };
   return r;
 }
@@ -161,6 +207,7 @@ std::string shader(const Row& row, bool compute, GraphicsStage stage) {
   }
   s += "void main() {\n  vec4 w = " + in + ";\n";
   s += "  double x = double(w.x) + double(w.y);\n  double y = double(w.z) + double(w.w);\n";
+  s += std::string("  ") + row.prelude + "\n";
   s += "  double r = " + std::string(row.expr) + ";\n";
   s += "  float hi = float(r);\n";
   s += "  " + out + " = vec4(hi, float(r - double(hi)), 0.0, 0.0);\n";
@@ -186,40 +233,49 @@ std::vector<float> packed_inputs(const Row& row) {
 
 // ---- sabotage: the previous rule text ----------------------------------------------------------
 
-const doublet::rules::RuleLibrary& baseline_library() {
-  static const doublet::rules::RuleLibrary lib = [] {
-    std::vector<std::pair<std::string, std::string>> files;
-    for (const auto& e : std::filesystem::directory_iterator(DOUBLET_EXTREMES_BASELINE_DIR)) {
-      std::ifstream f(e.path());
-      std::stringstream ss;
-      ss << f.rdbuf();
-      files.emplace_back(e.path().filename().string(), ss.str());
-    }
-    std::sort(files.begin(), files.end());
-    std::string error;
-    auto parsed = doublet::rules::RuleLibrary::parse(files, &error);
-    if (!parsed) {
-      std::fprintf(stderr, "baseline rules do not parse: %s\n", error.c_str());
-      std::abort();
-    }
-    return std::move(*parsed);
-  }();
-  return lib;
+// The rule library of the .glsl files in `dir` (parsed once per directory).
+const doublet::rules::RuleLibrary& library_in(const std::string& dir) {
+  static std::map<std::string, doublet::rules::RuleLibrary> cache;
+  auto it = cache.find(dir);
+  if (it != cache.end()) return it->second;
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    std::ifstream f(e.path());
+    std::stringstream ss;
+    ss << f.rdbuf();
+    files.emplace_back(e.path().filename().string(), ss.str());
+  }
+  std::sort(files.begin(), files.end());
+  std::string error;
+  auto parsed = doublet::rules::RuleLibrary::parse(files, &error);
+  if (!parsed) {
+    std::fprintf(stderr, "rules in %s do not parse: %s\n", dir.c_str(), error.c_str());
+    std::abort();
+  }
+  return cache.emplace(dir, std::move(*parsed)).first->second;
 }
 
 // Replaces the emitted runtime (from its "// doublet float-float runtime" line to the last rule
-// function) with the baseline rules' emission of the same user-called functions. The shaders
-// here are scalar, so every call is at width 1.
-std::string splice_baseline(const std::string& lowered, bool precise, std::string* error) {
+// function) with `rules`' emission of the same user-called functions, at every width they have
+// (the shader's vectors are dvec2 or dvec3; unused instances are harmless).
+std::string splice_rules(const std::string& lowered, const doublet::rules::RuleLibrary& rules, bool precise,
+                         std::string* error) {
   const size_t begin = lowered.find("// doublet float-float runtime");
   if (begin == std::string::npos) {
     *error = "no runtime in the lowered shader";
     return {};
   }
   // The runtime is a run of paragraphs (blank-line separated) of comments, struct and guard
-  // lines and df_ functions.
+  // lines and df_ functions. Functions that are no rule (the lowering's generated helpers, e.g.
+  // df_make_dvec2_1_1) are kept, after the replacement runtime.
   size_t end = begin;
   const std::regex function(R"(^(\w+) (df_\w+)\()");
+  std::string kept;
+  auto is_rule = [](const std::string& name) {
+    for (int width = 1; width <= 4; ++width)
+      if (doublet::rules::RuleLibrary::builtin().has({name, width})) return true;
+    return false;
+  };
   while (end < lowered.size()) {
     size_t next = lowered.find("\n\n", end);
     if (next == std::string::npos) next = lowered.size();
@@ -230,7 +286,9 @@ std::string splice_baseline(const std::string& lowered, bool precise, std::strin
       std::istringstream in(para);
       for (std::string line; std::getline(in, line);) {
         if (line.rfind("//", 0) == 0) continue;
-        ok = std::regex_search(line, function);
+        std::smatch m;
+        ok = std::regex_search(line, m, function);
+        if (ok && !is_rule(m[2])) kept += para + "\n\n";
         break;
       }
     }
@@ -240,14 +298,15 @@ std::string splice_baseline(const std::string& lowered, bool precise, std::strin
   std::string before = lowered.substr(0, begin), after = lowered.substr(end);
   std::set<std::string> called;
   const std::regex call(R"(\b(df_\w+)\()");
-  for (const std::string* part : {&before, &after})
+  for (const std::string* part : {&before, &kept, &after})
     for (std::sregex_iterator it(part->begin(), part->end(), call), e; it != e; ++it) called.insert((*it)[1]);
   doublet::rules::EmitRequest req;
   for (const auto& name : called)
-    if (baseline_library().has({name, 1})) req.used.push_back({name, 1});
+    for (int width = 1; width <= 4; ++width)
+      if (rules.has({name, width})) req.used.push_back({name, width});
   req.guard = precise ? doublet::rules::GuardStyle::Precise : doublet::rules::GuardStyle::Uniform;
   req.es_version = 320;
-  auto emitted = baseline_library().emit(req);
+  auto emitted = rules.emit(req);
   if (!emitted.ok) {
     *error = emitted.error;
     return {};
@@ -259,7 +318,7 @@ std::string splice_baseline(const std::string& lowered, bool precise, std::strin
       size_t at = text.find(s);
       if (at != std::string::npos) text.erase(at, std::strlen(s));
     }
-  return before + text + "\n" + after;
+  return before + text + "\n" + kept + after;
 }
 
 std::string add_guard(std::string text) {
@@ -286,7 +345,7 @@ Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage) {
     opt.target = c.target;
     opt.file_name = std::string(row.name) + ".glsl";
     // The previous rules predate the whole-shader optimizer's substitutes (rules/opt.glsl).
-    if (sabotage == Sabotage::BaselineRules) opt.optimize = false;
+    if (sabotage == Sabotage::BaselineRules || sabotage == Sabotage::RulesBeforeIssue13) opt.optimize = false;
     auto lowered = doublet::lower(source, opt);
     if (!lowered.ok) {
       for (const auto& d : lowered.diagnostics) o.error += doublet::format_diagnostic(d) + "\n";
@@ -294,7 +353,10 @@ Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage) {
     }
     glsl = lowered.output;
     const bool precise = lowered.manifest.guard.kind == "precise";
-    if (sabotage == Sabotage::BaselineRules) glsl = splice_baseline(glsl, precise, &o.error);
+    if (sabotage == Sabotage::BaselineRules)
+      glsl = splice_rules(glsl, library_in(DOUBLET_EXTREMES_BASELINE_DIR), precise, &o.error);
+    if (sabotage == Sabotage::RulesBeforeIssue13)
+      glsl = splice_rules(glsl, library_in(DOUBLET_EXTREMES_BEFORE_ISSUE13_DIR), precise, &o.error);
     if (sabotage == Sabotage::AddGuard) glsl = add_guard(glsl);
     if (!o.error.empty()) return o;
   }
@@ -341,7 +403,7 @@ std::string describe(float hi, float lo) {
 }
 
 // Empty when the lowered result `got` is what `want` (native) implies for this row.
-std::string judge(Expect expect, bool compute, std::pair<float, float> want, std::pair<float, float> got) {
+std::string judge(Expect expect, bool compute, double x, std::pair<float, float> want, std::pair<float, float> got) {
   const float wh = want.first, gh = got.first;
   // The value: hi alone when it is not finite (r - Inf is NaN), else hi + lo.
   auto value = [](std::pair<float, float> p) {
@@ -349,6 +411,8 @@ std::string judge(Expect expect, bool compute, std::pair<float, float> want, std
   };
   const double w = value(want), g = value(got);
   const std::string seen = "native " + describe(want.first, want.second) + ", lowered " + describe(got.first, got.second);
+  if (expect == Expect::ZeroWithSignOfX)
+    return g == 0 && std::signbit(gh) == std::signbit(x) ? "" : "expected a zero with the sign of x: " + seen;
   if (std::isnan(wh)) return std::isnan(gh) ? "" : "expected NaN: " + seen;
   if (std::isinf(wh)) return gh == wh ? "" : "expected the same infinity: " + seen;
   if (expect == Expect::Saturates) {
@@ -379,7 +443,7 @@ std::string check(const Row& row, const Config& c, Sabotage sabotage) {
   if (!lowered.error.empty()) return "lowered run failed: " + lowered.error;
   std::string failures;
   for (size_t i = 0; i < row.inputs.size(); ++i) {
-    std::string f = judge(row.expect, c.compute, native.results[i], lowered.results[i]);
+    std::string f = judge(row.expect, c.compute, row.inputs[i].first, native.results[i], lowered.results[i]);
     if (!f.empty()) {
       char in[96];
       std::snprintf(in, sizeof in, "x=%a y=%a: ", row.inputs[i].first, row.inputs[i].second);
@@ -423,6 +487,31 @@ TEST(ExtremesSabotage, PreviousRulesTurnTheFixedRowsRed) {
   }
   std::printf("previous rules: %d of %d flagged rows red\n", red, flagged);
   EXPECT_EQ(still_green, "") << "rows that should fail with the previous rules but pass";
+}
+
+// The rows issue 13 fixed fail with the rules before it (tests/extremes/rules_before_issue13/).
+TEST(ExtremesSabotage, RulesBeforeIssue13TurnItsRowsRed) {
+  const std::set<std::string> fixed = {
+      "ldexp_overflow_is_inf", "ldexp_underflow", "ldexp_from_subnormal", "round_signed_zero",
+      "round_even_signed_zero", "modf_fraction_signed_zero", "modf_of_zero", "frexp_mantissa",
+      "frexp_subnormal_mantissa", "frexp_subnormal_exponent", "frexp_special_exponent",
+      "length_large", "length_small", "normalize_extremes", "distance_extremes"};
+  int red = 0;
+  std::string still_green;
+  for (const auto& row : rows()) {
+    if (!fixed.count(row.name)) continue;
+    std::string failures;
+    for (const auto& c : configs()) failures += check(row, c, Sabotage::RulesBeforeIssue13);
+    if (failures.find("lowered run failed") != std::string::npos) ADD_FAILURE() << failures;
+    if (!failures.empty()) {
+      ++red;
+      std::printf("%s with the rules before issue 13: %s", row.name, failures.substr(0, failures.find('\n') + 1).c_str());
+    } else {
+      still_green += std::string(row.name) + " ";
+    }
+  }
+  std::printf("rules before issue 13: %d of %zu rows red\n", red, fixed.size());
+  EXPECT_EQ(still_green, "") << "rows that should fail with the rules before issue 13 but pass";
 }
 
 // Adding the uniform guard's zero (x + 0) instead of subtracting it loses the sign of -0.
@@ -487,6 +576,20 @@ TEST(ExtremesHostSplit, SplitCheckedReportsOutOfRange) {
   // Just below FLT_MAX + half an ulp still rounds to FLT_MAX (finite); the join is the value.
   EXPECT_EQ(doublet::split_checked(static_cast<double>(FLT_MAX) + 0x1p100, p), doublet::SplitStatus::Exact);
   EXPECT_EQ(p.hi, FLT_MAX);
+}
+
+// join() keeps the sign of a zero: (-0, +0) is -0 (verify joins every lowered output with it).
+TEST(ExtremesHostSplit, JoinKeepsTheSignOfZero) {
+  EXPECT_TRUE(std::signbit(doublet::join(-0.0f, 0.0f)));
+  EXPECT_TRUE(std::signbit(doublet::join(-0.0f, -0.0f)));
+  EXPECT_FALSE(std::signbit(doublet::join(0.0f, -0.0f)));
+  EXPECT_EQ(doublet::join(1.0f, -0x1p-30f), 1.0 - 0x1p-30);
+  EXPECT_TRUE(std::signbit(doublet::join(doublet::split(-0.0))));
+  const float hi[] = {-0.0f, 2.0f}, lo[] = {0.0f, 0x1p-25f};
+  double x[2];
+  doublet::join(hi, lo, x);
+  EXPECT_TRUE(std::signbit(x[0]));
+  EXPECT_EQ(x[1], 2.0 + 0x1p-25);
 }
 
 }  // namespace

@@ -244,7 +244,7 @@ void for_each_rule_source_line(F&& f) {
 std::map<std::string, std::set<std::string>> safe_temporaries() {
   std::map<std::string, std::set<std::string>> safe;
   const std::regex function(R"(^\S+ (\w+)\(.*\) \{$)");
-  const std::regex safe_decl(R"(\$PRECISE \$F (\w+) = \$SAFE\()");
+  const std::regex safe_decl(R"(\$PRECISE (?:\$F|float|vec[234]) (\w+) = \$SAFE\()");
   std::string current;
   for_each_rule_source_line([&](const std::string&, const std::string& line) {
     std::smatch m;

@@ -106,5 +106,50 @@ TEST(VerifyInputs, UnknownRangeNameIsAnInputError) {
   EXPECT_TRUE(r.runs.empty());
 }
 
+// A finite input beyond float range reaches both shaders as +-Inf: verify says so in a note and
+// counts the values in the report (JSON "inputs_beyond_float_range").
+TEST(VerifyInputs, ValuesBeyondFloatRangeAreNotedAndCounted) {
+  VerifyOptions o;
+  o.lower.stage = Stage::Compute;
+  o.lower.target = Target::Es310;
+  o.lower.file_name = "beyond.comp";
+  o.samples = 4;
+  o.backends = {runner::Backend::Vulkan};
+  ASSERT_EQ(parse_spec(R"({"inputs": {"x": {"values": [1e39, 2.5, "-1e300", "inf"]}}})", &o.spec), "");
+  const char* shader = "#version 450\nlayout(local_size_x = 1) in;\n"
+                       "layout(std430, binding = 0) readonly buffer In { double x; };\n"
+                       "layout(std430, binding = 1) writeonly buffer Out { double r; };\n"
+                       "void main() { r = x * 2.0lf; }\n";
+  const VerifyReport r = verify(shader, o);
+  ASSERT_EQ(r.input_error, "");
+  EXPECT_EQ(r.inputs_beyond_float_range, 2u);  // 1e39 and -1e300; "inf" was asked for
+  std::string notes;
+  for (const std::string& n : r.notes) notes += n + "\n";
+  EXPECT_NE(notes.find("2 input value(s) beyond float range"), std::string::npos) << notes;
+  EXPECT_NE(to_json(r).find("\"inputs_beyond_float_range\": 2"), std::string::npos);
+}
+
+// A lowered result of -0 is (-0, +0) as words; joined, it must stay -0 (not -0 + +0 = +0), or
+// every signed zero is a false class mismatch.
+TEST(VerifyOutputs, NegativeZeroResultsAreNotClassMismatches) {
+  VerifyOptions o;
+  o.lower.stage = Stage::Compute;
+  o.lower.target = Target::Es310;
+  o.lower.file_name = "negzero.comp";
+  o.samples = 4;
+  ASSERT_EQ(parse_spec(R"({"inputs": {"x": {"values": [2.5, "-0", 3.0, "-1e-30"]}, "y": {"values": ["-0"]}}})", &o.spec), "");
+  const char* shader = "#version 450\nlayout(local_size_x = 1) in;\n"
+                       "layout(std430, binding = 0) readonly buffer In { double x; double y; };\n"
+                       "layout(std430, binding = 1) writeonly buffer Out { double r; };\n"
+                       "void main() { r = x * y; }\n";
+  const VerifyReport r = verify(shader, o);
+  ASSERT_EQ(r.input_error, "");
+  ASSERT_EQ(r.runs.size(), 2u);
+  for (const BackendRun& run : r.runs) {
+    ASSERT_EQ(run.error, "");
+    for (const OutputStats& out : run.outputs) EXPECT_EQ(out.class_mismatches, 0u) << format_table(r);
+  }
+}
+
 }  // namespace
 }  // namespace doublet::verify

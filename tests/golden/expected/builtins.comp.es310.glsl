@@ -3,7 +3,7 @@ precision highp float;
 precision highp int;
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
 
-// doublet float-float runtime: 89 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 95 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -182,11 +182,27 @@ df_double df_fract(df_double a) {
   return s;
 }
 
+// df_next_integer: f + 1 for an integer-valued f, with the sign of zero native round gives:
+// f = -1 (x in [-1, 0) rounded up) gives -0. Computed as -((-f) - 1): negation is exact and
+// (-f) - 1 is the mirror image of f + 1, whose zero is +0 (IEEE 754-2008 section 6.3).
+// Algorithm: df_neg, DWPlusFP (JMP Algorithm 4), df_neg
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2; IEEE 754-2008 section 6.3
+// Bound: exact
+// Flops: 15
+// Range: exact for the integers df_floor returns (f + 1 is a double-word integer).
+df_double df_next_integer(df_double f) {
+  df_double n = df_neg(f);
+  df_double m = df_add_f(n, float(-1.0));
+  df_double r = df_neg(m);
+  return r;
+}
+
 // df_round: nearest integer, halves away from zero (GLSL lets the implementation choose).
-// Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
+// A result of zero has the sign of x (round(-0.3) = -0), as native fp64 gives.
+// Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 38
+// Flops: 42
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 df_double df_round(df_double a) {
   df_double f = df_floor(a);
@@ -194,17 +210,18 @@ df_double df_round(df_double a) {
   bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
   bool tie = d.hi == 0.5 && d.lo == 0.0;
   if (above || (tie && a.hi >= 0.0)) {
-    df_double u = df_add_f(f, 1.0);
+    df_double u = df_next_integer(f);
     return u;
   }
   return f;
 }
 
-// df_round_even: nearest integer, halves to the even neighbour (roundEven).
-// Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
+// df_round_even: nearest integer, halves to the even neighbour (roundEven). A result of zero
+// has the sign of x (roundEven(-0.5) = -0), as native fp64 gives.
+// Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 44
+// Flops: 48
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 df_double df_round_even(df_double a) {
@@ -220,7 +237,7 @@ df_double df_round_even(df_double a) {
   bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
   bool tie = d.hi == 0.5 && d.lo == 0.0;
   if (above || (tie && parity == 0.5)) {
-    df_double u = df_add_f(f, 1.0);
+    df_double u = df_next_integer(f);
     return u;
   }
   return f;
@@ -370,14 +387,35 @@ df_double df_mod(df_double a, df_double b) {
   return r;
 }
 
-// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign.
-// Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
+// df_modf_fraction: x - i for i = trunc(x), with x's sign (GLSL: "the same sign as x"): for
+// negative x it is -(i - x), the mirror image of x - i, so a zero fraction is -0 (modf(-3) = -0);
+// for +-0 it is x itself; +-Inf gives NaN (Inf - Inf), as native fp64 does.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6) of x and -i, or of i and -x then df_neg
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1; GLSL 4.60 (2019) section 8.3 (modf); IEEE 754-2008 section 6.3
+// Bound: 3u^2
+// Flops: 25
+df_double df_modf_fraction(df_double a, df_double i) {
+  if (a.hi < 0.0) {
+    df_double d = df_sub(i, a);
+    df_double n = df_neg(d);
+    return n;
+  }
+  if (a.hi == 0.0) {
+    return df_double(a.hi, float(0.0));
+  }
+  df_double r = df_sub(a, i);
+  return r;
+}
+
+// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign
+// (modf(-3) = (-0, -3), modf(-0) = (-0, -0); native fp64 on Mesa gives +0 for both parts of -0).
+// Algorithm: df_trunc, then df_modf_fraction (AccurateDWPlusDW)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 33
+// Flops: 35
 df_double df_modf(df_double a, out df_double i) {
   i = df_trunc(a);
-  df_double r = df_sub(a, i);
+  df_double r = df_modf_fraction(a, i);
   return r;
 }
 
@@ -491,57 +529,75 @@ df_double df_fma(df_double a, df_double b, df_double c) {
   return r;
 }
 
-// df_exp2i: the bit patterns of two floats whose product is 2^e, -252 <= e <= 254 (exact factors
-// built from exponent bits; intBitsToFloat needs ES 3.00). Beyond that range the caller's product over/underflows anyway.
+// df_exp2i: the bit patterns of three floats whose product is 2^e, -300 <= e <= 300 (each factor
+// is 2^k with |k| <= 100, a normal float; intBitsToFloat needs ES 3.00). 300 is beyond every
+// float-float result: 2^-149 * 2^300 overflows and 2^128 * 2^-300 underflows to 0, so clamping
+// e there changes nothing.
 // Algorithm: IEEE 754 binary32 exponent field
 // Source: IEEE 754-2008 section 3.4 (binary interchange format encodings)
 // Bound: exact
 // Flops: 0 (integer operations)
-ivec2 df_exp2i(int e) {
-  int c = clamp(e, -252, 254);
-  int e1 = c / 2;
-  int e2 = c - e1;
+ivec3 df_exp2i(int e) {
+  int c = clamp(e, -300, 300);
+  int e1 = c / 3;
+  int e2 = (c - e1) / 2;
+  int e3 = c - e1 - e2;
   int b1 = (e1 + 127) << 23;
   int b2 = (e2 + 127) << 23;
-  return ivec2(b1, b2);
+  int b3 = (e3 + 127) << 23;
+  return ivec3(b1, b2, b3);
 }
 
-// df_ldexp: x * 2^e, both words scaled by powers of two (exact unless over/underflow).
-// Algorithm: scaling of hi and lo by 2^e in two exact steps
+// df_ldexp: x * 2^e, both words scaled by powers of two in three exact steps, then df_finish:
+// a result beyond float range is (+-Inf, 0) (lo alone would overflow to an infinity of the
+// other sign, and Inf + -Inf is NaN), one below it (+-0, 0) with x's sign.
+// Algorithm: scaling of hi and lo by 2^e in three exact steps, then df_finish
 // Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 4
+// Flops: 7 (plus 2 comparisons)
+// Range: exact while the result is a normal float-float; into float's subnormal range each word
+// is rounded (at most twice), within one subnormal ulp (2^-149) absolute.
 df_double df_ldexp(df_double a, int e) {
-  ivec2 b = df_exp2i(e);
+  ivec3 b = df_exp2i(e);
   float s1 = ((intBitsToFloat(b.x)) - df_guard);
   float s2 = ((intBitsToFloat(b.y)) - df_guard);
+  float s3 = ((intBitsToFloat(b.z)) - df_guard);
   float h1 = ((a.hi * s1) - df_guard);
-  float h = ((h1 * s2) - df_guard);
+  float h2 = ((h1 * s2) - df_guard);
+  float h = ((h2 * s3) - df_guard);
   float l1 = ((a.lo * s1) - df_guard);
-  float l = ((l1 * s2) - df_guard);
-  return df_double(h, l);
+  float l2 = ((l1 * s2) - df_guard);
+  float l = ((l2 * s3) - df_guard);
+  df_double z = df_double(h, l);
+  df_double r = df_finish(z, h);
+  return r;
 }
 
-// df_frexp: x = m * 2^e with 0.5 <= |m| < 1 (m = 0, e = 0 for x = 0). The exponent is hi's;
-// when hi = +-2^k and lo has the opposite sign, |x| < 2^k, so e is one less.
-// Algorithm: exponent field of hi, corrected by the sign of lo, then df_ldexp
+// df_frexp: x = m * 2^e with 0.5 <= |m| < 1. The exponent is hi's; when hi = +-2^k and lo has
+// the opposite sign, |x| < 2^k, so e is one less. A subnormal hi is first scaled by 2^64 (exact)
+// to read its exponent. +-0 gives (+-0, e = 0); +-Inf and NaN give m = x and e = 1025, the
+// values native fp64 gives on Mesa (GLSL leaves them undefined).
+// Algorithm: exponent field of hi (of hi * 2^64 when subnormal), corrected by the sign of lo, then df_ldexp
 // Source: IEEE 754-2008 section 5.3.3 (logB); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 4
-// Range: hi must be a normal float (|x| >= 2^-126); Inf and NaN give undefined results, as in GLSL.
+// Flops: 9 (plus 4 comparisons)
 df_double df_frexp(df_double a, out int e) {
-  if (a.hi == 0.0) {
-    e = 0;
-    return df_double(0.0, 0.0);
+  float ah = (abs(a.hi));
+  if (!(ah > 0.0 && ah <= 3.40282347e38)) {
+    e = ah == 0.0 ? 0 : 1025;
+    return df_double(a.hi, 0.0);
   }
-  int bits = floatBitsToInt(a.hi);
-  int k = ((bits >> 23) & 255) - 126;
+  bool subnormal = ah < 1.17549435e-38;
+  float scale = (subnormal ? 1.8446744073709552e19 : 1.0);
+  float h = (a.hi * scale);
+  int bits = floatBitsToInt(h);
+  int k = ((bits >> 23) & 255) - (subnormal ? 190 : 126);
   int mantissa = bits & 8388607;
   bool below = mantissa == 0 && ((a.hi > 0.0 && a.lo < 0.0) || (a.hi < 0.0 && a.lo > 0.0));
   int exponent = below ? k - 1 : k;
-  int scale = 0 - exponent;
+  int undo = 0 - exponent;
   e = exponent;
-  df_double m = df_ldexp(a, scale);
+  df_double m = df_ldexp(a, undo);
   return m;
 }
 
@@ -600,6 +656,51 @@ df_double df_inversesqrt(df_double a) {
   df_double s = df_sqrt(a);
   df_double r = df_div(df_double(float(1.0), float(0.0)), s);
   return r;
+}
+
+// df_norm_scale: (s, 1/s), powers of two that bring the largest component of hi into
+// [2^-36, 2^60] (as hypot does): s = 2^-90 when some |hi_i| > 2^60, 2^90 when every |hi_i| < 2^-36,
+// else 1. Then the squares of the scaled vector neither overflow (4 * 2^120 < 2^128) nor lose
+// their error terms to underflow (the largest square is >= 2^-72, its low words >= ~2^-120),
+// and scaling is exact. Values in [2^-36, 2^60] take s = 1: bit for bit the unscaled result.
+// +-Inf scales to +-Inf; NaN fails both tests and is not scaled.
+// Algorithm: two threshold tests on abs(hi), selection of power-of-two constants
+// Source: IEEE 754-2008 section 9.2 (hypot: scaling to avoid spurious overflow and underflow); Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, section 5 (scaled norms)
+// Bound: exact
+// Flops: 4 (W = 4: one abs per component; plus 2 vector comparisons and 4 selects)
+vec2 df_norm_scale(vec3 h) {
+  vec3 ah = (abs(h));
+  bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
+  bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
+  float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
+  float s = (small ? 1.237940039285380274899124224e27 : down);
+  float up = (big ? 1.237940039285380274899124224e27 : 1.0);
+  float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  return vec2(s, back);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_dvec3 df_scale_pow2(df_dvec3 a, float s) {
+  vec3 h = (a.hi * s);
+  vec3 l = (a.lo * s);
+  return df_dvec3(h, l);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_double df_scale_pow2(df_double a, float s) {
+  float h = (a.hi * s);
+  float l = (a.lo * s);
+  return df_double(h, l);
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
@@ -692,18 +793,26 @@ df_double df_dot(df_dvec3 a, df_dvec3 b) {
   return r;
 }
 
-// df_length: sqrt(dot(a, a)), W = 2..4. No cancellation in dot(a, a), so its error is
+// df_length: sqrt(dot(a, a)), W = 2..4, on a scaled by df_norm_scale and scaled back, so any
+// vector whose length is within float range gets it (the squares alone would overflow above
+// |a| ~ 1.8e19 and underflow below ~1e-19). No cancellation in dot(a, a), so its error is
 // relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
-// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order).
-// Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
+// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order). A length beyond float range is
+// (+Inf, 0) (df_finish); one below it tapers into float's subnormals as the scaled-back words
+// round.
+// Algorithm: df_norm_scale, df_dot(a, a), SQRTDWtoDW (LLMPR Algorithm 8), scaled back, df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 9.625u^2
-// Flops: 210 (W = 4; 110 for W = 2, 160 for W = 3)
-// Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
+// Flops: 225 (W = 4; 119 for W = 2, 172 for W = 3)
+// Range: every vector (scaled); exact scaling, so the bound holds for lengths in [2^-100, FLT_MAX].
 df_double df_length(df_dvec3 a) {
-  df_double d = df_dot(a, a);
-  df_double z = df_sqrt(d);
-  return z;
+  vec2 k = (df_norm_scale(a.hi));
+  df_dvec3 b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  df_double z = df_scale_pow2(n, k.y);
+  df_double r = df_finish(z, z.hi);
+  return r;
 }
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
@@ -770,7 +879,7 @@ df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
 // Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_length
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 12.625u^2
-// Flops: 233 (W = 4)
+// Flops: 248 (W = 4)
 df_double df_distance(df_dvec3 a, df_dvec3 b) {
   df_dvec3 d = df_sub(a, b);
   df_double r = df_length(d);
@@ -831,15 +940,19 @@ df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
   return q;
 }
 
-// df_normalize: a / length(a) per component (width 1: sign(a), exact).
-// Algorithm: df_length, then DWDivDW2 (JMP Algorithm 17) per component
+// df_normalize: a / length(a) per component (width 1: sign(a), exact), computed on a scaled by
+// df_norm_scale (a / |a| does not change when a is scaled by a power of two), so every vector
+// whose components are within float range normalizes, however long or short.
+// Algorithm: df_norm_scale, df_dot, SQRTDWtoDW (LLMPR Algorithm 8), then DWDivDW2 (JMP Algorithm 17) per component
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 24.625u^2
-// Flops: 366 (W = 4)
-// Range: |a|^2 must not overflow float, as for df_length.
+// Flops: 378 (W = 4)
 df_dvec3 df_normalize(df_dvec3 a) {
-  df_double n = df_length(a);
-  df_dvec3 r = df_div(a, df_dvec3(vec3(n.hi), vec3(n.lo)));
+  vec2 k = (df_norm_scale(a.hi));
+  df_dvec3 b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  df_dvec3 r = df_div(b, df_dvec3(vec3(n.hi), vec3(n.lo)));
   return r;
 }
 
@@ -945,14 +1058,30 @@ df_dvec3 df_trunc(df_dvec3 a) {
   return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
 }
 
-// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign.
-// Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
+// df_modf_fraction: x - i for i = trunc(x), with x's sign (GLSL: "the same sign as x"): for
+// negative x it is -(i - x), the mirror image of x - i, so a zero fraction is -0 (modf(-3) = -0);
+// for +-0 it is x itself; +-Inf gives NaN (Inf - Inf), as native fp64 does.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6) of x and -i, or of i and -x then df_neg
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1; GLSL 4.60 (2019) section 8.3 (modf); IEEE 754-2008 section 6.3
+// Bound: 3u^2
+// Flops: 25
+// (width 3: the width-1 df_modf_fraction applied to each component)
+df_dvec3 df_modf_fraction(df_dvec3 a, df_dvec3 i) {
+  df_double r0 = df_modf_fraction(df_double(a.hi.x, a.lo.x), df_double(i.hi.x, i.lo.x));
+  df_double r1 = df_modf_fraction(df_double(a.hi.y, a.lo.y), df_double(i.hi.y, i.lo.y));
+  df_double r2 = df_modf_fraction(df_double(a.hi.z, a.lo.z), df_double(i.hi.z, i.lo.z));
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign
+// (modf(-3) = (-0, -3), modf(-0) = (-0, -0); native fp64 on Mesa gives +0 for both parts of -0).
+// Algorithm: df_trunc, then df_modf_fraction (AccurateDWPlusDW)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 33
+// Flops: 35
 df_dvec3 df_modf(df_dvec3 a, out df_dvec3 i) {
   i = df_trunc(a);
-  df_dvec3 r = df_sub(a, i);
+  df_dvec3 r = df_modf_fraction(a, i);
   return r;
 }
 
@@ -982,11 +1111,15 @@ df_dvec3 df_step(df_dvec3 edge, df_dvec3 x) {
   return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
 }
 
-// df_ldexp: x * 2^e, both words scaled by powers of two (exact unless over/underflow).
-// Algorithm: scaling of hi and lo by 2^e in two exact steps
+// df_ldexp: x * 2^e, both words scaled by powers of two in three exact steps, then df_finish:
+// a result beyond float range is (+-Inf, 0) (lo alone would overflow to an infinity of the
+// other sign, and Inf + -Inf is NaN), one below it (+-0, 0) with x's sign.
+// Algorithm: scaling of hi and lo by 2^e in three exact steps, then df_finish
 // Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 4
+// Flops: 7 (plus 2 comparisons)
+// Range: exact while the result is a normal float-float; into float's subnormal range each word
+// is rounded (at most twice), within one subnormal ulp (2^-149) absolute.
 // (width 3: the width-1 df_ldexp applied to each component)
 df_dvec3 df_ldexp(df_dvec3 a, ivec3 e) {
   df_double r0 = df_ldexp(df_double(a.hi.x, a.lo.x), e.x);

@@ -2,7 +2,7 @@
 precision highp float;
 precision highp int;
 
-// doublet float-float runtime: 72 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 77 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -152,6 +152,39 @@ df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
   return r;
 }
 
+// df_norm_scale: (s, 1/s), powers of two that bring the largest component of hi into
+// [2^-36, 2^60] (as hypot does): s = 2^-90 when some |hi_i| > 2^60, 2^90 when every |hi_i| < 2^-36,
+// else 1. Then the squares of the scaled vector neither overflow (4 * 2^120 < 2^128) nor lose
+// their error terms to underflow (the largest square is >= 2^-72, its low words >= ~2^-120),
+// and scaling is exact. Values in [2^-36, 2^60] take s = 1: bit for bit the unscaled result.
+// +-Inf scales to +-Inf; NaN fails both tests and is not scaled.
+// Algorithm: two threshold tests on abs(hi), selection of power-of-two constants
+// Source: IEEE 754-2008 section 9.2 (hypot: scaling to avoid spurious overflow and underflow); Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, section 5 (scaled norms)
+// Bound: exact
+// Flops: 4 (W = 4: one abs per component; plus 2 vector comparisons and 4 selects)
+vec2 df_norm_scale(vec3 h) {
+  vec3 ah = (abs(h));
+  bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
+  bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
+  float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
+  float s = (small ? 1.237940039285380274899124224e27 : down);
+  float up = (big ? 1.237940039285380274899124224e27 : 1.0);
+  float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  return vec2(s, back);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_dvec3 df_scale_pow2(df_dvec3 a, float s) {
+  vec3 h = (a.hi * s);
+  vec3 l = (a.lo * s);
+  return df_dvec3(h, l);
+}
+
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
 // Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
@@ -252,20 +285,6 @@ df_double df_sqrt(df_double a) {
   return r;
 }
 
-// df_length: sqrt(dot(a, a)), W = 2..4. No cancellation in dot(a, a), so its error is
-// relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
-// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order).
-// Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
-// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
-// Bound: 9.625u^2
-// Flops: 210 (W = 4; 110 for W = 2, 160 for W = 3)
-// Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
-df_double df_length(df_dvec3 a) {
-  df_double d = df_dot(a, a);
-  df_double z = df_sqrt(d);
-  return z;
-}
-
 // df_mul_f: a * b with b a plain float.
 // Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
@@ -308,15 +327,19 @@ df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
   return q;
 }
 
-// df_normalize: a / length(a) per component (width 1: sign(a), exact).
-// Algorithm: df_length, then DWDivDW2 (JMP Algorithm 17) per component
+// df_normalize: a / length(a) per component (width 1: sign(a), exact), computed on a scaled by
+// df_norm_scale (a / |a| does not change when a is scaled by a power of two), so every vector
+// whose components are within float range normalizes, however long or short.
+// Algorithm: df_norm_scale, df_dot, SQRTDWtoDW (LLMPR Algorithm 8), then DWDivDW2 (JMP Algorithm 17) per component
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 24.625u^2
-// Flops: 366 (W = 4)
-// Range: |a|^2 must not overflow float, as for df_length.
+// Flops: 378 (W = 4)
 df_dvec3 df_normalize(df_dvec3 a) {
-  df_double n = df_length(a);
-  df_dvec3 r = df_div(a, df_dvec3(vec3(n.hi), vec3(n.lo)));
+  vec2 k = (df_norm_scale(a.hi));
+  df_dvec3 b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  df_dvec3 r = df_div(b, df_dvec3(vec3(n.hi), vec3(n.lo)));
   return r;
 }
 
@@ -582,22 +605,59 @@ df_double df_trunc(df_double a) {
   return f;
 }
 
-// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign.
-// Algorithm: df_trunc, then AccurateDWPlusDW of x and -trunc(x)
-// Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// df_modf_fraction: x - i for i = trunc(x), with x's sign (GLSL: "the same sign as x"): for
+// negative x it is -(i - x), the mirror image of x - i, so a zero fraction is -0 (modf(-3) = -0);
+// for +-0 it is x itself; +-Inf gives NaN (Inf - Inf), as native fp64 does.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6) of x and -i, or of i and -x then df_neg
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1; GLSL 4.60 (2019) section 8.3 (modf); IEEE 754-2008 section 6.3
 // Bound: 3u^2
-// Flops: 33
-df_double df_modf(df_double a, out df_double i) {
-  i = df_trunc(a);
+// Flops: 25
+df_double df_modf_fraction(df_double a, df_double i) {
+  if (a.hi < 0.0) {
+    df_double d = df_sub(i, a);
+    df_double n = df_neg(d);
+    return n;
+  }
+  if (a.hi == 0.0) {
+    return df_double(a.hi, float(0.0));
+  }
   df_double r = df_sub(a, i);
   return r;
 }
 
+// df_modf: integer part (toward zero) into i, fraction x - i returned, both with x's sign
+// (modf(-3) = (-0, -3), modf(-0) = (-0, -0); native fp64 on Mesa gives +0 for both parts of -0).
+// Algorithm: df_trunc, then df_modf_fraction (AccurateDWPlusDW)
+// Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2
+// Flops: 35
+df_double df_modf(df_double a, out df_double i) {
+  i = df_trunc(a);
+  df_double r = df_modf_fraction(a, i);
+  return r;
+}
+
+// df_next_integer: f + 1 for an integer-valued f, with the sign of zero native round gives:
+// f = -1 (x in [-1, 0) rounded up) gives -0. Computed as -((-f) - 1): negation is exact and
+// (-f) - 1 is the mirror image of f + 1, whose zero is +0 (IEEE 754-2008 section 6.3).
+// Algorithm: df_neg, DWPlusFP (JMP Algorithm 4), df_neg
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2; IEEE 754-2008 section 6.3
+// Bound: exact
+// Flops: 15
+// Range: exact for the integers df_floor returns (f + 1 is a double-word integer).
+df_double df_next_integer(df_double f) {
+  df_double n = df_neg(f);
+  df_double m = df_add_f(n, float(-1.0));
+  df_double r = df_neg(m);
+  return r;
+}
+
 // df_round: nearest integer, halves away from zero (GLSL lets the implementation choose).
-// Algorithm: floor(x) plus 1 when fract(x) > 1/2 (>= 1/2 for x >= 0)
+// A result of zero has the sign of x (round(-0.3) = -0), as native fp64 gives.
+// Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 38
+// Flops: 42
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 df_double df_round(df_double a) {
   df_double f = df_floor(a);
@@ -605,17 +665,18 @@ df_double df_round(df_double a) {
   bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
   bool tie = d.hi == 0.5 && d.lo == 0.0;
   if (above || (tie && a.hi >= 0.0)) {
-    df_double u = df_add_f(f, 1.0);
+    df_double u = df_next_integer(f);
     return u;
   }
   return f;
 }
 
-// df_round_even: nearest integer, halves to the even neighbour (roundEven).
-// Algorithm: floor(x) plus 1 when fract(x) > 1/2, or = 1/2 and floor(x) is odd
+// df_round_even: nearest integer, halves to the even neighbour (roundEven). A result of zero
+// has the sign of x (roundEven(-0.5) = -0), as native fp64 gives.
+// Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 44
+// Flops: 48
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 df_double df_round_even(df_double a) {
@@ -631,7 +692,7 @@ df_double df_round_even(df_double a) {
   bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
   bool tie = d.hi == 0.5 && d.lo == 0.0;
   if (above || (tie && parity == 0.5)) {
-    df_double u = df_add_f(f, 1.0);
+    df_double u = df_next_integer(f);
     return u;
   }
   return f;
@@ -1024,12 +1085,46 @@ vec3 df_to_float(df_dvec3 a) {
   return r.hi;
 }
 
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_double df_scale_pow2(df_double a, float s) {
+  float h = (a.hi * s);
+  float l = (a.lo * s);
+  return df_double(h, l);
+}
+
+// df_length: sqrt(dot(a, a)), W = 2..4, on a scaled by df_norm_scale and scaled back, so any
+// vector whose length is within float range gets it (the squares alone would overflow above
+// |a| ~ 1.8e19 and underflow below ~1e-19). No cancellation in dot(a, a), so its error is
+// relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
+// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order). A length beyond float range is
+// (+Inf, 0) (df_finish); one below it tapers into float's subnormals as the scaled-back words
+// round.
+// Algorithm: df_norm_scale, df_dot(a, a), SQRTDWtoDW (LLMPR Algorithm 8), scaled back, df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 9.625u^2
+// Flops: 225 (W = 4; 119 for W = 2, 172 for W = 3)
+// Range: every vector (scaled); exact scaling, so the bound holds for lengths in [2^-100, FLT_MAX].
+df_double df_length(df_dvec3 a) {
+  vec2 k = (df_norm_scale(a.hi));
+  df_dvec3 b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  df_double z = df_scale_pow2(n, k.y);
+  df_double r = df_finish(z, z.hi);
+  return r;
+}
+
 // df_distance: length(a - b). The difference of exact inputs is one AccurateDWPlusDW per
 // component (3u^2 relative), which adds 3u^2 to df_length's relative bound.
 // Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_length
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 12.625u^2
-// Flops: 233 (W = 4)
+// Flops: 248 (W = 4)
 df_double df_distance(df_dvec3 a, df_dvec3 b) {
   df_dvec3 d = df_sub(a, b);
   df_double r = df_length(d);

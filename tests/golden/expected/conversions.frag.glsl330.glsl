@@ -6,7 +6,7 @@ struct df_dvec4 {
   vec4 hi;
   vec4 lo;
 };
-// doublet float-float runtime: 32 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 35 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -340,6 +340,51 @@ bool df_to_bool(df_double a) {
   return bool(s);
 }
 
+// df_norm_scale: (s, 1/s), powers of two that bring the largest component of hi into
+// [2^-36, 2^60] (as hypot does): s = 2^-90 when some |hi_i| > 2^60, 2^90 when every |hi_i| < 2^-36,
+// else 1. Then the squares of the scaled vector neither overflow (4 * 2^120 < 2^128) nor lose
+// their error terms to underflow (the largest square is >= 2^-72, its low words >= ~2^-120),
+// and scaling is exact. Values in [2^-36, 2^60] take s = 1: bit for bit the unscaled result.
+// +-Inf scales to +-Inf; NaN fails both tests and is not scaled.
+// Algorithm: two threshold tests on abs(hi), selection of power-of-two constants
+// Source: IEEE 754-2008 section 9.2 (hypot: scaling to avoid spurious overflow and underflow); Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, section 5 (scaled norms)
+// Bound: exact
+// Flops: 4 (W = 4: one abs per component; plus 2 vector comparisons and 4 selects)
+vec2 df_norm_scale(vec3 h) {
+  vec3 ah = (abs(h));
+  bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
+  bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
+  float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
+  float s = (small ? 1.237940039285380274899124224e27 : down);
+  float up = (big ? 1.237940039285380274899124224e27 : 1.0);
+  float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  return vec2(s, back);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_dvec3 df_scale_pow2(df_dvec3 a, float s) {
+  vec3 h = (a.hi * s);
+  vec3 l = (a.lo * s);
+  return df_dvec3(h, l);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_double df_scale_pow2(df_double a, float s) {
+  float h = (a.hi * s);
+  float l = (a.lo * s);
+  return df_double(h, l);
+}
+
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
 // Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
@@ -518,18 +563,26 @@ df_double df_sqrt(df_double a) {
   return r;
 }
 
-// df_length: sqrt(dot(a, a)), W = 2..4. No cancellation in dot(a, a), so its error is
+// df_length: sqrt(dot(a, a)), W = 2..4, on a scaled by df_norm_scale and scaled back, so any
+// vector whose length is within float range gets it (the squares alone would overflow above
+// |a| ~ 1.8e19 and underflow below ~1e-19). No cancellation in dot(a, a), so its error is
 // relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
-// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order).
-// Algorithm: df_dot(a, a) then SQRTDWtoDW (LLMPR Algorithm 8)
+// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order). A length beyond float range is
+// (+Inf, 0) (df_finish); one below it tapers into float's subnormals as the scaled-back words
+// round.
+// Algorithm: df_norm_scale, df_dot(a, a), SQRTDWtoDW (LLMPR Algorithm 8), scaled back, df_finish
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
 // Bound: 9.625u^2
-// Flops: 210 (W = 4; 110 for W = 2, 160 for W = 3)
-// Range: |a|^2 must not overflow float (|a| < 1.8e19); no prescaling is done.
+// Flops: 225 (W = 4; 119 for W = 2, 172 for W = 3)
+// Range: every vector (scaled); exact scaling, so the bound holds for lengths in [2^-100, FLT_MAX].
 df_double df_length(df_dvec3 a) {
-  df_double d = df_dot(a, a);
-  df_double z = df_sqrt(d);
-  return z;
+  vec2 k = (df_norm_scale(a.hi));
+  df_dvec3 b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  df_double z = df_scale_pow2(n, k.y);
+  df_double r = df_finish(z, z.hi);
+  return r;
 }
 
 // df_lt: a < b.
