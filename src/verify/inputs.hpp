@@ -24,6 +24,10 @@ class InputGenerator {
   std::mt19937_64 rng_;
 };
 
+// An int/uint/bool input's value (scalar 'i', 'u', 'b') from a drawn or given number: rounded to
+// the nearest integer (uint: at least 0); bool: 1 unless 0.
+double integer_value(double x, char scalar);
+
 // The value a double input keeps after the hi/lo split (or a float input after rounding).
 double representable(double x, bool is_double);
 
