@@ -90,6 +90,11 @@ TEST(VerifyRealWorld, ArrayOfStructBufferMembersAreOutputs) {
   EXPECT_GE(worst_bits(r, "p.mass[]"), 44);
 }
 
+TEST(VerifyRealWorld, DefinesReachTheNativeRun) {
+  const VerifyReport r = run("defined.comp", Target::Es310, 44, Sabotage::None, {{"SCALE", "3.0lf"}});
+  expect_passed_on_both_backends(r);
+}
+
 TEST(VerifyRealWorld, DefinesAndIncludesReachTheNativeRun) {
   const VerifyReport r = run("scaled.comp", Target::Es310, 44, Sabotage::None, {{"SCALE", "3.0lf"}});
   expect_passed_on_both_backends(r);
