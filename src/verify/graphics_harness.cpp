@@ -32,11 +32,14 @@ bool has_output(const GraphicsInterface& s, const std::string& name) {
 }
 
 // An output's name in the lowered shader: split pairs from the manifest; gl_FragColor becomes the
-// printer's declared `df_frag_color` on targets without it (src/emit/printer.cpp).
-std::vector<std::string> lowered_output_names(const Manifest& manifest, const GraphicsInterface& lowered_if,
-                                              const std::string& name) {
-  if (name == "gl_FragColor" && !has_output(lowered_if, name) && has_output(lowered_if, "df_frag_color"))
-    return {"df_frag_color"};
+// printer's declared `df_frag_color` on targets without it (src/emit/printer.cpp), and on es100 a
+// fragment shader's only output becomes gl_FragColor.
+std::vector<std::string> lowered_output_names(const Manifest& manifest, const GraphicsInterface& native_if,
+                                              const GraphicsInterface& lowered_if, const std::string& name) {
+  if (!has_output(lowered_if, name)) {
+    if (name == "gl_FragColor" && has_output(lowered_if, "df_frag_color")) return {"df_frag_color"};
+    if (native_if.outputs.size() == 1 && has_output(lowered_if, "gl_FragColor")) return {"gl_FragColor"};
+  }
   return lowered_names(manifest, name);
 }
 
@@ -104,7 +107,7 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
       notes_.push_back("output '" + out.name + "' is an integer: not compared");
       continue;
     }
-    Variable v{out.name, false, out.scalar == 'd', out.components, lowered_output_names(manifest, lowered_if, out.name)};
+    Variable v{out.name, false, out.scalar == 'd', out.components, lowered_output_names(manifest, native_if, lowered_if, out.name)};
     for (const std::string& n : v.lowered)
       if (!has_output(lowered_if, n)) return "output '" + out.name + "' has no '" + n + "' in the lowered shader";
     outputs_.push_back(std::move(v));
