@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <regex>
 #include <set>
+#include <vector>
 #include <sstream>
 
 namespace doublet::runner::detail {
@@ -63,6 +64,7 @@ std::string rename_legacy_builtins(const std::string& line) {
 
 constexpr int kFragDataSlots = 4;  // gl_FragData[0..3]
 
+
 // float/vecN, double/dvecN, int/ivecN, uint/uvecN → scalar letter and components.
 bool parse_type(const std::string& type, char* scalar, int* components) {
   static const std::pair<const char*, char> kScalars[] = {{"float", 'f'}, {"double", 'd'}, {"int", 'i'}, {"uint", 'u'}};
@@ -82,6 +84,56 @@ bool parse_type(const std::string& type, char* scalar, int* components) {
     }
   }
   return false;
+}
+
+// `[layout(...)] in|out Block {` opening an interface block on its own line.
+const std::regex& block_start() {
+  static const std::regex re(R"(^\s*(?:layout\s*\([^)]*\)\s*)?(in|out)\s+([A-Za-z_]\w*)\s*\{\s*(?://.*)?$)");
+  return re;
+}
+// `} [instance];` closing it (an instance array is not supported).
+const std::regex& block_end() {
+  static const std::regex re(R"(^\s*\}\s*([A-Za-z_]\w*)?\s*;\s*(?://.*)?$)");
+  return re;
+}
+// One member line: [interpolation/precision...] TYPE names;
+const std::regex& block_member() {
+  static const std::regex re(
+      R"(^\s*(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*)"
+      R"(([A-Za-z_]\w*)\s+([A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*)\s*;\s*(?://.*)?$)");
+  return re;
+}
+
+// An `in`/`out` interface block becomes a plain global struct (`out V { vec3 n; } v_out;` ->
+// `struct doublet_block_V { vec3 n; }; doublet_block_V v_out;`, variables "v_out.n") or, without
+// an instance name, plain globals; its members are captured like any in/out variable. `lines`
+// holds the block from its opening line to its closing one. Empty on success, else why not.
+std::string wrap_block(const std::vector<std::string>& lines, const std::string& block, std::string* text,
+                       std::vector<StageVariable>* vars) {
+  std::smatch end;
+  if (!std::regex_match(lines.back(), end, block_end()))
+    return "interface block '" + block + "' must end with '} instance;' on a line of its own";
+  const std::string instance = end[1].matched ? end[1].str() : "";
+  std::string members;
+  for (size_t i = 1; i + 1 < lines.size(); ++i) {
+    std::smatch m;
+    if (lines[i].find_first_not_of(" \t") == std::string::npos) continue;
+    StageVariable v;
+    if (!std::regex_match(lines[i], m, block_member()) || !parse_type(m[1], &v.scalar, &v.components))
+      return "interface block '" + block + "': unsupported member (one float/double/int/uint scalar or vector " +
+             "declaration per line): " + lines[i];
+    std::string names = m[2];
+    std::replace(names.begin(), names.end(), ',', ' ');
+    std::istringstream split(names);
+    for (std::string name; split >> name;) {
+      v.name = instance.empty() ? name : instance + "." + name;
+      vars->push_back(v);
+      members += " " + std::string(m[1]) + " " + name + ";";
+    }
+  }
+  if (instance.empty()) *text += members.substr(1) + "  // was: block " + block + "\n";
+  else *text += "struct doublet_block_" + block + " {" + members + " };\ndoublet_block_" + block + " " + instance + ";\n";
+  return {};
 }
 
 std::string type_name(const StageVariable& v) {
@@ -125,11 +177,28 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
   int line_number = 0;
   Scope scope;
   std::string legacy_outputs;  // declarations of the renamed fragment outputs, after the #version line
+  std::vector<std::string> block_lines;  // an interface block being read, from its opening line
   while (std::getline(in, line)) {
     ++line_number;
     const bool global = scope.global();
     scope.advance(line);
     std::smatch m;
+    if (!block_lines.empty()) {
+      block_lines.push_back(line);
+      if (!scope.global()) continue;
+      std::smatch start;
+      std::regex_match(block_lines.front(), start, block_start());
+      const bool is_input = start[1] == "in";
+      if (std::string e = wrap_block(block_lines, start[2], &body, is_input ? &out->iface.inputs : &out->iface.outputs);
+          !e.empty())
+        return "line " + std::to_string(line_number) + ": " + e;
+      block_lines.clear();
+      continue;
+    }
+    if (global && std::regex_match(line, m, block_start())) {
+      block_lines.push_back(line);
+      continue;
+    }
     if (version.empty() && std::regex_match(line, m, version_re)) {
       const std::string number = m[1];
       const bool es = m[2].matched || number == "100";
@@ -164,6 +233,7 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
              "blocks or structs): " + line;
     body += rename_legacy_builtins(line) + "\n";
   }
+  if (!block_lines.empty()) return "an interface block does not end: " + block_lines.front();
   if (version.empty()) return "the shader has no #version line";
   if (stage == GraphicsStage::Vertex && glsl.find("gl_Position") != std::string::npos)
     out->iface.outputs.push_back(StageVariable{"gl_Position", 'f', 4});

@@ -183,3 +183,33 @@ TEST(VerifyRealWorld, ParameterOnItsOwnLineIsNotAnOutput) {
 
 }  // namespace
 }  // namespace doublet::verify
+
+namespace doublet::verify {
+namespace {
+
+// An output interface block is captured member by member ("vs_out.n"); one without an instance
+// name by member name.
+TEST(VerifyRealWorld, InterfaceBlocksAreCapturedByMember) {
+  const std::string glsl =
+      "#version 320 es\nout VertexData {\n  flat vec3 n;\n  vec2 uv;\n} vs_out;\nout Extra {\n  float w;\n};\n"
+      "void main() { vs_out.n = vec3(1.0); vs_out.uv = vec2(2.0); w = 3.0; gl_Position = vec4(0.0); }\n";
+  runner::GraphicsInterface iface;
+  std::string error;
+  ASSERT_TRUE(runner::reflect_graphics(runner::GraphicsStage::Vertex, glsl, &iface, &error)) << error;
+  ASSERT_EQ(iface.outputs.size(), 4u);
+  EXPECT_EQ(iface.outputs[0].name, "vs_out.n");
+  EXPECT_EQ(iface.outputs[1].name, "vs_out.uv");
+  EXPECT_EQ(iface.outputs[2].name, "w");
+  runner::GraphicsJob job;
+  job.glsl = glsl;
+  job.count = 2;
+  for (runner::Backend backend : {runner::Backend::Vulkan, runner::Backend::Gles}) {
+    const runner::GraphicsResult got = runner::run_graphics(backend, job);
+    ASSERT_TRUE(got.ok) << runner::backend_name(backend) << ": " << got.error;
+    EXPECT_EQ(got.outputs.at("vs_out.uv"), (std::vector<double>{2, 2, 2, 2}));
+    EXPECT_EQ(got.outputs.at("w"), (std::vector<double>{3, 3}));
+  }
+}
+
+}  // namespace
+}  // namespace doublet::verify
