@@ -153,6 +153,9 @@ struct GraphicsJob {
   std::map<std::string, std::vector<uint8_t>> uniform_blocks;
 };
 
+// std140 bytes between the columns of a matrix with `rows` rows: a vec4's 16, a dvec3/dvec4's 32.
+inline uint32_t std140_column_stride(bool is_double, int rows) { return is_double && rows > 2 ? 32 : 16; }
+
 // Every sampler2D, sampler3D and samplerCube of a graphics job samples this texture (both
 // backends, both shaders): kTextureSize texels per side, RGBA32F, one level, NEAREST filtering,
 // REPEAT wrapping (cube maps clamp). Texels are exact floats from a fixed pattern, so a texel

@@ -235,7 +235,7 @@ std::string uniform_block_bytes(const SpirvProgram& program, const std::map<std:
     const size_t width = slot.is_double ? sizeof(double) : sizeof(float);
     const size_t rows = values.size() / static_cast<size_t>(slot.columns);
     // std140: vector components are packed; matrix columns start at vec4 (dvec3/dvec4: 32-byte) strides.
-    const size_t column_stride = slot.columns == 1 ? 0 : (slot.is_double && rows > 2 ? 32 : 16);
+    const size_t column_stride = slot.columns == 1 ? 0 : std140_column_stride(slot.is_double, static_cast<int>(rows));
     for (size_t c = 0; c < values.size(); ++c) {
       const size_t at = slot.offset + (c / rows) * column_stride + (c % rows) * width;
       if (at + width > bytes->size()) return "uniform '" + name + "' lies outside its block";

@@ -15,10 +15,14 @@ using runner::GraphicsInterface;
 constexpr uint32_t kMaxPerDraw = 65536;     // the runner's grid
 constexpr uint32_t kDefaultPerDraw = 64;    // samples per draw when uniforms vary per draw
 
-std::string type_name(bool is_double, int components, bool matrix) {
+std::string type_name(char scalar, int components, bool matrix) {
+  const bool is_double = scalar == 'd';
   if (matrix) return std::string(is_double ? "dmat" : "mat") + "(" + std::to_string(components) + " values)";
-  if (components == 1) return is_double ? "double" : "float";
-  return std::string(is_double ? "dvec" : "vec") + std::to_string(components);
+  static const std::pair<char, std::pair<const char*, const char*>> kNames[] = {
+      {'f', {"float", "vec"}}, {'d', {"double", "dvec"}}, {'i', {"int", "ivec"}}, {'u', {"uint", "uvec"}}, {'b', {"bool", "bvec"}}};
+  for (const auto& [letter, names] : kNames)
+    if (letter == scalar) return components == 1 ? names.first : names.second + std::to_string(components);
+  return "?";
 }
 
 std::vector<std::string> lowered_names(const Manifest& manifest, const std::string& name) {
@@ -42,9 +46,6 @@ std::vector<std::string> lowered_output_names(const Manifest& manifest, const Gr
   }
   return lowered_names(manifest, name);
 }
-
-// std140 bytes between the columns of a matrix (a vector: unused).
-uint32_t std140_column_stride(bool is_double, int rows) { return is_double && rows > 2 ? 32 : 16; }
 
 const runner::ShaderInterface::UniformBlock* find_block(const GraphicsInterface& s, const std::string& name) {
   for (const auto& b : s.uniform_blocks)
@@ -91,7 +92,7 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
     if (u.columns > 1) notes_.push_back("uniform '" + u.name + "' is a matrix: fed column by column");
     inputs_.push_back(std::move(v));
   }
-  if (std::string e = add_block_members(native_if, lowered_if, manifest); !e.empty()) return e;
+  add_block_members(native_if, lowered_if, manifest);
   for (const std::string& sampler : native_if.samplers)
     notes_.push_back("sampler '" + sampler + "' reads the runner's " + std::to_string(runner::kTextureSize) +
                      "-texel RGBA32F test texture (NEAREST) in both runs");
@@ -100,7 +101,9 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
       notes_.push_back("input '" + in.name + "' is an integer: left at 0");
       continue;
     }
-    inputs_.push_back(Variable{in.name, false, in.scalar == 'd', in.components, lowered_names(manifest, in.name)});
+    Variable v{in.name, false, in.scalar == 'd', in.components, lowered_names(manifest, in.name)};
+    v.scalar = in.scalar;
+    inputs_.push_back(std::move(v));
   }
   for (const auto& out : native_if.outputs) {
     if (out.scalar != 'f' && out.scalar != 'd') {
@@ -108,6 +111,7 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
       continue;
     }
     Variable v{out.name, false, out.scalar == 'd', out.components, lowered_output_names(manifest, native_if, lowered_if, out.name)};
+    v.scalar = out.scalar;
     for (const std::string& n : v.lowered)
       if (!has_output(lowered_if, n)) return "output '" + out.name + "' has no '" + n + "' in the lowered shader";
     outputs_.push_back(std::move(v));
@@ -146,8 +150,8 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
 // Members of named uniform blocks are per-draw inputs like loose uniforms; the native values go to
 // their std140 places (glslang reflection), the lowered ones to the manifest's (hi and lo of a
 // split member) or, for a block without doubles, to the lowered shader's reflected places.
-std::string GraphicsHarness::add_block_members(const GraphicsInterface& native_if, const GraphicsInterface& lowered_if,
-                                               const Manifest& manifest) {
+void GraphicsHarness::add_block_members(const GraphicsInterface& native_if, const GraphicsInterface& lowered_if,
+                                        const Manifest& manifest) {
   for (const auto& block : native_if.uniform_blocks) {
     const auto* lowered_block = find_block(lowered_if, block.name);
     native_block_sizes_[block.name] = block.size;
@@ -163,7 +167,7 @@ std::string GraphicsHarness::add_block_members(const GraphicsInterface& native_i
       v.columns = m.columns;
       v.block = block.name;
       const int rows = m.components / m.columns;
-      v.native_place = {m.offset, std140_column_stride(v.is_double, rows), v.is_double};
+      v.native_place = {m.offset, runner::std140_column_stride(v.is_double, rows), v.is_double};
       if (const BlockMember* bm = find_manifest_member(manifest, block.name, m.name); bm && bm->hi_offset >= 0) {
         for (int part : {bm->hi_offset, bm->lo_offset})
           v.lowered_places.push_back({static_cast<uint32_t>(bm->offset + part), static_cast<uint32_t>(bm->matrix_stride), false});
@@ -171,15 +175,13 @@ std::string GraphicsHarness::add_block_members(const GraphicsInterface& native_i
         auto it = std::find_if(lowered_block->members.begin(), lowered_block->members.end(),
                                [&](const auto& lm) { return lm.name == m.name; });
         if (it != lowered_block->members.end())
-          v.lowered_places.push_back({it->offset, std140_column_stride(it->is_double, rows), it->is_double});
+          v.lowered_places.push_back({it->offset, runner::std140_column_stride(it->is_double, rows), it->is_double});
       }
-      if (v.lowered_places.empty()) {
+      if (v.lowered_places.empty())
         notes_.push_back("uniform block member '" + name + "' is not used by the lowered shader: fed to the native one only");
-      }
       inputs_.push_back(std::move(v));
     }
   }
-  return {};
 }
 
 void GraphicsHarness::generate(uint64_t seed) {
@@ -274,7 +276,7 @@ std::vector<std::string> GraphicsHarness::describe_inputs() const {
   std::vector<std::string> out;
   for (const Variable& v : inputs_)
     out.push_back(v.name + " (" + (v.is_uniform ? "uniform " : "in ") +
-                  type_name(v.is_double, v.components, v.is_uniform && v.components > 4) + ")");
+                  type_name(v.scalar, v.components, v.columns > 1) + ")");
   return out;
 }
 

@@ -67,8 +67,8 @@ class GraphicsHarness {
   };
   static void write_block_member(const Variable& v, const std::vector<double>& values, bool native,
                                  std::vector<uint8_t>* bytes);
-  std::string add_block_members(const runner::GraphicsInterface& native_if, const runner::GraphicsInterface& lowered_if,
-                                const Manifest& manifest);
+  void add_block_members(const runner::GraphicsInterface& native_if, const runner::GraphicsInterface& lowered_if,
+                         const Manifest& manifest);
 
   std::vector<runner::GraphicsJob> jobs(bool native) const;
   std::string describe_sample(uint64_t draw, uint32_t sample) const;
