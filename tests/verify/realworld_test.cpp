@@ -137,13 +137,13 @@ TEST(VerifyRealWorld, IntegerUniformsReachBothDrivers) {
   }
 }
 
-// Every sampler2D/3D reads the runner's test texture, the same texels on both drivers.
+// Every sampler2D/3D/Cube reads the runner's test texture, the same texels on both drivers.
 TEST(VerifyRealWorld, SamplersReadTheTestTextureOnBothDrivers) {
   runner::GraphicsJob job;
   job.stage = runner::GraphicsStage::Fragment;
   job.glsl = "#version 310 es\nprecision highp float;\nprecision highp sampler3D;\nuniform sampler2D t2;\n"
-             "uniform sampler3D t3;\nin vec2 uv;\nout vec4 a;\nout vec4 c;\n"
-             "void main() { a = texture(t2, uv); c = texture(t3, vec3(uv, 0.53125)); }\n";
+             "uniform sampler3D t3;\nuniform samplerCube cube;\nin vec2 uv;\nout vec4 a;\nout vec4 c;\nout vec4 f;\n"
+             "void main() { a = texture(t2, uv); c = texture(t3, vec3(uv, 0.53125)); f = texture(cube, vec3(0.3, 1.0, 0.2)); }\n";
   job.count = 3;
   const uint32_t n = runner::kTextureSize;
   const std::pair<uint32_t, uint32_t> texel[3] = {{0, 0}, {5, 9}, {15, 2}};
@@ -153,7 +153,10 @@ TEST(VerifyRealWorld, SamplersReadTheTestTextureOnBothDrivers) {
   }
   const std::vector<float> plane = runner::test_texture(runner::TextureKind::Tex2D);
   const std::vector<float> volume = runner::test_texture(runner::TextureKind::Tex3D);
+  const std::vector<float> cube = runner::test_texture(runner::TextureKind::Cube);
   const uint32_t layer = 8;  // z = 0.53125 is texel 8's centre
+  // Direction (0.3, 1, 0.2): face +Y (2), s = (0.3 + 1) / 2 -> texel 10, t = (0.2 + 1) / 2 -> texel 9.
+  const size_t cube_texel = ((2 * size_t{n} + 9) * n + 10) * 4;
   for (runner::Backend backend : {runner::Backend::Vulkan, runner::Backend::Gles}) {
     const runner::GraphicsResult got = runner::run_graphics(backend, job);
     ASSERT_TRUE(got.ok) << runner::backend_name(backend) << ": " << got.error;
@@ -163,6 +166,7 @@ TEST(VerifyRealWorld, SamplersReadTheTestTextureOnBothDrivers) {
         EXPECT_EQ(got.outputs.at("a")[s * 4 + c], plane[at]) << runner::backend_name(backend) << " sample " << s;
         EXPECT_EQ(got.outputs.at("c")[s * 4 + c], volume[size_t{layer} * n * n * 4 + at])
             << runner::backend_name(backend) << " sample " << s;
+        EXPECT_EQ(got.outputs.at("f")[s * 4 + c], cube[cube_texel + c]) << runner::backend_name(backend) << " cube";
       }
   }
 }
