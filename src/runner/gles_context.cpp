@@ -117,6 +117,40 @@ bool set_matrix(GLint location, GLenum type, const std::vector<double>& values) 
   return false;
 }
 
+// Sets an int/uint/bool scalar or vector uniform; false when `type` is none of them or the count is wrong.
+bool set_integer_vector(GLint location, GLenum type, const std::vector<double>& values) {
+  struct Shape { GLenum type; size_t count; bool is_unsigned; };
+  static constexpr Shape kShapes[] = {
+      {GL_INT, 1, false},  {GL_INT_VEC2, 2, false},  {GL_INT_VEC3, 3, false},  {GL_INT_VEC4, 4, false},
+      {GL_BOOL, 1, false}, {GL_BOOL_VEC2, 2, false}, {GL_BOOL_VEC3, 3, false}, {GL_BOOL_VEC4, 4, false},
+      {GL_UNSIGNED_INT, 1, true}, {GL_UNSIGNED_INT_VEC2, 2, true}, {GL_UNSIGNED_INT_VEC3, 3, true},
+      {GL_UNSIGNED_INT_VEC4, 4, true}};
+  for (const Shape& s : kShapes) {
+    if (s.type != type) continue;
+    if (values.size() != s.count) return false;
+    GLint i[4] = {};
+    GLuint u[4] = {};
+    const bool is_bool = type == GL_BOOL || type == GL_BOOL_VEC2 || type == GL_BOOL_VEC3 || type == GL_BOOL_VEC4;
+    for (size_t c = 0; c < s.count; ++c) {
+      i[c] = is_bool ? values[c] != 0 : static_cast<GLint>(values[c]);
+      u[c] = static_cast<GLuint>(values[c]);
+    }
+    if (s.is_unsigned) {
+      if (s.count == 1) glUniform1uiv(location, 1, u);
+      else if (s.count == 2) glUniform2uiv(location, 1, u);
+      else if (s.count == 3) glUniform3uiv(location, 1, u);
+      else glUniform4uiv(location, 1, u);
+    } else {
+      if (s.count == 1) glUniform1iv(location, 1, i);
+      else if (s.count == 2) glUniform2iv(location, 1, i);
+      else if (s.count == 3) glUniform3iv(location, 1, i);
+      else glUniform4iv(location, 1, i);
+    }
+    return true;
+  }
+  return false;
+}
+
 std::string set_uniform(GLuint program, const std::string& name, const std::vector<double>* values, float value) {
   GLuint index = GL_INVALID_INDEX;
   const char* cname = name.c_str();
@@ -133,6 +167,7 @@ std::string set_uniform(GLuint program, const std::string& name, const std::vect
     return {};
   }
   if (size == 1 && set_matrix(location, type, *values)) return {};
+  if (size == 1 && set_integer_vector(location, type, *values)) return {};
   const size_t components = type == GL_FLOAT ? 1 : type == GL_FLOAT_VEC2 ? 2 : type == GL_FLOAT_VEC3 ? 3
                             : type == GL_FLOAT_VEC4 ? 4 : 0;
   if (components == 0 || size != 1) return "uniform '" + name + "' is not a float scalar, vector or matrix";

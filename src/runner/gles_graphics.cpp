@@ -12,8 +12,12 @@ namespace {
 
 struct GlGraphicsObjects {
   GLuint shaders[2] = {}, program = 0, framebuffer = 0, vertex_array = 0, buffers[2] = {};
+  std::vector<std::string> block_names;  // active named uniform blocks; block i uses binding i
+  std::vector<GLuint> block_buffers, textures;
   ~GlGraphicsObjects() {
     glDeleteBuffers(2, buffers);
+    if (!block_buffers.empty()) glDeleteBuffers(static_cast<GLsizei>(block_buffers.size()), block_buffers.data());
+    if (!textures.empty()) glDeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
     if (vertex_array) glDeleteVertexArrays(1, &vertex_array);
     if (framebuffer) glDeleteFramebuffers(1, &framebuffer);
     if (program) glDeleteProgram(program);
@@ -22,6 +26,85 @@ struct GlGraphicsObjects {
     glGetError();  // do not leak an error into the next job
   }
 };
+
+// The runner's test texture (runner.hpp) for a sampler of GL type `type`; 0 for other types.
+GLuint make_test_texture(GLenum type) {
+  const TextureKind kind = type == GL_SAMPLER_3D ? TextureKind::Tex3D : type == GL_SAMPLER_CUBE ? TextureKind::Cube
+                                                                                                 : TextureKind::Tex2D;
+  const GLenum target = kind == TextureKind::Tex3D ? GL_TEXTURE_3D : kind == TextureKind::Cube ? GL_TEXTURE_CUBE_MAP
+                                                                                               : GL_TEXTURE_2D;
+  const std::vector<float> texels = test_texture(kind);
+  const auto n = static_cast<GLsizei>(kTextureSize);
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(target, texture);
+  if (kind == TextureKind::Tex3D) {
+    glTexImage3D(target, 0, GL_RGBA32F, n, n, n, 0, GL_RGBA, GL_FLOAT, texels.data());
+  } else if (kind == TextureKind::Cube) {
+    for (GLenum face = 0; face < 6; ++face)
+      glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA32F, n, n, 0, GL_RGBA, GL_FLOAT,
+                   texels.data() + size_t{face} * kTextureSize * kTextureSize * 4);
+  } else {
+    glTexImage2D(target, 0, GL_RGBA32F, n, n, 0, GL_RGBA, GL_FLOAT, texels.data());
+  }
+  // RGBA32F is not filterable in GLES 3.2: NEAREST, one level (as on Vulkan).
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  const GLint wrap = kind == TextureKind::Cube ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+  glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+  glTexParameteri(target, GL_TEXTURE_WRAP_R, wrap);
+  return texture;
+}
+
+// Every active sampler gets its own texture unit with the test texture; every named uniform block
+// binding i, filled per job.
+std::string bind_resources(GlGraphicsObjects& gl) {
+  glUseProgram(gl.program);
+  GLint count = 0;
+  glGetProgramiv(gl.program, GL_ACTIVE_UNIFORMS, &count);
+  GLint unit = 0;
+  for (GLint i = 0; i < count; ++i) {
+    char name[256];
+    GLint size = 0;
+    GLenum type = 0;
+    glGetActiveUniform(gl.program, static_cast<GLuint>(i), sizeof name, nullptr, &size, &type, name);
+    if (type != GL_SAMPLER_2D && type != GL_SAMPLER_3D && type != GL_SAMPLER_CUBE) continue;
+    const GLenum target = type == GL_SAMPLER_3D ? GL_TEXTURE_3D : type == GL_SAMPLER_CUBE ? GL_TEXTURE_CUBE_MAP
+                                                                                          : GL_TEXTURE_2D;
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    gl.textures.push_back(make_test_texture(type));
+    glBindTexture(target, gl.textures.back());
+    glUniform1i(glGetUniformLocation(gl.program, name), unit++);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  GLint blocks = 0;
+  glGetProgramiv(gl.program, GL_ACTIVE_UNIFORM_BLOCKS, &blocks);
+  for (GLint i = 0; i < blocks; ++i) {
+    char name[256];
+    glGetActiveUniformBlockName(gl.program, static_cast<GLuint>(i), sizeof name, nullptr, name);
+    glUniformBlockBinding(gl.program, static_cast<GLuint>(i), static_cast<GLuint>(i));
+    gl.block_names.push_back(name);
+  }
+  gl.block_buffers.assign(gl.block_names.size(), 0);
+  if (!gl.block_buffers.empty()) glGenBuffers(static_cast<GLsizei>(gl.block_buffers.size()), gl.block_buffers.data());
+  return gl_error("binding textures and uniform blocks");
+}
+
+// The job's bytes of every named uniform block (zeros for a block it does not give).
+std::string upload_blocks(GlGraphicsObjects& gl, const GraphicsJob& job) {
+  for (size_t i = 0; i < gl.block_names.size(); ++i) {
+    GLint size = 0;
+    glGetActiveUniformBlockiv(gl.program, static_cast<GLuint>(i), GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+    auto given = job.uniform_blocks.find(gl.block_names[i]);
+    std::vector<uint8_t> bytes = given == job.uniform_blocks.end() ? std::vector<uint8_t>() : given->second;
+    bytes.resize(std::max<size_t>(bytes.size(), static_cast<size_t>(std::max(size, 16))), 0);
+    glBindBuffer(GL_UNIFORM_BUFFER, gl.block_buffers[i]);
+    glBufferData(GL_UNIFORM_BUFFER, static_cast<GLsizeiptr>(bytes.size()), bytes.data(), GL_DYNAMIC_DRAW);
+    glBindBufferBase(GL_UNIFORM_BUFFER, static_cast<GLuint>(i), gl.block_buffers[i]);
+  }
+  return gl_error("uploading uniform blocks");
+}
 
 std::string link(const WrappedProgram& w, GlGraphicsObjects& gl, const std::string& device) {
   const GLenum types[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
@@ -53,13 +136,15 @@ std::string link(const WrappedProgram& w, GlGraphicsObjects& gl, const std::stri
   glGenVertexArrays(1, &gl.vertex_array);
   glBindVertexArray(gl.vertex_array);
   glGenBuffers(2, gl.buffers);
-  return gl_error("setting up the program");
+  if (std::string e = gl_error("setting up the program"); !e.empty()) return e;
+  return bind_resources(gl);
 }
 
 std::string draw(const WrappedProgram& w, GlGraphicsObjects& gl, const GraphicsJob& job, uint32_t count,
                  GraphicsResult* result) {
   glUseProgram(gl.program);
   if (std::string e = set_uniforms(gl.program, job.float_uniforms, job.uniforms); !e.empty()) return e;
+  if (std::string e = upload_blocks(gl, job); !e.empty()) return e;
   std::vector<uint8_t> inputs;
   if (std::string e = pack_inputs(w.iface, job, &inputs); !e.empty()) return e;
   const std::vector<uint8_t> outputs = blank_outputs(w.iface, count);

@@ -12,15 +12,6 @@ namespace {
 
 uint32_t scalar_bytes(const StageVariable& v) { return v.scalar == 'd' ? 8 : 4; }
 
-void store(uint8_t* at, char scalar, double x) {
-  switch (scalar) {
-    case 'd': std::memcpy(at, &x, 8); break;
-    case 'f': { const float f = static_cast<float>(x); std::memcpy(at, &f, 4); break; }
-    case 'i': { const int32_t i = static_cast<int32_t>(x); std::memcpy(at, &i, 4); break; }
-    default: { const uint32_t u = static_cast<uint32_t>(x); std::memcpy(at, &u, 4); break; }
-  }
-}
-
 double load(const uint8_t* at, char scalar) {
   switch (scalar) {
     case 'd': { double d; std::memcpy(&d, at, 8); return d; }
@@ -45,7 +36,7 @@ std::string pack_inputs(const GraphicsInterface& iface, const GraphicsJob& job, 
              std::to_string(values.size());
     for (size_t k = 0; k < n; ++k) {
       const size_t sample = k / static_cast<size_t>(v->components), c = k % static_cast<size_t>(v->components);
-      store(bytes->data() + sample * iface.input_stride + v->offset + c * scalar_bytes(*v), v->scalar, values[k]);
+      store_scalar(bytes->data() + sample * iface.input_stride + v->offset + c * scalar_bytes(*v), v->scalar, values[k]);
     }
   }
   return {};
@@ -85,6 +76,8 @@ bool reflect_graphics(GraphicsStage stage, const std::string& glsl, GraphicsInte
   }
   *out = wrapped.iface;
   out->uniforms = iface.uniforms;
+  out->uniform_blocks = iface.uniform_blocks;
+  out->samplers = iface.samplers;
   return true;
 }
 

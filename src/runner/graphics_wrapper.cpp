@@ -2,25 +2,68 @@
 
 #include <algorithm>
 #include <regex>
+#include <set>
+#include <vector>
 #include <sstream>
 
 namespace doublet::runner::detail {
 namespace {
 
 // A whole-line global declaration: [layout(...)] [interpolation/precision...] in|out [precision] TYPE names;
+// (ES 1.00 spells them attribute and varying).
 const std::regex& declaration() {
   static const std::regex re(
       R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*)"
-      R"((in|out)\s+((?:highp|mediump|lowp)\s+)?([A-Za-z_]\w*)\s+([A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*)\s*;\s*(?://.*)?$)");
+      R"((in|out|attribute|varying)\s+((?:highp|mediump|lowp)\s+)?([A-Za-z_]\w*)\s+([A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*)\s*;\s*(?://.*)?$)");
   return re;
 }
 
 // Anything that starts like an in/out declaration; what `declaration` does not take is unsupported.
 const std::regex& looks_like_declaration() {
   static const std::regex re(
-      R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*(in|out)\s+\w)");
+      R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*(in|out|attribute|varying)\s+\w)");
   return re;
 }
+
+// Where the next line starts: inside a block comment or not, and at which depth of braces and
+// parentheses. Only a line that starts at depth 0 outside a comment can be a global declaration;
+// `out dvec3 p,` on its own line inside a parameter list is not.
+struct Scope {
+  int braces = 0, parens = 0;
+  bool in_comment = false;
+  bool global() const { return braces == 0 && parens == 0 && !in_comment; }
+  void advance(const std::string& line) {
+    for (size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i], next = i + 1 < line.size() ? line[i + 1] : '\0';
+      if (in_comment) {
+        if (c == '*' && next == '/') in_comment = false, ++i;
+        continue;
+      }
+      if (c == '/' && next == '/') return;
+      if (c == '/' && next == '*') in_comment = true, ++i;
+      else if (c == '{') ++braces;
+      else if (c == '}') --braces;
+      else if (c == '(') ++parens;
+      else if (c == ')') --parens;
+    }
+  }
+};
+
+// Built-ins the wrapped text cannot use as written: ES 1.00/compatibility fragment outputs become
+// plain globals (stored like any output), ES 1.00 texture functions their ES 3.10 name.
+std::string rename_legacy_builtins(const std::string& line) {
+  static const std::pair<std::regex, const char*> kRenames[] = {
+      {std::regex(R"(\bgl_FragColor\b)"), "doublet_FragColor"},
+      {std::regex(R"(\bgl_FragData\b)"), "doublet_FragData"},
+      {std::regex(R"(\btexture2D\b)"), "texture"},
+      {std::regex(R"(\btextureCube\b)"), "texture"}};
+  std::string out = line;
+  for (const auto& [re, replacement] : kRenames) out = std::regex_replace(out, re, replacement);
+  return out;
+}
+
+constexpr int kFragDataSlots = 4;  // gl_FragData[0..3]
+
 
 // float/vecN, double/dvecN, int/ivecN, uint/uvecN → scalar letter and components.
 bool parse_type(const std::string& type, char* scalar, int* components) {
@@ -41,6 +84,56 @@ bool parse_type(const std::string& type, char* scalar, int* components) {
     }
   }
   return false;
+}
+
+// `[layout(...)] in|out Block {` opening an interface block on its own line.
+const std::regex& block_start() {
+  static const std::regex re(R"(^\s*(?:layout\s*\([^)]*\)\s*)?(in|out)\s+([A-Za-z_]\w*)\s*\{\s*(?://.*)?$)");
+  return re;
+}
+// `} [instance];` closing it (an instance array is not supported).
+const std::regex& block_end() {
+  static const std::regex re(R"(^\s*\}\s*([A-Za-z_]\w*)?\s*;\s*(?://.*)?$)");
+  return re;
+}
+// One member line: [interpolation/precision...] TYPE names;
+const std::regex& block_member() {
+  static const std::regex re(
+      R"(^\s*(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*)"
+      R"(([A-Za-z_]\w*)\s+([A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*)\s*;\s*(?://.*)?$)");
+  return re;
+}
+
+// An `in`/`out` interface block becomes a plain global struct (`out V { vec3 n; } v_out;` ->
+// `struct doublet_block_V { vec3 n; }; doublet_block_V v_out;`, variables "v_out.n") or, without
+// an instance name, plain globals; its members are captured like any in/out variable. `lines`
+// holds the block from its opening line to its closing one. Empty on success, else why not.
+std::string wrap_block(const std::vector<std::string>& lines, const std::string& block, std::string* text,
+                       std::vector<StageVariable>* vars) {
+  std::smatch end;
+  if (!std::regex_match(lines.back(), end, block_end()))
+    return "interface block '" + block + "' must end with '} instance;' on a line of its own";
+  const std::string instance = end[1].matched ? end[1].str() : "";
+  std::string members;
+  for (size_t i = 1; i + 1 < lines.size(); ++i) {
+    std::smatch m;
+    if (lines[i].find_first_not_of(" \t") == std::string::npos) continue;
+    StageVariable v;
+    if (!std::regex_match(lines[i], m, block_member()) || !parse_type(m[1], &v.scalar, &v.components))
+      return "interface block '" + block + "': unsupported member (one float/double/int/uint scalar or vector " +
+             "declaration per line): " + lines[i];
+    std::string names = m[2];
+    std::replace(names.begin(), names.end(), ',', ' ');
+    std::istringstream split(names);
+    for (std::string name; split >> name;) {
+      v.name = instance.empty() ? name : instance + "." + name;
+      vars->push_back(v);
+      members += " " + std::string(m[1]) + " " + name + ";";
+    }
+  }
+  if (instance.empty()) *text += members.substr(1) + "  // was: block " + block + "\n";
+  else *text += "struct doublet_block_" + block + " {" + members + " };\ndoublet_block_" + block + " " + instance + ";\n";
+  return {};
 }
 
 std::string type_name(const StageVariable& v) {
@@ -82,43 +175,85 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
   std::string line, body, version;
   static const std::regex version_re(R"(^\s*#\s*version\s+(\d+)\s*(es)?\s*(?:core)?\s*(?://.*)?$)");
   int line_number = 0;
+  Scope scope;
+  std::string legacy_outputs;  // declarations of the renamed fragment outputs, after the #version line
+  std::vector<std::string> block_lines;  // an interface block being read, from its opening line
   while (std::getline(in, line)) {
     ++line_number;
+    const bool global = scope.global();
+    scope.advance(line);
     std::smatch m;
+    if (!block_lines.empty()) {
+      block_lines.push_back(line);
+      if (!scope.global()) continue;
+      std::smatch start;
+      std::regex_match(block_lines.front(), start, block_start());
+      const bool is_input = start[1] == "in";
+      if (std::string e = wrap_block(block_lines, start[2], &body, is_input ? &out->iface.inputs : &out->iface.outputs);
+          !e.empty())
+        return "line " + std::to_string(line_number) + ": " + e;
+      block_lines.clear();
+      continue;
+    }
+    if (global && std::regex_match(line, m, block_start())) {
+      block_lines.push_back(line);
+      continue;
+    }
     if (version.empty() && std::regex_match(line, m, version_re)) {
       const std::string number = m[1];
-      const bool es = m[2].matched;
-      if (es && (number == "300" || number == "310")) version = "#version 310 es";  // 300 es: buffers need 3.10
+      const bool es = m[2].matched || number == "100";
+      // ES 1.00 and 3.00 run as 3.10 (the buffers need it), desktop 3.30 as 4.50: both supersets
+      // once the wrapper has replaced the declarations and built-ins 3.10/4.50 lack.
+      if (number == "100" || (es && (number == "300" || number == "310"))) version = "#version 310 es";
       else if (es && number == "320") version = "#version 320 es";
-      else if (!es && number == "450") version = "#version 450";
-      else return "unsupported '#version " + number + (es ? " es" : "") + "' for a vertex/fragment run (300 es, 310 es, 320 es, 450)";
+      else if (!es && (number == "450" || number == "330")) version = "#version 450";
+      else return "unsupported '#version " + number + (es ? " es" : "") + "' for a vertex/fragment run (100, 300 es, 310 es, 320 es, 330, 450)";
       out->es = es;
       body += version + "\n#define main doublet_user_main\n";
       continue;
     }
-    if (std::regex_match(line, m, declaration())) {
+    if (global && std::regex_match(line, m, declaration())) {
       StageVariable v;
       if (!parse_type(m[3], &v.scalar, &v.components))
         return "line " + std::to_string(line_number) + ": unsupported " + std::string(m[1]) + " type '" +
                std::string(m[3]) + "' (float/double/int/uint scalars and vectors)";
+      const bool is_input = m[1] == "in" || m[1] == "attribute" || (m[1] == "varying" && stage == GraphicsStage::Fragment);
       std::string names = m[4];
       std::replace(names.begin(), names.end(), ',', ' ');
       std::istringstream split(names);
       for (std::string name; split >> name;) {
         v.name = name;
-        (m[1] == "in" ? out->iface.inputs : out->iface.outputs).push_back(v);
+        (is_input ? out->iface.inputs : out->iface.outputs).push_back(v);
       }
       body += std::string(m[2]) + std::string(m[3]) + " " + std::string(m[4]) + ";  // was: " + line + "\n";
       continue;
     }
-    if (std::regex_search(line, looks_like_declaration()))
+    if (global && std::regex_search(line, looks_like_declaration()))
       return "line " + std::to_string(line_number) + ": unsupported in/out declaration (one per line, no arrays, " +
              "blocks or structs): " + line;
-    body += line + "\n";
+    body += rename_legacy_builtins(line) + "\n";
   }
+  if (!block_lines.empty()) return "an interface block does not end: " + block_lines.front();
   if (version.empty()) return "the shader has no #version line";
   if (stage == GraphicsStage::Vertex && glsl.find("gl_Position") != std::string::npos)
     out->iface.outputs.push_back(StageVariable{"gl_Position", 'f', 4});
+  if (stage == GraphicsStage::Fragment) {
+    if (std::regex_search(glsl, std::regex(R"(\bgl_FragColor\b)"))) {
+      out->iface.outputs.push_back(StageVariable{"gl_FragColor", 'f', 4});
+      legacy_outputs += "highp vec4 doublet_FragColor;\n";
+    }
+    // The gl_FragData slots the text names with a constant index, each an output.
+    std::set<int> slots;
+    static const std::regex frag_data(R"(\bgl_FragData\s*\[\s*(\d+)\s*\])");
+    for (std::sregex_iterator it(glsl.begin(), glsl.end(), frag_data), end; it != end; ++it)
+      if (const int k = std::stoi((*it)[1].str()); k < kFragDataSlots) slots.insert(k);
+    for (int k : slots) out->iface.outputs.push_back(StageVariable{"gl_FragData[" + std::to_string(k) + "]", 'f', 4});
+    if (std::regex_search(glsl, std::regex(R"(\bgl_FragData\b)")))
+      legacy_outputs += "highp vec4 doublet_FragData[" + std::to_string(kFragDataSlots) + "];\n";
+    // Inserted after "#define main ..." so that the user's text can use them.
+    const std::string anchor = "#define main doublet_user_main\n";
+    if (const size_t at = body.find(anchor); at != std::string::npos) body.insert(at + anchor.size(), legacy_outputs);
+  }
   if (out->iface.outputs.empty()) return "the shader has no outputs to compare";
   out->iface.input_stride = lay_out(out->iface.inputs);
   out->iface.output_stride = lay_out(out->iface.outputs);
@@ -138,7 +273,7 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
     w += "  " + out->iface.inputs[i].name + " = doublet_in[doublet_i].m" + std::to_string(i) + ";\n";
   w += "  doublet_user_main();\n";
   for (size_t i = 0; i < out->iface.outputs.size(); ++i)
-    w += "  doublet_out[doublet_i].m" + std::to_string(i) + " = " + out->iface.outputs[i].name + ";\n";
+    w += "  doublet_out[doublet_i].m" + std::to_string(i) + " = " + rename_legacy_builtins(out->iface.outputs[i].name) + ";\n";
   w += "}\n";
 
   const std::string user = body + w;

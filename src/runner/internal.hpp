@@ -16,6 +16,7 @@ struct UniformSlot {
   uint32_t offset = 0;
   bool is_float = false;   // only `float` can be set through ComputeJob::float_uniforms
   bool is_double = false;  // double/dvecN (else float/vecN when components > 0)
+  char scalar = 'f';       // 'f', 'd', 'i', 'u', 'b' (bool: stored as a 32-bit 0 or 1)
   int components = 0;      // values: 1..4 for scalars/vectors, columns × rows for matrices, 0 otherwise
   int columns = 1;         // matrices: std140 puts each column at a 16-byte (dvec3/4: 32) stride
 };
@@ -26,7 +27,18 @@ struct SpirvProgram {
   std::map<std::string, UniformSlot> uniforms;  // live members of the global uniform block
   uint32_t uniform_block_size = 0;              // 0 when the shader has no loose uniforms
   std::vector<int> ssbo_bindings;               // bindings of the shader's buffer blocks
+  // Named uniform blocks and samplers with their Vulkan slots (glslang's automatic mapping).
+  struct Resource {
+    std::string name;
+    uint32_t set = 0, binding = 0;
+    uint32_t size = 0;                      // uniform blocks: bytes
+    TextureKind kind = TextureKind::Tex2D;  // samplers
+  };
+  std::vector<Resource> uniform_blocks, samplers;
 };
+
+// One value of a uniform or buffer, stored as its scalar type ('f', 'd', 'i', 'u', 'b') at `at`.
+void store_scalar(uint8_t* at, char scalar, double value);
 
 // glslang compile + link + IO mapping + reflection + SPIRV-Tools validation.
 // When `iface` is set it also receives the reflected interface.

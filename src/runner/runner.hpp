@@ -67,6 +67,7 @@ struct ShaderInterface {
     // by column), 0 for other types.
     int components = 0;
     int columns = 1;  // matrices: columns (each holds components / columns rows)
+    char scalar = 'f';  // 'f' float, 'd' double, 'i' int, 'u' uint, 'b' bool (is_double == (scalar == 'd'))
   };
   struct Block {
     std::string name;
@@ -83,10 +84,22 @@ struct ShaderInterface {
     uint32_t array_size = 1;  // elements; 0 for a runtime-sized array
     uint32_t array_stride = 0;
   };
+  // A named uniform block (`uniform Params { dmat4 mvp; ... };`) and its active members, whose
+  // `name`s are the member names without the block's prefix; `offset` is the std140 byte offset.
+  struct UniformBlockMember : Uniform {
+    uint32_t offset = 0;
+  };
+  struct UniformBlock {
+    std::string name;   // the block name, as GL's glGetUniformBlockIndex takes it
+    uint32_t size = 0;  // bytes
+    std::vector<UniformBlockMember> members;
+  };
   uint32_t local_size[3] = {1, 1, 1};
-  std::vector<Uniform> uniforms;
+  std::vector<Uniform> uniforms;  // loose uniforms (and scalar int/uint/bool ones: components, is_integer)
   std::vector<Block> blocks;
   std::vector<Member> members;
+  std::vector<UniformBlock> uniform_blocks;
+  std::vector<std::string> samplers;  // sampler2D/3D/Cube uniforms (graphics jobs bind test_texture to them)
 };
 // Compiles like the Vulkan backend (so "#version 450" with doubles works) and reflects.
 bool reflect_compute(const std::string& glsl, ShaderInterface* out, std::string* error);
@@ -119,6 +132,8 @@ struct GraphicsInterface {
   std::vector<StageVariable> inputs, outputs;  // declaration order; outputs end with gl_Position
   uint32_t input_stride = 0, output_stride = 0;  // bytes per sample record (std430 struct)
   std::vector<ShaderInterface::Uniform> uniforms;  // active loose uniforms (glslang reflection)
+  std::vector<ShaderInterface::UniformBlock> uniform_blocks;  // named uniform blocks (GraphicsJob::uniform_blocks)
+  std::vector<std::string> samplers;  // sampler uniforms, each bound to test_texture(its kind)
 };
 
 // Parses the stage's in/out declarations and reflects its uniforms (compiling the wrapped shader as
@@ -132,8 +147,23 @@ struct GraphicsJob {
   // Per input variable: count × components values (converted to its type). Unlisted inputs are 0.
   std::map<std::string, std::vector<double>> inputs;
   std::map<std::string, float> float_uniforms;               // as ComputeJob
-  std::map<std::string, std::vector<double>> uniforms;       // as ComputeJob (matrices too)
+  std::map<std::string, std::vector<double>> uniforms;       // as ComputeJob (matrices, int/uint/bool too)
+  // Named uniform blocks by block name: their bytes (std140, as the shader declares them), bound
+  // as uniform buffers. A block the job does not list reads as zeros.
+  std::map<std::string, std::vector<uint8_t>> uniform_blocks;
 };
+
+// std140 bytes between the columns of a matrix with `rows` rows: a vec4's 16, a dvec3/dvec4's 32.
+inline uint32_t std140_column_stride(bool is_double, int rows) { return is_double && rows > 2 ? 32 : 16; }
+
+// Every sampler2D, sampler3D and samplerCube of a graphics job samples this texture (both
+// backends, both shaders): kTextureSize texels per side, RGBA32F, one level, NEAREST filtering,
+// REPEAT wrapping (cube maps clamp). Texels are exact floats from a fixed pattern, so a texel
+// fetch is bit-identical on every driver.
+enum class TextureKind { Tex2D, Tex3D, Cube };
+inline constexpr uint32_t kTextureSize = 16;
+// RGBA values, x fastest, then y, then z (3D) or face (cube: +X -X +Y -Y +Z -Z).
+std::vector<float> test_texture(TextureKind kind);
 
 struct GraphicsResult {
   bool ok = false;

@@ -6,6 +6,7 @@
 #include <spirv-tools/libspirv.hpp>
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -57,15 +58,56 @@ bool matrix_shape(int gl_type, bool* is_double, int* columns, int* rows) {
   return false;
 }
 
-// A loose uniform's shape: vectors as float_components, matrices as columns × rows values.
-void uniform_shape(int gl_type, int size, bool* is_double, int* components, int* columns) {
+// Components of an int/uint/bool scalar or vector reflection type (GL type codes) and its scalar
+// letter ('i', 'u', 'b'); 0 otherwise.
+int integer_components(int gl_type, char* scalar) {
+  struct Shape { int type; char scalar; int components; };
+  static constexpr Shape kShapes[] = {{0x1404, 'i', 1}, {0x8B53, 'i', 2}, {0x8B54, 'i', 3}, {0x8B55, 'i', 4},
+                                      {0x1405, 'u', 1}, {0x8DC6, 'u', 2}, {0x8DC7, 'u', 3}, {0x8DC8, 'u', 4},
+                                      {0x8B56, 'b', 1}, {0x8B57, 'b', 2}, {0x8B58, 'b', 3}, {0x8B59, 'b', 4}};
+  for (const Shape& s : kShapes)
+    if (s.type == gl_type) {
+      *scalar = s.scalar;
+      return s.components;
+    }
+  return 0;
+}
+
+// A uniform's shape: vectors as float_components, matrices as columns × rows values, int/uint/bool
+// scalars and vectors by their scalar letter; 0 components for anything else (arrays included).
+void uniform_shape(int gl_type, int size, char* scalar, int* components, int* columns) {
   *components = 0;
   *columns = 1;
-  *is_double = false;
+  *scalar = 'f';
   if (size != 1) return;
   int rows = 0;
-  if (matrix_shape(gl_type, is_double, columns, &rows)) *components = *columns * rows;
-  else *components = float_components(gl_type, is_double);
+  bool is_double = false;
+  if (matrix_shape(gl_type, &is_double, columns, &rows)) *components = *columns * rows;
+  else if (int n = integer_components(gl_type, scalar); n > 0) *components = n;
+  else *components = float_components(gl_type, &is_double);
+  if (is_double) *scalar = 'd';
+}
+
+ShaderInterface::Uniform uniform_of(const glslang::TObjectReflection& u, std::string name) {
+  ShaderInterface::Uniform out{std::move(name)};
+  uniform_shape(u.glDefineType, u.size, &out.scalar, &out.components, &out.columns);
+  out.is_double = out.scalar == 'd';
+  return out;
+}
+
+// sampler2D/3D/Cube (GL type codes); false for any other opaque type.
+bool sampler_kind(int gl_type, TextureKind* kind) {
+  switch (gl_type) {
+    case 0x8B5E: *kind = TextureKind::Tex2D; return true;  // GL_SAMPLER_2D
+    case 0x8B5F: *kind = TextureKind::Tex3D; return true;  // GL_SAMPLER_3D
+    case 0x8B60: *kind = TextureKind::Cube; return true;   // GL_SAMPLER_CUBE
+  }
+  return false;
+}
+
+uint32_t descriptor_set_of(const glslang::TObjectReflection& r) {
+  const glslang::TType* t = r.getType();
+  return t && t->getQualifier().hasSet() ? t->getQualifier().layoutSet : 0;
 }
 
 // glslang keeps process-wide state (symbol tables); initialise it once and serialise compiles.
@@ -87,11 +129,32 @@ std::string strip_array_suffix(std::string name) {
 
 void reflect(const glslang::TProgram& program, ShaderInterface* iface) {
   for (int d = 0; d < 3; ++d) iface->local_size[d] = program.getLocalSize(d);
+  std::map<int, size_t> named_block;  // reflection index of a named uniform block -> uniform_blocks
+  for (int i = 0; i < program.getNumUniformBlocks(); ++i) {
+    const glslang::TObjectReflection& b = program.getUniformBlock(i);
+    if (b.name == kGlobalBlockName) continue;
+    named_block[i] = iface->uniform_blocks.size();
+    iface->uniform_blocks.push_back({b.name, static_cast<uint32_t>(std::max(b.size, 0)), {}});
+  }
   for (int i = 0; i < program.getNumUniformVariables(); ++i) {
     const glslang::TObjectReflection& u = program.getUniform(i);
-    ShaderInterface::Uniform out{u.name};
-    uniform_shape(u.glDefineType, u.size, &out.is_double, &out.components, &out.columns);
-    iface->uniforms.push_back(out);
+    TextureKind kind;
+    if (u.index < 0) {
+      if (sampler_kind(u.glDefineType, &kind)) iface->samplers.push_back(u.name);
+      continue;
+    }
+    auto block = named_block.find(u.index);
+    if (block == named_block.end()) {
+      iface->uniforms.push_back(uniform_of(u, u.name));
+      continue;
+    }
+    ShaderInterface::UniformBlock& b = iface->uniform_blocks[block->second];
+    // Members of an instance-named block are reflected as "Block.member".
+    std::string name = u.name.rfind(b.name + ".", 0) == 0 ? u.name.substr(b.name.size() + 1) : u.name;
+    ShaderInterface::UniformBlockMember m;
+    static_cast<ShaderInterface::Uniform&>(m) = uniform_of(u, std::move(name));
+    m.offset = static_cast<uint32_t>(std::max(u.offset, 0));
+    b.members.push_back(m);
   }
   for (int i = 0; i < program.getNumBufferBlocks(); ++i) {
     const glslang::TObjectReflection& b = program.getBufferBlock(i);
@@ -111,6 +174,12 @@ void reflect(const glslang::TProgram& program, ShaderInterface* iface) {
     if (t && t->isArray()) {
       m.array_size = t->isUnsizedArray() ? 0 : static_cast<uint32_t>(t->getOuterArraySize());
       m.array_stride = static_cast<uint32_t>(v.arrayStride > 0 ? v.arrayStride : v.topLevelArrayStride);
+      // A member array inside an array of structs has two strides: not fed or compared.
+      if (v.topLevelArrayStride > 0 && v.arrayStride > 0 && m.name.find('.') != std::string::npos) m.components = 0;
+    } else if (v.topLevelArrayStride > 0) {
+      // A member of an array of structs (`Particle p[]` -> "p.pos"): one value per element of p.
+      m.array_size = static_cast<uint32_t>(std::max(v.topLevelArraySize, 0));
+      m.array_stride = static_cast<uint32_t>(v.topLevelArrayStride);
     }
     iface->members.push_back(m);
   }
@@ -169,22 +238,37 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
 
   SpirvProgram result;
   if (iface) reflect(program, iface);
+  int global_block = -1;
   for (int i = 0; i < program.getNumUniformBlocks(); ++i) {
     const glslang::TObjectReflection& block = program.getUniformBlock(i);
-    if (block.name != kGlobalBlockName) {
-      *error = "unsupported: uniform block '" + block.name + "' (only loose uniforms can be fed by the runner)";
+    if (block.name == kGlobalBlockName) {
+      global_block = i;
+      result.uniform_block_size = static_cast<uint32_t>(block.size);
+      continue;
+    }
+    if (block.size < 0 || block.getBinding() < 0 || (block.getType() && block.getType()->isArray())) {
+      *error = "unsupported: uniform block '" + block.name + "' (arrays of blocks are not fed by the runner)";
       return false;
     }
-    result.uniform_block_size = static_cast<uint32_t>(block.size);
+    result.uniform_blocks.push_back({block.name, descriptor_set_of(block), static_cast<uint32_t>(block.getBinding()),
+                                     static_cast<uint32_t>(block.size), TextureKind::Tex2D});
   }
   for (int i = 0; i < program.getNumUniformVariables(); ++i) {
     const glslang::TObjectReflection& u = program.getUniform(i);
     if (u.index < 0) {
-      *error = "unsupported: opaque uniform '" + u.name + "' (samplers/images are not fed by the runner)";
-      return false;
+      TextureKind kind;
+      if (!sampler_kind(u.glDefineType, &kind) || u.size != 1 || u.getBinding() < 0) {
+        *error = "unsupported: opaque uniform '" + u.name +
+                 "' (the runner binds its test texture to sampler2D, sampler3D and samplerCube only, not arrays)";
+        return false;
+      }
+      result.samplers.push_back({u.name, descriptor_set_of(u), static_cast<uint32_t>(u.getBinding()), 0, kind});
+      continue;
     }
+    if (u.index != global_block) continue;  // a member of a named block: the job gives the block's bytes
     UniformSlot slot{static_cast<uint32_t>(u.offset), u.glDefineType == kGlFloat && u.size == 1};
-    uniform_shape(u.glDefineType, u.size, &slot.is_double, &slot.components, &slot.columns);
+    uniform_shape(u.glDefineType, u.size, &slot.scalar, &slot.components, &slot.columns);
+    slot.is_double = slot.scalar == 'd';
     result.uniforms[u.name] = slot;
   }
   for (int i = 0; i < program.getNumBufferBlocks(); ++i) result.ssbo_bindings.push_back(program.getBufferBlock(i).getBinding());

@@ -170,6 +170,9 @@ std::vector<ComputeResult> vulkan_run(const SpirvProgram& program, const std::ve
   if (!d.error.empty()) return fail("Vulkan unavailable: " + d.error);
   if (spirv_uses_float64(program.words) && !d.float64)
     return fail("shader uses double (Float64) but " + d.name + " lacks shaderFloat64");
+  if (!program.uniform_blocks.empty() || !program.samplers.empty())
+    return fail("compute jobs do not bind named uniform blocks or samplers yet (vertex/fragment jobs do): use "
+                "loose uniforms and buffers");
   const auto n = static_cast<uint32_t>(jobs[0].buffers.size());
   if (n > d.limits.maxPerStageDescriptorStorageBuffers) return fail("too many buffers for " + d.name);
   std::lock_guard<std::mutex> lock(d.mu);

@@ -204,6 +204,16 @@ std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usa
   return {};
 }
 
+void store_scalar(uint8_t* at, char scalar, double value) {
+  switch (scalar) {
+    case 'd': std::memcpy(at, &value, 8); break;
+    case 'f': { const float f = static_cast<float>(value); std::memcpy(at, &f, 4); break; }
+    case 'i': { const int32_t i = static_cast<int32_t>(value); std::memcpy(at, &i, 4); break; }
+    case 'b': { const uint32_t b = value != 0; std::memcpy(at, &b, 4); break; }
+    default: { const uint32_t u = static_cast<uint32_t>(value); std::memcpy(at, &u, 4); break; }
+  }
+}
+
 std::string uniform_block_bytes(const SpirvProgram& program, const std::map<std::string, float>& float_uniforms,
                                 const std::map<std::string, std::vector<double>>& uniforms, std::vector<uint8_t>* bytes) {
   bytes->assign(std::max<uint32_t>(program.uniform_block_size, 16), 0);
@@ -218,23 +228,18 @@ std::string uniform_block_bytes(const SpirvProgram& program, const std::map<std:
     auto it = program.uniforms.find(name);
     if (it == program.uniforms.end()) continue;
     const UniformSlot& slot = it->second;
-    if (slot.components == 0) return "uniform '" + name + "' is not a float/double scalar, vector or matrix";
+    if (slot.components == 0) return "uniform '" + name + "' is not a scalar, vector or matrix";
     if (static_cast<int>(values.size()) != slot.components)
       return "uniform '" + name + "' has " + std::to_string(slot.components) + " component(s), job gives " +
              std::to_string(values.size());
     const size_t width = slot.is_double ? sizeof(double) : sizeof(float);
     const size_t rows = values.size() / static_cast<size_t>(slot.columns);
     // std140: vector components are packed; matrix columns start at vec4 (dvec3/dvec4: 32-byte) strides.
-    const size_t column_stride = slot.columns == 1 ? 0 : (slot.is_double && rows > 2 ? 32 : 16);
+    const size_t column_stride = slot.columns == 1 ? 0 : std140_column_stride(slot.is_double, static_cast<int>(rows));
     for (size_t c = 0; c < values.size(); ++c) {
       const size_t at = slot.offset + (c / rows) * column_stride + (c % rows) * width;
       if (at + width > bytes->size()) return "uniform '" + name + "' lies outside its block";
-      uint8_t* dst = bytes->data() + at;
-      if (slot.is_double) std::memcpy(dst, &values[c], width);
-      else {
-        const float f = static_cast<float>(values[c]);
-        std::memcpy(dst, &f, width);
-      }
+      store_scalar(bytes->data() + at, slot.scalar, values[c]);
     }
   }
   return {};

@@ -61,6 +61,14 @@ std::string begin_one_time_commands(VulkanDevice& d, VkCommandPool pool, JobObje
 // queue to drain first, because `job`'s objects must not be freed while in use.
 std::string submit_and_wait(VulkanDevice& d, JobObjects& job, VkCommandBuffer cmd);
 
+// The runner's test texture (runner.hpp) as a sampled image, uploaded with a command from `pool`.
+struct SampledTexture {
+  VkImageView view = VK_NULL_HANDLE;
+  VkSampler sampler = VK_NULL_HANDLE;
+};
+std::string make_test_texture(VulkanDevice& d, JobObjects& objs, VkCommandPool pool, TextureKind kind,
+                              SampledTexture* out);
+
 // The global uniform block's bytes: zero everywhere, then each named value at its reflected offset.
 std::string uniform_block_bytes(const SpirvProgram& program, const std::map<std::string, float>& float_uniforms,
                                 const std::map<std::string, std::vector<double>>& uniforms, std::vector<uint8_t>* bytes);

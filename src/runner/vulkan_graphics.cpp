@@ -3,6 +3,9 @@
 // wrapper's storage buffers (set 0), loose uniforms the glslang global block (set kUniformSet).
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
+#include <map>
+
 #include "runner/graphics_wrapper.hpp"
 #include "runner/vulkan_device.hpp"
 
@@ -18,6 +21,7 @@ struct GraphicsPipeline {
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
   VkCommandPool cmd_pool = VK_NULL_HANDLE;
+  std::map<TextureKind, SampledTexture> textures;  // the test texture, per kind the shader samples
 };
 
 std::string make_module(VulkanDevice& d, JobObjects& objs, const std::vector<uint32_t>& words, VkShaderModule* out) {
@@ -31,16 +35,29 @@ std::string make_module(VulkanDevice& d, JobObjects& objs, const std::vector<uin
   return {};
 }
 
-std::string make_layouts(VulkanDevice& d, JobObjects& objs, GraphicsPipeline* p) {
+// Set 0: the wrapper's input and output buffers, the shader's named uniform blocks and samplers (at
+// glslang's automatic bindings); set kUniformSet: the global block of loose uniforms.
+std::string make_layouts(VulkanDevice& d, const SpirvProgram& program, JobObjects& objs, GraphicsPipeline* p) {
   static_assert(kUniformSet == 1 && kUniformBinding == 0, "layout below assumes set 1, binding 0");
-  const VkDescriptorSetLayoutBinding ssbos[2] = {
+  std::vector<VkDescriptorSetLayoutBinding> set0 = {
       {kInputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr},
       {kOutputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr}};
+  for (const auto* list : {&program.uniform_blocks, &program.samplers})
+    for (const SpirvProgram::Resource& r : *list) {
+      const bool sampler = list == &program.samplers;
+      for (const VkDescriptorSetLayoutBinding& b : set0)
+        if (r.set != 0 || b.binding == r.binding)
+          return "uniform '" + r.name + "' is at set " + std::to_string(r.set) + ", binding " +
+                 std::to_string(r.binding) + ", which the runner cannot use (set 0, not bindings " +
+                 std::to_string(kInputBinding) + "/" + std::to_string(kOutputBinding) + "): drop its layout(set/binding)";
+      set0.push_back({r.binding, sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                      1, kStages, nullptr});
+    }
   const VkDescriptorSetLayoutBinding ubo{kUniformBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kStages, nullptr};
   for (int s = 0; s < 2; ++s) {
     VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    lci.bindingCount = s == 0 ? 2 : 1;
-    lci.pBindings = s == 0 ? ssbos : &ubo;
+    lci.bindingCount = s == 0 ? static_cast<uint32_t>(set0.size()) : 1;
+    lci.pBindings = s == 0 ? set0.data() : &ubo;
     if (VkResult r = vkCreateDescriptorSetLayout(d.device, &lci, nullptr, &p->layouts[s]); r != VK_SUCCESS)
       return vk_failed("vkCreateDescriptorSetLayout", r);
     VkDescriptorSetLayout l = p->layouts[s];
@@ -81,7 +98,7 @@ std::string make_render_target(VulkanDevice& d, JobObjects& objs, GraphicsPipeli
 
 std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, GraphicsStage stage, JobObjects& objs,
                           GraphicsPipeline* p) {
-  if (std::string e = make_layouts(d, objs, p); !e.empty()) return e;
+  if (std::string e = make_layouts(d, program, objs, p); !e.empty()) return e;
   if (std::string e = make_render_target(d, objs, p); !e.empty()) return e;
   VkShaderModule modules[2];
   if (std::string e = make_module(d, objs, program.words, &modules[0]); !e.empty()) return e;
@@ -131,6 +148,9 @@ std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, Graphics
     return vk_failed("vkCreateCommandPool", r);
   VkCommandPool pool = p->cmd_pool;
   objs.cleanup.push_back([&d, pool] { vkDestroyCommandPool(d.device, pool, nullptr); });
+  for (const SpirvProgram::Resource& s : program.samplers)
+    if (!p->textures.count(s.kind))
+      if (std::string e = make_test_texture(d, objs, pool, s.kind, &p->textures[s.kind]); !e.empty()) return e;
   return {};
 }
 
@@ -147,11 +167,25 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
   if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, blank, &outputs); !e.empty()) return e;
   if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, ubo_data, &ubo); !e.empty()) return e;
 
-  const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}};
+  // The job's named uniform blocks (zeros for a block it does not give).
+  std::vector<HostBuffer> blocks(program.uniform_blocks.size());
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    const SpirvProgram::Resource& r = program.uniform_blocks[i];
+    auto given = job.uniform_blocks.find(r.name);
+    std::vector<uint8_t> bytes = given == job.uniform_blocks.end() ? std::vector<uint8_t>() : given->second;
+    bytes.resize(std::max<size_t>(bytes.size(), r.size), 0);
+    if (std::string e = make_buffer(d, objs, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, bytes, &blocks[i]); !e.empty()) return e;
+  }
+
+  const auto block_count = static_cast<uint32_t>(blocks.size());
+  const auto sampler_count = static_cast<uint32_t>(program.samplers.size());
+  std::vector<VkDescriptorPoolSize> sizes = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+                                             {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1 + block_count}};
+  if (sampler_count) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sampler_count});
   VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   dpci.maxSets = 2;
-  dpci.poolSizeCount = 2;
-  dpci.pPoolSizes = sizes;
+  dpci.poolSizeCount = static_cast<uint32_t>(sizes.size());
+  dpci.pPoolSizes = sizes.data();
   VkDescriptorPool pool;
   if (VkResult r = vkCreateDescriptorPool(d.device, &dpci, nullptr, &pool); r != VK_SUCCESS)
     return vk_failed("vkCreateDescriptorPool", r);
@@ -163,18 +197,37 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
   VkDescriptorSet sets[2];
   if (VkResult r = vkAllocateDescriptorSets(d.device, &dsai, sets); r != VK_SUCCESS)
     return vk_failed("vkAllocateDescriptorSets", r);
-  const VkDescriptorBufferInfo infos[3] = {{inputs.buffer, 0, VK_WHOLE_SIZE}, {outputs.buffer, 0, VK_WHOLE_SIZE},
-                                           {ubo.buffer, 0, VK_WHOLE_SIZE}};
-  VkWriteDescriptorSet writes[3];
-  for (int i = 0; i < 3; ++i) {
-    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    writes[i].dstSet = sets[i == 2 ? 1 : 0];
-    writes[i].dstBinding = i == 0 ? kInputBinding : i == 1 ? kOutputBinding : kUniformBinding;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = i == 2 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[i].pBufferInfo = &infos[i];
+  // Buffers: input, output, global uniforms, then the named blocks; then the samplers.
+  std::vector<VkDescriptorBufferInfo> buffer_infos = {{inputs.buffer, 0, VK_WHOLE_SIZE},
+                                                      {outputs.buffer, 0, VK_WHOLE_SIZE},
+                                                      {ubo.buffer, 0, VK_WHOLE_SIZE}};
+  for (const HostBuffer& b : blocks) buffer_infos.push_back({b.buffer, 0, VK_WHOLE_SIZE});
+  std::vector<VkDescriptorImageInfo> image_infos;
+  for (const SpirvProgram::Resource& s : program.samplers) {
+    const SampledTexture& t = p.textures.at(s.kind);
+    image_infos.push_back({t.sampler, t.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
   }
-  vkUpdateDescriptorSets(d.device, 3, writes, 0, nullptr);
+  std::vector<VkWriteDescriptorSet> writes;
+  auto write = [&](VkDescriptorSet set, uint32_t binding, VkDescriptorType type) {
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstSet = set;
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = type;
+    writes.push_back(w);
+  };
+  write(sets[0], kInputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  write(sets[0], kOutputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  write(sets[1], kUniformBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+  for (const SpirvProgram::Resource& r : program.uniform_blocks)
+    write(sets[0], r.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+  for (const SpirvProgram::Resource& r : program.samplers)
+    write(sets[0], r.binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
+  for (size_t i = 0; i < writes.size(); ++i) {
+    if (i < buffer_infos.size()) writes[i].pBufferInfo = &buffer_infos[i];
+    else writes[i].pImageInfo = &image_infos[i - buffer_infos.size()];
+  }
+  vkUpdateDescriptorSets(d.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 
   VkCommandBuffer cmd;
   if (std::string error = begin_one_time_commands(d, p.cmd_pool, objs, &cmd); !error.empty()) return error;

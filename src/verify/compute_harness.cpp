@@ -5,6 +5,7 @@
 #include <map>
 
 #include "doublet/split.hpp"
+#include "verify/bytes.hpp"
 #include "verify/inputs.hpp"
 #include "verify/relations.hpp"
 
@@ -18,28 +19,7 @@ std::string type_name(bool is_double, int components) {
   return std::string(is_double ? "dvec" : "vec") + std::to_string(components);
 }
 
-uint32_t width(bool is_double) { return is_double ? 8 : 4; }
-
-void write_value(std::vector<uint8_t>& bytes, size_t at, bool is_double, double v) {
-  if (at + width(is_double) > bytes.size()) return;  // planned sizes make this unreachable
-  if (is_double) std::memcpy(bytes.data() + at, &v, 8);
-  else {
-    const float f = static_cast<float>(v);
-    std::memcpy(bytes.data() + at, &f, 4);
-  }
-}
-
-double read_value(const std::vector<uint8_t>& bytes, size_t at, bool is_double) {
-  if (at + width(is_double) > bytes.size()) return 0;
-  if (is_double) {
-    double d;
-    std::memcpy(&d, bytes.data() + at, 8);
-    return d;
-  }
-  float f;
-  std::memcpy(&f, bytes.data() + at, 4);
-  return f;
-}
+uint32_t width(bool is_double) { return scalar_width(is_double); }
 
 // One past the last byte of `elements` elements of `element_bytes` each, `stride` apart from `offset`.
 uint32_t end_of_elements(uint32_t offset, uint32_t elements, uint32_t stride, uint32_t element_bytes) {
@@ -68,11 +48,25 @@ std::vector<uint32_t> buffer_sizes(const ShaderInterface& s, uint32_t array_leng
   return sizes;
 }
 
-// The split member `name` of a buffer block in the manifest (hi_offset/lo_offset set), or null.
-const BlockMember* find_split_member(const Manifest& manifest, const std::string& name) {
+// The split member `name` of a buffer block in the manifest (hi_offset/lo_offset set), or null; a
+// member of an array of structs, reflected as "p.pos", is listed as "p[0].pos" (offset in element
+// 0) and *stride becomes the array's ("p") stride.
+const BlockMember* find_split_member(const Manifest& manifest, const std::string& name, uint32_t* stride) {
+  const size_t dot = name.find('.');
+  const std::string array = dot == std::string::npos ? "" : name.substr(0, dot);
+  const std::string element_name = array.empty() ? name : array + "[0]" + name.substr(dot);
   for (const auto& v : manifest.variables)
-    for (const auto& m : v.members)
-      if (m.name == name && m.hi_offset >= 0 && m.lo_offset >= 0 && m.matrix_stride == 0) return &m;
+    for (const auto& m : v.members) {
+      if (m.hi_offset < 0 || m.lo_offset < 0 || m.matrix_stride != 0) continue;
+      if (m.name == name) {
+        *stride = static_cast<uint32_t>(m.array_stride);
+        return &m;
+      }
+      if (m.name != element_name) continue;
+      for (const auto& parent : v.members)
+        if (parent.name == array) *stride = static_cast<uint32_t>(parent.array_stride);
+      return &m;
+    }
   return nullptr;
 }
 
@@ -96,6 +90,7 @@ std::string ComputeHarness::add_variable(const ShaderInterface& native_if, const
       for (const auto& u : s.uniforms)
         if (u.name == n) {
           out->is_double = u.is_double;
+          out->scalar = u.scalar;
           out->components = u.components;
           return true;
         }
@@ -118,12 +113,13 @@ std::string ComputeHarness::add_variable(const ShaderInterface& native_if, const
   // position[]`): reflection sees a struct, the manifest gives where hi and lo live in each element.
   Slot probe;
   if (!is_uniform && (!slot_of(lowered_if, name, &probe) || probe.components == 0))
-    if (const BlockMember* m = find_split_member(manifest, name); m && v.native.components > 0) {
+    if (uint32_t stride = 0; const BlockMember* m = find_split_member(manifest, name, &stride)) {
+      if (v.native.components == 0) return {};
       for (int offset : {m->hi_offset, m->lo_offset}) {
         Slot s = v.native;
         s.is_double = false;
         s.offset = static_cast<uint32_t>(m->offset + offset);
-        s.stride = static_cast<uint32_t>(m->array_stride);
+        s.stride = stride;
         v.lowered.push_back(s);
       }
       (as_input ? inputs_ : outputs_).push_back(std::move(v));
@@ -160,9 +156,17 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
   if (!runner::reflect_compute(lowered_glsl, &lowered_if, &error))
     return "the lowered shader does not compile for reflection:\n" + error;
 
+  if (!native_if.uniform_blocks.empty() || !native_if.samplers.empty())
+    return "compute verify does not feed named uniform blocks or samplers yet ('" +
+           (native_if.uniform_blocks.empty() ? native_if.samplers[0] : native_if.uniform_blocks[0].name) +
+           "'): use loose uniforms and buffers, or verify a vertex/fragment shader (which binds both)";
   for (const auto& u : native_if.uniforms) {
     if (u.components == 0) {
       notes_.push_back("uniform '" + u.name + "' is not a float/double scalar or vector: left at 0");
+      continue;
+    }
+    if (u.scalar != 'f' && u.scalar != 'd' && !spec.inputs.count(u.name)) {
+      notes_.push_back("uniform '" + u.name + "' is an int/uint/bool: left at 0 (give it a --range or spec values)");
       continue;
     }
     if (std::string e = add_variable(native_if, lowered_if, manifest, true, u.name, true); !e.empty()) return e;
@@ -257,7 +261,11 @@ void ComputeHarness::generate(uint64_t seed) {
     for (const Variable& v : inputs_) {
       const size_t count = size_t{v.native.elements} * static_cast<size_t>(v.native.components);
       std::vector<double> vals(count);
-      for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input.component(k % static_cast<size_t>(std::max(v.native.components, 1))), v.native.is_double, d * count + k);
+      for (size_t k = 0; k < count; ++k) {
+        vals[k] = gen.next(v.input.component(k % static_cast<size_t>(std::max(v.native.components, 1))),
+                           v.native.is_double, d * count + k);
+        if (v.native.scalar != 'f' && v.native.scalar != 'd') vals[k] = integer_value(vals[k], v.native.scalar);
+      }
       values_[d].push_back(std::move(vals));
     }
   beyond_float_range_ = gen.beyond_float_range();

@@ -46,6 +46,7 @@ class ComputeHarness {
     bool is_uniform = false;
     std::string name;
     bool is_double = false;
+    char scalar = 'f';  // 'f', 'd', or an int/uint/bool uniform's 'i', 'u', 'b'
     int components = 0;
     int binding = -1;
     uint32_t offset = 0, stride = 0, elements = 1;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "doublet/split.hpp"
+#include "verify/bytes.hpp"
 #include "verify/inputs.hpp"
 #include "verify/relations.hpp"
 
@@ -14,10 +15,14 @@ using runner::GraphicsInterface;
 constexpr uint32_t kMaxPerDraw = 65536;     // the runner's grid
 constexpr uint32_t kDefaultPerDraw = 64;    // samples per draw when uniforms vary per draw
 
-std::string type_name(bool is_double, int components, bool matrix) {
+std::string type_name(char scalar, int components, bool matrix) {
+  const bool is_double = scalar == 'd';
   if (matrix) return std::string(is_double ? "dmat" : "mat") + "(" + std::to_string(components) + " values)";
-  if (components == 1) return is_double ? "double" : "float";
-  return std::string(is_double ? "dvec" : "vec") + std::to_string(components);
+  static const std::pair<char, std::pair<const char*, const char*>> kNames[] = {
+      {'f', {"float", "vec"}}, {'d', {"double", "dvec"}}, {'i', {"int", "ivec"}}, {'u', {"uint", "uvec"}}, {'b', {"bool", "bvec"}}};
+  for (const auto& [letter, names] : kNames)
+    if (letter == scalar) return components == 1 ? names.first : names.second + std::to_string(components);
+  return "?";
 }
 
 std::vector<std::string> lowered_names(const Manifest& manifest, const std::string& name) {
@@ -28,6 +33,32 @@ std::vector<std::string> lowered_names(const Manifest& manifest, const std::stri
 
 bool has_output(const GraphicsInterface& s, const std::string& name) {
   return std::any_of(s.outputs.begin(), s.outputs.end(), [&](const auto& o) { return o.name == name; });
+}
+
+// An output's name in the lowered shader: split pairs from the manifest; gl_FragColor becomes the
+// printer's declared `df_frag_color` on targets without it (src/emit/printer.cpp), and on es100 a
+// fragment shader's only output becomes gl_FragColor.
+std::vector<std::string> lowered_output_names(const Manifest& manifest, const GraphicsInterface& native_if,
+                                              const GraphicsInterface& lowered_if, const std::string& name) {
+  if (!has_output(lowered_if, name)) {
+    if (name == "gl_FragColor" && has_output(lowered_if, "df_frag_color")) return {"df_frag_color"};
+    if (native_if.outputs.size() == 1 && has_output(lowered_if, "gl_FragColor")) return {"gl_FragColor"};
+  }
+  return lowered_names(manifest, name);
+}
+
+const runner::ShaderInterface::UniformBlock* find_block(const GraphicsInterface& s, const std::string& name) {
+  for (const auto& b : s.uniform_blocks)
+    if (b.name == name) return &b;
+  return nullptr;
+}
+
+const BlockMember* find_manifest_member(const Manifest& manifest, const std::string& block, const std::string& member) {
+  for (const auto& v : manifest.variables)
+    if (v.name == block && v.storage == "uniform")
+      for (const auto& m : v.members)
+        if (m.name == member) return &m;
+  return nullptr;
 }
 
 }  // namespace
@@ -47,26 +78,40 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
 
   for (const auto& u : native_if.uniforms) {
     if (u.components == 0) {
-      notes_.push_back("uniform '" + u.name + "' is not a float/double scalar, vector or matrix: left at 0");
+      notes_.push_back("uniform '" + u.name + "' is not a scalar, vector or matrix: left at 0");
+      continue;
+    }
+    const bool integer = u.scalar != 'f' && u.scalar != 'd';
+    if (integer && !spec.inputs.count(u.name)) {
+      notes_.push_back("uniform '" + u.name + "' is an int/uint/bool: left at 0 (give it a --range or spec values)");
       continue;
     }
     Variable v{u.name, true, u.is_double, u.components, lowered_names(manifest, u.name)};
+    v.scalar = u.scalar;
+    v.columns = u.columns;
     if (u.columns > 1) notes_.push_back("uniform '" + u.name + "' is a matrix: fed column by column");
     inputs_.push_back(std::move(v));
   }
+  add_block_members(native_if, lowered_if, manifest);
+  for (const std::string& sampler : native_if.samplers)
+    notes_.push_back("sampler '" + sampler + "' reads the runner's " + std::to_string(runner::kTextureSize) +
+                     "-texel RGBA32F test texture (NEAREST) in both runs");
   for (const auto& in : native_if.inputs) {
     if (in.scalar != 'f' && in.scalar != 'd') {
       notes_.push_back("input '" + in.name + "' is an integer: left at 0");
       continue;
     }
-    inputs_.push_back(Variable{in.name, false, in.scalar == 'd', in.components, lowered_names(manifest, in.name)});
+    Variable v{in.name, false, in.scalar == 'd', in.components, lowered_names(manifest, in.name)};
+    v.scalar = in.scalar;
+    inputs_.push_back(std::move(v));
   }
   for (const auto& out : native_if.outputs) {
     if (out.scalar != 'f' && out.scalar != 'd') {
       notes_.push_back("output '" + out.name + "' is an integer: not compared");
       continue;
     }
-    Variable v{out.name, false, out.scalar == 'd', out.components, lowered_names(manifest, out.name)};
+    Variable v{out.name, false, out.scalar == 'd', out.components, lowered_output_names(manifest, native_if, lowered_if, out.name)};
+    v.scalar = out.scalar;
     for (const std::string& n : v.lowered)
       if (!has_output(lowered_if, n)) return "output '" + out.name + "' has no '" + n + "' in the lowered shader";
     outputs_.push_back(std::move(v));
@@ -102,6 +147,43 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
   return {};
 }
 
+// Members of named uniform blocks are per-draw inputs like loose uniforms; the native values go to
+// their std140 places (glslang reflection), the lowered ones to the manifest's (hi and lo of a
+// split member) or, for a block without doubles, to the lowered shader's reflected places.
+void GraphicsHarness::add_block_members(const GraphicsInterface& native_if, const GraphicsInterface& lowered_if,
+                                        const Manifest& manifest) {
+  for (const auto& block : native_if.uniform_blocks) {
+    const auto* lowered_block = find_block(lowered_if, block.name);
+    native_block_sizes_[block.name] = block.size;
+    lowered_block_sizes_[block.name] = lowered_block ? lowered_block->size : 0;
+    for (const auto& m : block.members) {
+      const std::string name = block.name + "." + m.name;
+      if (m.components == 0 || (m.scalar != 'f' && m.scalar != 'd')) {
+        notes_.push_back("uniform block member '" + name + "' is not a float/double scalar, vector or matrix: left at 0");
+        continue;
+      }
+      Variable v{name, true, m.scalar == 'd', m.components, {name}};
+      v.scalar = m.scalar;
+      v.columns = m.columns;
+      v.block = block.name;
+      const int rows = m.components / m.columns;
+      v.native_place = {m.offset, runner::std140_column_stride(v.is_double, rows), v.is_double};
+      if (const BlockMember* bm = find_manifest_member(manifest, block.name, m.name); bm && bm->hi_offset >= 0) {
+        for (int part : {bm->hi_offset, bm->lo_offset})
+          v.lowered_places.push_back({static_cast<uint32_t>(bm->offset + part), static_cast<uint32_t>(bm->matrix_stride), false});
+      } else if (lowered_block) {
+        auto it = std::find_if(lowered_block->members.begin(), lowered_block->members.end(),
+                               [&](const auto& lm) { return lm.name == m.name; });
+        if (it != lowered_block->members.end())
+          v.lowered_places.push_back({it->offset, runner::std140_column_stride(it->is_double, rows), it->is_double});
+      }
+      if (v.lowered_places.empty())
+        notes_.push_back("uniform block member '" + name + "' is not used by the lowered shader: fed to the native one only");
+      inputs_.push_back(std::move(v));
+    }
+  }
+}
+
 void GraphicsHarness::generate(uint64_t seed) {
   InputGenerator gen(seed);
   values_.assign(draws_, {});
@@ -109,7 +191,10 @@ void GraphicsHarness::generate(uint64_t seed) {
     for (const Variable& v : inputs_) {
       const size_t count = (v.is_uniform ? 1 : size_t{per_draw_}) * static_cast<size_t>(v.components);
       std::vector<double> vals(count);
-      for (size_t k = 0; k < count; ++k) vals[k] = gen.next(v.input.component(k % static_cast<size_t>(v.components)), v.is_double, d * count + k);
+      for (size_t k = 0; k < count; ++k) {
+        vals[k] = gen.next(v.input.component(k % static_cast<size_t>(v.components)), v.is_double, d * count + k);
+        if (v.scalar != 'f' && v.scalar != 'd') vals[k] = integer_value(vals[k], v.scalar);
+      }
       values_[d].push_back(std::move(vals));
     }
   beyond_float_range_ = gen.beyond_float_range();
@@ -124,6 +209,25 @@ void GraphicsHarness::generate(uint64_t seed) {
   }
 }
 
+// A uniform block member's values (column-major) at its places in the block's bytes: the native
+// place, or the lowered one(s) (hi then lo of a split member).
+void GraphicsHarness::write_block_member(const Variable& v, const std::vector<double>& values, bool native,
+                                         std::vector<uint8_t>* bytes) {
+  const size_t rows = static_cast<size_t>(v.components / v.columns);
+  const std::vector<BlockPlace> places = native ? std::vector<BlockPlace>{v.native_place} : v.lowered_places;
+  for (size_t part = 0; part < places.size(); ++part)
+    for (size_t k = 0; k < values.size(); ++k) {
+      double x = values[k];
+      if (places.size() == 2) {
+        const FloatPair p = split(x);
+        x = part == 0 ? p.hi : p.lo;
+      }
+      const BlockPlace& place = places[part];
+      write_value(*bytes, place.offset + (k / rows) * place.column_stride + (k % rows) * scalar_width(place.is_double),
+                  place.is_double, x, v.scalar);
+    }
+}
+
 std::vector<runner::GraphicsJob> GraphicsHarness::jobs(bool native) const {
   std::vector<runner::GraphicsJob> out(draws_);
   for (uint64_t d = 0; d < draws_; ++d) {
@@ -131,8 +235,14 @@ std::vector<runner::GraphicsJob> GraphicsHarness::jobs(bool native) const {
     job.stage = stage_;
     job.glsl = native ? native_glsl_ : lowered_glsl_;
     job.count = per_draw_;
+    for (const auto& [block, size] : native ? native_block_sizes_ : lowered_block_sizes_)
+      job.uniform_blocks[block].assign(size, 0);
     for (size_t i = 0; i < inputs_.size(); ++i) {
       const Variable& v = inputs_[i];
+      if (!v.block.empty()) {
+        write_block_member(v, values_[d][i], native, &job.uniform_blocks[v.block]);
+        continue;
+      }
       const std::vector<std::string> names = native ? std::vector<std::string>{v.name} : v.lowered;
       for (size_t part = 0; part < names.size(); ++part) {
         // A split pair gets hi in part 0 and lo in part 1; anything else gets the value itself.
@@ -168,7 +278,7 @@ std::vector<std::string> GraphicsHarness::describe_inputs() const {
   std::vector<std::string> out;
   for (const Variable& v : inputs_)
     out.push_back(v.name + " (" + (v.is_uniform ? "uniform " : "in ") +
-                  type_name(v.is_double, v.components, v.is_uniform && v.components > 4) + ")");
+                  type_name(v.scalar, v.components, v.columns > 1) + ")");
   return out;
 }
 

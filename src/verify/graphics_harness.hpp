@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,16 +43,33 @@ class GraphicsHarness {
   uint64_t draws() const { return draws_; }
 
  private:
+  // Where a member of a named uniform block keeps its values in one shader's block bytes: component
+  // k (column k / rows, row k % rows) at offset + column * column_stride + row * its width.
+  struct BlockPlace {
+    uint32_t offset = 0, column_stride = 0;
+    bool is_double = false;
+  };
   // One input or output as the user declared it and its name(s) in the lowered shader.
   struct Variable {
     std::string name;
-    bool is_uniform = false;
+    bool is_uniform = false;  // one value set per draw (loose uniforms and uniform block members)
     bool is_double = false;
     int components = 0;
     std::vector<std::string> lowered;  // one name, or hi and lo names when split
     InputSpec input;
     OutputSpec output;
+    char scalar = 'f';  // 'f', 'd', or an int/uint/bool uniform's 'i', 'u', 'b'
+    int columns = 1;    // matrices
+    // Uniform block members: the block, and the member's place in the native block and in the
+    // lowered one (hi then lo when split, from the manifest).
+    std::string block;
+    BlockPlace native_place;
+    std::vector<BlockPlace> lowered_places;
   };
+  static void write_block_member(const Variable& v, const std::vector<double>& values, bool native,
+                                 std::vector<uint8_t>* bytes);
+  void add_block_members(const runner::GraphicsInterface& native_if, const runner::GraphicsInterface& lowered_if,
+                         const Manifest& manifest);
 
   std::vector<runner::GraphicsJob> jobs(bool native) const;
   std::string describe_sample(uint64_t draw, uint32_t sample) const;
@@ -62,6 +80,7 @@ class GraphicsHarness {
   std::vector<std::string> notes_;
   uint64_t beyond_float_range_ = 0;  // input values fed as +-Inf (InputGenerator)
   std::vector<InputRelation> relations_;  // scene relations, applied after drawing
+  std::map<std::string, uint32_t> native_block_sizes_, lowered_block_sizes_;  // bytes per uniform block
   uint32_t per_draw_ = 1;
   uint64_t draws_ = 1;
   // values_[draw][input]: components values for a uniform, per_draw × components for a stage input.

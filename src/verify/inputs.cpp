@@ -1,5 +1,6 @@
 #include "verify/inputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "doublet/split.hpp"
@@ -8,6 +9,12 @@ namespace doublet::verify {
 
 double representable(double x, bool is_double) {
   return is_double ? join(split(x)) : static_cast<double>(static_cast<float>(x));
+}
+
+double integer_value(double x, char scalar) {
+  if (scalar == 'b') return x != 0 ? 1 : 0;
+  const double r = std::nearbyint(x);
+  return scalar == 'u' ? std::max(r, 0.0) : r;
 }
 
 double InputGenerator::draw(const InputSpec& spec) {

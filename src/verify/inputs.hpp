@@ -33,6 +33,10 @@ class InputGenerator {
 // were beyond float range; empty when there were none.
 std::string beyond_float_range_note(uint64_t count);
 
+// An int/uint/bool input's value (scalar 'i', 'u', 'b') from a drawn or given number: rounded to
+// the nearest integer (uint: at least 0); bool: 1 unless 0.
+double integer_value(double x, char scalar);
+
 // The value a double input keeps after the hi/lo split (or a float input after rounding).
 double representable(double x, bool is_double);
 

@@ -1,6 +1,11 @@
 #include "verify/verify.hpp"
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <optional>
 #include <regex>
+#include <sstream>
 
 #include "verify/compute_harness.hpp"
 #include "verify/graphics_harness.hpp"
@@ -8,13 +13,68 @@
 namespace doublet::verify {
 namespace {
 
-// The user's shader as the native reference: same text, desktop GLSL 4.50 (doubles are core there).
-std::string as_native_450(std::string_view source) {
+// The user's shader as the native reference: same text, desktop GLSL 4.50 (doubles are core
+// there), with the -D definitions after the #version line (a #line keeps line numbers) and every
+// `#include "..."` expanded the way the lowering resolves it (Options::includer, else next to the
+// including file, then the -I directories), so that both runs compile the same program.
+std::string include_line_target(const std::string& line) {
+  static const std::regex include(R"(^[ \t]*#[ \t]*include[ \t]*["<]([^">]+)[">].*$)");
+  std::smatch m;
+  return std::regex_match(line, m, include) ? m[1].str() : std::string();
+}
+
+std::optional<IncludeResult> resolve_include(const Options& o, const std::string& requested, const std::string& from) {
+  if (o.includer) return o.includer->include(requested, from);
+  namespace fs = std::filesystem;
+  std::vector<fs::path> dirs{fs::path(from).parent_path()};
+  for (const std::string& d : o.include_dirs) dirs.emplace_back(d);
+  for (const fs::path& dir : dirs) {
+    std::ifstream in(dir / requested, std::ios::binary);
+    if (!in) continue;
+    std::ostringstream text;
+    text << in.rdbuf();
+    return IncludeResult{(dir / requested).lexically_normal().string(), text.str()};
+  }
+  return std::nullopt;
+}
+
+constexpr int kMaxIncludeDepth = 32;  // as the front end: deeper means a cycle
+
+bool expand_includes(const Options& o, const std::string& text, const std::string& path, int depth, std::string* out,
+                     std::string* error) {
+  std::istringstream lines(text);
+  int number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    const std::string requested = include_line_target(line);
+    if (requested.empty()) {
+      *out += line + "\n";
+      continue;
+    }
+    const std::optional<IncludeResult> found = resolve_include(o, requested, path);
+    if (!found) return (*error = path + ":" + std::to_string(number) + ": cannot find include \"" + requested + "\""), false;
+    if (depth >= kMaxIncludeDepth) return (*error = path + ": #include nested too deep (a cycle?)"), false;
+    if (!expand_includes(o, found->contents, found->resolved_path, depth + 1, out, error)) return false;
+    *out += "#line " + std::to_string(number + 1) + "\n";
+  }
+  return true;
+}
+
+std::string as_native_450(std::string_view source, const Options& o, std::string* error) {
   static const std::regex version(R"(^[ \t]*#[ \t]*version[^\n]*)", std::regex::multiline);
   std::string s(source);
-  if (std::regex_search(s, version)) return std::regex_replace(s, version, "#version 450",
-                                                               std::regex_constants::format_first_only);
-  return "#version 450\n" + s;
+  std::smatch m;
+  const bool has_version = std::regex_search(s, m, version);
+  const size_t body_at = has_version ? static_cast<size_t>(m.position(0) + m.length(0)) : 0;
+  const int body_line = has_version ? 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<long>(body_at), '\n')) : 1;
+  std::string header = "#version 450\n";
+  for (const auto& [name, value] : o.defines) header += "#define " + name + " " + (value.empty() ? "1" : value) + "\n";
+  header += "#line " + std::to_string(has_version ? body_line : 1) + "\n";
+  std::string body = s.substr(body_at);
+  if (has_version && !body.empty() && body.front() == '\n') body.erase(0, 1);
+  std::string expanded;
+  if (!expand_includes(o, body, o.file_name, 0, &expanded, error)) return {};
+  return (has_version ? s.substr(0, static_cast<size_t>(m.position(0))) : std::string()) + header + expanded;
 }
 
 std::string diagnostics_text(const Result& r) {
@@ -85,11 +145,6 @@ void run_compute_stage(const std::string& native_glsl, const Result& lowered, co
 void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_glsl, const Result& lowered,
                         const VerifyOptions& options, VerifyReport* report) {
   const Target t = options.lower.target;
-  if (t == Target::Es100 || t == Target::Glsl330) {
-    report->input_error = "vertex/fragment verify needs target es300, es310, es320 or glsl450 (" + report->target +
-                          " text cannot host the storage-buffer capture)";
-    return;
-  }
   GraphicsHarness harness;
   if (std::string e = harness.plan(stage, native_glsl, lowered.output, lowered.manifest, options.spec, options.samples);
       !e.empty()) {
@@ -99,9 +154,12 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
   harness.generate(options.seed);
   report->notes = harness.notes();
   report->inputs_beyond_float_range = harness.inputs_beyond_float_range();
-  if (t == Target::Es300)
-    report->notes.push_back("es300 text runs as #version 310 es (the capture's storage buffers need 3.10; the "
-                            "shader text is otherwise unchanged)");
+  if (t == Target::Es100 || t == Target::Es300)
+    report->notes.push_back(report->target + " text runs as #version 310 es (the capture's storage buffers need 3.10; "
+                            "in/out, attribute/varying, gl_FragColor/gl_FragData and texture2D/textureCube are "
+                            "rewritten, the rest of the text is unchanged)");
+  if (t == Target::Glsl330)
+    report->notes.push_back("glsl330 text runs as #version 450 (the capture's storage buffers need 4.30)");
   report->inputs = harness.describe_inputs();
   report->dispatches = harness.draws();
 
@@ -158,7 +216,12 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   }
   report.lowered_glsl = lowered.output;
 
-  const std::string native = as_native_450(source);
+  std::string include_error;
+  const std::string native = as_native_450(source, options.lower, &include_error);
+  if (!include_error.empty()) {
+    report.input_error = include_error;
+    return report;
+  }
   switch (*options.lower.stage) {
     case Stage::Compute: run_compute_stage(native, lowered, options, &report); break;
     case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;

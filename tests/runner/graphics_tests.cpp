@@ -96,9 +96,24 @@ TEST(GraphicsWrap, UnsupportedDeclarationsAreReported) {
   std::string error;
   EXPECT_FALSE(reflect_graphics(GraphicsStage::Vertex, "#version 310 es\nin vec3 p[2];\nvoid main() {}\n", &iface, &error));
   EXPECT_NE(error.find("unsupported in/out declaration"), std::string::npos) << error;
-  EXPECT_FALSE(reflect_graphics(GraphicsStage::Vertex, "#version 100\nattribute vec3 p;\nvoid main() { gl_Position = vec4(p, 1.0); }\n",
+  EXPECT_FALSE(reflect_graphics(GraphicsStage::Vertex, "#version 130\nin vec3 p;\nvoid main() { gl_Position = vec4(p, 1.0); }\n",
                                 &iface, &error));
-  EXPECT_NE(error.find("unsupported '#version 100'"), std::string::npos) << error;
+  EXPECT_NE(error.find("unsupported '#version 130'"), std::string::npos) << error;
+}
+
+// ES 1.00 text runs as ES 3.10: `attribute` is an input, `varying` a vertex output.
+TEST(GraphicsWrap, Es100AttributesAndVaryingsAreCaptured) {
+  GraphicsInterface iface;
+  std::string error;
+  ASSERT_TRUE(reflect_graphics(GraphicsStage::Vertex,
+                               "#version 100\nattribute vec3 p;\nvarying vec2 uv;\n"
+                               "void main() { uv = p.xy; gl_Position = vec4(p, 1.0); }\n",
+                               &iface, &error)) << error;
+  ASSERT_EQ(iface.inputs.size(), 1u);
+  EXPECT_EQ(iface.inputs[0].name, "p");
+  ASSERT_EQ(iface.outputs.size(), 2u);
+  EXPECT_EQ(iface.outputs[0].name, "uv");
+  EXPECT_EQ(iface.outputs[1].name, "gl_Position");
 }
 
 TEST(GraphicsWrap, ReflectsInputsOutputsAndUniforms) {
