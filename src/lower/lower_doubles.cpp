@@ -723,17 +723,18 @@ class DoubleLowering {
       return e;
     }
     const bool element = !is_double_matrix(lhs->args[0]->type);
+    const bool side_effects = ir::has_side_effects(lhs);  // before lower() rewrites lhs in place
     ExprPtr m = lower(element ? lhs->args[0]->args[0] : lhs->args[0]);
     ExprPtr j = lower(element ? lhs->args[0]->args[1] : lhs->args[1]);
     ExprPtr i = element ? lower(lhs->args[1]) : nullptr;
     ExprPtr rhs = lower(e->args[1]);
     int c = matrix::cols(m->type), r = matrix::rows(m->type);
     if (e->op != "=") {
-      if (!is_pure(m) || !is_pure(j) || (i && !is_pure(i)))
+      if (side_effects)
         ctx_.error(e->loc, "compound assignment into a double matrix through an expression with side effects is not "
                            "supported; use a temporary");
-      ExprPtr current = matrix_column(m, j, lhs->loc);
-      if (element) current = component(current, i, lhs->loc);
+      ExprPtr current = matrix_column(ir::clone(m), ir::clone(j), lhs->loc);
+      if (element) current = component(current, ir::clone(i), lhs->loc);
       rhs = arithmetic(e->op.substr(0, 1), current, rhs, e->loc);
     }
     if (!is_df(rhs->type)) rhs = to_df(rhs);

@@ -1,7 +1,8 @@
 // targets: es310 glsl450
 #version 310 es
 // Compound assignment through a computed index: without side effects the element is read and
-// written inline; with them (i++, a call) it is passed once to an inout helper.
+// written inline (array elements, vector components, matrix columns and elements); with them
+// (i++, a call) it is passed once to an inout helper.
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer B { uint k; double r[]; };
 int next(inout int c) { c += 1; return c; }
@@ -19,5 +20,8 @@ void main() {
   m[next(c) - 3] *= dmat2(r[1]);
   dvec3 v = y[0];
   v[c - 2] += 1.0lf;
-  r[0] = x[1] + x[2] + y[0].y + v.z + m[1][1][1];
+  dmat3 n = dmat3(r[2]);
+  n[c - 3] += dvec3(1.0lf);
+  n[c - 4][c - 3] -= 0.5lf;
+  r[0] = x[1] + x[2] + y[0].y + v.z + m[1][1][1] + n[1][1];
 }

@@ -7,7 +7,11 @@ struct df_dmat2 {
   mat2 hi;
   mat2 lo;
 };
-// doublet float-float runtime: 22 functions from rules/*.glsl, guard: precise
+struct df_dmat3 {
+  mat3 hi;
+  mat3 lo;
+};
+// doublet float-float runtime: 24 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -393,6 +397,36 @@ df_double df_add_f(df_double a, float b) {
   return r;
 }
 
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec3 df_two_sum(vec3 a, vec3 b) {
+  precise vec3 s = (a + b);
+  precise vec3 bb = (s - a);
+  precise vec3 ab = (s - bb);
+  precise vec3 da = (a - ab);
+  precise vec3 db = (b - bb);
+  precise vec3 e = (da + db);
+  return df_dvec3(s, e);
+}
+
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_dvec3 df_add_f(df_dvec3 a, vec3 b) {
+  df_dvec3 s = df_two_sum(a.hi, b);
+  precise vec3 v = (a.lo + s.lo);
+  df_dvec3 z = df_fast_two_sum(s.hi, v);
+  df_dvec3 r = df_finish(z, s.hi);
+  return r;
+}
+
 // df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
 // power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
 // double-word number. Replaces df_mul (29 flops) and df_div by a power of two.
@@ -462,7 +496,31 @@ df_double df_assign_component_dvec3(inout df_dvec3 v, int i, df_double x) {
   return x;
 }
 
+df_dmat3 df_diagonal_dmat3(df_double s) {
+  return df_dmat3(mat3(s.hi), mat3(s.lo));
+}
+
+df_dvec3 df_column_dmat3(df_dmat3 m, int j) {
+  return df_dvec3(m.hi[j], m.lo[j]);
+}
+
+df_dvec3 df_assign_column_dmat3(inout df_dmat3 m, int j, df_dvec3 v) {
+  m.hi[j] = v.hi;
+  m.lo[j] = v.lo;
+  return v;
+}
+
+df_double df_assign_element_dmat3(inout df_dmat3 m, int j, int i, df_double x) {
+  m.hi[j][i] = x.hi;
+  m.lo[j][i] = x.lo;
+  return x;
+}
+
 df_double df_swizzle_dvec2_y(df_dvec2 v) {
+  return df_double(v.hi.y, v.lo.y);
+}
+
+df_double df_swizzle_dvec3_y(df_dvec3 v) {
   return df_double(v.hi.y, v.lo.y);
 }
 
@@ -494,5 +552,8 @@ void main()
   df_mul_assign_dmat2_dmat2(m[next(c) - 3], df_diagonal_dmat2(r[1]));
   df_dvec3 v = y[0];
   df_assign_component_dvec3(v, c - 2, df_add_f(df_component_dvec3(v, c - 2), 1.0));
-  r[0] = df_add(df_add(df_add(df_add(x[1], x[2]), df_double(y[0].hi.y, y[0].lo.y)), df_double(v.hi.z, v.lo.z)), df_swizzle_dvec2_y(df_dvec2(m[1].hi[1], m[1].lo[1])));
+  df_dmat3 n = df_diagonal_dmat3(r[2]);
+  df_assign_column_dmat3(n, c - 3, df_add_f(df_column_dmat3(n, c - 3), vec3(1.0)));
+  df_assign_element_dmat3(n, c - 4, c - 3, df_add_f(df_component_dvec3(df_column_dmat3(n, c - 4), c - 3), -0.5));
+  r[0] = df_add(df_add(df_add(df_add(df_add(x[1], x[2]), df_double(y[0].hi.y, y[0].lo.y)), df_double(v.hi.z, v.lo.z)), df_swizzle_dvec2_y(df_dvec2(m[1].hi[1], m[1].lo[1]))), df_swizzle_dvec3_y(df_dvec3(n.hi[1], n.lo[1])));
 }
