@@ -1,4 +1,4 @@
-// targets: es310 glsl450
+// targets: es310 es320 glsl450
 #version 310 es
 // A comma expression as a function argument, an initialiser and an array constructor element
 // keeps its parentheses: h((v, 2.0lf)) calls h(double), not h(dvec2, double).

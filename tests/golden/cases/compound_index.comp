@@ -1,4 +1,4 @@
-// targets: es310 glsl450
+// targets: es310 es320 glsl450
 #version 310 es
 // Compound assignment through a computed index: without side effects the element is read and
 // written inline (array elements, vector components, matrix columns and elements); with them

@@ -1,4 +1,4 @@
-// targets: es310 glsl450
+// targets: es310 es320 glsl450
 #version 310 es
 // A double loop index: the for-init is lowered before the condition and the step read it.
 layout(local_size_x = 1) in;

@@ -1,4 +1,4 @@
-// targets: es310 glsl450
+// targets: es310 es320 glsl450
 #version 310 es
 // A swizzle of a swizzle of a double vector written (plain, compound, ++) composes into one
 // swizzle of the vector: v.xz.y is v.z, v.wzyx.yx is v.zw.
