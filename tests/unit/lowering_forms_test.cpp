@@ -79,6 +79,18 @@ TEST(GeneratedNames, SuffixWithDoubleUnderscoreIsDiagnosedWithPosition) {
   EXPECT_NE(messages(r).find("--hi-suffix"), std::string::npos) << messages(r);
 }
 
+TEST(GeneratedNames, UserNameWithDoubleUnderscoreIsDiagnosedOnce) {
+  auto r = doublet::lower("#version 300 es\nprecision highp float;\nuniform double a__b;\nout vec4 c;\n"
+                          "void main() { c = vec4(float(a__b)); }\n",
+                          options(doublet::Stage::Fragment, doublet::Target::Es300));
+  EXPECT_FALSE(r.ok);
+  int errors = 0;
+  for (const auto& d : r.diagnostics) errors += d.severity == doublet::Severity::Error;
+  EXPECT_EQ(errors, 1) << messages(r);
+  EXPECT_NE(messages(r).find("'a__b' contains '__', which GLSL reserves"), std::string::npos) << messages(r);
+  EXPECT_NE(messages(r).find("rename it"), std::string::npos) << messages(r);
+}
+
 TEST(LoweringForms, DoubleLoopIndexLowersOnEveryTarget) {
   const char* src = R"(#version 300 es
 precision highp float;
