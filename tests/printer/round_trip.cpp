@@ -52,9 +52,10 @@ ExprPtr sym(const ir::VarPtr& v) {
   return e;
 }
 
-ExprPtr node(Kind kind, ir::Type type, std::vector<ExprPtr> args, const std::string& op = "") {
-  auto e = ir::make_node(kind, kind == Kind::Unary || kind == Kind::Binary ? "" : op, std::move(type), std::move(args), {});
-  if (kind == Kind::Unary || kind == Kind::Binary) e->op = op;
+// `op_or_name`: the operator of a Unary/Binary, the name of a Call/Builtin/Member.
+ExprPtr node(Kind kind, ir::Type type, std::vector<ExprPtr> args, const std::string& op_or_name = "") {
+  auto e = ir::make_node(kind, "", std::move(type), std::move(args), {});
+  (kind == Kind::Unary || kind == Kind::Binary ? e->op : e->name) = op_or_name;
   return e;
 }
 
@@ -264,9 +265,8 @@ class Generator {
     return node(Kind::Binary, type_of(s), {target, expression(s, depth, op == "=")}, op);
   }
 
-  ExprPtr swizzle(ExprPtr base, const std::string& letters) {
-    auto e = node(Kind::Member, type_of(vector_of(static_cast<int>(letters.size()))), {std::move(base)}, letters);
-    return e;
+  static ExprPtr swizzle(ExprPtr base, const std::string& letters) {
+    return node(Kind::Member, type_of(vector_of(static_cast<int>(letters.size()))), {std::move(base)}, letters);
   }
 
   // base[i]: i a constant in range or an int expression.
