@@ -379,14 +379,16 @@ class DoubleLowering {
   ExprPtr lower_component_write(const ExprPtr& e) {
     ExprPtr lhs = e->args[0];
     if (!swizzle_letters(lhs->args[0]).empty()) {  // v.xz[i]: compose_swizzles took the constant indices
-      ctx_.error(e->loc, "writing a swizzle of a double vector through a variable index (v.xz[i]) is not supported; "
-                         "index the vector itself (v[i]) or use a temporary");
+      ctx_.error(e->loc, "writing a swizzle of a double vector through a variable index (v.xz[i]) cannot be lowered "
+                         "for " + std::string(to_string(ctx_.options.target)) +
+                         ": index the vector itself (v[i]) or use a temporary");
       return e;
     }
     if (e->op != "=" && ir::has_side_effects(lhs)) {  // the compound form reads the vector, then writes it
       ctx_.error(e->loc, "compound assignment to a component of a double vector reached through an expression with "
-                         "side effects (a call, ++, an assignment) is not supported; copy the vector to a "
-                         "temporary, update it and store it back");
+                         "side effects (a call, ++, an assignment) cannot be lowered for " +
+                         std::string(to_string(ctx_.options.target)) +
+                         ": copy the vector to a temporary, update it and store it back");
       return e;
     }
     ExprPtr base = lower(lhs->args[0]);
