@@ -128,6 +128,8 @@ Options common_options(const LowerArgs& a, std::string& error) {
   }
   if (!is_identifier_tail(a.hi_suffix) || !is_identifier_tail(a.lo_suffix))
     problem("--hi-suffix/--lo-suffix must be non-empty and contain only letters, digits and _");
+  else if (a.hi_suffix.find("__") != std::string::npos || a.lo_suffix.find("__") != std::string::npos)
+    problem("--hi-suffix/--lo-suffix must not contain '__': GLSL reserves names with a double underscore");
   else if (a.hi_suffix == a.lo_suffix)
     problem("--hi-suffix and --lo-suffix must differ");
   opt.include_dirs = a.include_dirs;

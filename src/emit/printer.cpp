@@ -55,6 +55,9 @@ class Printer {
     return {out_.str(), diags_, builtin_first_use_};
   }
 
+  // One expression (expression_text).
+  std::string expression(const ir::ExprPtr& e) { return expr(e); }
+
  private:
   void error(ir::Loc loc, const std::string& msg) {
     diags_.push_back({file_, loc.line, loc.column, Severity::Error, msg});
@@ -197,7 +200,7 @@ class Printer {
       return;
     }
     out_ << qualifiers(*v) << declarator(v->type, v->name);
-    if (init) out_ << " = " << expr(init);
+    if (init) out_ << " = " << argument(init);
     out_ << ";\n";
   }
 
@@ -218,7 +221,7 @@ class Printer {
 
   std::string decl_text(const Stmt& s) {
     std::string text = (s.var->precise ? "precise " : "") + declarator(s.var->type, s.var->name);
-    if (s.expr) text += " = " + expr(s.expr);
+    if (s.expr) text += " = " + argument(s.expr);
     return text;
   }
 
@@ -328,8 +331,11 @@ class Printer {
       case Expr::Kind::Comma: return 1;
       case Expr::Kind::Ternary: return 3;
       case Expr::Kind::Unary: return e.op == "x++" || e.op == "x--" ? 16 : 15;
-      case Expr::Kind::Const:  // a negative scalar literal prints as a prefix minus
-        return !e.values.empty() && e.values[0].d < 0 && e.type.vec == 1 && !e.type.is_array() ? 15 : 17;
+      case Expr::Kind::Const:  // a negative scalar literal (-0.0 and -1 too) prints as a prefix minus
+        return e.type.vec == 1 && !e.type.is_matrix() && !e.type.is_array() && !e.values.empty() &&
+                       is_negative(e.values[0])
+                   ? 15
+                   : 17;
       case Expr::Kind::Binary: {
         static const std::map<std::string, int> table{
             {"*", 14}, {"/", 14}, {"%", 14}, {"+", 13}, {"-", 13}, {"<<", 12}, {">>", 12}, {"<", 11}, {">", 11},
@@ -340,6 +346,15 @@ class Printer {
       default: return 17;
     }
   }
+
+  static bool is_negative(const ir::Scalar& v) {
+    if (v.base == ir::Base::Int) return v.i < 0;
+    return (v.base == ir::Base::Float || v.base == ir::Base::Double) && std::signbit(v.d);
+  }
+
+  // `e` where the grammar wants an assignment_expression (a function or constructor argument, an
+  // initialiser): a comma expression there needs its parentheses, or its parts become arguments.
+  std::string argument(const ir::ExprPtr& e) { return operand(e, 2, false); }
 
   // `e` printed as an operand of an operator of precedence `parent`;
   // `tie_needs_parens` for the side where equal precedence changes meaning.
@@ -355,7 +370,7 @@ class Printer {
 
   std::string call(const std::string& name, const std::vector<ir::ExprPtr>& args) {
     std::string s = name + "(";
-    for (size_t i = 0; i < args.size(); ++i) s += (i ? ", " : "") + expr(args[i]);
+    for (size_t i = 0; i < args.size(); ++i) s += (i ? ", " : "") + argument(args[i]);
     return s + ")";
   }
 
@@ -415,7 +430,7 @@ class Printer {
       }
       case Expr::Kind::Comma: {
         std::string s;
-        for (size_t i = 0; i < e->args.size(); ++i) s += (i ? ", " : "") + operand(e->args[i], 2);
+        for (size_t i = 0; i < e->args.size(); ++i) s += (i ? ", " : "") + argument(e->args[i]);
         return s;
       }
     }
@@ -435,6 +450,13 @@ class Printer {
 };
 
 }  // namespace
+
+std::string expression_text(const ir::ExprPtr& e, Target target) {
+  static const ir::Module no_module;
+  PrintOptions options;
+  options.target = target;
+  return Printer(no_module, options, "").expression(e);
+}
 
 PrintResult print(const ir::Module& module, const PrintOptions& options, const std::string& file_name) {
   return Printer(module, options, file_name).run();

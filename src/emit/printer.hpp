@@ -32,6 +32,9 @@ struct PrintResult {
 
 PrintResult print(const ir::Module& module, const PrintOptions& options, const std::string& file_name);
 
+// One expression as the printer spells it for `target` (generated helpers, tests).
+std::string expression_text(const ir::ExprPtr& e, Target target);
+
 // A float literal that reads back as exactly `value` (as a float).
 std::string float_literal(float value);
 

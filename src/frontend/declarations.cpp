@@ -143,7 +143,7 @@ bool place_declarations(ir::Module& module, const Options& options, std::vector<
     for (const auto& v : locals) {
       reserved(v->name, v->loc);
       std::string name = v->name;
-      for (int n = 1; taken.count(name); ++n) name = v->name + "_" + std::to_string(n);
+      for (int n = 1; taken.count(name); ++n) name = ir::join_identifier(v->name, "_" + std::to_string(n));
       v->name = name;
       taken.insert(name);
     }

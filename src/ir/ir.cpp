@@ -67,6 +67,45 @@ bool is_pure(const ExprPtr& e) {
   }
 }
 
+namespace {
+// "=", "+=", "<<=", ...: every operator ending in '=' except the comparisons.
+bool is_assignment_operator(const std::string& op) {
+  return !op.empty() && op.back() == '=' && op != "==" && op != "!=" && op != "<=" && op != ">=";
+}
+
+// Built-ins that write an out parameter or memory, or synchronise.
+bool builtin_has_side_effects(const std::string& name) {
+  static const char* const kPrefixes[] = {"atomic", "imageAtomic", "imageStore", "memoryBarrier", "EmitVertex",
+                                          "EndPrimitive"};
+  for (const char* p : kPrefixes)
+    if (name.rfind(p, 0) == 0) return true;
+  static const char* const kNames[] = {"modf", "frexp", "uaddCarry", "usubBorrow", "umulExtended", "imulExtended",
+                                       "barrier", "groupMemoryBarrier"};
+  for (const char* n : kNames)
+    if (name == n) return true;
+  return false;
+}
+}  // namespace
+
+bool has_side_effects(const ExprPtr& e) {
+  switch (e->kind) {
+    case Expr::Kind::Unary:
+      if (e->op.find("++") != std::string::npos || e->op.find("--") != std::string::npos) return true;
+      break;
+    case Expr::Kind::Binary:
+      if (is_assignment_operator(e->op)) return true;
+      break;
+    case Expr::Kind::Call: return true;
+    case Expr::Kind::Builtin:
+      if (builtin_has_side_effects(e->name)) return true;
+      break;
+    default: break;
+  }
+  for (const auto& a : e->args)
+    if (has_side_effects(a)) return true;
+  return false;
+}
+
 ExprPtr clone(const ExprPtr& e) {
   auto c = std::make_shared<Expr>(*e);
   for (auto& a : c->args) a = clone(a);
@@ -74,6 +113,12 @@ ExprPtr clone(const ExprPtr& e) {
 }
 
 bool is_compound_arithmetic(const std::string& op) { return op == "+=" || op == "-=" || op == "*=" || op == "/="; }
+
+std::string join_identifier(const std::string& name, const std::string& suffix) {
+  if (name.empty() || name.back() != '_') return name + suffix;
+  size_t first = suffix.find_first_not_of('_');
+  return name + (first == std::string::npos ? "" : suffix.substr(first));
+}
 
 std::string array_suffix(const Type& t) {
   std::string s;

@@ -134,6 +134,10 @@ struct Expr {
 ExprPtr make_node(Expr::Kind k, const std::string& name, Type type, std::vector<ExprPtr> args, Loc loc);
 // True for an access with no side effects: a variable, a constant, members and indices of those.
 bool is_pure(const ExprPtr& e);
+// True when evaluating `e` changes state: an assignment, ++/--, a call of a user function (it may
+// write globals or out parameters), a built-in with out parameters or memory effects (modf,
+// atomicAdd, imageStore, barrier, ...). Such an expression must be evaluated exactly once.
+bool has_side_effects(const ExprPtr& e);
 // A deep copy of an expression tree (the variables it names are shared, not copied).
 ExprPtr clone(const ExprPtr& e);
 // "+=", "-=", "*=", "/=".
@@ -195,6 +199,11 @@ struct Module {
   int local_size[3] = {0, 0, 0};  // compute: 0 = not declared
   bool early_fragment_tests = false;
 };
+
+// `name` + `suffix` for a generated identifier, with the underscores where they meet merged into
+// one (scale_ + _hi = scale_hi): GLSL reserves every identifier that contains "__", and GLSL ES
+// compilers reject them.
+std::string join_identifier(const std::string& name, const std::string& suffix);
 
 // Spelling of a type in GLSL (no array suffix).
 std::string type_name(const Type& t);

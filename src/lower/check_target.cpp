@@ -106,7 +106,15 @@ class Es100Checker {
         if (!s->test_first || (!s->body[0] && !s->step))
           once("while", s->loc, "while and do-while loops are optional on es100 (GLSL ES 1.00 Appendix A); some drivers "
                                 "reject them. Use a for loop with a constant bound, or target es300", false);
-        if (s->body[0] && s->body[0]->kind == ir::Stmt::Kind::Decl) loop_indices.insert(s->body[0]->var.get());
+        if (s->body[0] && s->body[0]->kind == ir::Stmt::Kind::Decl) {
+          loop_indices.insert(s->body[0]->var.get());
+          if (s->body[0]->var->declared_type.is_double())
+            once("double loop index", s->loc, "a double loop index becomes a float-float pair (" +
+                                                  ir::type_name(s->body[0]->var->type) + "), and GLSL ES 1.00 "
+                                                  "Appendix A only guarantees int and float loop indices; some "
+                                                  "drivers reject it. Count with an int and compute the double from "
+                                                  "it, or target es300", false);
+        }
         break;
       case ir::Stmt::Kind::Decl: check_type(s->var->type, s->loc); break;
       default: break;

@@ -140,16 +140,23 @@ class DoubleLowering {
     }
   }
 
+  // In source order: a for-loop's init declares the variable its condition and step read, so it
+  // is lowered first (otherwise the condition would still see the variable as a double).
   void lower_statement(const ir::StmtPtr& s) {
     if (!s) return;
+    const bool for_loop = s->kind == ir::Stmt::Kind::Loop && s->test_first;
+    if (for_loop) lower_statement(s->body[0]);
     if (s->kind == ir::Stmt::Kind::Decl) lower_var(*s->var);
     if (s->expr) s->expr = lower(s->expr);
     if (s->step) s->step = lower(s->step);
-    for (auto& b : s->body) lower_statement(b);
+    for (size_t i = for_loop ? 1 : 0; i < s->body.size(); ++i) lower_statement(s->body[i]);
   }
 
   // ---- helpers ---------------------------------------------------------------
   ExprPtr rule(const std::string& name, int width, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
+    if (width < 1 || width > 4)  // an operand that was never lowered; said here, where the position is known
+      ctx_.error(loc, "doublet could not lower the operands of this double operation (" + name +
+                          "); please report this with the input");
     ctx_.use_rule(name, width);
     ctx_.rule_first_use.emplace(name, loc);
     return ir::make_node(Kind::Call, name, std::move(type), std::move(args), loc);
@@ -215,11 +222,11 @@ class DoubleLowering {
 
   // ---- expressions ---------------------------------------------------------
   ExprPtr lower(const ExprPtr& e) {
+    if (is_assignment(e) || is_step(e)) e->args[0] = compose_swizzles(e->args[0]);
     if (is_matrix_lvalue_write(e)) return lower_matrix_write(e);
     if (is_component_lvalue_write(e)) return lower_component_write(e);
     if (e->kind == Kind::Binary && ir::is_compound_arithmetic(e->op) && e->args[0]->type.is_double()) return lower_compound(e);
-    if (e->kind == Kind::Unary && e->op.find("++") + e->op.find("--") != 2 * std::string::npos &&
-        e->args[0]->type.is_double()) {
+    if (is_step(e) && e->args[0]->type.is_double()) {
       if (e->args[0]->type.is_matrix() || (e->args[0]->kind == Kind::Index && e->args[0]->args[0]->type.is_matrix())) {
         ctx_.error(e->loc, "++/-- on a double matrix or matrix column is not supported; use += 1.0lf");
         return e;
@@ -312,6 +319,39 @@ class DoubleLowering {
     return (e->kind == Kind::Binary && (e->op == "=" || ir::is_compound_arithmetic(e->op)));
   }
 
+  static bool is_step(const ExprPtr& e) {
+    return e->kind == Kind::Unary && (e->op.find("++") != std::string::npos || e->op.find("--") != std::string::npos);
+  }
+
+  // The components `e` selects from a double vector ("xz" for v.xz, "y" for v[1]); empty when
+  // `e` is not a swizzle or constant index of a double vector.
+  static std::string swizzle_letters(const ExprPtr& e) {
+    if (e->kind != Kind::Member && e->kind != Kind::Index) return "";
+    const ir::Type& base = e->args[0]->type;
+    if (!base.is_double() || base.is_array() || base.is_matrix() || base.vec < 2) return "";
+    if (e->kind == Kind::Member) return e->name;
+    const ExprPtr& index = e->args[1];
+    if (index->kind != Kind::Const || index->values.size() != 1 || index->values[0].i < 0 || index->values[0].i > 3)
+      return "";
+    return std::string(1, "xyzw"[index->values[0].i]);
+  }
+
+  // v.xz.y → v.z, v.zyx.xy → v.zy: an l-value that swizzles a swizzle of a double vector becomes
+  // one swizzle of the vector itself, which the component writes can update in place.
+  static ExprPtr compose_swizzles(const ExprPtr& lhs) {
+    const std::string outer = swizzle_letters(lhs);
+    if (outer.empty()) return lhs;
+    ExprPtr base = compose_swizzles(lhs->args[0]);
+    const std::string inner = swizzle_letters(base);
+    if (inner.empty()) return lhs;
+    std::string letters;
+    for (char c : outer) letters += inner[std::string("xyzw").find(c)];
+    auto composed = Expr::make(Kind::Member, lhs->type, lhs->loc);
+    composed->name = letters;
+    composed->args = {base->args[0]};
+    return composed;
+  }
+
   // `v.xz = e`, `v[i] += e`: a write to part of a double vector.
   static bool is_component_lvalue(const ExprPtr& lhs) {
     if (lhs->kind != Kind::Member && lhs->kind != Kind::Index) return false;
@@ -339,13 +379,27 @@ class DoubleLowering {
 
   ExprPtr lower_component_write(const ExprPtr& e) {
     ExprPtr lhs = e->args[0];
+    if (!swizzle_letters(lhs->args[0]).empty()) {  // v.xz[i]: compose_swizzles took the constant indices
+      ctx_.error(e->loc, "writing a swizzle of a double vector through a variable index (v.xz[i]) cannot be lowered "
+                         "for " + std::string(to_string(ctx_.options.target)) +
+                         ": index the vector itself (v[i]) or use a temporary");
+      return e;
+    }
+    if (e->op != "=" && ir::has_side_effects(lhs)) {  // the compound form reads the vector, then writes it
+      ctx_.error(e->loc, "compound assignment to a component of a double vector reached through an expression with "
+                         "side effects (a call, ++, an assignment) cannot be lowered for " +
+                         std::string(to_string(ctx_.options.target)) +
+                         ": copy the vector to a temporary, update it and store it back");
+      return e;
+    }
     ExprPtr base = lower(lhs->args[0]);
+    ExprPtr index = lhs->kind == Kind::Index ? lower(lhs->args[1]) : nullptr;
     ExprPtr rhs = lower(e->args[1]);
     int src = df_width(base->type);
     int width = lhs->kind == Kind::Member ? static_cast<int>(lhs->name.size()) : 1;
     if (e->op != "=") {
-      ExprPtr current = lhs->kind == Kind::Member ? select(base, lhs->name, lhs->loc)
-                                                  : component(base, lower(lhs->args[1]), lhs->loc);
+      ExprPtr current = index ? component(ir::clone(base), ir::clone(index), lhs->loc)
+                              : select(ir::clone(base), lhs->name, lhs->loc);
       rhs = arithmetic(e->op.substr(0, 1), current, rhs, e->loc);
     }
     if (!is_df(rhs->type)) rhs = to_df(rhs);
@@ -360,21 +414,42 @@ class DoubleLowering {
     std::string name = "df_assign_component_" + src_name.substr(3);
     ctx_.add_helper(name, "df_double " + name + "(inout " + src_name +
                               " v, int i, df_double x) {\n  v.hi[i] = x.hi;\n  v.lo[i] = x.lo;\n  return x;\n}\n");
-    return ir::make_node(Kind::Call, name, df_type(1), {base, int_index(lower(lhs->args[1])), rhs}, e->loc);
+    return ir::make_node(Kind::Call, name, df_type(1), {base, int_index(index), rhs}, e->loc);
   }
 
+  // x op= y  →  x = df_op(x, y), which reads x twice: fine unless evaluating x has side effects
+  // (a[i++] += y, a[f()] += y); then x goes once, as an inout argument, to a generated helper.
   ExprPtr lower_compound(const ExprPtr& e) {
-    // x op= y  →  x = df_op(x, y); x is read twice, so it must have no side effects.
+    const bool evaluate_once = ir::has_side_effects(e->args[0]);
     ExprPtr target = lower(e->args[0]);
-    if (!is_pure(target))
-      ctx_.error(e->loc, "compound assignment to a double through an expression with side effects is not supported; "
-                         "use a temporary");
     ExprPtr value = lower(e->args[1]);
-    if (!is_df(value->type)) value = to_df(value);
+    if (!is_df(value->type) && !matrix::is_matrix(value->type)) value = to_df(value);
+    const std::string op = e->op.substr(0, 1);
+    if (evaluate_once) return compound_helper_call(op, target, value, e->loc);
     auto assign = Expr::make(Kind::Binary, target->type, e->loc);
     assign->op = "=";
-    assign->args = {target, arithmetic(e->op.substr(0, 1), target, value, e->loc)};
+    assign->args = {target, arithmetic(op, ir::clone(target), value, e->loc)};
     return assign;
+  }
+
+  // `T df_add_assign_T_U(inout T x, U y) { x = df_add(x, y); return x; }` for the operator and
+  // the lowered types of target and value; the body is the same arithmetic() call as the inline form.
+  ExprPtr compound_helper_call(const std::string& op, const ExprPtr& target, const ExprPtr& value, ir::Loc loc) {
+    auto parameter = [](const char* name, const ir::Type& type) {
+      auto v = std::make_shared<ir::Var>();
+      v->name = name;
+      v->type = type;
+      auto e = Expr::make(Kind::Sym, type);
+      e->var = v;
+      return e;
+    };
+    ExprPtr updated = arithmetic(op, parameter("x", target->type), parameter("y", value->type), loc);
+    static const std::map<std::string, std::string> words{{"+", "add"}, {"-", "sub"}, {"*", "mul"}, {"/", "div"}};
+    const std::string x_type = ir::type_name(target->type), y_type = ir::type_name(value->type);
+    std::string name = "df_" + words.at(op) + "_assign_" + x_type.substr(3) + "_" + y_type.substr(3) + (fast_ ? "_fast" : "");
+    ctx_.add_helper(name, x_type + " " + name + "(inout " + x_type + " x, " + y_type + " y) {\n  x = " +
+                              emit::expression_text(updated, ctx_.options.target) + ";\n  return x;\n}\n");
+    return ir::make_node(Kind::Call, name, target->type, {target, value}, loc);
   }
 
   ExprPtr lower_step(const ExprPtr& e) {
@@ -651,17 +726,18 @@ class DoubleLowering {
       return e;
     }
     const bool element = !is_double_matrix(lhs->args[0]->type);
+    const bool side_effects = ir::has_side_effects(lhs);  // before lower() rewrites lhs in place
     ExprPtr m = lower(element ? lhs->args[0]->args[0] : lhs->args[0]);
     ExprPtr j = lower(element ? lhs->args[0]->args[1] : lhs->args[1]);
     ExprPtr i = element ? lower(lhs->args[1]) : nullptr;
     ExprPtr rhs = lower(e->args[1]);
     int c = matrix::cols(m->type), r = matrix::rows(m->type);
     if (e->op != "=") {
-      if (!is_pure(m) || !is_pure(j) || (i && !is_pure(i)))
+      if (side_effects)
         ctx_.error(e->loc, "compound assignment into a double matrix through an expression with side effects is not "
                            "supported; use a temporary");
-      ExprPtr current = matrix_column(m, j, lhs->loc);
-      if (element) current = component(current, i, lhs->loc);
+      ExprPtr current = matrix_column(ir::clone(m), ir::clone(j), lhs->loc);
+      if (element) current = component(current, ir::clone(i), lhs->loc);
       rhs = arithmetic(e->op.substr(0, 1), current, rhs, e->loc);
     }
     if (!is_df(rhs->type)) rhs = to_df(rhs);

@@ -161,10 +161,18 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         s.storage = v->storage;
         for (int half = 0; half < 2; ++half) {
           auto part = std::make_shared<ir::Var>(*v);
-          part->name = v->name + (half == 0 ? ctx.options.hi_suffix : ctx.options.lo_suffix);
+          part->name = ir::join_identifier(v->name, half == 0 ? ctx.options.hi_suffix : ctx.options.lo_suffix);
           part->type = v->declared_type.with_base(ir::Base::Float);
           part->declared_type = part->type;
-          if (names.count(part->name))
+          if (part->name.find("__") != std::string::npos) {
+            // GLSL reserves every name containing "__" and GLSL ES compilers reject them.
+            if (half == 0 && v->name.find("__") != std::string::npos)
+              ctx.error(v->loc, "'" + v->name + "' contains '__', which GLSL reserves, and so would its split "
+                                "names ('" + part->name + "'); rename it");
+            else if (v->name.find("__") == std::string::npos)
+              ctx.error(v->loc, "splitting '" + v->name + "' makes '" + part->name + "', which contains '__' "
+                                "(GLSL reserves it); choose a --hi-suffix/--lo-suffix without '__'");
+          } else if (names.count(part->name))
             ctx.error(v->loc, "splitting '" + v->name + "' needs the name '" + part->name +
                                   "', which the shader already uses; rename it or change --hi-suffix/--lo-suffix");
           names.insert(part->name);

@@ -159,6 +159,7 @@ TEST_F(Cli, EqualSuffixesAreUsageError) {
   EXPECT_EQ(run({"lower", "a.vert", "--hi-suffix", "_x", "--lo-suffix", "_x"}).exit_code, 1);
   EXPECT_EQ(run({"lower", "a.vert", "--hi-suffix", ""}).exit_code, 1);
   EXPECT_EQ(run({"lower", "a.vert", "--lo-suffix", "a-b"}).exit_code, 1);
+  EXPECT_EQ(run({"lower", "a.vert", "--hi-suffix", "__h"}).exit_code, 1);  // GLSL reserves "__"
 }
 
 TEST_F(Cli, ManifestToStdoutNeedsOutputFile) {

@@ -95,6 +95,16 @@ TEST(VerifyGolden, FoundationComputeShadersAgree) {
   }
 }
 
+// Issue 13 (comma arguments, double loop index, compound assignment through computed indices,
+// swizzle of a swizzle written): lowered, each form matches native fp64 to float-float accuracy.
+// Before the fixes the shader was refused, invalid, or computed h(p, x) instead of h(x).
+TEST(VerifyLoweringForms, Issue13FormsMatchNativeOnBothBackends) {
+  const VerifyReport r = run(DOUBLET_VERIFY_SHADERS, "lowering_forms", Sabotage::None, 256);
+  expect_ran_on_both_backends(r);
+  EXPECT_TRUE(r.passed()) << format_table(r);
+  EXPECT_GE(worst_bits(r), 44.0) << format_table(r);
+}
+
 TEST(VerifyInputs, UnknownRangeNameIsAnInputError) {
   VerifyOptions o;
   o.lower.stage = Stage::Compute;

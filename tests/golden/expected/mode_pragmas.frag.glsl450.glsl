@@ -193,8 +193,8 @@ uniform float gain;
 uniform float origin_hi;
 uniform float origin_lo;
 df_double origin;
-flat in float sample__hi;
-flat in float sample__lo;
+flat in float sample_hi;
+flat in float sample_lo;
 df_double sample_;
 out vec4 color;
 
@@ -215,7 +215,7 @@ float cheap(float x)
 void main()
 {
   origin = df_double(origin_hi, origin_lo);
-  sample_ = df_double(sample__hi, sample__lo);
+  sample_ = df_double(sample_hi, sample_lo);
   df_double accurate = df_mul_f2(sample_, gain);
   color = vec4(relative(sample_), float(cheap(df_to_float(sample_))), df_to_float(accurate), 1.0);
 }

@@ -1,0 +1,177 @@
+#version 320 es
+precision highp float;
+precision highp int;
+layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;
+
+// doublet float-float runtime: 10 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+struct df_dvec2 { vec2 hi; vec2 lo; };
+
+// df_lt: a < b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_lt(df_double a, df_double b) {
+  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  precise float az = (abs(z.hi));
+  if (az > 0.0 && az <= 3.40282347e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  precise float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  precise float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  precise float v = (a.lo + s.lo);
+  df_double z = df_fast_two_sum(s.hi, v);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec2 df_two_sum(vec2 a, vec2 b) {
+  precise vec2 s = (a + b);
+  precise vec2 bb = (s - a);
+  precise vec2 ab = (s - bb);
+  precise vec2 da = (a - ab);
+  precise vec2 db = (b - bb);
+  precise vec2 e = (da + db);
+  return df_dvec2(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
+  precise vec2 s = (a + b);
+  precise vec2 z = (s - a);
+  precise vec2 e = (b - z);
+  return df_dvec2(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_dvec2 df_add_f(df_dvec2 a, vec2 b) {
+  df_dvec2 s = df_two_sum(a.hi, b);
+  precise vec2 v = (a.lo + s.lo);
+  df_dvec2 z = df_fast_two_sum(s.hi, v);
+  df_dvec2 r = df_finish(z, s.hi);
+  return r;
+}
+
+layout(std430, binding = 0) buffer B {
+  df_double r[];
+};
+
+
+void main()
+{
+  df_double e = r[0];
+  df_double s = df_double(0.0, 0.0);
+  for (df_double t = df_double(0.0, 0.0); df_lt(t, e); t = df_add_f(t, 0.25))
+  {
+    s = df_add(s, t);
+  }
+  for (df_dvec2 u = df_dvec2(vec2(0.0), vec2(0.0)); df_lt(df_double(u.hi.x, u.lo.x), e); u = df_add_f(u, vec2(0.5, 1.0)))
+  {
+    s = df_add(s, df_double(u.hi.y, u.lo.y));
+  }
+  r[1] = s;
+}
