@@ -45,7 +45,11 @@ class Printer {
     fragment_output_rename();
     for (size_t i = 0; i < module_.globals.size(); ++i) global(module_.globals[i], module_.global_inits[i]);
     if (frag_color_declared_) out_ << "layout(location = 0) out highp vec4 df_frag_color;\n";
-    if (!module_.globals.empty() || frag_color_declared_) out_ << "\n";
+    if (frag_data_size_ && frag_data_dynamic_)
+      out_ << "layout(location = 0) out highp vec4 df_frag_data[" << frag_data_size_ << "];\n";
+    else
+      for (int k : frag_data_slots_) out_ << "layout(location = " << k << ") out highp vec4 df_frag_data_" << k << ";\n";
+    if (!module_.globals.empty() || frag_color_declared_ || frag_data_size_) out_ << "\n";
     for (const auto& f : module_.functions)
       if (f->name != "main") out_ << signature(*f) << ";\n";
     for (const auto& f : module_.functions) {
@@ -95,9 +99,56 @@ class Printer {
     out_ << "};\n";
   }
 
+  // The constant index k of gl_FragData[k], or -1.
+  static int constant_frag_data_index(const Expr& index_expr) {
+    const ir::ExprPtr& index = index_expr.args[1];
+    if (index->kind != Expr::Kind::Const || index->values.size() != 1 || index->values[0].i < 0) return -1;
+    return static_cast<int>(index->values[0].i);
+  }
+
+  int count_symbol_uses(const std::string& name) const {
+    int uses = 0;
+    for (const auto& f : module_.functions)
+      ir::visit(f->body, [&](const ir::ExprPtr& e) { uses += e->kind == Expr::Kind::Sym && e->var->name == name; });
+    return uses;
+  }
+
+  // gl_FragData on targets without it (ES 3.00+, core profiles) becomes one output per constant
+  // index k (df_frag_data_k at location k), or an array of the 4 draw buffers every ES 3.00
+  // implementation has when an index is computed or the array is used whole (desktop only: GLSL
+  // ES, 1.00 included, forbids computed indices into fragment outputs).
+  void scan_frag_data() {
+    int uses = 0, indexed_uses = 0, size = 0;
+    bool dynamic = false;
+    std::set<int> slots;
+    for (const auto& f : module_.functions)
+      ir::visit(f->body, [&](const ir::ExprPtr& e) {
+        uses += e->kind == Expr::Kind::Sym && e->var->name == "gl_FragData";
+        if (e->kind != Expr::Kind::Index || e->args[0]->kind != Expr::Kind::Sym || e->args[0]->var->name != "gl_FragData")
+          return;
+        if (const int k = constant_frag_data_index(*e); k >= 0) {
+          slots.insert(k);
+          size = std::max(size, k + 1);
+          ++indexed_uses;
+        } else if (!dynamic) {
+          dynamic = true;
+          if (es_)
+            error(e->loc, "gl_FragData indexed by a computed value cannot be expressed on " +
+                              std::string(to_string(options_.target)) +
+                              " (GLSL ES forbids variable indexing of fragment outputs); index it with constants or "
+                              "target glsl330/glsl450");
+        }
+      });
+    if (uses == 0 || options_.target == Target::Es100) return;  // ES 1.00 keeps gl_FragData
+    frag_data_dynamic_ = dynamic || uses > indexed_uses;
+    frag_data_size_ = frag_data_dynamic_ ? std::max(size, 4) : size;
+    if (!frag_data_dynamic_) frag_data_slots_ = std::move(slots);
+  }
+
   // ES 1.00 has one fragment output, gl_FragColor; ES 3.00+ has no gl_FragColor.
   void fragment_output_rename() {
     if (module_.stage != ir::StageKind::Fragment) return;
+    scan_frag_data();
     if (options_.target != Target::Es100)
       for (const auto& f : module_.functions)
         ir::visit(f->body, [&](const ir::ExprPtr& e) {
@@ -388,6 +439,7 @@ class Printer {
   std::string symbol(const ir::Var& v) {
     if (&v == frag_output_) return "gl_FragColor";
     if (v.name == "gl_FragColor" && frag_color_declared_) return "df_frag_color";  // ES 3.00+/core lack it
+    if (v.name == "gl_FragData" && frag_data_size_) return "df_frag_data";
     return v.name;
   }
 
@@ -422,6 +474,9 @@ class Printer {
         // glslang turns `.y` into `[1]`; give vectors their swizzle back.
         const ir::Type& base = e->args[0]->type;
         const ir::ExprPtr& index = e->args[1];
+        if (frag_data_size_ && !frag_data_dynamic_ && e->args[0]->kind == Expr::Kind::Sym &&
+            e->args[0]->var->name == "gl_FragData")
+          return "df_frag_data_" + std::to_string(constant_frag_data_index(*e));
         if (!base.is_array() && !base.is_matrix() && base.vec > 1 && base.name.empty() &&
             index->kind == Expr::Kind::Const && index->values.size() == 1 && index->values[0].i >= 0 &&
             index->values[0].i < 4)
@@ -446,6 +501,9 @@ class Printer {
   std::vector<Diagnostic> diags_;
   const ir::Var* frag_output_ = nullptr;
   bool frag_color_declared_ = false;
+  int frag_data_size_ = 0;  // elements of df_frag_data, the gl_FragData stand-in (0: not used)
+  bool frag_data_dynamic_ = false;  // an index is computed: one array instead of one output per slot
+  std::set<int> frag_data_slots_;
   std::map<std::string, PrintResult::BuiltinUse> builtin_first_use_;
 };
 

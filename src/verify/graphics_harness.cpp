@@ -36,12 +36,18 @@ bool has_output(const GraphicsInterface& s, const std::string& name) {
 }
 
 // An output's name in the lowered shader: split pairs from the manifest; gl_FragColor becomes the
-// printer's declared `df_frag_color` on targets without it (src/emit/printer.cpp), and on es100 a
+// printer's declared `df_frag_color` on targets without it (src/emit/printer.cpp), gl_FragData[k]
+// its `df_frag_data_k`, and on es100 a
 // fragment shader's only output becomes gl_FragColor.
 std::vector<std::string> lowered_output_names(const Manifest& manifest, const GraphicsInterface& native_if,
                                               const GraphicsInterface& lowered_if, const std::string& name) {
   if (!has_output(lowered_if, name)) {
     if (name == "gl_FragColor" && has_output(lowered_if, "df_frag_color")) return {"df_frag_color"};
+    // gl_FragData[k] -> the printer's df_frag_data_k.
+    if (name.rfind("gl_FragData[", 0) == 0 && name.back() == ']') {
+      const std::string slot = "df_frag_data_" + name.substr(12, name.size() - 13);
+      if (has_output(lowered_if, slot)) return {slot};
+    }
     if (native_if.outputs.size() == 1 && has_output(lowered_if, "gl_FragColor")) return {"gl_FragColor"};
   }
   return lowered_names(manifest, name);

@@ -71,6 +71,24 @@ TEST(TargetBuiltins, TargetsThatHaveTheBuiltinStillLowerIt) {
   }
 }
 
+// ES forbids computed indices into fragment output arrays, which gl_FragData[i] would need there.
+TEST(TargetBuiltins, FragDataWithAComputedIndexIsAnErrorOnEsOnly) {
+  const std::string source = "#version 110\nuniform double k;\nvoid main() {\n"
+                             "  for (int i = 0; i < 2; ++i) gl_FragData[i] = vec4(float(k));\n}\n";
+  for (doublet::Target t : {doublet::Target::Es100, doublet::Target::Es300, doublet::Target::Es310, doublet::Target::Es320}) {
+    doublet::Result r = lower_for(source, doublet::Stage::Fragment, t);
+    ASSERT_FALSE(r.ok);
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].line, 4) << doublet::format_diagnostic(r.diagnostics[0]);
+    EXPECT_EQ(r.diagnostics[0].message.rfind("gl_FragData indexed by a computed value cannot be expressed on es", 0), 0u)
+        << r.diagnostics[0].message;
+  }
+  for (doublet::Target t : {doublet::Target::Glsl330, doublet::Target::Glsl450}) {
+    doublet::Result r = lower_for(source, doublet::Stage::Fragment, t);
+    EXPECT_TRUE(r.ok) << (r.diagnostics.empty() ? "" : doublet::format_diagnostic(r.diagnostics[0]));
+  }
+}
+
 // A rule the target lacks (isnan on ES 1.00) is reported where the shader asks for it.
 TEST(TargetBuiltins, RuleTheTargetLacksPointsAtItsUse) {
   doublet::Result r = lower_for("#version 450\nuniform double k;\nout vec4 c;\nvoid main() {\n"
