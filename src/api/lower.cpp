@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
-#include <regex>
 #include <set>
 
 #include "api/big_stack.hpp"
@@ -13,6 +12,7 @@
 #include "frontend/frontend.hpp"
 #include "frontend/import.hpp"
 #include "frontend/mode_pragmas.hpp"
+#include "frontend/text_scan.hpp"
 #include "lower/apply_modes.hpp"
 #include "lower/lints.hpp"
 #include "lower/lower.hpp"
@@ -196,16 +196,12 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   next_phase("");
   if (!log.empty()) {
     // Quote the emitted lines glslang names, so the report is actionable.
-    static const std::regex where(R"(ERROR: 0:(\d+):)");
+    const frontend::LineIndex lines(printed.text);
     std::string quoted;
     std::set<int> seen;
-    for (std::sregex_iterator it(log.begin(), log.end(), where), end; it != end; ++it) {
-      int line = std::stoi((*it)[1].str());
-      if (!seen.insert(line).second) continue;
-      size_t start = 0;
-      for (int l = 1; l < line && start != std::string::npos; ++l) start = printed.text.find('\n', start) + 1;
-      if (start == std::string::npos || start == 0 && line > 1) continue;
-      quoted += "  line " + std::to_string(line) + ": " + printed.text.substr(start, printed.text.find('\n', start) - start) + "\n";
+    for (int line : frontend::error_lines_of_main_string(log)) {
+      if (!seen.insert(line).second || line > lines.line_count()) continue;
+      quoted += "  line " + std::to_string(line) + ": " + std::string(lines.line(line)) + "\n";
     }
     log += quoted;
     diags.push_back({options.file_name, 0, 0, Severity::Error,
@@ -220,17 +216,11 @@ Result lower_unchecked(std::string_view source, const Options& options) {
 
 }  // namespace
 
-// Deeper expressions than this are refused before glslang sees them: even
-// the 1 GiB stack below would not hold glslang's recursion much beyond it.
-constexpr std::size_t kMaxStatementOperators = 200000;
-
 Result lower(std::string_view source, const Options& options) {
   try {
     if (std::size_t depth = max_statement_operators(source); depth > kMaxStatementOperators) {
       Result r;
-      r.diagnostics.push_back({options.file_name, 1, 1, Severity::Error,
-                               "a statement with " + std::to_string(depth) + " operators is nested too deeply for "
-                               "doublet (limit " + std::to_string(kMaxStatementOperators) + "); split it up"});
+      r.diagnostics.push_back({options.file_name, 1, 1, Severity::Error, too_many_operators_message(depth, false)});
       return r;
     }
     Result result;
