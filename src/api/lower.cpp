@@ -214,6 +214,21 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   return result;
 }
 
+// A file of 80,000 faulty lines gives 80,000 diagnostics: report the first
+// kMaxDiagnostics and say how many more there were.
+constexpr std::size_t kMaxDiagnostics = 100;
+
+void cap_diagnostics(std::vector<Diagnostic>& diags, const std::string& file_name) {
+  if (diags.size() <= kMaxDiagnostics) return;
+  const auto hidden_errors = std::count_if(diags.begin() + kMaxDiagnostics, diags.end(),
+                                           [](const Diagnostic& d) { return d.severity == Severity::Error; });
+  const std::size_t hidden = diags.size() - kMaxDiagnostics;
+  diags.resize(kMaxDiagnostics);
+  diags.push_back({file_name, 0, 0, Severity::Note,
+                   std::to_string(hidden) + " more diagnostics not shown (" + std::to_string(hidden_errors) +
+                       " errors): fix the first ones and run again"});
+}
+
 }  // namespace
 
 Result lower(std::string_view source, const Options& options) {
@@ -234,6 +249,7 @@ Result lower(std::string_view source, const Options& options) {
     });
     if (!ran) result = lower_unchecked(source, options);
     if (failure) std::rethrow_exception(failure);
+    cap_diagnostics(result.diagnostics, options.file_name);
     return result;
   } catch (const std::exception& e) {
     Result r;
