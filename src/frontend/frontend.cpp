@@ -340,13 +340,20 @@ std::optional<Diagnostic> check_macro_budget(std::string_view source, const Opti
       graph.files.size(), std::vector<std::optional<MacroBudget::Weight>>(IncludeAdapter::kMaxIncludeDepth + 1));
   const MacroBudget::Weight total = weight_from(graph, 0, 0, memo);
   expands_macros = budget.has_definitions();
-  if (total.expanded <= total.spelled + kMaxAddedTokens) return std::nullopt;
-  const MacroBudget::Largest largest = budget.largest_macro();
+  double written = 0;  // each file once
+  for (const auto& file : graph.files) written += file.own.spelled;
   auto count = [](double n) { return std::to_string(static_cast<long long>(std::min(n, 1e18))); };
+  if (total.spelled > written + kMaxAddedTokens)
+    return Diagnostic{options.file_name, 1, 1, Severity::Error,
+                      "the #include directives read the same files again and again: about " + count(total.spelled) +
+                          " tokens in all, from files holding " + count(written) + " (doublet allows " +
+                          count(kMaxAddedTokens) + " more); include each file once"};
+  if (total.expanded <= written + kMaxAddedTokens) return std::nullopt;
+  const MacroBudget::Largest largest = budget.largest_macro();
   return Diagnostic{largest.origin.file, largest.origin.line, 1, Severity::Error,
                     "macro '" + largest.name + "' expands to about " + count(largest.tokens) +
                         " tokens: with it the shader would grow to about " + count(total.expanded) + " tokens, " +
-                        count(total.expanded - total.spelled) + " more than written (doublet allows " +
+                        count(total.expanded - written) + " more than written (doublet allows " +
                         count(kMaxAddedTokens) + " more); expand fewer macros or write the code out"};
 }
 
