@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <unordered_map>
 
 #include "ir/walk.hpp"
 
@@ -210,9 +211,11 @@ class ModeApplier {
   // f(double) demoted to f(float) next to an existing f(float): two bodies for one signature.
   void check_overloads() {
     const auto& fs = module_.functions;
-    for (size_t i = 0; i < fs.size(); ++i)
-      for (size_t j = 0; j < i; ++j) {
-        if (fs[i]->name != fs[j]->name || fs[i]->params.size() != fs[j]->params.size()) continue;
+    std::unordered_map<std::string_view, std::vector<size_t>> by_name;  // overloads only: not all pairs
+    for (size_t i = 0; i < fs.size(); ++i) {
+      std::vector<size_t>& earlier = by_name[fs[i]->name];
+      for (size_t j : earlier) {
+        if (fs[i]->params.size() != fs[j]->params.size()) continue;
         bool same = true;
         for (size_t k = 0; k < fs[i]->params.size(); ++k)
           same &= same_shape(fs[i]->params[k]->type, fs[j]->params[k]->type);
@@ -221,6 +224,8 @@ class ModeApplier {
                                  "types as the one on line " + std::to_string(fs[j]->loc.line) +
                                  " (fp32 stores doubles as floats); give one of them a float-float mode");
       }
+      earlier.push_back(i);
+    }
   }
 
   // ---- conversions ------------------------------------------------------------------------

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <map>
 
@@ -183,6 +184,50 @@ TEST(TextScan, HugeVersionNumbersDoNotThrow) {
   EXPECT_FALSE(doublet::frontend::scan_version("#version 99999999999999999999999 es\n").version == 300);
   auto r = doublet::lower("#version 99999999999999999999999 es\nvoid main() {}\n", vertex_options());
   EXPECT_EQ(first_error(r).rfind("shader.vert:1:1: error: unsupported #version", 0), 0u) << first_error(r);
+}
+
+// ---- linear time ---------------------------------------------------------
+
+// n globals with initializers, n "wasted" doubles (lint findings), n functions; main uses them all.
+std::string many_globals(int n) {
+  std::string s = "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer B { double d[]; };\n"
+                  "uniform float uf;\n";
+  std::string body;
+  for (int k = 0; k < n; ++k) {
+    const std::string i = std::to_string(k);
+    s += "double g" + i + " = 1.5lf;\ndouble w" + i + ";\ndouble f" + i + "(double a) { return a * g" + i + "; }\n";
+    body += "  acc = f" + i + "(acc);\n  w" + i + " = double(uf);\n  x += float(w" + i + ");\n";
+  }
+  return s + "void main() {\n  double acc = d[0];\n  float x = 0.0;\n" + body + "  d[0] = acc + double(x);\n}\n";
+}
+
+std::map<std::string, double> fastest_phases(const std::string& source, int runs) {
+  doublet::Options o;
+  o.stage = doublet::Stage::Compute;
+  o.target = doublet::Target::Glsl450;
+  o.file_name = "many.comp";
+  std::map<std::string, double> fastest;
+  for (int r = 0; r < runs; ++r) {
+    const doublet::Result result = doublet::lower(source, o);
+    EXPECT_TRUE(result.ok) << first_error(result);
+    for (const auto& [phase, seconds] : result.phase_seconds)
+      fastest[phase] = fastest.count(phase) ? std::min(fastest[phase], seconds) : seconds;
+  }
+  return fastest;
+}
+
+// A global-initializer lookup, a name set copied per function, an all-pairs overload check
+// and a token scan per lint finding made these phases quadratic in the number of globals
+// and functions: 4x the shader took 16x the time or more. Linear work takes about 4x.
+TEST(Scaling, ImportLintsAndModesGrowLinearly) {
+  const auto small = fastest_phases(many_globals(1000), 2);
+  const auto large = fastest_phases(many_globals(4000), 2);
+  for (const char* phase : {"import", "lints", "modes"}) {
+    ASSERT_TRUE(small.count(phase) && large.count(phase)) << phase;
+    std::printf("%s: %.4f s at 1000 globals, %.4f s at 4000\n", phase, small.at(phase), large.at(phase));
+    EXPECT_LT(large.at(phase), 8 * small.at(phase) + 0.05)
+        << phase << ": " << small.at(phase) << " s at 1000 globals, " << large.at(phase) << " s at 4000";
+  }
 }
 
 }  // namespace
