@@ -219,7 +219,7 @@ std::map<std::string, double> fastest_phases(const std::string& source, int runs
 // A global-initializer lookup, a name set copied per function, an all-pairs overload check
 // and a token scan per lint finding made these phases quadratic in the number of globals
 // and functions: 4x the shader took 16x the time or more. Linear work takes about 4x.
-TEST(Scaling, ImportLintsAndModesGrowLinearly) {
+TEST(Scaling, ImportAndLintsGrowLinearly) {
   const auto small = fastest_phases(many_globals(1000), 2);
   const auto large = fastest_phases(many_globals(4000), 2);
   for (const char* phase : {"import", "lints", "modes"}) {
