@@ -23,7 +23,9 @@ using doublet::frontend::MacroBudget;
 class MemoryIncluder : public doublet::Includer {
  public:
   std::map<std::string, std::string, std::less<>> files;
-  std::optional<doublet::IncludeResult> include(std::string_view requested, std::string_view) override {
+  std::vector<std::string> calls;  // "requested <- includer"
+  std::optional<doublet::IncludeResult> include(std::string_view requested, std::string_view includer) override {
+    calls.push_back(std::string(requested) + " <- " + std::string(includer));
     auto it = files.find(requested);
     if (it == files.end()) return std::nullopt;
     return doublet::IncludeResult{it->first, it->second};
@@ -72,6 +74,19 @@ TEST(FrontendBounds, MacroBombInAnIncludedFileIsRefused) {
   auto r = doublet::lower("#version 300 es\n#include \"bomb.glsl\"\nuniform float u;\nvoid main() { gl_Position = vec4(A39); }\n", o);
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(first_error(r).rfind("bomb.glsl:40:1: error: macro 'A39' expands", 0), 0u) << first_error(r);
+}
+
+// The macro budget reads the includes before glslang does: the includer is still asked once per file.
+TEST(FrontendBounds, EachIncludeIsResolvedOnce) {
+  MemoryIncluder files;
+  files.files["a.glsl"] = "#include \"b.glsl\"\n#define TWO (ONE + ONE)\n";
+  files.files["b.glsl"] = "#define ONE 1.0\n";
+  doublet::Options o = vertex_options();
+  o.includer = &files;
+  auto r = doublet::lower("#version 300 es\n#include \"a.glsl\"\nvoid main() { gl_Position = vec4(TWO); }\n", o);
+  EXPECT_TRUE(r.ok) << first_error(r);
+  EXPECT_EQ(files.calls, (std::vector<std::string>{"a.glsl <- shader.vert", "b.glsl <- a.glsl"}));
+  EXPECT_EQ(r.included_files, (std::vector<std::string>{"a.glsl", "b.glsl"}));
 }
 
 TEST(FrontendBounds, IncludedTwiceAtEveryLevelIsRefused) {
