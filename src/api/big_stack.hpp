@@ -27,7 +27,7 @@ std::size_t max_statement_operators(std::string_view source);
 inline constexpr std::size_t kMaxStatementOperators = 200000;
 
 // The refusal of a statement with `operators` operators (`after_macros`: counted
-// in the text after macro expansion).
+// in the text after macro expansion and #include).
 std::string too_many_operators_message(std::size_t operators, bool after_macros);
 
 }  // namespace doublet

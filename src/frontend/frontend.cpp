@@ -329,7 +329,7 @@ constexpr double kMaxAddedTokens = 1 << 22;
 // An error when macro expansion (in the shader, its #includes or -D values)
 // would grow the shader by more than kMaxAddedTokens.
 std::optional<Diagnostic> check_macro_budget(std::string_view source, const Options& options,
-                                             IncludeAdapter& includer, bool& expands_macros) {
+                                             IncludeAdapter& includer, bool& needs_preprocessing) {
   IncludeGraph graph = read_include_graph(source, options.file_name, includer);
   MacroBudget budget;
   for (const auto& [name, value] : options.defines)
@@ -339,7 +339,7 @@ std::optional<Diagnostic> check_macro_budget(std::string_view source, const Opti
   std::vector<std::vector<std::optional<MacroBudget::Weight>>> memo(
       graph.files.size(), std::vector<std::optional<MacroBudget::Weight>>(IncludeAdapter::kMaxIncludeDepth + 1));
   const MacroBudget::Weight total = weight_from(graph, 0, 0, memo);
-  expands_macros = budget.has_definitions();
+  needs_preprocessing = budget.has_definitions() || graph.files.size() > 1;  // included text: unseen by lower()'s check
   double written = 0;  // each file once
   for (const auto& file : graph.files) written += file.own.spelled;
   auto count = [](double n) { return std::to_string(static_cast<long long>(std::min(n, 1e18))); };
@@ -444,15 +444,15 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
   std::string text(source);
   std::vector<std::pair<std::string, std::string>> files{{options.file_name, text}};
   IncludeAdapter includer(options, files, out.included_files);
-  bool expands_macros = false;
-  if (auto error = check_macro_budget(source, options, includer, expands_macros)) {
+  bool needs_preprocessing = false;  // or includes files: then the operator limit applies to the preprocessed text
+  if (auto error = check_macro_budget(source, options, includer, needs_preprocessing)) {
     diagnostics.push_back(*error);
     return false;
   }
   std::string preamble = "#extension GL_GOOGLE_include_directive : enable\n";
   for (const auto& [name, value] : options.defines)
     preamble += "#define " + name + " " + (value.empty() ? "1" : value) + "\n";
-  if (expands_macros) {
+  if (needs_preprocessing) {
     if (auto error = check_expanded_operators(text, preamble, options, includer)) {
       diagnostics.push_back(*error);
       return false;

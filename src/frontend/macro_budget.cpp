@@ -12,7 +12,10 @@ namespace doublet::frontend {
 class MacroBudget::Weigher {
  public:
   explicit Weigher(MacroBudget& budget, const std::vector<int>* params = nullptr)
-      : budget_(budget), params_(params), param_weight_(params ? params->size() : 0, 0.0) {}
+      : budget_(budget), param_weight_(params ? params->size() : 0, 0.0) {
+    if (params)
+      for (size_t i = 0; i < params->size(); ++i) param_index_.emplace((*params)[i], i);
+  }
 
   void feed(const Item& item) {
     double repeat = 0;
@@ -54,13 +57,10 @@ class MacroBudget::Weigher {
   }
   // Returns how often a following argument list repeats (0: not a call).
   double ident(int id) {
-    if (params_) {
-      auto it = std::find(params_->begin(), params_->end(), id);
-      if (it != params_->end()) {
-        param_weight_[static_cast<size_t>(it - params_->begin())] += multiplier_;
-        add(1, multiplier_);
-        return 0;
-      }
+    if (auto it = param_index_.find(id); it != param_index_.end()) {
+      param_weight_[it->second] += multiplier_;
+      add(1, multiplier_);
+      return 0;
     }
     if (!budget_.is_macro(id)) {
       add(1, multiplier_);
@@ -74,7 +74,7 @@ class MacroBudget::Weigher {
   }
 
   MacroBudget& budget_;
-  const std::vector<int>* params_;
+  std::unordered_map<int, size_t> param_index_;  // a macro may have thousands of parameters
   std::vector<double> param_weight_;
   double total_ = 0, spelled_ = 0, multiplier_ = 1, pending_repeat_ = 0;
   int depth_ = 0;

@@ -62,7 +62,20 @@ TEST(FrontendBounds, MacroSpelledOperatorsAreCountedAfterExpansion) {
   }
   auto r = doublet::lower(s + "void main() { gl_Position = vec4(F); }\n", vertex_options());
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(first_error(r).rfind("shader.vert:1:1: error: a statement with 1000001 operators once its macros are expanded", 0), 0u)
+  EXPECT_EQ(first_error(r).rfind("shader.vert:1:1: error: a statement with 1000001 operators once its macros and #includes are expanded", 0), 0u)
+      << first_error(r);
+}
+
+TEST(FrontendBounds, OperatorsInAnIncludedFileAreCounted) {
+  MemoryIncluder files;
+  std::string chain = "float chain() { return u";
+  for (int i = 0; i < 300000; ++i) chain += "+u";
+  files.files["chain.glsl"] = "uniform float u;\n" + chain + "; }\n";
+  doublet::Options o = vertex_options();
+  o.includer = &files;
+  auto r = doublet::lower("#version 300 es\n#include \"chain.glsl\"\nvoid main() { gl_Position = vec4(chain()); }\n", o);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(first_error(r).rfind("shader.vert:1:1: error: a statement with 300000 operators once its macros and #includes", 0), 0u)
       << first_error(r);
 }
 
