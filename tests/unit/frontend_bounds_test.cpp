@@ -253,7 +253,8 @@ TEST(Scaling, ImportAndLintsGrowLinearly) {
   for (const char* phase : {"import", "lints", "modes"}) {
     ASSERT_TRUE(small.count(phase) && large.count(phase)) << phase;
     std::printf("%s: %.4f s at 1000 globals, %.4f s at 4000\n", phase, small.at(phase), large.at(phase));
-    EXPECT_LT(large.at(phase), 8 * small.at(phase) + 0.05)
+    // Slack for a loaded machine; before the fixes: import 0.27 s -> 3.83 s, lints 0.07 s -> 1.04 s.
+    EXPECT_LT(large.at(phase), 8 * small.at(phase) + 0.25)
         << phase << ": " << small.at(phase) << " s at 1000 globals, " << large.at(phase) << " s at 4000";
   }
 }
