@@ -52,4 +52,10 @@ std::size_t max_statement_operators(std::string_view source) {
   return best;
 }
 
+std::string too_many_operators_message(std::size_t operators, bool after_macros) {
+  return std::string("a statement with ") + std::to_string(operators) + " operators" +
+         (after_macros ? " once its macros and #includes are expanded" : "") + " is nested too deeply for doublet (limit " +
+         std::to_string(kMaxStatementOperators) + "); split it up";
+}
+
 }  // namespace doublet

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <string_view>
 
 namespace doublet {
@@ -20,5 +21,13 @@ bool run_with_big_stack(const std::function<void()>& work, std::size_t stack_byt
 // bracket tokens between two statement boundaries (; { }). Cheap and
 // conservative; used to refuse inputs no stack could parse.
 std::size_t max_statement_operators(std::string_view source);
+
+// Deeper expressions than this are refused before glslang sees them: even
+// the 1 GiB stack would not hold glslang's recursion much beyond it.
+inline constexpr std::size_t kMaxStatementOperators = 200000;
+
+// The refusal of a statement with `operators` operators (`after_macros`: counted
+// in the text after macro expansion and #include).
+std::string too_many_operators_message(std::size_t operators, bool after_macros);
 
 }  // namespace doublet

@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
-#include <regex>
 #include <set>
 
 #include "api/big_stack.hpp"
@@ -13,6 +12,7 @@
 #include "frontend/frontend.hpp"
 #include "frontend/import.hpp"
 #include "frontend/mode_pragmas.hpp"
+#include "frontend/text_scan.hpp"
 #include "lower/apply_modes.hpp"
 #include "lower/lints.hpp"
 #include "lower/lower.hpp"
@@ -233,16 +233,12 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   if (!log.empty() && report_builtins_the_target_lacks(log, printed.builtin_first_use, options, diags)) return result;
   if (!log.empty()) {
     // Quote the emitted lines glslang names, so the report is actionable.
-    static const std::regex where(R"(ERROR: 0:(\d+):)");
+    const frontend::LineIndex lines(printed.text);
     std::string quoted;
     std::set<int> seen;
-    for (std::sregex_iterator it(log.begin(), log.end(), where), end; it != end; ++it) {
-      int line = std::stoi((*it)[1].str());
-      if (!seen.insert(line).second) continue;
-      size_t start = 0;
-      for (int l = 1; l < line && start != std::string::npos; ++l) start = printed.text.find('\n', start) + 1;
-      if (start == std::string::npos || start == 0 && line > 1) continue;
-      quoted += "  line " + std::to_string(line) + ": " + printed.text.substr(start, printed.text.find('\n', start) - start) + "\n";
+    for (int line : frontend::error_lines_of_main_string(log)) {
+      if (!seen.insert(line).second || line > lines.line_count()) continue;
+      quoted += "  line " + std::to_string(line) + ": " + std::string(lines.line(line)) + "\n";
     }
     log += quoted;
     diags.push_back({options.file_name, 0, 0, Severity::Error,
@@ -255,19 +251,28 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   return result;
 }
 
-}  // namespace
+// A file of 80,000 faulty lines gives 80,000 diagnostics: report the first
+// kMaxDiagnostics and say how many more there were.
+constexpr std::size_t kMaxDiagnostics = 100;
 
-// Deeper expressions than this are refused before glslang sees them: even
-// the 1 GiB stack below would not hold glslang's recursion much beyond it.
-constexpr std::size_t kMaxStatementOperators = 200000;
+void cap_diagnostics(std::vector<Diagnostic>& diags, const std::string& file_name) {
+  if (diags.size() <= kMaxDiagnostics) return;
+  const auto hidden_errors = std::count_if(diags.begin() + kMaxDiagnostics, diags.end(),
+                                           [](const Diagnostic& d) { return d.severity == Severity::Error; });
+  const std::size_t hidden = diags.size() - kMaxDiagnostics;
+  diags.resize(kMaxDiagnostics);
+  diags.push_back({file_name, 0, 0, Severity::Note,
+                   std::to_string(hidden) + " more diagnostics not shown (" + std::to_string(hidden_errors) +
+                       " errors): fix the first ones and run again"});
+}
+
+}  // namespace
 
 Result lower(std::string_view source, const Options& options) {
   try {
     if (std::size_t depth = max_statement_operators(source); depth > kMaxStatementOperators) {
       Result r;
-      r.diagnostics.push_back({options.file_name, 1, 1, Severity::Error,
-                               "a statement with " + std::to_string(depth) + " operators is nested too deeply for "
-                               "doublet (limit " + std::to_string(kMaxStatementOperators) + "); split it up"});
+      r.diagnostics.push_back({options.file_name, 1, 1, Severity::Error, too_many_operators_message(depth, false)});
       return r;
     }
     Result result;
@@ -281,6 +286,7 @@ Result lower(std::string_view source, const Options& options) {
     });
     if (!ran) result = lower_unchecked(source, options);
     if (failure) std::rethrow_exception(failure);
+    cap_diagnostics(result.diagnostics, options.file_name);
     return result;
   } catch (const std::exception& e) {
     Result r;

@@ -78,9 +78,12 @@ std::string generate_compiler_shader(int lines, unsigned seed) {
   const char* ops[] = {" + ", " - ", " * ", " / "};
   const char* constants[] = {"0.5lf", "2.0lf", "1.0000001lf", "3.141592653589793lf", "0.1lf", "1e-3lf", "4.0lf"};
   const int body = 20;  // temporaries per function
-  while (written + body + 12 < lines) {
-    out << "double fn" << functions << "(double a, double b, dvec3 v, float s) {\n";
-    std::vector<std::string> names{"a", "b", "double(s)"};
+  while (written + body + 14 < lines) {
+    // Globals grow with the shader too: an interface and a private variable per function.
+    out << "uniform double u" << functions << ";\n"
+        << "double g" << functions << " = " << constants[rng.next(7)] << ";\n"
+        << "double fn" << functions << "(double a, double b, dvec3 v, float s) {\n";
+    std::vector<std::string> names{"a", "b", "double(s)", "u" + std::to_string(functions), "g" + std::to_string(functions)};
     for (int t = 0; t < body; ++t) {
       auto pick = [&] { return names[rng.next(static_cast<unsigned>(names.size()))]; };
       std::string e;
@@ -103,7 +106,7 @@ std::string generate_compiler_shader(int lines, unsigned seed) {
         << "  }\n"
         << "  return t" << body - 1 << " + w.x - w.y * w.z;\n"
         << "}\n\n";
-    written += body + 8;
+    written += body + 10;
     ++functions;
   }
   out << "void main() {\n"
@@ -115,6 +118,28 @@ std::string generate_compiler_shader(int lines, unsigned seed) {
   out << "  d[i] = a;\n}\n";
   return out.str();
 }
+
+namespace {
+
+// Times one generated size: glslang's parse and doublet::lower, interleaved, fastest of each.
+bool time_size(int lines, const Options& opt, int repetitions, ScalingRow* row, std::string* error) {
+  const std::string source = generate_compiler_shader(lines);
+  row->lines = static_cast<int>(std::count(source.begin(), source.end(), '\n'));
+  row->parse_seconds = row->lower_seconds = 1e30;
+  for (int k = 0; k < repetitions; ++k) {
+    row->parse_seconds = std::min(row->parse_seconds, seconds([&] { glslang_parse(source, nullptr); }));
+    Result timed;
+    const double s = seconds([&] { timed = lower(source, opt); });
+    if (!timed.ok) {
+      *error = "doublet::lower failed on " + std::to_string(lines) + " lines";
+      return false;
+    }
+    if (s < row->lower_seconds) row->lower_seconds = s, row->phase_seconds = timed.phase_seconds;
+  }
+  return true;
+}
+
+}  // namespace
 
 bool run_compiler_bench(const CompilerOptions& o, CompilerReport* r) {
   const std::string source = generate_compiler_shader(o.lines);
@@ -157,6 +182,13 @@ bool run_compiler_bench(const CompilerOptions& o, CompilerReport* r) {
     r->lower_unoptimized_seconds.push_back(seconds([&] { (void)lower(source, unopt); }));
     r->validate_seconds.push_back(seconds([&] { glslang_validate(output, o.target); }));
   }
+  for (int lines : o.scaling_lines) {
+    r->scaling.emplace_back();
+    if (!time_size(lines, opt, std::min(o.repetitions, 3), &r->scaling.back(), &r->error)) {
+      glslang::FinalizeProcess();
+      return false;
+    }
+  }
   glslang::FinalizeProcess();
   r->parse_median = median_of(r->parse_seconds);
   r->lower_median = median_of(r->lower_seconds);
@@ -169,6 +201,40 @@ bool run_compiler_bench(const CompilerOptions& o, CompilerReport* r) {
   r->ok = true;
   return true;
 }
+
+namespace {
+
+// The scaling table: per size, time per line and per phase; linear work keeps µs/line flat.
+std::string format_scaling(const std::vector<ScalingRow>& rows) {
+  std::ostringstream out;
+  char buf[256];
+  out << "\nScaling (same generator, fastest of up to 3 runs per size; phases in ms):\n\n"
+         "| lines | glslang parse ms | doublet::lower ms | lower / parse | parse us/line | lower us/line |";
+  for (const auto& [phase, s] : rows.front().phase_seconds) out << " " << phase << " |";
+  out << "\n|---|---|---|---|---|---|" ;
+  for (size_t p = 0; p < rows.front().phase_seconds.size(); ++p) out << "---|";
+  out << "\n";
+  for (const ScalingRow& row : rows) {
+    std::snprintf(buf, sizeof buf, "| %d | %.1f | %.1f | %.2fx | %.2f | %.2f |", row.lines, 1e3 * row.parse_seconds,
+                  1e3 * row.lower_seconds, row.lower_seconds / row.parse_seconds, 1e6 * row.parse_seconds / row.lines,
+                  1e6 * row.lower_seconds / row.lines);
+    out << buf;
+    for (const auto& [phase, s] : row.phase_seconds) {
+      std::snprintf(buf, sizeof buf, " %.1f |", 1e3 * s);
+      out << buf;
+    }
+    out << "\n";
+  }
+  const ScalingRow& first = rows.front();
+  const ScalingRow& last = rows.back();
+  std::snprintf(buf, sizeof buf, "\nfrom %d to %d lines (x%.1f): glslang parse x%.1f, doublet::lower x%.1f\n", first.lines,
+                last.lines, static_cast<double>(last.lines) / first.lines, last.parse_seconds / first.parse_seconds,
+                last.lower_seconds / first.lower_seconds);
+  out << buf;
+  return out.str();
+}
+
+}  // namespace
 
 std::string format_compiler_markdown(const CompilerReport& r) {
   std::ostringstream out;
@@ -204,6 +270,7 @@ std::string format_compiler_markdown(const CompilerReport& r) {
                 r.ratio_median, r.ratio_min, r.validate_median / r.parse_median,
                 static_cast<double>(r.output_bytes) / static_cast<double>(r.input_bytes));
   out << buf;
+  if (!r.scaling.empty()) out << format_scaling(r.scaling);
   return out.str();
 }
 

@@ -22,6 +22,15 @@ struct CompilerOptions {
   int lines = 5000;
   int repetitions = 9;
   Target target = Target::Es320;
+  // Further sizes (lines) timed in the same run, for how the cost grows (--scaling).
+  std::vector<int> scaling_lines;
+};
+
+// One size of the scaling table: minima over the repetitions (at most 3 per size).
+struct ScalingRow {
+  int lines = 0;
+  double parse_seconds = 0, lower_seconds = 0;
+  std::vector<std::pair<std::string, double>> phase_seconds;  // of the fastest lowering
 };
 
 struct CompilerReport {
@@ -34,6 +43,7 @@ struct CompilerReport {
   double parse_median = 0, lower_median = 0, lower_unoptimized_median = 0, validate_median = 0;
   double parse_min = 0, lower_min = 0;
   double ratio_median = 0, ratio_min = 0;  // lower / parse
+  std::vector<ScalingRow> scaling;
   bool ok = false;
   std::string error;
 };

@@ -2,6 +2,7 @@
 // (docs/modes.md). The work is doublet::bench::run_bench(); this file maps the command line to
 // BenchOptions and prints the Markdown table (and the JSON file with --json).
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -26,6 +27,7 @@ struct BenchArgs {
   int elements = 16384, steps = 0, warmup = 2, reps = 7;
   bool handwritten = false, compiler = false;
   int lines = 5000;
+  std::string scaling;  // --compiler: comma list of further sizes
   int mandelbrot_size = 128, mandelbrot_iterations = 1000;
 };
 
@@ -70,6 +72,11 @@ int run_compiler_command(const CLI::App& cmd, const BenchArgs& a, const std::str
   if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
     return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
   if (o.lines < 100) return usage_error(cmd, "--lines must be at least 100");
+  for (const std::string& size : split_commas(a.scaling)) {
+    const int lines = std::atoi(size.c_str());
+    if (lines < 100 || lines > 1000000) return usage_error(cmd, "--scaling sizes must be 100 to 1000000 lines");
+    o.scaling_lines.push_back(lines);
+  }
   o.target = *target;
   bench::CompilerReport report;
   report.command = command_line;
@@ -165,6 +172,8 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_flag("--compiler", args->compiler,
                 "time doublet::lower against glslang's parse of the same generated shader (--lines, --reps, --target)");
   cmd->add_option("--lines", args->lines, "--compiler: lines of the generated shader (default 5000)");
+  cmd->add_option("--scaling", args->scaling,
+                  "--compiler: also time these sizes in lines, e.g. 1000,10000,100000 (per phase and per line)");
   cmd->add_flag("--handwritten", args->handwritten,
                 "compare with a hand-written float-float library on Mesa GLES (ops add,sub,mul,div,sqrt,mulf,mandelbrot; "
                 "docs/performance.md)");
@@ -176,7 +185,8 @@ Command add_bench_command(CLI::App& app) {
             if (a.compiler)
               return run_bench_command(*cmd, a,
                                        "doublet bench --compiler --lines " + std::to_string(a.lines) + " --reps " +
-                                           std::to_string(a.reps) + " --target " + a.target);
+                                           std::to_string(a.reps) + " --target " + a.target +
+                                           (a.scaling.empty() ? "" : " --scaling " + a.scaling));
             if (a.handwritten)
               return run_bench_command(*cmd, a,
                                        "doublet bench --handwritten --ops " + a.ops + " --elements " +

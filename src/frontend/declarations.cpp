@@ -139,13 +139,14 @@ bool place_declarations(ir::Module& module, const Options& options, std::vector<
     std::set<const ir::Var*> seen;
     for (const auto& p : f->params) seen.insert(p.get());
     collect_locals(f->body, locals, seen);
-    std::set<std::string> taken = global_names;
+    std::set<std::string> local_names;  // not a copy of global_names per function: that was quadratic
+    auto taken = [&](const std::string& name) { return global_names.count(name) || local_names.count(name); };
     for (const auto& v : locals) {
       reserved(v->name, v->loc);
       std::string name = v->name;
-      for (int n = 1; taken.count(name); ++n) name = ir::join_identifier(v->name, "_" + std::to_string(n));
+      for (int n = 1; taken(name); ++n) name = ir::join_identifier(v->name, "_" + std::to_string(n));
       v->name = name;
-      taken.insert(name);
+      local_names.insert(name);
     }
   }
   return ok;

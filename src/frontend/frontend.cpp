@@ -1,5 +1,9 @@
 #include "frontend/frontend.hpp"
 
+#include "api/big_stack.hpp"
+#include "frontend/macro_budget.hpp"
+#include "frontend/text_scan.hpp"
+
 #include <glslang/Include/ResourceLimits.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -8,10 +12,11 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <tuple>
 #include <functional>
 #include <fstream>
 #include <mutex>
-#include <regex>
 #include <sstream>
 
 namespace doublet::frontend {
@@ -29,101 +34,150 @@ void ensure_glslang_initialized() {
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
+namespace {
+
+// Digits as an int, saturating (a 30-digit #version or line number must not throw).
+int saturating_number(std::string_view digits) {
+  long long value = 0;
+  for (char c : digits) value = std::min<long long>(value * 10 + (c - '0'), 999999999);
+  return static_cast<int>(value);
+}
+
+std::string_view take_digits(std::string_view& s) {
+  size_t n = 0;
+  while (n < s.size() && is_digit(s[n])) ++n;
+  std::string_view digits = s.substr(0, n);
+  s.remove_prefix(n);
+  return digits;
+}
+
+// `#version N [profile]` (the directive's grammar in the GLSL specs) fills `info`.
+void read_version_directive(std::string_view line, SourceInfo& info) {
+  std::string_view rest;
+  if (directive_name(line, rest) != "version" || skip_blanks(rest) == 0) return;
+  std::string_view digits = take_digits(rest);
+  if (digits.empty()) return;
+  info.version = saturating_number(digits);
+  skip_blanks(rest);
+  info.es = take_word(rest) == "es" || info.version == 100;
+}
+
+}  // namespace
+
 SourceInfo scan_version(std::string_view source) {
   SourceInfo info;
-  static const std::regex version_re(R"(^\s*#\s*version\s+(\d+)\s*(\w*))");
-  std::string text(source);
-  std::istringstream lines(text);
-  std::string line;
   bool in_comment = false;
-  while (std::getline(lines, line)) {
+  while (!source.empty()) {
+    const size_t newline = source.find('\n');
+    std::string_view rest = source.substr(0, newline);
+    source.remove_prefix(newline == std::string_view::npos ? source.size() : newline + 1);
     // Skip blank lines and comments before the directive.
-    std::string_view rest = line;
     while (!rest.empty()) {
       if (in_comment) {
-        auto end = rest.find("*/");
+        const size_t end = rest.find("*/");
         if (end == std::string_view::npos) { rest = {}; break; }
         rest.remove_prefix(end + 2);
         in_comment = false;
         continue;
       }
-      auto first = rest.find_first_not_of(" \t\r");
-      if (first == std::string_view::npos) { rest = {}; break; }
-      rest.remove_prefix(first);
+      skip_blanks(rest);
       if (rest.substr(0, 2) == "//") { rest = {}; break; }
       if (rest.substr(0, 2) == "/*") { in_comment = true; rest.remove_prefix(2); continue; }
       break;
     }
     if (rest.empty()) continue;
-    std::smatch m;
-    std::string s(rest);
-    if (std::regex_search(s, m, version_re)) {
-      info.version = std::stoi(m[1].str());
-      std::string profile = m[2].str();
-      info.es = profile == "es" || info.version == 100;
-    }
+    read_version_directive(rest, info);
     return info;
   }
   return info;
 }
 
-int recover_column(std::string_view text, int line, std::string_view token) {
-  int current = 1;
-  size_t start = 0;
-  while (current < line && start < text.size()) {
-    size_t nl = text.find('\n', start);
-    if (nl == std::string_view::npos) return 1;
-    start = nl + 1;
-    ++current;
+namespace {
+
+// One line of glslang's info log: "ERROR: <file>:<line>: <message>".
+struct LogLine {
+  Severity severity = Severity::Error;
+  std::string_view file, message;
+  int line = 0;
+};
+
+bool parse_log_line(std::string_view text, LogLine& out) {
+  if (text.substr(0, 7) == "ERROR: ") out.severity = Severity::Error, text.remove_prefix(7);
+  else if (text.substr(0, 9) == "WARNING: ") out.severity = Severity::Warning, text.remove_prefix(9);
+  else return false;
+  // The file name is the shortest prefix followed by ":<digits>: " (names may hold ':').
+  for (size_t colon = text.find(':'); colon != std::string_view::npos; colon = text.find(':', colon + 1)) {
+    std::string_view after = text.substr(colon + 1);
+    std::string_view digits = take_digits(after);
+    if (digits.empty() || after.substr(0, 2) != ": ") continue;
+    out.file = text.substr(0, colon);
+    out.line = saturating_number(digits);
+    out.message = after.substr(2);
+    return true;
   }
-  size_t end = text.find('\n', start);
-  std::string_view row = text.substr(start, end == std::string_view::npos ? text.size() - start : end - start);
-  auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  if (!token.empty()) {
-    for (size_t pos = row.find(token); pos != std::string_view::npos; pos = row.find(token, pos + 1)) {
-      bool left_ok = pos == 0 || !is_word(row[pos - 1]) || !is_word(token.front());
-      size_t after = pos + token.size();
-      bool right_ok = after >= row.size() || !is_word(row[after]) || !is_word(token.back());
-      if (left_ok && right_ok) return static_cast<int>(pos) + 1;
-    }
-  }
-  size_t first = row.find_first_not_of(" \t\r");
-  return first == std::string_view::npos ? 1 : static_cast<int>(first) + 1;
+  return false;
 }
+
+// glslang's "'token' : message" → the token, the message after ':'; false when not that shape.
+bool split_quoted_token(std::string_view message, std::string_view& token, std::string_view& rest) {
+  skip_blanks(message);
+  if (message.empty() || message.front() != '\'') return false;
+  const size_t close = message.find('\'', 1);
+  if (close == std::string_view::npos) return false;
+  std::string_view after = message.substr(close + 1);
+  skip_blanks(after);
+  if (after.empty() || after.front() != ':') return false;
+  token = message.substr(1, close - 1);
+  rest = trim_blanks(after.substr(1));
+  return true;
+}
+
+}  // namespace
 
 void append_glslang_log(std::string_view log, const std::string& main_name,
                         const std::vector<std::pair<std::string, std::string>>& files,
                         std::vector<Diagnostic>& out) {
-  static const std::regex line_re(R"(^(ERROR|WARNING): (.*?):(\d+): (.*)$)");
-  static const std::regex token_re(R"(^\s*'([^']*)'\s*:\s*(.*?)\s*$)");
-  std::istringstream lines{std::string(log)};
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::smatch m;
-    if (!std::regex_match(line, m, line_re)) continue;
+  std::map<std::string, LineIndex, std::less<>> indexes;  // per file, built on its first diagnostic
+  while (!log.empty()) {
+    const size_t newline = log.find('\n');
+    std::string_view text = log.substr(0, newline);
+    log.remove_prefix(newline == std::string_view::npos ? log.size() : newline + 1);
+    LogLine entry;
+    if (!parse_log_line(text, entry)) continue;
     Diagnostic d;
-    d.severity = m[1] == "ERROR" ? Severity::Error : Severity::Warning;
-    d.file = m[2].str();
-    if (d.file == "0" || d.file.empty()) d.file = main_name;
-    d.line = std::stoi(m[3].str());
-    std::string message = m[4].str();
-    std::string token;
-    std::smatch t;
-    if (std::regex_match(message, t, token_re)) {
-      token = t[1].str();
-      message = t[2].str();
-      if (!token.empty()) message += " '" + token + "'";
-    }
-    if (message.find("compilation terminated") != std::string::npos) continue;
-    if (message.find("memory exhausted") != std::string::npos)  // bison's stack limit (10000 levels)
-      message = "the code nests too deeply for the GLSL parser (more than 10000 levels of parentheses or blocks)";
-    while (!message.empty() && message.front() == ' ') message.erase(message.begin());
-    d.message = message;
+    d.severity = entry.severity;
+    d.file = entry.file == "0" || entry.file.empty() ? main_name : std::string(entry.file);
+    d.line = entry.line;
+    std::string_view token, message = entry.message;
+    std::string quoted;
+    if (split_quoted_token(entry.message, token, message) && !token.empty())
+      quoted = " '" + std::string(token) + "'";
+    if (message.find("compilation terminated") != std::string_view::npos) continue;
+    skip_blanks(message);
+    d.message = std::string(message) + quoted;
+    if (message.find("memory exhausted") != std::string_view::npos)  // bison's stack limit (10000 levels)
+      d.message = "the code nests too deeply for the GLSL parser (more than 10000 levels of parentheses or blocks)";
     d.column = 1;
-    for (const auto& [name, text] : files)
-      if (name == d.file) d.column = recover_column(text, d.line, token);
+    for (const auto& [name, contents] : files) {
+      if (name != d.file) continue;
+      auto it = indexes.try_emplace(name, contents).first;
+      d.column = column_in_row(it->second.line(d.line), token);
+      break;
+    }
     out.push_back(std::move(d));
   }
+}
+
+std::vector<int> error_lines_of_main_string(std::string_view log) {
+  std::vector<int> lines;
+  while (!log.empty()) {
+    const size_t newline = log.find('\n');
+    LogLine entry;
+    if (parse_log_line(log.substr(0, newline), entry) && entry.severity == Severity::Error && entry.file == "0")
+      lines.push_back(entry.line);
+    log.remove_prefix(newline == std::string_view::npos ? log.size() : newline + 1);
+  }
+  return lines;
 }
 
 namespace {
@@ -138,7 +192,9 @@ EShLanguage to_glslang(Stage s) {
 }
 
 // Resolves #include for glslang via the user's Includer or -I directories, and
-// remembers every file read (for depfiles and for column recovery).
+// remembers every file read (for depfiles and for column recovery). Each
+// (header, includer) is resolved once: the macro budget reads the files before
+// glslang's preprocessor and parser ask for them again.
 class IncludeAdapter : public glslang::TShader::Includer {
  public:
   IncludeAdapter(const Options& options, std::vector<std::pair<std::string, std::string>>& files,
@@ -146,11 +202,12 @@ class IncludeAdapter : public glslang::TShader::Includer {
       : options_(options), files_(files), included_(included) {}
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
-    return too_deep(header, depth) ? nullptr : resolve(header, includer, true);
+    return too_deep(header, depth) ? nullptr : to_glslang(resolve(header, includer ? includer : "", true));
   }
   IncludeResult* includeSystem(const char* header, const char* includer, size_t depth) override {
-    return too_deep(header, depth) ? nullptr : resolve(header, includer, false);
+    return too_deep(header, depth) ? nullptr : to_glslang(resolve(header, includer ? includer : "", false));
   }
+  void releaseInclude(IncludeResult* result) override { delete result; }
 
   // glslang follows an include cycle forever; stop at a depth no real shader needs.
   static constexpr size_t kMaxIncludeDepth = 32;
@@ -162,81 +219,143 @@ class IncludeAdapter : public glslang::TShader::Includer {
                     std::string(header) + "\" (an include cycle?)";
     return true;
   }
-  void releaseInclude(IncludeResult* result) override {
-    if (!result) return;
-    delete static_cast<std::string*>(result->userData);
-    delete result;
+
+  // The file `header` names from `includer` (the including file's resolved name), or null.
+  const doublet::IncludeResult* resolve(const std::string& header, const std::string& includer, bool local) {
+    auto [it, added] = cache_.try_emplace({header, includer, local});
+    if (!added) return it->second ? &*it->second : nullptr;
+    it->second = read(header, includer, local);
+    if (it->second) {
+      included_.push_back(it->second->resolved_path);
+      files_.emplace_back(it->second->resolved_path, it->second->contents);
+    }
+    return it->second ? &*it->second : nullptr;
   }
 
  private:
-  IncludeResult* resolve(const char* header, const char* includer, bool local) {
-    std::optional<doublet::IncludeResult> found;
-    if (options_.includer) {
-      found = options_.includer->include(header, includer ? includer : "");
-    } else {
-      namespace fs = std::filesystem;
-      std::vector<fs::path> dirs;
-      if (local) {
-        fs::path from = includer && *includer ? fs::path(includer) : fs::path(options_.file_name);
-        dirs.push_back(from.parent_path());
-      }
-      for (const auto& d : options_.include_dirs) dirs.emplace_back(d);
-      for (const auto& dir : dirs) {
-        fs::path candidate = dir / header;
-        std::error_code ec;
-        if (!fs::is_regular_file(candidate, ec)) continue;
-        std::ifstream in(candidate, std::ios::binary);
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        found = doublet::IncludeResult{candidate.lexically_normal().string(), buffer.str()};
-        break;
-      }
-    }
+  static IncludeResult* to_glslang(const doublet::IncludeResult* found) {
     if (!found) return nullptr;
-    included_.push_back(found->resolved_path);
-    files_.emplace_back(found->resolved_path, found->contents);
-    auto* text = new std::string(std::move(found->contents));
-    return new IncludeResult(found->resolved_path, text->data(), text->size(), text);
+    return new IncludeResult(found->resolved_path, found->contents.data(), found->contents.size(), nullptr);
+  }
+
+  std::optional<doublet::IncludeResult> read(const std::string& header, const std::string& includer, bool local) {
+    if (options_.includer) return options_.includer->include(header, includer);
+    namespace fs = std::filesystem;
+    std::vector<fs::path> dirs;
+    if (local) dirs.push_back(fs::path(includer.empty() ? options_.file_name : includer).parent_path());
+    for (const auto& d : options_.include_dirs) dirs.emplace_back(d);
+    for (const auto& dir : dirs) {
+      fs::path candidate = dir / header;
+      std::error_code ec;
+      if (!fs::is_regular_file(candidate, ec)) continue;
+      std::ifstream in(candidate, std::ios::binary);
+      std::stringstream buffer;
+      buffer << in.rdbuf();
+      return doublet::IncludeResult{candidate.lexically_normal().string(), buffer.str()};
+    }
+    return std::nullopt;
   }
 
   const Options& options_;
   std::vector<std::pair<std::string, std::string>>& files_;
   std::vector<std::string>& included_;
+  std::map<std::tuple<std::string, std::string, bool>, std::optional<doublet::IncludeResult>> cache_;
 };
 
-// The largest number of tokens one macro can expand to, following
-// object-like and function-like macro bodies (not argument duplication).
-// glslang expands macros eagerly and without limit, so a "billion laughs"
-// chain (#define A1 A0 A0, #define A2 A1 A1, ...) would run for hours.
-std::pair<std::string, double> largest_macro_expansion(std::string_view source) {
-  static const std::regex define_re(R"(^[ \t]*#[ \t]*define[ \t]+([A-Za-z_]\w*)(\([^)]*\))?(.*)$)");
-  static const std::regex token_re(R"([A-Za-z_]\w*|\d[\w.]*|\S)");
-  std::map<std::string, std::vector<std::string>> bodies;
-  std::istringstream lines{std::string(source)};
-  for (std::string line; std::getline(lines, line);) {
-    std::smatch m;
-    if (!std::regex_match(line, m, define_re)) continue;
-    std::vector<std::string> tokens;
-    std::string body = m[3].str();
-    for (std::sregex_iterator it(body.begin(), body.end(), token_re), end; it != end; ++it) tokens.push_back(it->str());
-    bodies[m[1].str()] = std::move(tokens);
+// The `#include "name"` / `#include <name>` directives of `text`, as (name, local).
+std::vector<std::pair<std::string, bool>> include_directives(std::string_view text) {
+  std::vector<std::pair<std::string, bool>> found;
+  LogicalLines lines(text);
+  for (std::string_view line; lines.next(line);) {
+    std::string_view rest;
+    if (directive_name(line, rest) != "include") continue;
+    skip_blanks(rest);
+    if (rest.empty() || (rest.front() != '"' && rest.front() != '<')) continue;
+    const char close = rest.front() == '"' ? '"' : '>';
+    const size_t end = rest.find(close, 1);
+    if (end != std::string_view::npos) found.emplace_back(std::string(rest.substr(1, end - 1)), close == '"');
   }
-  std::map<std::string, double> size;
-  std::function<double(const std::string&, int)> expand = [&](const std::string& name, int depth) -> double {
-    if (auto it = size.find(name); it != size.end()) return it->second;
-    size[name] = 1;  // a macro is not re-expanded inside itself
-    double total = 0;
-    for (const auto& t : bodies[name])
-      total += bodies.count(t) && depth < 1000 ? expand(t, depth + 1) : 1;
-    return size[name] = std::max(total, 1.0);
-  };
-  std::pair<std::string, double> worst{"", 0};
-  for (const auto& [name, body] : bodies)
-    if (double n = expand(name, 0); n > worst.second) worst = {name, n};
-  return worst;
+  return found;
 }
 
-constexpr double kMaxMacroExpansion = 1e7;
+// Every file the shader can #include (whatever #if says), resolved once each,
+// with the files each includes: the graph glslang's preprocessor will walk.
+struct IncludeGraph {
+  struct File {
+    std::string name;
+    std::string_view text;
+    std::vector<size_t> includes;  // indexes into files, once per directive
+    MacroBudget::Weight own;
+  };
+  std::vector<File> files;  // [0]: the shader itself
+};
+
+IncludeGraph read_include_graph(std::string_view source, const std::string& file_name, IncludeAdapter& includer) {
+  IncludeGraph graph;
+  graph.files.push_back({file_name, source, {}, {}});
+  std::map<std::string, size_t> index{{file_name, 0}};
+  for (size_t next = 0; next < graph.files.size(); ++next) {
+    for (const auto& [header, local] : include_directives(graph.files[next].text)) {
+      const doublet::IncludeResult* found = includer.resolve(header, graph.files[next].name, local);
+      if (!found) continue;  // glslang reports it where it matters
+      auto [it, added] = index.try_emplace(found->resolved_path, graph.files.size());
+      if (added) graph.files.push_back({found->resolved_path, found->contents, {}, {}});
+      graph.files[next].includes.push_back(it->second);
+    }
+  }
+  return graph;
+}
+
+// Tokens glslang will see for file `f` read at include depth `depth`, with
+// everything it includes (an include cycle stops at the depth limit, as glslang does).
+MacroBudget::Weight weight_from(const IncludeGraph& graph, size_t f, size_t depth,
+                                std::vector<std::vector<std::optional<MacroBudget::Weight>>>& memo) {
+  auto& slot = memo[f][depth];
+  if (slot) return *slot;
+  MacroBudget::Weight total = graph.files[f].own;
+  if (depth < IncludeAdapter::kMaxIncludeDepth)
+    for (size_t child : graph.files[f].includes) {
+      const MacroBudget::Weight w = weight_from(graph, child, depth + 1, memo);
+      total.spelled += w.spelled;
+      total.expanded += w.expanded;
+    }
+  return *(slot = total);
+}
+
+// Macros may add this many tokens to what the shader and its includes spell out:
+// glslang's preprocessor and parser then run in bounded time and memory.
+constexpr double kMaxAddedTokens = 1 << 22;
+
+// An error when macro expansion (in the shader, its #includes or -D values)
+// would grow the shader by more than kMaxAddedTokens.
+std::optional<Diagnostic> check_macro_budget(std::string_view source, const Options& options,
+                                             IncludeAdapter& includer, bool& needs_preprocessing) {
+  IncludeGraph graph = read_include_graph(source, options.file_name, includer);
+  MacroBudget budget;
+  for (const auto& [name, value] : options.defines)
+    budget.add_definition(name, value.empty() ? "1" : value, {options.file_name, 1});
+  for (const auto& file : graph.files) budget.add_definitions(file.text, file.name);
+  for (auto& file : graph.files) file.own = budget.weigh(file.text);
+  std::vector<std::vector<std::optional<MacroBudget::Weight>>> memo(
+      graph.files.size(), std::vector<std::optional<MacroBudget::Weight>>(IncludeAdapter::kMaxIncludeDepth + 1));
+  const MacroBudget::Weight total = weight_from(graph, 0, 0, memo);
+  needs_preprocessing = budget.has_definitions() || graph.files.size() > 1;  // included text: unseen by lower()'s check
+  double written = 0;  // each file once
+  for (const auto& file : graph.files) written += file.own.spelled;
+  auto count = [](double n) { return std::to_string(static_cast<long long>(std::min(n, 1e18))); };
+  if (total.spelled > written + kMaxAddedTokens)
+    return Diagnostic{options.file_name, 1, 1, Severity::Error,
+                      "the #include directives read the same files again and again: about " + count(total.spelled) +
+                          " tokens in all, from files holding " + count(written) + " (doublet allows " +
+                          count(kMaxAddedTokens) + " more); include each file once"};
+  if (total.expanded <= written + kMaxAddedTokens) return std::nullopt;
+  const MacroBudget::Largest largest = budget.largest_macro();
+  return Diagnostic{largest.origin.file, largest.origin.line, 1, Severity::Error,
+                    "macro '" + largest.name + "' expands to about " + count(largest.tokens) +
+                        " tokens: with it the shader would grow to about " + count(total.expanded) + " tokens, " +
+                        count(total.expanded - written) + " more than written (doublet allows " +
+                        count(kMaxAddedTokens) + " more); expand fewer macros or write the code out"};
+}
 
 bool known_version(const SourceInfo& info) {
   static const int es[] = {100, 300, 310, 320};
@@ -260,6 +379,41 @@ bool has_main(glslang::TIntermediate* intermediate) {
                                           std::string(f->getName().c_str()).rfind("main(", 0) == 0)
       return true;
   return false;
+}
+
+
+// glslang keeps pointers to these arrays (not copies): they must outlive the TShader's parse.
+struct ShaderStrings {
+  const char* text[1];
+  int length[1];
+  const char* name[1];
+};
+
+void configure(glslang::TShader& shader, ShaderStrings& strings, const std::string& text, const std::string& preamble,
+               const Options& options) {
+  strings = {{text.c_str()}, {static_cast<int>(text.size())}, {options.file_name.c_str()}};
+  shader.setStringsWithLengthsAndNames(strings.text, strings.length, strings.name, 1);
+  shader.setPreamble(preamble.c_str());
+  shader.setEnvInput(glslang::EShSourceGlsl, to_glslang(*options.stage), glslang::EShClientNone, 100);
+  shader.setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
+  shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+}
+
+// The operator limit (api/big_stack.hpp) applied to the text glslang's parser
+// will see: macros can spell a million operators in one short line. The macro
+// budget has bounded what preprocessing produces.
+std::optional<Diagnostic> check_expanded_operators(const std::string& text, const std::string& preamble,
+                                                   const Options& options, IncludeAdapter& includer) {
+  glslang::TShader shader(to_glslang(*options.stage));
+  ShaderStrings strings;
+  configure(shader, strings, text, preamble, options);
+  std::string expanded;
+  if (!shader.preprocess(GetDefaultResources(), 450, ECompatibilityProfile, true, false,
+                         static_cast<EShMessages>(EShMsgCascadingErrors), &expanded, includer))
+    return std::nullopt;  // the parse reports the errors
+  const std::size_t operators = max_statement_operators(expanded);
+  if (operators <= kMaxStatementOperators) return std::nullopt;
+  return Diagnostic{options.file_name, 1, 1, Severity::Error, too_many_operators_message(operators, true)};
 }
 
 }  // namespace
@@ -287,30 +441,27 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
     return false;
   }
 
-  if (auto [macro, tokens] = largest_macro_expansion(source); tokens > kMaxMacroExpansion) {
-    diagnostics.push_back({options.file_name, 1, 1, Severity::Error,
-                           "macro '" + macro + "' expands to about " + std::to_string(static_cast<long long>(std::min(tokens, 1e18))) +
-                               " tokens (limit " + std::to_string(static_cast<long long>(kMaxMacroExpansion)) + ")"});
+  std::string text(source);
+  std::vector<std::pair<std::string, std::string>> files{{options.file_name, text}};
+  IncludeAdapter includer(options, files, out.included_files);
+  bool needs_preprocessing = false;  // or includes files: then the operator limit applies to the preprocessed text
+  if (auto error = check_macro_budget(source, options, includer, needs_preprocessing)) {
+    diagnostics.push_back(*error);
     return false;
   }
-
   std::string preamble = "#extension GL_GOOGLE_include_directive : enable\n";
   for (const auto& [name, value] : options.defines)
     preamble += "#define " + name + " " + (value.empty() ? "1" : value) + "\n";
+  if (needs_preprocessing) {
+    if (auto error = check_expanded_operators(text, preamble, options, includer)) {
+      diagnostics.push_back(*error);
+      return false;
+    }
+  }
 
   out.shader = std::make_unique<glslang::TShader>(to_glslang(*options.stage));
-  std::string text(source);
-  const char* strings[] = {text.c_str()};
-  const int lengths[] = {static_cast<int>(text.size())};
-  const char* names[] = {options.file_name.c_str()};
-  out.shader->setStringsWithLengthsAndNames(strings, lengths, names, 1);
-  out.shader->setPreamble(preamble.c_str());
-  out.shader->setEnvInput(glslang::EShSourceGlsl, to_glslang(*options.stage), glslang::EShClientNone, 100);
-  out.shader->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
-  out.shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
-
-  std::vector<std::pair<std::string, std::string>> files{{options.file_name, text}};
-  IncludeAdapter includer(options, files, out.included_files);
+  ShaderStrings strings;
+  configure(*out.shader, strings, text, preamble, options);
   auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
   // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
   bool ok = out.shader->parse(GetDefaultResources(), 450, ECompatibilityProfile, true, false, messages, includer);

@@ -49,9 +49,8 @@ void append_glslang_log(std::string_view log, const std::string& main_name,
                         const std::vector<std::pair<std::string, std::string>>& files,
                         std::vector<Diagnostic>& out);
 
-// Column (1-based) of `token` as a whole word in line `line` of `text`, or of
-// the line's first non-blank character when absent.
-int recover_column(std::string_view text, int line, std::string_view token);
+// Line numbers of glslang's "ERROR: 0:<line>:" entries (errors in its first, unnamed string).
+std::vector<int> error_lines_of_main_string(std::string_view log);
 
 void ensure_glslang_initialized();
 

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <set>
+#include <unordered_map>
 
 #include "frontend/builtin_names.hpp"
 #include "frontend/declarations.hpp"
@@ -176,10 +177,10 @@ class Importer {
     v->restrict_ = q.restrict;
     v->loc = loc_of(sym.getLoc());
     vars_[sym.getId()] = v;
-    if (v->storage == ir::Storage::Const && sym.getConstArray().size() > 0 && !declared_.count(v.get())) {
+    if (v->storage == ir::Storage::Const && sym.getConstArray().size() > 0) {
       // A constant array/struct indexed dynamically: glslang keeps the symbol
       // but not the declaration; declare it from its folded value.
-      declared_.insert(v.get());
+      global_index_.emplace(v.get(), module_.globals.size());
       module_.globals.push_back(v);
       module_.global_inits.push_back(constant(sym.getConstArray(), sym.getType(), sym.getLoc()));
     }
@@ -532,7 +533,7 @@ class Importer {
     if (sym->getBasicType() == EbtBlock && std::string(sym->getType().getTypeName().c_str()).rfind("gl_", 0) == 0)
       return;  // built-in blocks (gl_PerVertex)
     ir::VarPtr v = var_for(*sym);
-    if (!declared_.insert(v.get()).second) return;
+    if (!global_index_.emplace(v.get(), module_.globals.size()).second) return;
     module_.globals.push_back(v);
     module_.global_inits.push_back(nullptr);
   }
@@ -540,9 +541,7 @@ class Importer {
   void global_initializer(TIntermBinary* assign) {
     auto* sym = assign->getLeft()->getAsSymbolNode();
     global_symbol(sym);
-    ir::VarPtr v = var_for(*sym);
-    for (size_t i = 0; i < module_.globals.size(); ++i)
-      if (module_.globals[i] == v) module_.global_inits[i] = expr(assign->getRight());
+    module_.global_inits[global_index_.at(var_for(*sym).get())] = expr(assign->getRight());
   }
 
   void top_level(TIntermNode* node) {
@@ -572,7 +571,7 @@ class Importer {
   std::map<long long, ir::VarPtr> vars_;
   std::map<std::pair<long long, int>, ir::VarPtr> members_;
   std::map<std::string, std::shared_ptr<std::vector<ir::Field>>> structs_;
-  std::set<const ir::Var*> declared_;
+  std::unordered_map<const ir::Var*, size_t> global_index_;  // position in module_.globals
   std::set<std::string> reported_;  // diagnostics given once per kind
 
  public:

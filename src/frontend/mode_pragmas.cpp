@@ -1,15 +1,47 @@
 #include "frontend/mode_pragmas.hpp"
 
-#include <regex>
 #include <string>
 
+#include "frontend/text_scan.hpp"
+
 namespace doublet::frontend {
+namespace {
+
+// `#pragma doublet<rest>` → rest and the column of '#'; false for any other line.
+bool doublet_pragma(std::string_view line, std::string_view& rest, int& column) {
+  std::string_view text = line;
+  column = static_cast<int>(skip_blanks(text)) + 1;
+  if (text.empty() || text.front() != '#') return false;
+  text.remove_prefix(1);
+  skip_blanks(text);
+  if (!consume_word(text, "pragma") || skip_blanks(text) == 0 || !consume_word(text, "doublet")) return false;
+  rest = text;
+  return true;
+}
+
+// ` mode(NAME)` with an optional trailing // comment → NAME; false when malformed.
+bool mode_argument(std::string_view rest, std::string_view& name) {
+  if (skip_blanks(rest) == 0 || !consume_word(rest, "mode")) return false;
+  skip_blanks(rest);
+  if (rest.empty() || rest.front() != '(') return false;
+  rest.remove_prefix(1);
+  skip_blanks(rest);
+  size_t end = 0;
+  while (end < rest.size() && rest[end] != ')' && !is_blank(rest[end])) ++end;
+  name = rest.substr(0, end);
+  rest.remove_prefix(end);
+  skip_blanks(rest);
+  if (rest.empty() || rest.front() != ')') return false;
+  rest.remove_prefix(1);
+  skip_blanks(rest);
+  return rest.empty() || rest.substr(0, 2) == "//";
+}
+
+}  // namespace
 
 std::vector<ModePragma> scan_mode_pragmas(std::string_view source, const std::string& file_name,
                                           std::vector<Diagnostic>& diagnostics) {
   std::vector<ModePragma> pragmas;
-  static const std::regex pragma_re(R"(^([ \t]*)#[ \t]*pragma[ \t]+doublet\b(.*)$)");
-  static const std::regex mode_re(R"(^[ \t]+mode[ \t]*\([ \t]*([^) \t]*)[ \t]*\)[ \t]*(//.*)?$)");
   bool in_block_comment = false;
   int depth = 0;  // of { }
   int line_number = 0;
@@ -40,26 +72,26 @@ std::vector<ModePragma> scan_mode_pragmas(std::string_view source, const std::st
         has_code |= line[i] != ' ' && line[i] != '\t';
       }
     }
-    if (has_code) {
+    if (has_code && !waiting.empty()) {
+      // One copy of the line for all the pragmas before it (20,000 copies of a long line took 20 GB).
+      auto text = std::make_shared<const std::string>(line);
       for (size_t k : waiting) {
         pragmas[k].next_line = line_number;
-        pragmas[k].next_text = line;
+        pragmas[k].next_text = text;
       }
       waiting.clear();
     }
     if (was_in_comment) continue;
-    std::smatch m;
-    if (!std::regex_match(line, m, pragma_re)) continue;
-    int column = static_cast<int>(m[1].length()) + 1;
-    std::string rest = m[2].str();
-    std::smatch mode;
-    if (!std::regex_match(rest, mode, mode_re)) {
+    std::string_view rest, name_text;
+    int column = 0;
+    if (!doublet_pragma(line, rest, column)) continue;
+    if (!mode_argument(rest, name_text)) {
       diagnostics.push_back({file_name, line_number, column, Severity::Error,
                              "malformed '#pragma doublet': expected '#pragma doublet mode(MODE)' with MODE one of "
                              "fp32, rte, df64-fast, df64, native"});
       continue;
     }
-    std::string name = mode[1].str();
+    const std::string name(name_text);
     std::optional<Mode> parsed = parse_mode(name);
     if (!parsed) {
       int name_column = static_cast<int>(line.find(name, line.find("mode"))) + 1;

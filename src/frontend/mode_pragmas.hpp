@@ -2,6 +2,7 @@
 // know, so they are recovered from the text, with the user's line numbers.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,7 +17,7 @@ struct ModePragma {
   Mode mode = Mode::Df64;
   bool top_level = true;  // outside every { }: names a global or a function, else a local
   int next_line = 0;      // the next line with code (not blank, comment or #directive); 0: none
-  std::string next_text;  // that line
+  std::shared_ptr<const std::string> next_text;  // that line (shared by the pragmas before it); null: none
 };
 
 // Pragmas of the main file (not of #included files), in source order. Malformed ones

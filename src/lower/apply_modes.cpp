@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <unordered_map>
 
 #include "ir/walk.hpp"
 
@@ -101,6 +102,15 @@ class ModeApplier {
     for (const auto& b : s->body) collect_locals(b, f);
   }
 
+  // The globals named on a line, searched once per line however many pragmas precede it.
+  const std::vector<ir::Var*>& globals_named_on(int line, const std::string& text) {
+    auto [it, added] = globals_on_line_.try_emplace(line);
+    if (added)
+      for (const auto& g : module_.globals)
+        if (!g->block && has_word(text, g->name)) it->second.push_back(g.get());
+    return it->second;
+  }
+
   static bool has_word(const std::string& text, const std::string& word) {
     auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
     for (size_t pos = text.find(word); pos != std::string::npos; pos = text.find(word, pos + 1)) {
@@ -118,14 +128,14 @@ class ModeApplier {
     std::vector<ir::Var*> vars;
     ir::Function* function = nullptr;
     if (p.next_line > 0) {
-      for (const auto& d : declarations_) {
-        if (d.loc.line != p.next_line) continue;
-        if (p.top_level && d.function && !function) function = d.function;
-        if (!p.top_level && d.var && owner_.count(d.var) && vars.empty()) vars.push_back(d.var);
+      // declarations_ is sorted by line: only that line's entries, not all of them per pragma.
+      auto d = std::lower_bound(declarations_.begin(), declarations_.end(), p.next_line,
+                                [](const Declaration& x, int line) { return x.loc.line < line; });
+      for (; d != declarations_.end() && d->loc.line == p.next_line; ++d) {
+        if (p.top_level && d->function && !function) function = d->function;
+        if (!p.top_level && d->var && owner_.count(d->var) && vars.empty()) vars.push_back(d->var);
       }
-      if (p.top_level && !function)
-        for (const auto& g : module_.globals)
-          if (!g->block && has_word(p.next_text, g->name)) vars.push_back(g.get());
+      if (p.top_level && !function) vars = globals_named_on(p.next_line, *p.next_text);
     }
     if (!function && vars.empty()) {
       ctx_.diagnostics.push_back({ctx_.options.file_name, p.line, p.column, Severity::Warning,
@@ -210,9 +220,11 @@ class ModeApplier {
   // f(double) demoted to f(float) next to an existing f(float): two bodies for one signature.
   void check_overloads() {
     const auto& fs = module_.functions;
-    for (size_t i = 0; i < fs.size(); ++i)
-      for (size_t j = 0; j < i; ++j) {
-        if (fs[i]->name != fs[j]->name || fs[i]->params.size() != fs[j]->params.size()) continue;
+    std::unordered_map<std::string_view, std::vector<size_t>> by_name;  // overloads only: not all pairs
+    for (size_t i = 0; i < fs.size(); ++i) {
+      std::vector<size_t>& earlier = by_name[fs[i]->name];
+      for (size_t j : earlier) {
+        if (fs[i]->params.size() != fs[j]->params.size()) continue;
         bool same = true;
         for (size_t k = 0; k < fs[i]->params.size(); ++k)
           same &= same_shape(fs[i]->params[k]->type, fs[j]->params[k]->type);
@@ -221,6 +233,8 @@ class ModeApplier {
                                  "types as the one on line " + std::to_string(fs[j]->loc.line) +
                                  " (fp32 stores doubles as floats); give one of them a float-float mode");
       }
+      earlier.push_back(i);
+    }
   }
 
   // ---- conversions ------------------------------------------------------------------------
@@ -498,6 +512,7 @@ class ModeApplier {
   Mode arithmetic_ = Mode::Df64;
   const ir::Function* current_ = nullptr;
   std::vector<Declaration> declarations_;
+  std::map<int, std::vector<ir::Var*>> globals_on_line_;  // globals_named_on()
   std::map<const ir::Var*, ir::Function*> owner_;
   std::map<const ir::Function*, std::vector<ir::Var*>> locals_;
   std::map<const ir::Var*, Mode> var_modes_;

@@ -482,22 +482,26 @@ class Lints {
     }
   }
 
-  // Where global `name` is declared: glslang places a global at its first use.
-  ir::Loc global_declaration(const ir::Var& v) const {
-    int depth = 0;
-    for (size_t k = 0; k < tokens_.size(); ++k) {
-      const Token& t = tokens_[k];
-      if (t.in_directive) continue;
-      if (t.text == "{") ++depth;
-      if (t.text == "}") --depth;
-      if (depth != 0 || t.kind != Token::Identifier || t.text != v.name) continue;
-      for (size_t b = k; b-- > 0;) {
-        const std::string& x = tokens_[b].text;
-        if (x == ";" || x == "}" || tokens_[b].in_directive) break;
-        if (double_type_names().count(x)) return {t.line, t.column};
+  // Where global `name` is declared: glslang places a global at its first use. The first
+  // top-level mention after a double type name in the same declaration, indexed in one pass
+  // over the tokens (a scan per global was quadratic).
+  ir::Loc global_declaration(const ir::Var& v) {
+    if (!declarations_indexed_) {
+      declarations_indexed_ = true;
+      int depth = 0;
+      bool double_declaration = false;  // a double type name since the last ';', '}' or directive
+      for (const Token& t : tokens_) {
+        if (t.in_directive || t.text == ";" || t.text == "}") double_declaration = false;
+        if (t.in_directive) continue;
+        if (t.text == "{") ++depth;
+        if (t.text == "}") --depth;
+        if (depth == 0 && t.kind == Token::Identifier && double_declaration)
+          global_declarations_.try_emplace(t.text, ir::Loc{t.line, t.column});
+        if (double_type_names().count(t.text)) double_declaration = true;
       }
     }
-    return v.loc;
+    auto it = global_declarations_.find(v.name);
+    return it != global_declarations_.end() ? it->second : v.loc;
   }
 
   // ---- smooth-double-varying ----------------------------------------------------
@@ -525,6 +529,8 @@ class Lints {
   const ir::Module& module_;
   std::string_view source_;
   std::vector<Token> tokens_;
+  bool declarations_indexed_ = false;
+  std::map<std::string, ir::Loc> global_declarations_;  // global_declaration()'s index
   Context& ctx_;
   std::vector<Finding> findings_;
   std::set<size_t> reported_literals_;

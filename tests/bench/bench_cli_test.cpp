@@ -1,6 +1,8 @@
 // `doublet bench --json`: a tiny run through the executable writes the documented keys.
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -101,6 +103,23 @@ TEST(BenchCli, CompilerSpeedPrintsTheRatioToAGlslangParse) {
   ASSERT_EQ(WEXITSTATUS(status), 0) << out;
   EXPECT_NE(out.find("ratio lower / parse:"), std::string::npos) << out;
   EXPECT_NE(out.find("glslang re-validation of the output"), std::string::npos) << out;
+}
+
+TEST(BenchCli, CompilerScalingPrintsARowPerSize) {
+  int status = 0;
+  const std::string out = run_capture("--compiler --lines 300 --reps 1 --scaling 200,800", &status);
+  ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+  EXPECT_NE(out.find("| lines | glslang parse ms | doublet::lower ms | lower / parse | parse us/line | lower us/line |"),
+            std::string::npos) << out;
+  EXPECT_NE(out.find("| import |"), std::string::npos) << out;  // a column per phase
+  EXPECT_TRUE(std::regex_search(out, std::regex(R"(\nfrom \d+ to \d+ lines \(x4\.\d\): glslang parse x[0-9.]+, doublet::lower x[0-9.]+\n)"))) << out;
+  EXPECT_NE(out.find("command: doublet bench --compiler --lines 300 --reps 1 --target es320 --scaling 200,800"),
+            std::string::npos) << out;
+}
+
+TEST(BenchCli, CompilerScalingSizesAreChecked) {
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench --compiler --scaling 5 > /dev/null 2>&1";
+  EXPECT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 1);
 }
 
 TEST(BenchCli, PlotWritesAPng) {

@@ -28,16 +28,16 @@ struct Outcome {
   double seconds = 0;
 };
 
-// Runs `doublet lower NAME -o out.glsl --manifest out.json` in `dir`, where
-// both outputs already exist with known contents.
-Outcome lower_in(const ScratchDir& dir, const std::string& name) {
+// Runs `doublet lower NAME -o out.glsl --manifest out.json [extra...]` in `dir`,
+// where both outputs already exist with known contents.
+Outcome lower_in(const ScratchDir& dir, const std::string& name, const std::vector<std::string>& extra = {}) {
   write_file(dir / "out.glsl", kSentinel);
   write_file(dir / "out.json", kSentinel);
   auto start = std::chrono::steady_clock::now();
   Outcome o;
-  o.process = run_process("/usr/bin/timeout", {kTimeLimitSeconds, DOUBLET_CLI, "lower", name, "-o", "out.glsl", "--manifest",
-                                      "out.json"},
-                          dir.path());
+  std::vector<std::string> args{kTimeLimitSeconds, DOUBLET_CLI, "lower", name, "-o", "out.glsl", "--manifest", "out.json"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  o.process = run_process("/usr/bin/timeout", args, dir.path());
   o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   o.first_error = o.process.err.substr(0, o.process.err.find('\n'));
   return o;
@@ -131,6 +131,30 @@ std::string macro_bomb() {
   for (int i = 1; i < 40; ++i) s += "#define A" + std::to_string(i) + " A" + std::to_string(i - 1) + "+A" + std::to_string(i - 1) + "\n";
   return s + "uniform float u;\nvoid main() { gl_Position = vec4(A39); }\n";
 }
+// Six lines whose macros spell a million '+': the operator limit must see the expansion.
+std::string macro_operators() {
+  std::string s = "#version 300 es\nuniform float u;\n#define A u+u+u+u+u+u+u+u+u+u\n";
+  const char* names = "ABCDEF";
+  for (int i = 1; i < 6; ++i) {
+    s += "#define " + std::string(1, names[i]) + " ";
+    for (int k = 0; k < 10; ++k) s += std::string(k ? "+" : "") + names[i - 1];
+    s += "\n";
+  }
+  return s + "void main() { gl_Position = vec4(F); }\n";
+}
+// A function-like macro that repeats its argument, nested 40 deep: 2^40 copies of u.
+std::string function_macro_bomb() {
+  std::string s = "#version 300 es\nuniform float u;\n#define D(x) (x+x)\nvoid main() { gl_Position = vec4(";
+  for (int i = 0; i < 40; ++i) s += "D(";
+  return s + "u" + std::string(40, ')') + "); }\n";
+}
+// std::regex recursed once per character of a line: these lines overflowed the stack.
+std::string long_define_comment() {
+  return "#version 300 es\n#define X 1 // " + std::string(4u << 20, 'a') + "\nvoid main() { gl_Position = vec4(X) +; }\n";
+}
+std::string million_blanks() {
+  return "#version 300 es\n" + std::string(4u << 20, ' ') + "\nvoid main() { gl_Position = vec4(1.0) +; }\n";
+}
 std::string fifty_megabytes() {
   std::string s = "#version 300 es\nuniform float u;\n";
   for (int i = 0; s.size() < 50u * 1024 * 1024; ++i) s += "// padding line " + std::to_string(i) + " ..........................................\n";
@@ -156,7 +180,75 @@ INSTANTIATE_TEST_SUITE_P(
                       Generated{"deep_blocks", deep_blocks, R"(:\d+:\d+: error: .*nests too deeply)"},
                       Generated{"operator_chain", operator_chain, R"(:1:1: error: .*nested too deeply)"},
                       Generated{"macro_bomb", macro_bomb, R"(:\d+:\d+: error: macro .A39. expands)"},
+                      Generated{"macro_operators", macro_operators,
+                                R"(:1:1: error: a statement with 1000001 operators once its macros and #includes are expanded)"},
+                      Generated{"function_macro_bomb", function_macro_bomb, R"(:3:1: error: macro .D. expands)"},
+                      Generated{"long_define_comment", long_define_comment, R"(:3:\d+: error: syntax error)"},
+                      Generated{"million_blanks", million_blanks, R"(:3:\d+: error: syntax error)"},
                       Generated{"fifty_megabytes", fifty_megabytes, R"(:\d+:\d+: error: syntax error)"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// The macro budget covers #included files and -D values, not only the shader.
+std::string bomb_definitions(const std::string& prefix) {
+  std::string s = prefix + "A0 u\n";
+  for (int i = 1; i < 40; ++i) s += prefix + "A" + std::to_string(i) + " A" + std::to_string(i - 1) + "+A" + std::to_string(i - 1) + "\n";
+  return s;
+}
+const char* kUsesA39 = "#version 300 es\n#include \"bomb.glsl\"\nuniform float u;\nvoid main() { gl_Position = vec4(A39); }\n";
+
+TEST(MacroBudget, MacroBombInAnIncludedFile) {
+  ScratchDir dir;
+  write_file(dir / "bomb.glsl", bomb_definitions("#define "));
+  write_file(dir / "main.vert", kUsesA39);
+  Outcome o = lower_in(dir, "main.vert");
+  expect_clean_failure(dir, o, {"bomb.glsl", "main.vert"});
+  EXPECT_TRUE(std::regex_search(o.first_error, std::regex(R"(^bomb\.glsl:40:1: error: macro 'A39' expands)")))
+      << o.first_error;
+}
+
+TEST(MacroBudget, MacroBombInDefineOptions) {
+  ScratchDir dir;
+  write_file(dir / "main.vert", "#version 300 es\nuniform float u;\nvoid main() { gl_Position = vec4(A39); }\n");
+  std::vector<std::string> defines;
+  std::istringstream lines(bomb_definitions(""));
+  for (std::string name, value; lines >> name >> value;) defines.insert(defines.end(), {"-D", name + "=" + value});
+  Outcome o = lower_in(dir, "main.vert", defines);
+  expect_clean_failure(dir, o, {"main.vert"});
+  EXPECT_TRUE(std::regex_search(o.first_error, std::regex(R"(^main\.vert:1:1: error: macro 'A39' expands)"))) << o.first_error;
+}
+
+// 83,000 redefinitions, one error each: columns came from a rescan of the file per
+// diagnostic (11 s and more); now a line index, and the report stops at 100.
+TEST(ManyDiagnostics, LinearTimeAndCappedReport) {
+  ScratchDir dir;
+  std::string s = "#version 300 es\n";
+  int defines = 0;
+  for (; s.size() < (1u << 20); ++defines) s += defines % 2 ? "#define A 1\n" : "#define A 0\n";
+  const std::string hidden = std::to_string(defines - 1 - 100);  // every define but the first is an error
+  write_file(dir / "redefined.vert", s + "void main() { gl_Position = vec4(1.0); }\n");
+  Outcome o = lower_in(dir, "redefined.vert");
+  expect_clean_failure(dir, o, {"redefined.vert"});
+  EXPECT_EQ(o.first_error, "redefined.vert:3:1: error: Macro redefined; different substitutions: A '#define'");
+  EXPECT_LT(o.seconds, 5.0);
+  const auto lines = std::count(o.process.err.begin(), o.process.err.end(), '\n');
+  EXPECT_EQ(lines, 101) << o.process.err.substr(o.process.err.size() - std::min<size_t>(o.process.err.size(), 500));
+  EXPECT_NE(o.process.err.find("redefined.vert: note: " + hidden + " more diagnostics not shown (" + hidden + " errors)"),
+            std::string::npos)
+      << o.process.err.substr(o.process.err.size() - std::min<size_t>(o.process.err.size(), 500));
+}
+
+// Pragmas waiting for the same declaration line each kept a copy of it, and each searched it:
+// 20,000 pragmas before a 1 MB line took 20 GB and 30 s.
+TEST(ModePragmas, ManyPragmasBeforeALongLine) {
+  ScratchDir dir;
+  std::string s = "#version 300 es\n";
+  for (int i = 0; i < 5000; ++i) s += "#pragma doublet mode(native)\n";  // an error each: native is whole-shader only
+  s += "uniform double u; // " + std::string(1u << 20, 'a') + "\nvoid main() { gl_Position = vec4(u); }\n";
+  write_file(dir / "pragmas.vert", s);
+  Outcome o = lower_in(dir, "pragmas.vert");
+  expect_clean_failure(dir, o, {"pragmas.vert"});
+  EXPECT_TRUE(std::regex_search(o.first_error, std::regex(R"(^pragmas\.vert:2:1: error: mode native applies to the whole shader only)"))) << o.first_error;
+  EXPECT_LT(o.seconds, 3.0);
+}
 
 }  // namespace

@@ -1,0 +1,225 @@
+#include "frontend/macro_budget.hpp"
+
+#include <algorithm>
+
+#include "frontend/text_scan.hpp"
+
+namespace doublet::frontend {
+
+// Weighs a stream of items: each token counts `multiplier` times, where the
+// multiplier grows inside the parentheses of a call to a function-like macro
+// that repeats its argument.
+class MacroBudget::Weigher {
+ public:
+  explicit Weigher(MacroBudget& budget, const std::vector<int>* params = nullptr)
+      : budget_(budget), param_weight_(params ? params->size() : 0, 0.0) {
+    if (params)
+      for (size_t i = 0; i < params->size(); ++i) param_index_.emplace((*params)[i], i);
+  }
+
+  void feed(const Item& item) {
+    double repeat = 0;
+    switch (item.kind) {
+      case Item::Plain: add(item.value, multiplier_); break;
+      case Item::Open:
+        add(1, multiplier_);
+        ++depth_;
+        if (pending_repeat_ > 1) {
+          calls_.push_back({depth_, multiplier_});
+          multiplier_ *= pending_repeat_;
+        }
+        break;
+      case Item::Close:
+        add(1, multiplier_);
+        if (!calls_.empty() && calls_.back().first == depth_) {
+          multiplier_ = calls_.back().second;
+          calls_.pop_back();
+        }
+        --depth_;
+        break;
+      case Item::Ident: repeat = ident(item.value); break;
+    }
+    pending_repeat_ = repeat;
+  }
+
+  double total() const { return total_; }
+  double spelled() const { return spelled_; }
+  double largest_param_weight() const {
+    double most = 1;
+    for (double w : param_weight_) most = std::max(most, w);
+    return most;
+  }
+
+ private:
+  void add(double tokens, double multiplier) {
+    spelled_ += tokens;
+    total_ += tokens * multiplier;
+  }
+  // Returns how often a following argument list repeats (0: not a call).
+  double ident(int id) {
+    if (auto it = param_index_.find(id); it != param_index_.end()) {
+      param_weight_[it->second] += multiplier_;
+      add(1, multiplier_);
+      return 0;
+    }
+    if (!budget_.is_macro(id)) {
+      add(1, multiplier_);
+      return 0;
+    }
+    if (budget_.state_[id] == State::Unknown) budget_.measure(id);
+    const bool in_progress = budget_.state_[id] == State::InProgress;  // not re-expanded inside itself
+    spelled_ += 1;
+    total_ += (in_progress ? 1 : budget_.size_[id]) * multiplier_;
+    return in_progress ? 0 : budget_.repeat_[id];
+  }
+
+  MacroBudget& budget_;
+  std::unordered_map<int, size_t> param_index_;  // a macro may have thousands of parameters
+  std::vector<double> param_weight_;
+  double total_ = 0, spelled_ = 0, multiplier_ = 1, pending_repeat_ = 0;
+  int depth_ = 0;
+  std::vector<std::pair<int, double>> calls_;  // (paren depth, multiplier outside)
+};
+
+int MacroBudget::intern(std::string_view name) {
+  if (auto found = ids_.find(name); found != ids_.end()) return found->second;
+  auto [it, added] = ids_.emplace(std::string(name), static_cast<int>(names_.size()));
+  if (added) names_.emplace_back(name);
+  return it->second;
+}
+
+void MacroBudget::tokenize(std::string_view text, std::vector<Item>& out, bool intern_names) {
+  auto plain = [&out] {
+    if (!out.empty() && out.back().kind == Item::Plain) ++out.back().value;
+    else out.push_back({Item::Plain, 1});
+  };
+  while (!text.empty()) {
+    const char c = text.front();
+    if (is_blank(c)) {
+      text.remove_prefix(1);
+    } else if (is_word_char(c)) {
+      std::string_view word = take_word(text);
+      if (is_digit(word.front())) {
+        plain();
+      } else if (intern_names) {
+        out.push_back({Item::Ident, intern(word)});
+      } else if (auto it = ids_.find(word); it != ids_.end()) {
+        out.push_back({Item::Ident, it->second});
+      } else {
+        plain();  // named by no definition: cannot expand
+      }
+    } else {
+      if (c == '(') out.push_back({Item::Open, 0});
+      else if (c == ')') out.push_back({Item::Close, 0});
+      else plain();
+      text.remove_prefix(1);
+    }
+  }
+}
+
+void MacroBudget::define(std::string_view rest, const MacroOrigin& origin) {
+  skip_blanks(rest);
+  std::string_view name = take_word(rest);
+  if (name.empty() || is_digit(name.front())) return;  // glslang reports it
+  Definition d;
+  d.origin = origin;
+  if (!rest.empty() && rest.front() == '(') {  // no blank before '(': function-like
+    d.function_like = true;
+    const size_t close = rest.find(')');
+    std::string_view params = rest.substr(1, close == std::string_view::npos ? rest.size() - 1 : close - 1);
+    rest.remove_prefix(close == std::string_view::npos ? rest.size() : close + 1);
+    while (!params.empty()) {
+      skip_blanks(params);
+      std::string_view param = take_word(params);
+      if (!param.empty()) d.params.push_back(intern(param));
+      else if (!params.empty()) params.remove_prefix(1);  // ',' or anything else
+    }
+  }
+  tokenize(rest, d.body, true);
+  const int id = intern(name);
+  if (definitions_.size() <= static_cast<size_t>(id)) definitions_.resize(static_cast<size_t>(id) + 1);
+  definitions_[static_cast<size_t>(id)].push_back(std::move(d));
+  state_.clear();  // sizes are recomputed with the new definition
+}
+
+void MacroBudget::add_definitions(std::string_view text, const std::string& file) {
+  LogicalLines lines(text);
+  for (std::string_view line; lines.next(line);) {
+    std::string_view rest;
+    if (directive_name(line, rest) == "define") define(rest, {file, lines.line()});
+  }
+}
+
+void MacroBudget::add_definition(std::string_view name, std::string_view body, const MacroOrigin& origin) {
+  define(std::string(name) + " " + std::string(body), origin);
+}
+
+// Iterative depth-first walk: a chain of 100,000 macros must not recurse 100,000 deep.
+void MacroBudget::size_tables() {
+  state_.resize(names_.size(), State::Unknown);
+  size_.resize(names_.size(), 1);
+  repeat_.resize(names_.size(), 1);
+}
+
+void MacroBudget::measure(int root) {
+  size_tables();
+  if (state_[root] == State::Done) return;
+  std::vector<int> stack{root};
+  while (!stack.empty()) {
+    const int id = stack.back();
+    if (state_[id] == State::Done) {
+      stack.pop_back();
+    } else if (state_[id] == State::Unknown) {
+      state_[id] = State::InProgress;
+      for (const Definition& d : definitions_[id])
+        for (const Item& item : d.body)
+          if (item.kind == Item::Ident && is_macro(item.value) && state_[item.value] == State::Unknown)
+            stack.push_back(item.value);
+    } else {  // everything it names is measured (or is an enclosing macro: not re-expanded)
+      measure_definitions(id);
+      state_[id] = State::Done;
+      stack.pop_back();
+    }
+  }
+}
+
+void MacroBudget::measure_definitions(int id) {
+  double size = 1, repeat = 1;
+  for (const Definition& d : definitions_[id]) {
+    Weigher w(*this, &d.params);
+    for (const Item& item : d.body) w.feed(item);
+    size = std::max(size, w.total());
+    repeat = std::max(repeat, w.largest_param_weight());
+  }
+  size_[id] = size;
+  repeat_[id] = repeat;
+}
+
+MacroBudget::Weight MacroBudget::weigh(std::string_view text) {
+  size_tables();
+  Weigher w(*this);
+  std::vector<Item> items;
+  LogicalLines lines(text);
+  for (std::string_view line; lines.next(line);) {
+    std::string_view rest;
+    const std::string_view directive = directive_name(line, rest);
+    if (directive.empty()) rest = line;
+    else if (directive != "if" && directive != "elif") continue;
+    items.clear();
+    tokenize(rest, items, false);
+    for (const Item& item : items) w.feed(item);
+  }
+  return {w.spelled(), w.total()};
+}
+
+MacroBudget::Largest MacroBudget::largest_macro() {
+  Largest largest;
+  for (size_t id = 0; id < definitions_.size(); ++id) {
+    if (definitions_[id].empty()) continue;
+    measure(static_cast<int>(id));
+    if (size_[id] > largest.tokens) largest = {names_[id], definitions_[id].back().origin, size_[id]};
+  }
+  return largest;
+}
+
+}  // namespace doublet::frontend

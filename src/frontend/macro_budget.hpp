@@ -1,0 +1,89 @@
+// Upper bounds on what glslang's preprocessor will make of a shader, computed
+// before it runs. glslang expands macros eagerly and without limit, so a
+// "billion laughs" chain (#define A1 A0 A0, #define A2 A1 A1, ...) or a
+// function-like macro that repeats its argument, nested, would run for hours
+// and exhaust memory, whether the macros sit in the shader, in an #included
+// file or in a -D value.
+//
+// The bound is sound for object-like and function-like macros: every
+// definition of a name counts (#if and #undef are ignored, so the bound may be
+// high, never low), a macro inside its own expansion counts once (it is not
+// re-expanded), and the arguments of a function-like macro count as many times
+// as its body names a parameter. Token pasting (##) only joins tokens. Linear
+// in the text and definitions; no recursion.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace doublet::frontend {
+
+struct MacroOrigin {
+  std::string file;
+  int line = 0;
+};
+
+class MacroBudget {
+ public:
+  // Every #define in `text` (a shader or an included file).
+  void add_definitions(std::string_view text, const std::string& file);
+  // One -D NAME=VALUE.
+  void add_definition(std::string_view name, std::string_view body, const MacroOrigin& origin);
+
+  struct Weight {
+    double spelled = 0;   // tokens as written
+    double expanded = 0;  // upper bound after macro expansion
+  };
+  // The tokens glslang will see for `text` (its lines outside directives, and
+  // #if/#elif conditions), each macro name weighed by what it expands to.
+  // Meaningful once every definition is added.
+  Weight weigh(std::string_view text);
+
+  struct Largest {
+    std::string name;  // empty when no macro is defined
+    MacroOrigin origin;
+    double tokens = 0;
+  };
+  Largest largest_macro();
+  bool has_definitions() const { return !definitions_.empty(); }
+
+ private:
+  struct Item {
+    enum Kind : std::uint8_t { Plain, Ident, Open, Close } kind;
+    int value;  // Plain: how many tokens; Ident: interned name
+  };
+  struct Definition {
+    bool function_like = false;
+    std::vector<int> params;
+    std::vector<Item> body;
+    MacroOrigin origin;
+  };
+  enum class State : std::uint8_t { Unknown, InProgress, Done };
+  class Weigher;
+
+  int intern(std::string_view name);
+  // Identifiers become Ident items; with `intern_names` false, only names some definition uses.
+  void tokenize(std::string_view text, std::vector<Item>& out, bool intern_names);
+  void size_tables();
+  void define(std::string_view rest, const MacroOrigin& origin);
+  bool is_macro(int id) const { return id < static_cast<int>(definitions_.size()) && !definitions_[id].empty(); }
+  void measure(int id);  // fills size_/repeat_ for `id` and everything it names
+  void measure_definitions(int id);
+
+  struct NameHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
+  std::unordered_map<std::string, int, NameHash, std::equal_to<>> ids_;
+  std::vector<std::string> names_;
+  std::vector<std::vector<Definition>> definitions_;  // by id; empty: not a macro
+  std::vector<State> state_;
+  std::vector<double> size_;    // tokens one use expands to
+  std::vector<double> repeat_;  // how often the body repeats an argument (function-like)
+};
+
+}  // namespace doublet::frontend
