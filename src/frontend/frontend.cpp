@@ -1,4 +1,5 @@
 #include "frontend/frontend.hpp"
+#include "frontend/read_limited.hpp"
 
 #include <glslang/Include/ResourceLimits.h>
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -9,7 +10,6 @@
 #include <filesystem>
 #include <map>
 #include <functional>
-#include <fstream>
 #include <mutex>
 #include <regex>
 #include <sstream>
@@ -141,9 +141,10 @@ EShLanguage to_glslang(Stage s) {
 // remembers every file read (for depfiles and for column recovery).
 class IncludeAdapter : public glslang::TShader::Includer {
  public:
+  // `budget`: how many bytes the included files may add (kMaxSourceBytes less the main source).
   IncludeAdapter(const Options& options, std::vector<std::pair<std::string, std::string>>& files,
-                 std::vector<std::string>& included)
-      : options_(options), files_(files), included_(included) {}
+                 std::vector<std::string>& included, std::size_t budget)
+      : options_(options), files_(files), included_(included), budget_(budget) {}
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
     return too_deep(header, depth) ? nullptr : resolve(header, includer, true);
@@ -154,13 +155,17 @@ class IncludeAdapter : public glslang::TShader::Includer {
 
   // glslang follows an include cycle forever; stop at a depth no real shader needs.
   static constexpr size_t kMaxIncludeDepth = 32;
-  std::string depth_error;
+  std::string limit_error;  // the first include refused for depth or size
   bool too_deep(const char* header, size_t depth) {
     if (depth <= kMaxIncludeDepth) return false;
-    if (depth_error.empty())
-      depth_error = "#include nested more than " + std::to_string(kMaxIncludeDepth) + " deep at \"" +
+    if (limit_error.empty())
+      limit_error = "#include nested more than " + std::to_string(kMaxIncludeDepth) + " deep at \"" +
                     std::string(header) + "\" (an include cycle?)";
     return true;
+  }
+  IncludeResult* refuse_too_large(const char* header) {
+    if (limit_error.empty()) limit_error = source_too_large_message("#include \"" + std::string(header) + "\"");
+    return nullptr;
   }
   void releaseInclude(IncludeResult* result) override {
     if (!result) return;
@@ -185,14 +190,17 @@ class IncludeAdapter : public glslang::TShader::Includer {
         fs::path candidate = dir / header;
         std::error_code ec;
         if (!fs::is_regular_file(candidate, ec)) continue;
-        std::ifstream in(candidate, std::ios::binary);
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        found = doublet::IncludeResult{candidate.lexically_normal().string(), buffer.str()};
+        std::string text;
+        ReadResult read = read_file_limited(candidate.string(), budget_, text);
+        if (read.status == ReadStatus::TooLarge) return refuse_too_large(header);
+        if (read.status == ReadStatus::Failed) continue;
+        found = doublet::IncludeResult{candidate.lexically_normal().string(), std::move(text)};
         break;
       }
     }
     if (!found) return nullptr;
+    if (found->contents.size() > budget_) return refuse_too_large(header);  // from options_.includer
+    budget_ -= found->contents.size();
     included_.push_back(found->resolved_path);
     files_.emplace_back(found->resolved_path, found->contents);
     auto* text = new std::string(std::move(found->contents));
@@ -202,6 +210,7 @@ class IncludeAdapter : public glslang::TShader::Includer {
   const Options& options_;
   std::vector<std::pair<std::string, std::string>>& files_;
   std::vector<std::string>& included_;
+  std::size_t budget_;
 };
 
 // The largest number of tokens one macro can expand to, following
@@ -310,12 +319,13 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
   out.shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
 
   std::vector<std::pair<std::string, std::string>> files{{options.file_name, text}};
-  IncludeAdapter includer(options, files, out.included_files);
+  IncludeAdapter includer(options, files, out.included_files,
+                          kMaxSourceBytes - std::min(kMaxSourceBytes, source.size()));
   auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
   // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
   bool ok = out.shader->parse(GetDefaultResources(), 450, ECompatibilityProfile, true, false, messages, includer);
-  if (!includer.depth_error.empty()) {
-    diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.depth_error});
+  if (!includer.limit_error.empty()) {
+    diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.limit_error});
     return false;
   }
   append_glslang_log(out.shader->getInfoLog(), options.file_name, files, diagnostics);
