@@ -2,6 +2,8 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
+#include <utility>
 
 #include <unistd.h>
 
@@ -10,6 +12,7 @@
 #include "depfile.hpp"
 #include "diagnostic_printer.hpp"
 #include "frontend/read_limited.hpp"
+#include "output_paths.hpp"
 
 namespace doublet::cli {
 namespace {
@@ -18,6 +21,15 @@ namespace {
 frontend::ReadResult read_input(const std::string& path, std::string& out) {
   if (path == "-") return frontend::read_limited(STDIN_FILENO, kMaxSourceBytes, out);
   return frontend::read_file_limited(path, kMaxSourceBytes, out);
+}
+
+// An output that is one of the files the shader #includes (known only once it is lowered).
+std::optional<FileClash> find_included_output(const LowerJob& job, const std::vector<std::string>& included) {
+  std::vector<NamedFile> outputs, inputs;
+  for (const auto& [path, what] : {std::pair{job.output, "the output"}, {job.manifest, "the manifest"}, {job.depfile, "the depfile"}})
+    if (!path.empty() && path != "-") outputs.push_back({path, what + (" '" + path + "'")});
+  for (const std::string& path : included) inputs.push_back({path, "the #include'd file '" + path + "'"});
+  return find_file_clash(outputs, inputs);
 }
 
 std::string with_newline(std::string text) {
@@ -54,6 +66,9 @@ JobOutcome run_lower_job(const LowerJob& job) {
     outcome.exit_code = kExitInput;
     return outcome;
   }
+
+  if (std::optional<FileClash> clash = find_included_output(job, result.included_files))
+    return fail(clash->describe() + ": writing it would destroy the included file; write the output elsewhere");
 
   // Every file is prepared first and renamed into place only when all could be written,
   // the depfile last: a depfile on disk always describes outputs that exist.
