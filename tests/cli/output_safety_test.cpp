@@ -90,10 +90,15 @@ TEST_F(OutputSafety, FifoAndDevNullAreWrittenInPlace) {
   EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a.vert", "got.txt", "out.fifo"}));
 }
 
-TEST_F(OutputSafety, DevStdoutIntoAPipe) {
-  ProcessResult r = run_shell("exec 3>&1; " + cli + " lower a.vert -o /dev/stdout | cat > got.txt");
+// `-o /dev/stdout` with stdout a pipe, through a link of our own to /proc/self/fd/1 (what
+// /dev/stdout is): before the fix the link was replaced by a regular file, which must never
+// be tried on the machine's /dev/stdout.
+TEST_F(OutputSafety, StdoutLinkIntoAPipe) {
+  fs::create_symlink("/proc/self/fd/1", dir / "stdout");
+  ProcessResult r = run_shell(cli + " lower a.vert -o stdout | cat > got.txt");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(read_file(dir / "got.txt").find("void main()"), std::string::npos) << r.err;
+  EXPECT_EQ(file_type(dir / "stdout"), S_IFLNK) << "the link was replaced";
 }
 
 TEST_F(OutputSafety, OutputNameOf250Bytes) {
@@ -177,12 +182,14 @@ TEST_F(OutputSafety, OutDirHoldingTheInputsIsRefused) {
 // With stderr closed, the first file opened would get descriptor 2 and the warnings of
 // other jobs (printed on "stderr") would land inside it.
 TEST_F(OutputSafety, ClosedStderrKeepsWarningsOutOfOutputs) {
+  // Timing decides where the warnings went (a job's files are open while another job's
+  // warnings are printed), so many jobs at once: before the fix most runs had some.
   std::string inputs;
-  for (int i = 0; i < 24; ++i) {
+  for (int i = 0; i < 64; ++i) {
     write_file(dir / ("s" + std::to_string(i) + ".vert"), kWarningVert);
     inputs += " s" + std::to_string(i) + ".vert";
   }
-  ProcessResult r = run_shell("exec " + cli + " lower" + inputs + " --out-dir out -j 4 2>&-");
+  ProcessResult r = run_shell("exec " + cli + " lower" + inputs + " --out-dir out -j 8 2>&-");
   EXPECT_EQ(r.exit_code, 0);
   for (const auto& entry : fs::directory_iterator(dir / "out"))
     EXPECT_EQ(read_file(entry.path()).find("warning:"), std::string::npos) << entry.path() << " holds a warning";
