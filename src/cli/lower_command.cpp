@@ -17,7 +17,7 @@
 #include "commands.hpp"
 #include "diagnostic_printer.hpp"
 #include "doublet/doublet.hpp"
-#include "frontend/read_limited.hpp"
+#include "input_file.hpp"
 #include "job_runner.hpp"
 #include "lower_job.hpp"
 #include "output_paths.hpp"
@@ -234,13 +234,11 @@ int run_lower(const CLI::App& cmd, const LowerArgs& a) {
   Options common = common_options(a, error);
   if (!error.empty()) return usage_error(cmd, error);
   if (!a.plan.empty()) {  // the plan's modes first: --mode-for entries on the command line win
-    std::string text;  // bounded like a shader: a plan file is kilobytes
-    const frontend::ReadStatus read = frontend::read_file_limited(a.plan, kMaxSourceBytes, text).status;
+    std::string text;
+    const std::string read_error = read_input_file(a.plan, text);
     Options from_plan;
-    Diagnostic d{a.plan, 0, 0, Severity::Error,
-                 read == frontend::ReadStatus::TooLarge ? frontend::source_too_large_message("the plan file")
-                                                        : "cannot read the plan file"};
-    if (read != frontend::ReadStatus::Ok || !plan::load_plan(text, a.plan, &from_plan, &d)) {
+    Diagnostic d{a.plan, 0, 0, Severity::Error, "cannot read the plan file: " + read_error};
+    if (!read_error.empty() || !plan::load_plan(text, a.plan, &from_plan, &d)) {
       std::cerr << format_diagnostic(d) << "\n";
       return kExitInput;
     }

@@ -114,6 +114,18 @@ TEST_F(InputLimitCli, SparseThreeGigabyteFileIsRefused) {
   EXPECT_EQ(read_file(dir / "out.vert"), "previous output\n");
 }
 
+TEST_F(InputLimitCli, OtherInputFilesAreBoundedToo) {
+  make_sparse_file(dir / "sparse.vert", std::uintmax_t{3} << 30);
+  write_file(dir / "a.vert", kShader);
+  const std::string too_large = "larger than the 64 MiB limit on input files";
+  for (const std::string& command : {cli + " verify sparse.vert", cli + " plan sparse.vert --scene none.json",
+                                     cli + " lower a.vert --plan /dev/zero"}) {
+    ProcessResult r = run_shell("exec " + command);
+    EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.err;
+    EXPECT_NE(r.err.find(too_large), std::string::npos) << command << "\n" << r.err;
+  }
+}
+
 TEST_F(InputLimitCli, AShaderJustUnderTheLimitIsRead) {
   std::string source = std::string(kShader) + "//";  // one long comment line: quick to parse
   source.resize(kMaxSourceBytes - 1, 'x');
