@@ -160,6 +160,8 @@ struct Result {
 // CLI stops reading an input at this size plus one byte (docs/robustness.md, "Input size").
 // Real shaders are kilobytes; the limit only stops runaway inputs (/dev/zero, `yes |`).
 inline constexpr std::size_t kMaxSourceBytes = std::size_t{64} << 20;  // 64 MiB
+// The longest line lower() accepts in the source (a longer one is an error at its line).
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;  // 1 MiB
 
 Result lower(std::string_view source, const Options& options);
 

@@ -225,11 +225,32 @@ Result lower_unchecked(std::string_view source, const Options& options) {
 // the 1 GiB stack below would not hold glslang's recursion much beyond it.
 constexpr std::size_t kMaxStatementOperators = 200000;
 
+// The 1-based number and the length of the source's longest line.
+std::pair<int, std::size_t> longest_line(std::string_view source) {
+  std::pair<int, std::size_t> longest{1, 0};
+  int number = 1;
+  for (std::size_t start = 0; start <= source.size(); ++number) {
+    std::size_t end = std::min(source.find('\n', start), source.size());
+    if (end - start > longest.second) longest = {number, end - start};
+    start = end + 1;
+  }
+  return longest;
+}
+
 Result lower(std::string_view source, const Options& options) {
   try {
     if (source.size() > kMaxSourceBytes) {
       Result r;
       r.diagnostics.push_back({options.file_name, 1, 1, Severity::Error, frontend::source_too_large_message("input")});
+      return r;
+    }
+    // The front end's line scans (std::regex) recurse per character: a 4 MiB line overflowed
+    // even the 1 GiB stack.
+    if (auto [line, length] = longest_line(source); length > kMaxLineBytes) {
+      Result r;
+      r.diagnostics.push_back({options.file_name, line, 1, Severity::Error,
+                               "this line is " + std::to_string(length) + " bytes long, over the " +
+                                   std::to_string(kMaxLineBytes >> 20) + " MiB limit on one line; break it into shorter lines"});
       return r;
     }
     if (std::size_t depth = max_statement_operators(source); depth > kMaxStatementOperators) {

@@ -84,6 +84,28 @@ TEST(InputLimit, LibraryRefusesAnIncludedFileOverTheLimitUnread) {
   expect_size_refusal(lower("#version 300 es\n#include \"huge.glsl\"\nvoid main() {}\n", o), "#include \"huge.glsl\"");
 }
 
+// std::regex, which the front end's line scans use, recursed once per character of a line:
+// a line of 4 MiB (spaces, or a generated #define) overflowed the stack (SIGSEGV).
+TEST(LineLimit, LongerLinesAreRefusedAtTheirLine) {
+  EXPECT_EQ(kMaxLineBytes, 1u << 20);
+  for (const std::string& line : {std::string(4u << 20, ' '), "#define T " + std::string(4u << 20, '1')}) {
+    const Result r = lower(std::string(kShader) + line + "\n", vertex_options());
+    EXPECT_FALSE(r.ok);
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(format_diagnostic(r.diagnostics.front()).rfind("big.vert:4:1: error: this line is " +
+                                                                  std::to_string(line.size()) +
+                                                                  " bytes long, over the 1 MiB limit on one line",
+                                                              0),
+              0u)
+        << format_diagnostic(r.diagnostics.front());
+  }
+}
+
+TEST(LineLimit, ALineOfExactlyTheLimitIsLowered) {
+  const Result r = lower(std::string(kShader) + std::string(kMaxLineBytes, ' ') + "\n", vertex_options());
+  EXPECT_TRUE(r.ok) << (r.diagnostics.empty() ? "" : r.diagnostics.front().message);
+}
+
 class InputLimitCli : public ::testing::Test {
  protected:
   ProcessResult run_shell(const std::string& command) {
@@ -126,9 +148,17 @@ TEST_F(InputLimitCli, OtherInputFilesAreBoundedToo) {
   }
 }
 
+TEST_F(InputLimitCli, AFourMebibyteLineIsDiagnosedNotACrash) {
+  write_file(dir / "wide.vert", std::string(kShader) + std::string(4u << 20, ' ') + "\n");
+  ProcessResult r = run_shell("exec " + cli + " lower wide.vert -o out.vert");
+  EXPECT_EQ(r.exit_code, 2) << "139: the stack overflowed\n" << r.err;
+  EXPECT_EQ(r.err.rfind("wide.vert:4:1: error: this line is 4194304 bytes long", 0), 0u) << r.err;
+}
+
 TEST_F(InputLimitCli, AShaderJustUnderTheLimitIsRead) {
-  std::string source = std::string(kShader) + "//";  // one long comment line: quick to parse
-  source.resize(kMaxSourceBytes - 1, 'x');
+  std::string source = kShader;  // then comment lines of 64 KiB: quick to parse
+  while (source.size() < kMaxSourceBytes) source += "//" + std::string(65534 - 3, 'x') + "\n";
+  source.resize(kMaxSourceBytes - 1);
   write_file(dir / "big.vert", source + "\n");
   ProcessResult r = run_shell("exec " + cli + " lower big.vert -o out.vert");
   EXPECT_EQ(r.exit_code, 0) << r.err.substr(0, 500);
