@@ -99,13 +99,17 @@ bool write_all(int fd, std::string_view data, int& err) {
   return true;
 }
 
-// A FIFO, a device or a /proc or /dev entry is written in place: renaming a regular
-// file over /dev/null (or a FIFO someone reads) would destroy what is not ours.
+// An existing FIFO or device is written in place: renaming a regular file over /dev/null
+// (or a FIFO someone reads) would destroy what is not ours. So is an existing regular file
+// reached through /dev/ or /proc/ (/dev/stdout redirected to a file): it is a descriptor's.
+// A new file, wherever it is, is created by the rename.
 bool written_in_place(const std::string& path, const std::string& real_path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return false;
+  if (!S_ISREG(st.st_mode)) return true;
   for (const std::string* p : {&path, &real_path})
     if (p->rfind("/dev/", 0) == 0 || p->rfind("/proc/", 0) == 0) return true;
-  struct stat st {};
-  return ::stat(real_path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+  return false;
 }
 
 }  // namespace

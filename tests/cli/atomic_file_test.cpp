@@ -143,6 +143,14 @@ TEST(AtomicFile, FifoIsWrittenInPlace) {
   EXPECT_EQ(d.entries(), std::vector<std::string>{"fifo"});
 }
 
+TEST(AtomicFile, NewFileUnderDevIsCreated) {  // /dev/shm is a place for files too
+  if (!fs::is_directory("/dev/shm")) GTEST_SKIP() << "no /dev/shm";
+  const std::string path = "/dev/shm/doublet-atomic-test-" + std::to_string(::getpid());
+  EXPECT_EQ(write_file_atomically(path, "x"), "");
+  EXPECT_EQ(read_file(path), "x");
+  fs::remove(path);
+}
+
 // Runs `body` in a child process and returns its wait status.
 template <typename Body>
 int in_child(Body body) {
