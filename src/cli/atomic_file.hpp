@@ -3,9 +3,9 @@
 // reader sees either the old file or the complete new one — never a partial
 // file — and a failed run leaves the destination exactly as it was.
 //
-// What is not a regular file is never replaced: an existing FIFO, device
-// (/dev/null, a terminal) or anything reached through /dev/ or /proc/
-// (/dev/stdout) is opened and written in place at commit(), as GCC does.
+// What is not a regular file is never replaced: an existing FIFO or device
+// (/dev/null, a terminal), or an existing file reached through /dev/ or /proc/
+// (/dev/stdout), is opened and written in place at commit(), as GCC does.
 //
 // Temporary files are short names (.dbl-XXXXXX, so a 255-byte output name still
 // fits) and are listed where a fatal signal can find them: once
