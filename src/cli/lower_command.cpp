@@ -198,7 +198,7 @@ std::string plan_batch(const LowerArgs& a, const Options& common, std::vector<Lo
 }
 
 // Every file the jobs would write, named for messages: -o/--manifest/-MF for one input,
-// "the output of 'IN'" and so on for a batch.
+// "the output 'DIR/NAME' of 'IN'" and so on for a batch.
 std::vector<NamedFile> planned_outputs(const std::vector<LowerJob>& jobs, const LowerArgs& a, bool batch) {
   std::vector<NamedFile> outputs;
   for (const LowerJob& job : jobs) {
