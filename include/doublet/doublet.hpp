@@ -4,6 +4,7 @@
 // Diagnostic in Result::diagnostics and Result::ok == false.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -153,6 +154,12 @@ struct Result {
   // (`doublet bench --compiler` prints their medians).
   std::vector<std::pair<std::string, double>> phase_seconds;
 };
+
+// The most bytes of shader source lower() accepts: the source plus every #include'd file's
+// text. Over it, lower() answers with an error at file:1:1 and reads no more includes; the
+// CLI stops reading an input at this size plus one byte (docs/robustness.md, "Input size").
+// Real shaders are kilobytes; the limit only stops runaway inputs (/dev/zero, `yes |`).
+inline constexpr std::size_t kMaxSourceBytes = std::size_t{64} << 20;  // 64 MiB
 
 Result lower(std::string_view source, const Options& options);
 

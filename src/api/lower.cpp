@@ -13,6 +13,7 @@
 #include "frontend/import.hpp"
 #include "frontend/mode_pragmas.hpp"
 #include "frontend/text_scan.hpp"
+#include "frontend/read_limited.hpp"
 #include "lower/apply_modes.hpp"
 #include "lower/lints.hpp"
 #include "lower/lower.hpp"
@@ -270,6 +271,11 @@ void cap_diagnostics(std::vector<Diagnostic>& diags, const std::string& file_nam
 
 Result lower(std::string_view source, const Options& options) {
   try {
+    if (source.size() > kMaxSourceBytes) {
+      Result r;
+      r.diagnostics.push_back({options.file_name, 1, 1, Severity::Error, frontend::source_too_large_message("input")});
+      return r;
+    }
     if (std::size_t depth = max_statement_operators(source); depth > kMaxStatementOperators) {
       Result r;
       r.diagnostics.push_back({options.file_name, 1, 1, Severity::Error, too_many_operators_message(depth, false)});

@@ -4,11 +4,8 @@
 // shader lowered without errors.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
-#include <sstream>
-#include <map>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -20,8 +17,10 @@
 #include "commands.hpp"
 #include "diagnostic_printer.hpp"
 #include "doublet/doublet.hpp"
+#include "input_file.hpp"
 #include "job_runner.hpp"
 #include "lower_job.hpp"
+#include "output_paths.hpp"
 #include "plan/planner.hpp"
 #include "mode_args.hpp"
 
@@ -164,15 +163,11 @@ std::string plan_single(const LowerArgs& a, const Options& common, std::vector<L
   job.manifest = a.manifest;
   if (job.manifest == "-" && job.output.empty())
     return "--manifest - needs -o FILE: the shader already goes to stdout";
-  if (!job.output.empty() && !job.manifest.empty() && job.manifest == job.output)
-    return "-o and --manifest name the same file";
   if (a.depfile || !a.depfile_path.empty()) {
     job.depfile = !a.depfile_path.empty() ? a.depfile_path : job.output.empty() ? "" : job.output + ".d";
     job.depfile_target = !a.depfile_target.empty() ? a.depfile_target : job.output;
     if (job.depfile.empty() || job.depfile_target.empty())
       return "-MD with the shader on stdout needs -MF FILE and -MT TARGET (the depfile names the output)";
-    if (job.depfile == job.output || job.depfile == job.manifest)
-      return "-MF names the same file as -o or --manifest";
   }
   jobs.push_back(std::move(job));
   return {};
@@ -185,7 +180,6 @@ std::string plan_batch(const LowerArgs& a, const Options& common, std::vector<Lo
   if (!a.manifest.empty()) return "--manifest is for one input; --out-dir writes DIR/NAME.json for each";
   if (!a.depfile_path.empty() || !a.depfile_target.empty())
     return "-MF/-MT are for one input; with --out-dir, -MD writes DIR/NAME.d for each";
-  std::map<std::string, std::string> seen;  // output name → input
   for (const std::string& input : a.inputs) {
     if (input == "-") return "stdin ('-') cannot be used with --out-dir";
     LowerJob job;
@@ -194,8 +188,6 @@ std::string plan_batch(const LowerArgs& a, const Options& common, std::vector<Lo
     job.options.file_name = input;
     if (std::string e = resolve_stage(input, job.options); !e.empty()) return e;
     std::string name = fs::path(input).filename().string();
-    if (auto [it, fresh] = seen.emplace(name, input); !fresh)
-      return "'" + it->second + "' and '" + input + "' would both be written to " + a.out_dir + "/" + name;
     job.output = (fs::path(a.out_dir) / name).string();
     job.manifest = job.output + ".json";
     if (a.depfile) {
@@ -207,17 +199,48 @@ std::string plan_batch(const LowerArgs& a, const Options& common, std::vector<Lo
   return {};
 }
 
+// Every file the jobs would write, named for messages: -o/--manifest/-MF for one input,
+// "the output 'DIR/NAME' of 'IN'" and so on for a batch.
+std::vector<NamedFile> planned_outputs(const std::vector<LowerJob>& jobs, const LowerArgs& a, bool batch) {
+  std::vector<NamedFile> outputs;
+  for (const LowerJob& job : jobs) {
+    auto add = [&](const std::string& path, const std::string& flag, const char* what) {
+      outputs.push_back({path, batch ? std::string(what) + " '" + path + "' of '" + job.input + "'" : flag + " '" + path + "'"});
+    };
+    if (!job.output.empty()) add(job.output, "-o", "the output");
+    if (!job.manifest.empty() && job.manifest != "-") add(job.manifest, "--manifest", "the manifest");
+    if (!job.depfile.empty()) add(job.depfile, a.depfile_path.empty() ? "the depfile (-MD)" : "-MF", "the depfile");
+  }
+  return outputs;
+}
+
+// Refuses, before anything is written, outputs that are one file twice or that are an
+// input: `-o x --manifest ./x`, -MF naming the input, --out-dir holding the inputs, two
+// batch inputs whose outputs share a name (a.vert's manifest is a.vert.json).
+std::string refuse_clobbering(const std::vector<LowerJob>& jobs, const LowerArgs& a, bool batch) {
+  std::vector<NamedFile> inputs;
+  for (const LowerJob& job : jobs)
+    if (job.input != "-") inputs.push_back({job.input, "the input '" + job.input + "'"});
+  if (!a.plan.empty()) inputs.push_back({a.plan, "the --plan file '" + a.plan + "'"});
+  std::optional<FileClash> clash = find_file_clash(planned_outputs(jobs, a, batch), inputs);
+  if (!clash) return {};
+  if (clash->other_is_input)
+    return clash->describe() + ": writing it would destroy the input; " +
+           (batch ? "use an --out-dir that holds no input" : "name another output file");
+  return clash->describe() + ": " +
+         (batch ? "lower these inputs into different --out-dir directories" : "give each output its own name");
+}
+
 int run_lower(const CLI::App& cmd, const LowerArgs& a) {
   std::string error;
   Options common = common_options(a, error);
   if (!error.empty()) return usage_error(cmd, error);
   if (!a.plan.empty()) {  // the plan's modes first: --mode-for entries on the command line win
-    std::ifstream in(a.plan, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
+    std::string text;
+    const std::string read_error = read_input_file(a.plan, text);
     Options from_plan;
-    Diagnostic d{a.plan, 0, 0, Severity::Error, "cannot read the plan file"};
-    if (!in || !plan::load_plan(text.str(), a.plan, &from_plan, &d)) {
+    Diagnostic d{a.plan, 0, 0, Severity::Error, "cannot read the plan file: " + read_error};
+    if (!read_error.empty() || !plan::load_plan(text, a.plan, &from_plan, &d)) {
       std::cerr << format_diagnostic(d) << "\n";
       return kExitInput;
     }
@@ -229,6 +252,7 @@ int run_lower(const CLI::App& cmd, const LowerArgs& a) {
   std::vector<LowerJob> jobs;
   const bool batch = a.inputs.size() > 1 || !a.out_dir.empty();
   error = batch ? plan_batch(a, common, jobs) : plan_single(a, common, jobs);
+  if (error.empty()) error = refuse_clobbering(jobs, a, batch);
   if (!error.empty()) return usage_error(cmd, error);
 
   const bool use_color = stderr_wants_color(*color);

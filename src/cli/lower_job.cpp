@@ -2,42 +2,34 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
+#include <utility>
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
 #include "depfile.hpp"
 #include "diagnostic_printer.hpp"
+#include "frontend/read_limited.hpp"
+#include "output_paths.hpp"
 
 namespace doublet::cli {
 namespace {
 
-// Reads a whole file (or stdin for fd 0). Returns errno on failure.
-int read_fd(int fd, std::string& out) {
-  struct stat st {};
-  if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) return EISDIR;
-  char buf[1 << 16];
-  for (;;) {
-    ssize_t n = ::read(fd, buf, sizeof buf);
-    if (n == 0) return 0;
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return errno;
-    }
-    out.append(buf, static_cast<size_t>(n));
-  }
+// Reads the input (a path, or "-" for stdin), stopping one byte past doublet's source limit.
+frontend::ReadResult read_input(const std::string& path, std::string& out) {
+  if (path == "-") return frontend::read_limited(STDIN_FILENO, kMaxSourceBytes, out);
+  return frontend::read_file_limited(path, kMaxSourceBytes, out);
 }
 
-int read_input(const std::string& path, std::string& out) {
-  if (path == "-") return read_fd(STDIN_FILENO, out);
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return errno;
-  int err = read_fd(fd, out);
-  ::close(fd);
-  return err;
+// An output that is one of the files the shader #includes (known only once it is lowered).
+std::optional<FileClash> find_included_output(const LowerJob& job, const std::vector<std::string>& included) {
+  std::vector<NamedFile> outputs, inputs;
+  for (const auto& [path, what] : {std::pair{job.output, "the output"}, {job.manifest, "the manifest"}, {job.depfile, "the depfile"}})
+    if (!path.empty() && path != "-") outputs.push_back({path, what + (" '" + path + "'")});
+  for (const std::string& path : included) inputs.push_back({path, "the #include'd file '" + path + "'"});
+  return find_file_clash(outputs, inputs);
 }
 
 std::string with_newline(std::string text) {
@@ -56,9 +48,11 @@ JobOutcome run_lower_job(const LowerJob& job) {
   };
 
   std::string source;
-  if (int err = read_input(job.input, source); err != 0) {
-    outcome.diagnostics.push_back(
-        {job.options.file_name, 0, 0, Severity::Error, std::string("cannot read file: ") + std::strerror(err)});
+  if (frontend::ReadResult read = read_input(job.input, source); read.status != frontend::ReadStatus::Ok) {
+    const bool too_large = read.status == frontend::ReadStatus::TooLarge;
+    outcome.diagnostics.push_back({job.options.file_name, too_large ? 1 : 0, too_large ? 1 : 0, Severity::Error,
+                                   too_large ? frontend::source_too_large_message("input")
+                                             : std::string("cannot read file: ") + std::strerror(read.error)});
     outcome.exit_code = kExitInput;
     return outcome;
   }
@@ -72,6 +66,9 @@ JobOutcome run_lower_job(const LowerJob& job) {
     outcome.exit_code = kExitInput;
     return outcome;
   }
+
+  if (std::optional<FileClash> clash = find_included_output(job, result.included_files))
+    return fail(clash->describe() + ": writing it would destroy the included file; write the output elsewhere");
 
   // Every file is prepared first and renamed into place only when all could be written,
   // the depfile last: a depfile on disk always describes outputs that exist.

@@ -5,8 +5,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "atomic_file.hpp"
 #include "commands.hpp"
 #include "gcc_style_args.hpp"
+#include "standard_fds.hpp"
 
 #ifndef DOUBLET_VERSION
 #define DOUBLET_VERSION "unknown"
@@ -26,6 +28,8 @@ int usage_error(const CLI::App& command, std::string_view message) {
 
 int main(int argc, char** argv) {
   using namespace doublet::cli;
+  open_closed_standard_fds();              // before anything opens a file (`2>&-`)
+  remove_temp_files_on_fatal_signals();    // Ctrl-C or kill mid-batch leaves no .dbl-* file
   CLI::App app{"doublet " DOUBLET_VERSION
                " - lowers GLSL doubles (double, dvec2-4) to float-float GLSL ES / desktop GLSL",
                "doublet"};

@@ -1,14 +1,13 @@
 // `doublet plan SHADER --scene FILE [-o PLAN.json]`: range and error analysis of SHADER under the
 // scene's input ranges and output precisions; prints the table and writes the plan file that
 // `doublet lower --plan` applies (docs/plan.md). The work is plan::make_plan().
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include <CLI/CLI.hpp>
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
+#include "input_file.hpp"
 #include "plan/planner.hpp"
 
 namespace doublet::cli {
@@ -22,14 +21,6 @@ struct PlanArgs {
 // Exit 1 (docs/plan.md): the scene's precision cannot be promised even with df64 everywhere.
 constexpr int kExitInfeasible = 1;
 
-bool read_text(const std::string& path, std::string* out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return true;
-}
 
 int input_error(const std::string& message) {
   std::cerr << "doublet plan: error: " << message << "\n";
@@ -47,8 +38,8 @@ int run_plan(const PlanArgs& a) {
   }
   o.include_dirs = a.include_dirs;
   std::string source, scene_text;
-  if (!read_text(a.shader, &source)) return input_error("cannot read '" + a.shader + "'");
-  if (!read_text(a.scene, &scene_text)) return input_error("cannot read scene '" + a.scene + "'");
+  if (std::string e = read_input_file(a.shader, source); !e.empty()) return input_error("cannot read '" + a.shader + "': " + e);
+  if (std::string e = read_input_file(a.scene, scene_text); !e.empty()) return input_error("cannot read scene '" + a.scene + "': " + e);
   plan::Scene scene;
   Diagnostic d;
   if (!plan::parse_scene(scene_text, a.scene, &scene, &d)) {

@@ -2,14 +2,13 @@
 // report per-output accuracy (docs/verify.md). The work is doublet::verify::verify(); this file
 // only turns the command line into VerifyOptions and the report into output and an exit code.
 #include <algorithm>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include <CLI/CLI.hpp>
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
+#include "input_file.hpp"
 #include "plan/planner.hpp"
 #include "plan/scene.hpp"
 #include "verify/report.hpp"
@@ -43,14 +42,6 @@ int input_error(const std::string& message) {
   return kExitInput;
 }
 
-bool read_file(const std::string& path, std::string* out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return true;
-}
 
 // --sweep OP|all: per-operation sweeps against MPFR; exit 1 when an op leaves its bound.
 int run_sweep(const VerifyArgs& a) {
@@ -86,13 +77,13 @@ int apply_scene_and_plan(const VerifyArgs& a, verify::VerifyOptions* o, plan::Sc
   Diagnostic d;
   std::string text;
   if (!a.plan.empty()) {
-    if (!read_file(a.plan, &text)) return input_error("cannot read plan '" + a.plan + "'");
+    if (std::string e = read_input_file(a.plan, text); !e.empty()) return input_error("cannot read plan '" + a.plan + "': " + e);
     Options from_plan;
     if (!plan::load_plan(text, a.plan, &from_plan, &d)) return (std::cerr << format_diagnostic(d) << "\n", kExitInput);
     merge_plan_modes(from_plan, o->lower);
   }
   if (a.scene.empty()) return kExitOk;
-  if (!read_file(a.scene, &text)) return input_error("cannot read scene '" + a.scene + "'");
+  if (std::string e = read_input_file(a.scene, text); !e.empty()) return input_error("cannot read scene '" + a.scene + "': " + e);
   if (!plan::parse_scene(text, a.scene, scene, &d)) return (std::cerr << format_diagnostic(d) << "\n", kExitInput);
   for (const auto& [name, range] : scene->inputs) {
     verify::InputSpec& in = o->spec.inputs[name];
@@ -150,7 +141,7 @@ int run_verify(const VerifyArgs& a) {
   o.sabotage = sabotage.value_or(verify::Sabotage::None);
   if (!a.spec.empty()) {
     std::string text;
-    if (!read_file(a.spec, &text)) return input_error("cannot read spec '" + a.spec + "'");
+    if (std::string e = read_input_file(a.spec, text); !e.empty()) return input_error("cannot read spec '" + a.spec + "': " + e);
     if (std::string e = verify::parse_spec(text, &o.spec); !e.empty()) return input_error(a.spec + ": " + e);
   }
   for (const std::string& r : a.ranges) {
@@ -163,7 +154,7 @@ int run_verify(const VerifyArgs& a) {
   plan::Scene scene;
   if (int rc = apply_scene_and_plan(a, &o, &scene); rc != kExitOk) return rc;
   std::string source;
-  if (!read_file(a.shader, &source)) return input_error("cannot read '" + a.shader + "'");
+  if (std::string e = read_input_file(a.shader, source); !e.empty()) return input_error("cannot read '" + a.shader + "': " + e);
 
   const verify::VerifyReport report = verify::verify(source, o);
   const bool json_to_stdout = a.json == "-";

@@ -1,4 +1,5 @@
 #include "frontend/frontend.hpp"
+#include "frontend/read_limited.hpp"
 
 #include "api/big_stack.hpp"
 #include "frontend/macro_budget.hpp"
@@ -15,7 +16,6 @@
 #include <optional>
 #include <tuple>
 #include <functional>
-#include <fstream>
 #include <mutex>
 #include <sstream>
 
@@ -197,9 +197,10 @@ EShLanguage to_glslang(Stage s) {
 // glslang's preprocessor and parser ask for them again.
 class IncludeAdapter : public glslang::TShader::Includer {
  public:
+  // `budget`: how many bytes the included files may add (kMaxSourceBytes less the main source).
   IncludeAdapter(const Options& options, std::vector<std::pair<std::string, std::string>>& files,
-                 std::vector<std::string>& included)
-      : options_(options), files_(files), included_(included) {}
+                 std::vector<std::string>& included, std::size_t budget)
+      : options_(options), files_(files), included_(included), budget_(budget) {}
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override {
     return too_deep(header, depth) ? nullptr : to_glslang(resolve(header, includer ? includer : "", true));
@@ -211,11 +212,11 @@ class IncludeAdapter : public glslang::TShader::Includer {
 
   // glslang follows an include cycle forever; stop at a depth no real shader needs.
   static constexpr size_t kMaxIncludeDepth = 32;
-  std::string depth_error;
+  std::string limit_error;  // the first include refused for depth or size
   bool too_deep(const char* header, size_t depth) {
     if (depth <= kMaxIncludeDepth) return false;
-    if (depth_error.empty())
-      depth_error = "#include nested more than " + std::to_string(kMaxIncludeDepth) + " deep at \"" +
+    if (limit_error.empty())
+      limit_error = "#include nested more than " + std::to_string(kMaxIncludeDepth) + " deep at \"" +
                     std::string(header) + "\" (an include cycle?)";
     return true;
   }
@@ -238,21 +239,36 @@ class IncludeAdapter : public glslang::TShader::Includer {
     return new IncludeResult(found->resolved_path, found->contents.data(), found->contents.size(), nullptr);
   }
 
+  // Every file read counts against budget_ (the bytes kMaxSourceBytes leaves after the shader):
+  // a file over what is left is refused without being read whole.
   std::optional<doublet::IncludeResult> read(const std::string& header, const std::string& includer, bool local) {
-    if (options_.includer) return options_.includer->include(header, includer);
-    namespace fs = std::filesystem;
-    std::vector<fs::path> dirs;
-    if (local) dirs.push_back(fs::path(includer.empty() ? options_.file_name : includer).parent_path());
-    for (const auto& d : options_.include_dirs) dirs.emplace_back(d);
-    for (const auto& dir : dirs) {
-      fs::path candidate = dir / header;
-      std::error_code ec;
-      if (!fs::is_regular_file(candidate, ec)) continue;
-      std::ifstream in(candidate, std::ios::binary);
-      std::stringstream buffer;
-      buffer << in.rdbuf();
-      return doublet::IncludeResult{candidate.lexically_normal().string(), buffer.str()};
+    std::optional<doublet::IncludeResult> found;
+    if (options_.includer) {
+      found = options_.includer->include(header, includer);
+    } else {
+      namespace fs = std::filesystem;
+      std::vector<fs::path> dirs;
+      if (local) dirs.push_back(fs::path(includer.empty() ? options_.file_name : includer).parent_path());
+      for (const auto& d : options_.include_dirs) dirs.emplace_back(d);
+      for (const auto& dir : dirs) {
+        fs::path candidate = dir / header;
+        std::error_code ec;
+        if (!fs::is_regular_file(candidate, ec)) continue;
+        std::string text;
+        ReadResult read = read_file_limited(candidate.string(), budget_, text);
+        if (read.status == ReadStatus::TooLarge) return refuse_too_large(header);
+        if (read.status == ReadStatus::Failed) continue;
+        found = doublet::IncludeResult{candidate.lexically_normal().string(), std::move(text)};
+        break;
+      }
     }
+    if (found && found->contents.size() > budget_) return refuse_too_large(header);  // from options_.includer
+    if (found) budget_ -= found->contents.size();
+    return found;
+  }
+
+  std::nullopt_t refuse_too_large(const std::string& header) {
+    if (limit_error.empty()) limit_error = source_too_large_message("#include \"" + header + "\"");
     return std::nullopt;
   }
 
@@ -260,6 +276,7 @@ class IncludeAdapter : public glslang::TShader::Includer {
   std::vector<std::pair<std::string, std::string>>& files_;
   std::vector<std::string>& included_;
   std::map<std::tuple<std::string, std::string, bool>, std::optional<doublet::IncludeResult>> cache_;
+  std::size_t budget_;
 };
 
 // The `#include "name"` / `#include <name>` directives of `text`, as (name, local).
@@ -443,7 +460,7 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
 
   std::string text(source);
   std::vector<std::pair<std::string, std::string>> files{{options.file_name, text}};
-  IncludeAdapter includer(options, files, out.included_files);
+  IncludeAdapter includer(options, files, out.included_files, kMaxSourceBytes - std::min(kMaxSourceBytes, source.size()));
   bool needs_preprocessing = false;  // or includes files: then the operator limit applies to the preprocessed text
   if (auto error = check_macro_budget(source, options, includer, needs_preprocessing)) {
     diagnostics.push_back(*error);
@@ -465,8 +482,8 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
   auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
   // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
   bool ok = out.shader->parse(GetDefaultResources(), 450, ECompatibilityProfile, true, false, messages, includer);
-  if (!includer.depth_error.empty()) {
-    diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.depth_error});
+  if (!includer.limit_error.empty()) {
+    diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.limit_error});
     return false;
   }
   append_glslang_log(out.shader->getInfoLog(), options.file_name, files, diagnostics);

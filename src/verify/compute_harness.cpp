@@ -51,11 +51,15 @@ std::vector<uint32_t> buffer_sizes(const ShaderInterface& s, uint32_t array_leng
 // The split member `name` of a buffer block in the manifest (hi_offset/lo_offset set), or null; a
 // member of an array of structs, reflected as "p.pos", is listed as "p[0].pos" (offset in element
 // 0) and *stride becomes the array's ("p") stride.
-const BlockMember* find_split_member(const Manifest& manifest, const std::string& name, uint32_t* stride) {
-  const size_t dot = name.find('.');
-  const std::string array = dot == std::string::npos ? "" : name.substr(0, dot);
-  const std::string element_name = array.empty() ? name : array + "[0]" + name.substr(dot);
-  for (const auto& v : manifest.variables)
+const BlockMember* find_split_member(const Manifest& manifest, const std::string& reflected, uint32_t* stride) {
+  for (const auto& v : manifest.variables) {
+    // Reflection names a member of a block with an instance name (`buffer Io { ... } io;`) as
+    // "Io.x"; the manifest lists it under the block as "x".
+    const std::string prefix = v.type + ".";
+    const std::string name = reflected.rfind(prefix, 0) == 0 ? reflected.substr(prefix.size()) : reflected;
+    const size_t dot = name.find('.');
+    const std::string array = dot == std::string::npos ? "" : name.substr(0, dot);
+    const std::string element_name = array.empty() ? name : array + "[0]" + name.substr(dot);
     for (const auto& m : v.members) {
       if (m.hi_offset < 0 || m.lo_offset < 0 || m.matrix_stride != 0) continue;
       if (m.name == name) {
@@ -67,6 +71,7 @@ const BlockMember* find_split_member(const Manifest& manifest, const std::string
         if (parent.name == array) *stride = static_cast<uint32_t>(parent.array_stride);
       return &m;
     }
+  }
   return nullptr;
 }
 

@@ -251,4 +251,28 @@ TEST(ModePragmas, ManyPragmasBeforeALongLine) {
   EXPECT_LT(o.seconds, 3.0);
 }
 
+
+// Over doublet::kMaxSourceBytes (64 MiB): refused from the file's size, before reading it.
+TEST(InputSize, SparseThreeGigabyteInputAndIncludeAreRefused) {
+  ScratchDir dir;
+  write_file(dir / "sparse.vert", "");
+  fs::resize_file(dir / "sparse.vert", std::uintmax_t{3} << 30);
+  write_file(dir / "huge.glsl", "");
+  fs::resize_file(dir / "huge.glsl", std::uintmax_t{3} << 30);
+  write_file(dir / "includes.vert", "#version 300 es\n#include \"huge.glsl\"\nvoid main() {}\n");
+  const std::vector<std::string> inputs{"huge.glsl", "includes.vert", "sparse.vert"};
+
+  Outcome o = lower_in(dir, "sparse.vert");
+  expect_clean_failure(dir, o, inputs);
+  EXPECT_TRUE(std::regex_search(o.first_error, std::regex(R"(^sparse\.vert:1:1: error: input is larger than the 64 MiB limit)")))
+      << o.first_error;
+  EXPECT_LT(o.seconds, 5.0) << "the file was read";
+
+  o = lower_in(dir, "includes.vert");
+  expect_clean_failure(dir, o, inputs);
+  EXPECT_TRUE(std::regex_search(o.first_error,
+                                std::regex(R"(^includes\.vert:1:1: error: #include "huge\.glsl" is larger than the 64 MiB)")))
+      << o.first_error;
+}
+
 }  // namespace
