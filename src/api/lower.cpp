@@ -153,6 +153,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   next_phase("optimize");
   if (options.optimize && !passes::optimize_df(module, ctx)) return result;
   next_phase("interfaces");
+  if (!passes::move_global_initialisers(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
   if (!passes::check_target(module, ctx)) return result;
   next_phase("print");

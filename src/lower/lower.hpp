@@ -50,6 +50,8 @@ bool is_df(const ir::Type& t);  // a df_double/df_dvecN struct (not an array of 
 int df_width(const ir::Type& t);
 
 bool lower_doubles(ir::Module& module, Context& context);
+// Global initialisers that are not constant expressions become assignments at the top of main.
+bool move_global_initialisers(ir::Module& module, Context& context);
 bool split_interfaces(ir::Module& module, Context& context, Manifest& manifest);
 // Diagnoses, by construct and target, what the lowered shader needs but the target lacks.
 bool check_target(const ir::Module& module, Context& context);
