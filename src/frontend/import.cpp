@@ -162,6 +162,9 @@ class Importer {
     v->declared_type = v->type;
     const TQualifier& q = sym.getQualifier();
     v->storage = import_storage(q, v->name);
+    // glslang marks `const T x = <not a constant expression>;` EvqConstReadOnly, as it marks
+    // const parameters: outside a parameter list it is a variable written once.
+    if (q.storage == EvqConstReadOnly && !importing_params_) v->storage = ir::Storage::Local;
     v->layout = import_layout(q);
     if (q.flat) v->interp = ir::Interp::Flat;
     else if (q.nopersp) v->interp = ir::Interp::NoPerspective;
@@ -504,7 +507,11 @@ class Importer {
     if (!seq.empty())
       if (auto* params = seq[0]->getAsAggregate())
         for (TIntermNode* p : params->getSequence())
-          if (auto* sym = p->getAsSymbolNode()) f->params.push_back(var_for(*sym));
+          if (auto* sym = p->getAsSymbolNode()) {
+            importing_params_ = true;
+            f->params.push_back(var_for(*sym));
+            importing_params_ = false;
+          }
     f->body = seq.size() > 1 ? block(seq[1]) : ir::Stmt::make(ir::Stmt::Kind::Block);
     module_.functions.push_back(f);
   }
@@ -516,6 +523,7 @@ class Importer {
       return;  // built-in blocks (gl_PerVertex)
     ir::VarPtr v = var_for(*sym);
     if (!declared_.insert(v.get()).second) return;
+    if (v->storage == ir::Storage::Local) v->storage = ir::Storage::Global;  // a global `const` with a run-time value
     module_.globals.push_back(v);
     module_.global_inits.push_back(nullptr);
   }
@@ -551,6 +559,7 @@ class Importer {
   ir::Module& module_;
   std::vector<Diagnostic>& diags_;
   bool failed_ = false;
+  bool importing_params_ = false;  // var_for is reading a function's parameter list
   int next_id_ = 1;
   std::map<long long, ir::VarPtr> vars_;
   std::map<std::pair<long long, int>, ir::VarPtr> members_;
