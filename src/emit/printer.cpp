@@ -1,5 +1,6 @@
 #include "emit/printer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -164,10 +165,28 @@ class Printer {
     return s + ") ";
   }
 
+  // The user's `precise`, where the target has it (ES 3.20, desktop 4.00+, ES 3.10 with
+  // GL_EXT_gpu_shader5); elsewhere it is dropped with one warning. The float-float rules do not
+  // depend on it: they carry their own guard.
+  std::string precise_keyword(const ir::Var& v) {
+    if (!v.precise) return "";
+    bool gpu_shader5 = std::find(options_.extensions.begin(), options_.extensions.end(), "GL_EXT_gpu_shader5") !=
+                       options_.extensions.end();
+    if (es_ ? version_ >= 320 || gpu_shader5 : version_ >= 400) return "precise ";
+    if (!precise_dropped_) {
+      precise_dropped_ = true;
+      diags_.push_back({file_, v.loc.line, v.loc.column, Severity::Warning,
+                        "'precise' on '" + v.name + "' is dropped: target " + std::string(to_string(options_.target)) +
+                            " has no 'precise' qualifier (ES 3.20, desktop 4.00+, or ES 3.10 with GL_EXT_gpu_shader5), "
+                            "so the driver may reorder or fuse that float arithmetic; target es320 or glsl450 to keep it"});
+    }
+    return "";
+  }
+
   std::string qualifiers(const ir::Var& v) {
     std::string s;
     if (v.invariant) s += "invariant ";
-    if (v.precise) s += "precise ";
+    s += precise_keyword(v);
     s += layout(v);
     bool interface = v.storage == ir::Storage::In || v.storage == ir::Storage::Out;
     if (interface && options_.target != Target::Es100) {
@@ -217,7 +236,7 @@ class Printer {
   void indent(int depth) { out_ << std::string(static_cast<size_t>(depth) * 2, ' '); }
 
   std::string decl_text(const Stmt& s) {
-    std::string text = (s.var->precise ? "precise " : "") + declarator(s.var->type, s.var->name);
+    std::string text = precise_keyword(*s.var) + declarator(s.var->type, s.var->name);
     if (s.expr) text += " = " + expr(s.expr);
     return text;
   }
@@ -426,6 +445,7 @@ class Printer {
   std::vector<Diagnostic> diags_;
   const ir::Var* frag_output_ = nullptr;
   bool frag_color_declared_ = false;
+  bool precise_dropped_ = false;  // the warning is given once
 };
 
 }  // namespace
