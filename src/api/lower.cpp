@@ -141,6 +141,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   parsed.release_ast();  // the IR owns everything now: free glslang's memory before the passes
 
   passes::Context ctx{options, diags};
+  if (!passes::flatten_io_blocks(module, ctx)) return result;
   next_phase("lints");
   passes::run_lints(module, source, ctx);  // on the IR as imported, before any pass rewrites it
   result.manifest.stage = std::string(to_string(*options.stage));

@@ -183,17 +183,21 @@ class Printer {
     return "";
   }
 
+  std::string interpolation(ir::Interp interp) {
+    if (options_.target == Target::Es100) return "";
+    if (interp == ir::Interp::Flat) return "flat ";
+    if (interp == ir::Interp::Centroid) return "centroid ";
+    if (interp == ir::Interp::NoPerspective && !es_) return "noperspective ";
+    return "";
+  }
+
   std::string qualifiers(const ir::Var& v) {
     std::string s;
     if (v.invariant) s += "invariant ";
     s += precise_keyword(v);
     s += layout(v);
     bool interface = v.storage == ir::Storage::In || v.storage == ir::Storage::Out;
-    if (interface && options_.target != Target::Es100) {
-      if (v.interp == ir::Interp::Flat) s += "flat ";
-      else if (v.interp == ir::Interp::Centroid) s += "centroid ";
-      else if (v.interp == ir::Interp::NoPerspective && !es_) s += "noperspective ";
-    }
+    if (interface) s += interpolation(v.interp);
     if (v.coherent) s += "coherent ";
     if (v.volatile_) s += "volatile ";
     if (v.restrict_) s += "restrict ";
@@ -209,7 +213,7 @@ class Printer {
     if (v->storage == ir::Storage::BuiltIn) return;
     if (v->type.base == ir::Base::Block) {
       out_ << qualifiers(*v) << v->type.name << " {\n";
-      for (const auto& f : *v->type.fields) out_ << "  " << declarator(f.type, f.name) << ";\n";
+      for (const auto& f : *v->type.fields) out_ << "  " << interpolation(f.interp) << declarator(f.type, f.name) << ";\n";
       out_ << "}";
       if (v->name.rfind("anon@", 0) != 0) out_ << " " << v->name << ir::array_suffix(v->type);
       out_ << ";\n";

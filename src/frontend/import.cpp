@@ -98,6 +98,7 @@ class Importer {
       f.name = member.type->getFieldName().c_str();
       f.type = import_type(*member.type, member.loc);
       f.layout = import_layout(member.type->getQualifier());
+      f.interp = import_interp(member.type->getQualifier());
       fields->push_back(std::move(f));
     }
     if (is_struct) {
@@ -127,6 +128,14 @@ class Importer {
     if (q.layoutMatrix == ElmRowMajor) l.matrix = "row_major";
     if (q.hasFormat()) l.format = TQualifier::getLayoutFormatString(q.layoutFormat);
     return l;
+  }
+
+  static ir::Interp import_interp(const TQualifier& q) {
+    if (q.flat) return ir::Interp::Flat;
+    if (q.nopersp) return ir::Interp::NoPerspective;
+    if (q.centroid) return ir::Interp::Centroid;
+    if (q.smooth) return ir::Interp::Smooth;
+    return ir::Interp::Default;
   }
 
   static ir::Storage import_storage(const TQualifier& q, const std::string& name) {
@@ -166,10 +175,7 @@ class Importer {
     // const parameters: outside a parameter list it is a variable written once.
     if (q.storage == EvqConstReadOnly && !importing_params_) v->storage = ir::Storage::Local;
     v->layout = import_layout(q);
-    if (q.flat) v->interp = ir::Interp::Flat;
-    else if (q.nopersp) v->interp = ir::Interp::NoPerspective;
-    else if (q.centroid) v->interp = ir::Interp::Centroid;
-    else if (q.smooth) v->interp = ir::Interp::Smooth;
+    v->interp = import_interp(q);
     v->invariant = q.invariant;
     v->precise = q.isNoContraction();
     v->readonly = q.readonly;
@@ -178,6 +184,8 @@ class Importer {
     v->volatile_ = q.volatil;
     v->restrict_ = q.restrict;
     v->loc = loc_of(sym.getLoc());
+    if (v->loc.line == 0 && sym.getType().isStruct() && !sym.getType().getStruct()->empty())
+      v->loc = loc_of(sym.getType().getStruct()->front().loc);  // a block from the linker objects: its first member
     vars_[sym.getId()] = v;
     if (v->storage == ir::Storage::Const && sym.getConstArray().size() > 0 && !declared_.count(v.get())) {
       // A constant array/struct indexed dynamically: glslang keeps the symbol

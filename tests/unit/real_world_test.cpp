@@ -66,3 +66,61 @@ TEST(RealWorld, UserPreciseIsDroppedWithAWarningWhereTheTargetLacksIt) {
 }
 
 }  // namespace
+
+namespace {
+
+const char* kBlockVertex = R"(#version 450
+in dvec3 position;
+out VertexData { flat dvec3 world; vec2 uv; } vout;
+void main() { vout.world = position; vout.uv = vec2(position.xy); gl_Position = vec4(position, 1.0); }
+)";
+const char* kBlockFragment = R"(#version 450
+in VertexData { flat dvec3 world; vec2 uv; };
+out vec4 color;
+void main() { color = vec4(vec3(world), uv.x); }
+)";
+
+// lowered_names of the manifest's variables of `storage` that came from `block`.
+std::vector<std::string> flattened_names(const doublet::Result& r, const std::string& storage, const std::string& block) {
+  std::vector<std::string> names;
+  for (const auto& v : r.manifest.variables)
+    if (v.storage == storage && v.block == block) names.insert(names.end(), v.lowered_names.begin(), v.lowered_names.end());
+  return names;
+}
+
+TEST(RealWorld, InOutBlocksFlattenToMatchingVaryingsWhereTheTargetLacksThem) {
+  for (Target t : {Target::Es100, Target::Es300, Target::Es310}) {
+    auto vert = lower(kBlockVertex, Stage::Vertex, t);
+    auto frag = lower(kBlockFragment, Stage::Fragment, t);
+    ASSERT_TRUE(vert.ok) << messages(vert);
+    ASSERT_TRUE(frag.ok) << messages(frag);
+    const std::vector<std::string> expected{"VertexData_world_hi", "VertexData_world_lo", "VertexData_uv"};
+    const std::string out = t == Target::Es100 ? "varying" : "out";
+    const std::string in = t == Target::Es100 ? "varying" : "in";
+    EXPECT_EQ(flattened_names(vert, out, "VertexData"), expected) << vert.manifest.to_json();
+    EXPECT_EQ(flattened_names(frag, in, "VertexData"), expected) << frag.manifest.to_json();
+    EXPECT_NE(vert.manifest.to_json().find("\"block\": \"VertexData\""), std::string::npos);
+  }
+  for (Target t : {Target::Es320, Target::Glsl330, Target::Glsl450}) {  // these keep the block
+    auto vert = lower(kBlockVertex, Stage::Vertex, t);
+    ASSERT_TRUE(vert.ok) << messages(vert);
+    EXPECT_NE(vert.output.find("out VertexData {\n  flat df_dvec3 world;"), std::string::npos) << vert.output;
+  }
+}
+
+TEST(RealWorld, AnArrayOfInOutBlocksIsRefusedWhereItWouldBeFlattened) {
+  const char* source = R"(#version 450
+out Data { flat double d; } outs[2];
+void main() { outs[0].d = 1.0lf; outs[1].d = 2.0lf; gl_Position = vec4(0.0); }
+)";
+  auto r = lower(source, Stage::Vertex, Target::Es300);
+  EXPECT_FALSE(r.ok);
+  expect_no_internal_error(r);
+  const auto* e = find(r, Severity::Error, "output block 'Data' is an array");
+  ASSERT_NE(e, nullptr) << messages(r);
+  EXPECT_EQ(e->line, 2);
+  EXPECT_NE(e->message.find("es300"), std::string::npos);
+  EXPECT_TRUE(lower(source, Stage::Vertex, Target::Glsl450).ok);
+}
+
+}  // namespace
