@@ -159,6 +159,7 @@ class Printer {
     if (v.layout.binding >= 0 && (es_ ? version_ >= 310 : version_ >= 420))
       parts.push_back("binding = " + std::to_string(v.layout.binding));
     if (v.layout.location >= 0 && location_allowed(v)) parts.push_back("location = " + std::to_string(v.layout.location));
+    if (v.layout.offset >= 0 && v.type.name == "atomic_uint") parts.push_back("offset = " + std::to_string(v.layout.offset));
     if (parts.empty()) return "";
     std::string s = "layout(";
     for (size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + parts[i];

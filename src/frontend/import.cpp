@@ -52,6 +52,10 @@ class Importer {
         out.base = ir::Base::Opaque;
         out.name = t.getSampler().getString().c_str();
         break;
+      case EbtAtomicUint:  // passed through as it is; check_target refuses it where the target lacks it
+        out.base = ir::Base::Opaque;
+        out.name = "atomic_uint";
+        break;
       case EbtStruct:
       case EbtBlock: {
         out.base = t.getBasicType() == EbtStruct ? ir::Base::Struct : ir::Base::Block;

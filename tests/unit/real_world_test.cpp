@@ -124,3 +124,77 @@ void main() { outs[0].d = 1.0lf; outs[1].d = 2.0lf; gl_Position = vec4(0.0); }
 }
 
 }  // namespace
+
+namespace {
+
+struct Refusal {
+  const char* name;
+  const char* source;
+  Stage stage;
+  Target target;
+  const char* fragment;  // the construct and the target, in the message
+  const char* advice;    // what to do instead, in the message
+};
+
+void PrintTo(const Refusal& r, std::ostream* os) { *os << r.name; }
+
+class RealWorldRefusal : public ::testing::TestWithParam<Refusal> {};
+
+TEST_P(RealWorldRefusal, NamesTheConstructTheTargetAndWhatToDo) {
+  const Refusal& c = GetParam();
+  auto r = lower(c.source, c.stage, c.target);
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(r.output.empty());
+  expect_no_internal_error(r);
+  const auto* e = find(r, Severity::Error, c.fragment);
+  ASSERT_NE(e, nullptr) << messages(r);
+  EXPECT_GT(e->line, 0) << messages(r);
+  EXPECT_NE(e->message.find(c.advice), std::string::npos) << messages(r);
+}
+
+const char* kSampler1D = R"(#version 450
+uniform sampler1D ramp;
+uniform double u;
+out vec4 color;
+void main() { color = texture(ramp, float(u)); }
+)";
+const char* kStorageBlock = R"(#version 450
+layout(std430, binding = 0) buffer Samples { double values[]; };
+uniform double u;
+out vec4 color;
+void main() { color = vec4(float(values[0] + u)); }
+)";
+const char* kAtomicCounter = R"(#version 450
+layout(binding = 0) uniform atomic_uint counter;
+uniform double u;
+out vec4 color;
+void main() { uint n = atomicCounterIncrement(counter); color = vec4(float(u) + float(n)); }
+)";
+
+INSTANTIATE_TEST_SUITE_P(
+    RealWorld, RealWorldRefusal,
+    ::testing::Values(
+        Refusal{"Sampler1DOnEs300", kSampler1D, Stage::Fragment, Target::Es300,
+                "'ramp' has the type sampler1D, which es300 does not have", "target glsl330, glsl450"},
+        Refusal{"Sampler1DOnEs320", kSampler1D, Stage::Fragment, Target::Es320, "sampler1D, which es320",
+                "2D one of height 1"},
+        Refusal{"StorageBlockOnEs300", kStorageBlock, Stage::Fragment, Target::Es300,
+                "storage block 'Samples' (buffer) is not available on es300", "target es310, es320 or glsl450"},
+        Refusal{"StorageBlockOnGlsl330", kStorageBlock, Stage::Fragment, Target::Glsl330,
+                "storage block 'Samples' (buffer) is not available on glsl330", "use a uniform block"},
+        Refusal{"AtomicCounterOnEs300", kAtomicCounter, Stage::Fragment, Target::Es300,
+                "'counter' has the type atomic_uint, which es300 does not have", "target es310, es320, glsl450"},
+        Refusal{"AtomicCounterOnGlsl330", kAtomicCounter, Stage::Fragment, Target::Glsl330,
+                "atomic_uint, which glsl330 does not have", "storage buffer"}),
+    [](const ::testing::TestParamInfo<Refusal>& info) { return std::string(info.param.name); });
+
+TEST(RealWorld, AtomicCountersPassThroughWhereTheTargetHasThem) {
+  for (Target t : {Target::Es310, Target::Es320, Target::Glsl450}) {
+    auto r = lower(kAtomicCounter, Stage::Fragment, t);
+    ASSERT_TRUE(r.ok) << messages(r);
+    EXPECT_NE(r.output.find("uniform atomic_uint counter;"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("atomicCounterIncrement(counter)"), std::string::npos) << r.output;
+  }
+}
+
+}  // namespace
