@@ -12,6 +12,7 @@
 #include <fstream>
 #include <mutex>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace doublet::frontend {
@@ -252,6 +253,70 @@ int version_line(std::string_view source) {
   return 1 + static_cast<int>(std::count(source.begin(), source.begin() + static_cast<long>(pos), '\n'));
 }
 
+// Vulkan-only GLSL names glslang refuses with messages about Vulkan or SPIR-V (or a bare
+// syntax error, for subpassInput): each with what an OpenGL / OpenGL ES shader writes instead.
+struct VulkanOnly {
+  const char* word;  // as it appears in the source line
+  const char* advice;
+};
+constexpr VulkanOnly kVulkanOnly[] = {
+    {"push_constant", "'layout(push_constant)' is Vulkan GLSL; OpenGL has no push constants: remove 'push_constant' "
+                      "to make it an ordinary uniform block"},
+    {"subpassInput", "subpass inputs (subpassInput, subpassLoad) are Vulkan GLSL; read the attachment as a texture: "
+                     "'uniform sampler2D' and texelFetch(tex, ivec2(gl_FragCoord.xy), 0)"},
+    {"input_attachment_index", "subpass inputs (layout(input_attachment_index)) are Vulkan GLSL; read the attachment "
+                               "as a texture: 'uniform sampler2D' and texelFetch(tex, ivec2(gl_FragCoord.xy), 0)"},
+    {"constant_id", "specialization constants (layout(constant_id)) are Vulkan GLSL; make it a plain const, or a "
+                    "macro set with -D NAME=VALUE"},
+    {"gl_VertexIndex", "'gl_VertexIndex' is Vulkan GLSL; OpenGL spells it gl_VertexID"},
+    {"gl_InstanceIndex", "'gl_InstanceIndex' is Vulkan GLSL; OpenGL spells it gl_InstanceID"},
+    {"set", "descriptor sets (layout(set = N)) are Vulkan GLSL; remove 'set = N' and keep 'binding = M' (OpenGL has "
+            "one binding space per resource kind)"},
+};
+
+bool has_word(std::string_view text, std::string_view word) {
+  auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (size_t pos = text.find(word); pos != std::string_view::npos; pos = text.find(word, pos + 1))
+    if ((pos == 0 || !is_word(text[pos - 1])) && (pos + word.size() >= text.size() || !is_word(text[pos + word.size()])))
+      return true;
+  return false;
+}
+
+// Rewrites glslang's errors on lines that use Vulkan-only GLSL (from diagnostic `first` on) into
+// one error per line that says so, names the target and what to write instead.
+void explain_vulkan_only(std::vector<Diagnostic>& diags, size_t first,
+                         const std::vector<std::pair<std::string, std::string>>& files, Target target) {
+  std::vector<Diagnostic> kept(diags.begin(), diags.begin() + static_cast<long>(first));
+  std::set<std::pair<std::string, int>> explained;
+  for (size_t i = first; i < diags.size(); ++i) {
+    Diagnostic d = diags[i];
+    const VulkanOnly* found = nullptr;
+    for (const auto& [name, text] : files) {
+      if (name != d.file || d.severity != Severity::Error) continue;
+      std::string_view row = text;
+      for (int l = 1; l < d.line && !row.empty(); ++l) {
+        auto nl = row.find('\n');
+        row = nl == std::string_view::npos ? std::string_view{} : row.substr(nl + 1);
+      }
+      row = row.substr(0, row.find('\n'));
+      for (const auto& v : kVulkanOnly)
+        if (!found && has_word(row, v.word) && (std::string_view(v.word) != "set" || has_word(row, "layout"))) {
+          found = &v;
+          d.column = recover_column(text, d.line, v.word);
+        }
+    }
+    if (!found) {
+      kept.push_back(std::move(d));
+      continue;
+    }
+    if (!explained.insert({d.file, d.line}).second) continue;  // one explanation per line
+    d.message = std::string(found->advice) + " (target " + std::string(to_string(target)) +
+                " is " + (target_is_es(target) ? "OpenGL ES" : "OpenGL") + " GLSL)";
+    kept.push_back(std::move(d));
+  }
+  diags = std::move(kept);
+}
+
 bool has_main(glslang::TIntermediate* intermediate) {
   auto* root = intermediate->getTreeRoot() ? intermediate->getTreeRoot()->getAsAggregate() : nullptr;
   if (!root) return false;
@@ -318,7 +383,9 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
     diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.depth_error});
     return false;
   }
+  const size_t first_log_diagnostic = diagnostics.size();
   append_glslang_log(out.shader->getInfoLog(), options.file_name, files, diagnostics);
+  explain_vulkan_only(diagnostics, first_log_diagnostic, files, options.target);
   if (!ok) {
     bool any_error = false;
     for (const auto& d : diagnostics) any_error |= d.severity == Severity::Error;

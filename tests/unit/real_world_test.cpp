@@ -171,6 +171,27 @@ out vec4 color;
 void main() { uint n = atomicCounterIncrement(counter); color = vec4(float(u) + float(n)); }
 )";
 
+const char* kDescriptorSet = R"(#version 450
+layout(set = 1, binding = 0) uniform Camera { dmat4 view; } camera;
+out vec4 color;
+void main() { color = vec4(float(camera.view[0][0])); }
+)";
+const char* kPushConstant = R"(#version 450
+layout(push_constant) uniform Push { double scale; } push;
+out vec4 color;
+void main() { color = vec4(float(push.scale)); }
+)";
+const char* kSubpassInput = R"(#version 450
+layout(input_attachment_index = 0, binding = 0) uniform subpassInput gbuffer;
+uniform double u;
+out vec4 color;
+void main() { color = subpassLoad(gbuffer) * float(u); }
+)";
+const char* kVertexIndex = R"(#version 450
+uniform double u;
+void main() { gl_Position = vec4(float(gl_VertexIndex) * float(u)); }
+)";
+
 INSTANTIATE_TEST_SUITE_P(
     RealWorld, RealWorldRefusal,
     ::testing::Values(
@@ -185,7 +206,15 @@ INSTANTIATE_TEST_SUITE_P(
         Refusal{"AtomicCounterOnEs300", kAtomicCounter, Stage::Fragment, Target::Es300,
                 "'counter' has the type atomic_uint, which es300 does not have", "target es310, es320, glsl450"},
         Refusal{"AtomicCounterOnGlsl330", kAtomicCounter, Stage::Fragment, Target::Glsl330,
-                "atomic_uint, which glsl330 does not have", "storage buffer"}),
+                "atomic_uint, which glsl330 does not have", "storage buffer"},
+        Refusal{"VulkanDescriptorSet", kDescriptorSet, Stage::Fragment, Target::Glsl450,
+                "descriptor sets (layout(set = N)) are Vulkan GLSL", "target glsl450 is OpenGL GLSL"},
+        Refusal{"VulkanPushConstant", kPushConstant, Stage::Fragment, Target::Es310,
+                "'layout(push_constant)' is Vulkan GLSL", "target es310 is OpenGL ES GLSL"},
+        Refusal{"VulkanSubpassInput", kSubpassInput, Stage::Fragment, Target::Es320, "subpass inputs",
+                "texelFetch(tex, ivec2(gl_FragCoord.xy), 0)"},
+        Refusal{"VulkanVertexIndex", kVertexIndex, Stage::Vertex, Target::Es300, "'gl_VertexIndex' is Vulkan GLSL",
+                "gl_VertexID"}),
     [](const ::testing::TestParamInfo<Refusal>& info) { return std::string(info.param.name); });
 
 TEST(RealWorld, AtomicCountersPassThroughWhereTheTargetHasThem) {
