@@ -30,6 +30,20 @@ void ensure_glslang_initialized() {
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
+const TBuiltInResource& resource_limits() {
+  static const TBuiltInResource limits = [] {
+    TBuiltInResource r = *GetDefaultResources();
+    constexpr int kAtomicCounterBindings = 8;
+    r.maxAtomicCounterBindings = kAtomicCounterBindings;
+    r.maxCombinedAtomicCounterBuffers = kAtomicCounterBindings;
+    r.maxVertexAtomicCounterBuffers = kAtomicCounterBindings;
+    r.maxFragmentAtomicCounterBuffers = kAtomicCounterBindings;
+    r.maxComputeAtomicCounterBuffers = kAtomicCounterBindings;
+    return r;
+  }();
+  return limits;
+}
+
 SourceInfo scan_version(std::string_view source) {
   SourceInfo info;
   static const std::regex version_re(R"(^\s*#\s*version\s+(\d+)\s*(\w*))");
@@ -378,7 +392,7 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
   IncludeAdapter includer(options, files, out.included_files);
   auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
   // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
-  bool ok = out.shader->parse(GetDefaultResources(), 450, ECompatibilityProfile, true, false, messages, includer);
+  bool ok = out.shader->parse(&resource_limits(), 450, ECompatibilityProfile, true, false, messages, includer);
   if (!includer.depth_error.empty()) {
     diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.depth_error});
     return false;
