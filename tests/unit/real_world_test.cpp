@@ -116,7 +116,7 @@ void main() { outs[0].d = 1.0lf; outs[1].d = 2.0lf; gl_Position = vec4(0.0); }
   auto r = lower(source, Stage::Vertex, Target::Es300);
   EXPECT_FALSE(r.ok);
   expect_no_internal_error(r);
-  const auto* e = find(r, Severity::Error, "output block 'Data' is an array");
+  const auto* e = find(r, Severity::Error, "output block 'Data' is an array, which cannot be flattened");
   ASSERT_NE(e, nullptr) << messages(r);
   EXPECT_EQ(e->line, 2);
   EXPECT_NE(e->message.find("es300"), std::string::npos);
@@ -200,7 +200,8 @@ INSTANTIATE_TEST_SUITE_P(
         Refusal{"Sampler1DOnEs320", kSampler1D, Stage::Fragment, Target::Es320, "sampler1D, which es320",
                 "2D one of height 1"},
         Refusal{"StorageBlockOnEs300", kStorageBlock, Stage::Fragment, Target::Es300,
-                "storage block 'Samples' (buffer) is not available on es300", "target es310, es320 or glsl450"},
+                "storage block 'Samples' (buffer) is not available on es300: storage blocks need GLSL ES 3.10",
+                "target es310, es320 or glsl450"},
         Refusal{"StorageBlockOnGlsl330", kStorageBlock, Stage::Fragment, Target::Glsl330,
                 "storage block 'Samples' (buffer) is not available on glsl330", "use a uniform block"},
         Refusal{"AtomicCounterOnEs300", kAtomicCounter, Stage::Fragment, Target::Es300,
