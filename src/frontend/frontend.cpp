@@ -347,6 +347,7 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
            std::vector<Diagnostic>& diagnostics) {
   ensure_glslang_initialized();
   out.info = scan_version(source);
+  out.source = std::string(source);
   auto first_non_blank = source.find_first_not_of(" \t\r\n");
   if (first_non_blank == std::string_view::npos) {
     diagnostics.push_back({options.file_name, 1, 1, Severity::Error, "empty shader: no code to lower"});

@@ -32,6 +32,7 @@ struct ParsedShader {
   glslang::TIntermediate* intermediate = nullptr;
   SourceInfo info;
   std::vector<std::string> included_files;
+  std::string source;  // the main file's text (global declarations are located in it)
   ParsedShader();
   ParsedShader(ParsedShader&&) noexcept;
   ~ParsedShader();

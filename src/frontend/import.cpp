@@ -3,6 +3,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <cctype>
 #include <map>
 #include <set>
 
@@ -22,10 +23,55 @@ std::string demangle(const TString& mangled) {
 
 ir::Loc loc_of(const TSourceLoc& l) { return {l.line, l.column}; }
 
+// Where `name` is declared at global scope in `text`: its first occurrence outside braces,
+// parentheses, comments and preprocessor lines (GLSL declares before use), or {0, 0}. glslang
+// gives the globals of its linker-object list no place.
+ir::Loc global_declaration(std::string_view text, const std::string& name) {
+  auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  int line = 1, depth = 0;
+  size_t line_start = 0;
+  bool line_is_directive = false;
+  for (size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      line_start = ++i;
+      line_is_directive = false;
+      continue;
+    }
+    if (text.compare(i, 2, "//") == 0) {
+      i = text.find('\n', i);
+      if (i == std::string_view::npos) break;
+      continue;
+    }
+    if (text.compare(i, 2, "/*") == 0) {
+      size_t end = text.find("*/", i + 2);
+      if (end == std::string_view::npos) break;
+      for (; i < end; ++i)
+        if (text[i] == '\n') { ++line; line_start = i + 1; }
+      i = end + 2;
+      continue;
+    }
+    if (c == '#' && text.find_first_not_of(" \t", line_start) == i) line_is_directive = true;
+    if (c == '{' || c == '(') ++depth;
+    if (c == '}' || c == ')') --depth;
+    if (!is_word(c)) { ++i; continue; }
+    size_t end = i;
+    while (end < text.size() && is_word(text[end])) ++end;
+    if (depth == 0 && !line_is_directive && text.substr(i, end - i) == name) {
+      size_t next = text.find_first_not_of(" \t\r\n", end);
+      if (next == std::string_view::npos || text[next] != '(')
+        return {line, static_cast<int>(i - line_start) + 1};
+    }
+    i = end;
+  }
+  return {};
+}
+
 class Importer {
  public:
-  Importer(const Options& options, ir::Module& module, std::vector<Diagnostic>& diags)
-      : options_(options), module_(module), diags_(diags) {}
+  Importer(const Options& options, std::string_view source, ir::Module& module, std::vector<Diagnostic>& diags)
+      : options_(options), source_(source), module_(module), diags_(diags) {}
 
   bool run(TIntermediate& intermediate);
 
@@ -190,6 +236,8 @@ class Importer {
     v->loc = loc_of(sym.getLoc());
     if (v->loc.line == 0 && sym.getType().isStruct() && !sym.getType().getStruct()->empty())
       v->loc = loc_of(sym.getType().getStruct()->front().loc);  // a block from the linker objects: its first member
+    else if (v->loc.line == 0)
+      v->loc = global_declaration(source_, v->name);
     vars_[sym.getId()] = v;
     if (v->storage == ir::Storage::Const && sym.getConstArray().size() > 0 && !declared_.count(v.get())) {
       // A constant array/struct indexed dynamically: glslang keeps the symbol
@@ -568,6 +616,7 @@ class Importer {
   }
 
   const Options& options_;
+  std::string_view source_;  // the main file's text
   ir::Module& module_;
   std::vector<Diagnostic>& diags_;
   bool failed_ = false;
@@ -612,7 +661,7 @@ bool import_module(const ParsedShader& parsed, const Options& options, ir::Modul
                                                   : ir::StageKind::Compute;
   out.source_version = parsed.info.version;
   out.source_es = parsed.info.es;
-  Importer importer(options, out, diagnostics);
+  Importer importer(options, parsed.source, out, diagnostics);
   if (!importer.run(*parsed.intermediate)) return false;
   return place_declarations(out, options, diagnostics);
 }

@@ -134,6 +134,7 @@ struct Refusal {
   Target target;
   const char* fragment;  // the construct and the target, in the message
   const char* advice;    // what to do instead, in the message
+  int line;              // of the declaration or use it names
 };
 
 void PrintTo(const Refusal& r, std::ostream* os) { *os << r.name; }
@@ -148,7 +149,7 @@ TEST_P(RealWorldRefusal, NamesTheConstructTheTargetAndWhatToDo) {
   expect_no_internal_error(r);
   const auto* e = find(r, Severity::Error, c.fragment);
   ASSERT_NE(e, nullptr) << messages(r);
-  EXPECT_GT(e->line, 0) << messages(r);
+  EXPECT_EQ(e->line, c.line) << messages(r);
   EXPECT_NE(e->message.find(c.advice), std::string::npos) << messages(r);
 }
 
@@ -196,26 +197,26 @@ INSTANTIATE_TEST_SUITE_P(
     RealWorld, RealWorldRefusal,
     ::testing::Values(
         Refusal{"Sampler1DOnEs300", kSampler1D, Stage::Fragment, Target::Es300,
-                "'ramp' has the type sampler1D, which es300 does not have", "target glsl330, glsl450"},
+                "'ramp' has the type sampler1D, which es300 does not have", "target glsl330, glsl450", 2},
         Refusal{"Sampler1DOnEs320", kSampler1D, Stage::Fragment, Target::Es320, "sampler1D, which es320",
-                "2D one of height 1"},
+                "2D one of height 1", 2},
         Refusal{"StorageBlockOnEs300", kStorageBlock, Stage::Fragment, Target::Es300,
                 "storage block 'Samples' (buffer) is not available on es300: storage blocks need GLSL ES 3.10",
-                "target es310, es320 or glsl450"},
+                "target es310, es320 or glsl450", 2},
         Refusal{"StorageBlockOnGlsl330", kStorageBlock, Stage::Fragment, Target::Glsl330,
-                "storage block 'Samples' (buffer) is not available on glsl330", "use a uniform block"},
+                "storage block 'Samples' (buffer) is not available on glsl330", "use a uniform block", 2},
         Refusal{"AtomicCounterOnEs300", kAtomicCounter, Stage::Fragment, Target::Es300,
-                "'counter' has the type atomic_uint, which es300 does not have", "target es310, es320, glsl450"},
+                "'counter' has the type atomic_uint, which es300 does not have", "target es310, es320, glsl450", 2},
         Refusal{"AtomicCounterOnGlsl330", kAtomicCounter, Stage::Fragment, Target::Glsl330,
-                "atomic_uint, which glsl330 does not have", "storage buffer"},
+                "atomic_uint, which glsl330 does not have", "storage buffer", 2},
         Refusal{"VulkanDescriptorSet", kDescriptorSet, Stage::Fragment, Target::Glsl450,
-                "descriptor sets (layout(set = N)) are Vulkan GLSL", "target glsl450 is OpenGL GLSL"},
+                "descriptor sets (layout(set = N)) are Vulkan GLSL", "target glsl450 is OpenGL GLSL", 2},
         Refusal{"VulkanPushConstant", kPushConstant, Stage::Fragment, Target::Es310,
-                "'layout(push_constant)' is Vulkan GLSL", "target es310 is OpenGL ES GLSL"},
+                "'layout(push_constant)' is Vulkan GLSL", "target es310 is OpenGL ES GLSL", 2},
         Refusal{"VulkanSubpassInput", kSubpassInput, Stage::Fragment, Target::Es320, "subpass inputs",
-                "texelFetch(tex, ivec2(gl_FragCoord.xy), 0)"},
+                "texelFetch(tex, ivec2(gl_FragCoord.xy), 0)", 2},
         Refusal{"VulkanVertexIndex", kVertexIndex, Stage::Vertex, Target::Es300, "'gl_VertexIndex' is Vulkan GLSL",
-                "gl_VertexID"}),
+                "gl_VertexID", 3}),
     [](const ::testing::TestParamInfo<Refusal>& info) { return std::string(info.param.name); });
 
 TEST(RealWorld, AtomicCountersPassThroughWhereTheTargetHasThem) {
