@@ -122,6 +122,9 @@ struct InterfaceVariable {
   std::string lowered_type;  // type of each emitted variable, e.g. "vec3"
   std::vector<std::string> lowered_names;  // {"X_hi","X_lo"} when split, else {"X"}
   std::vector<int> locations;              // explicit locations of lowered_names, if any
+  // A member of an in/out block flattened into a plain variable (targets without I/O blocks:
+  // es100, es300, es310): the block's name; `name` is then BLOCK_MEMBER.
+  std::string block;
   // Blocks only: the packing emitted ("std140"/"std430") and every member's new place.
   std::string layout;
   std::vector<BlockMember> members;

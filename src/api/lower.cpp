@@ -175,6 +175,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   parsed.release_ast();  // the IR owns everything now: free glslang's memory before the passes
 
   passes::Context ctx{options, diags};
+  if (!passes::flatten_io_blocks(module, ctx)) return result;
   next_phase("lints");
   passes::run_lints(module, source, ctx);  // on the IR as imported, before any pass rewrites it
   result.manifest.stage = std::string(to_string(*options.stage));
@@ -187,6 +188,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   next_phase("optimize");
   if (options.optimize && !passes::optimize_df(module, ctx)) return result;
   next_phase("interfaces");
+  if (!passes::move_global_initialisers(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
   if (!passes::check_target(module, ctx)) return result;
   next_phase("print");

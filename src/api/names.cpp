@@ -102,6 +102,7 @@ std::string Manifest::to_json() const {
     e["lowered_type"] = v.lowered_type;
     e["lowered_names"] = v.lowered_names;
     if (!v.locations.empty()) e["locations"] = v.locations;
+    if (!v.block.empty()) e["block"] = v.block;
     if (!v.layout.empty()) e["layout"] = v.layout;
     if (!v.members.empty()) {
       e["members"] = nlohmann::ordered_json::array();

@@ -1,5 +1,6 @@
 #include "emit/printer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -212,23 +213,46 @@ class Printer {
     if (v.layout.binding >= 0 && (es_ ? version_ >= 310 : version_ >= 420))
       parts.push_back("binding = " + std::to_string(v.layout.binding));
     if (v.layout.location >= 0 && location_allowed(v)) parts.push_back("location = " + std::to_string(v.layout.location));
+    if (v.layout.offset >= 0 && v.type.name == "atomic_uint") parts.push_back("offset = " + std::to_string(v.layout.offset));
     if (parts.empty()) return "";
     std::string s = "layout(";
     for (size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + parts[i];
     return s + ") ";
   }
 
+  // The user's `precise`, where the target has it (ES 3.20, desktop 4.00+, ES 3.10 with
+  // GL_EXT_gpu_shader5); elsewhere it is dropped with one warning. The float-float rules do not
+  // depend on it: they carry their own guard.
+  std::string precise_keyword(const ir::Var& v) {
+    if (!v.precise) return "";
+    bool gpu_shader5 = std::find(options_.extensions.begin(), options_.extensions.end(), "GL_EXT_gpu_shader5") !=
+                       options_.extensions.end();
+    if (es_ ? version_ >= 320 || gpu_shader5 : version_ >= 400) return "precise ";
+    if (!precise_dropped_) {
+      precise_dropped_ = true;
+      diags_.push_back({file_, v.loc.line, v.loc.column, Severity::Warning,
+                        "'precise' on '" + v.name + "' is dropped: target " + std::string(to_string(options_.target)) +
+                            " has no 'precise' qualifier (ES 3.20, desktop 4.00+, or ES 3.10 with GL_EXT_gpu_shader5), "
+                            "so the driver may reorder or fuse that float arithmetic; target es320 or glsl450 to keep it"});
+    }
+    return "";
+  }
+
+  std::string interpolation(ir::Interp interp) {
+    if (options_.target == Target::Es100) return "";
+    if (interp == ir::Interp::Flat) return "flat ";
+    if (interp == ir::Interp::Centroid) return "centroid ";
+    if (interp == ir::Interp::NoPerspective && !es_) return "noperspective ";
+    return "";
+  }
+
   std::string qualifiers(const ir::Var& v) {
     std::string s;
     if (v.invariant) s += "invariant ";
-    if (v.precise) s += "precise ";
+    s += precise_keyword(v);
     s += layout(v);
     bool interface = v.storage == ir::Storage::In || v.storage == ir::Storage::Out;
-    if (interface && options_.target != Target::Es100) {
-      if (v.interp == ir::Interp::Flat) s += "flat ";
-      else if (v.interp == ir::Interp::Centroid) s += "centroid ";
-      else if (v.interp == ir::Interp::NoPerspective && !es_) s += "noperspective ";
-    }
+    if (interface) s += interpolation(v.interp);
     if (v.coherent) s += "coherent ";
     if (v.volatile_) s += "volatile ";
     if (v.restrict_) s += "restrict ";
@@ -244,7 +268,7 @@ class Printer {
     if (v->storage == ir::Storage::BuiltIn) return;
     if (v->type.base == ir::Base::Block) {
       out_ << qualifiers(*v) << v->type.name << " {\n";
-      for (const auto& f : *v->type.fields) out_ << "  " << declarator(f.type, f.name) << ";\n";
+      for (const auto& f : *v->type.fields) out_ << "  " << interpolation(f.interp) << declarator(f.type, f.name) << ";\n";
       out_ << "}";
       if (v->name.rfind("anon@", 0) != 0) out_ << " " << v->name << ir::array_suffix(v->type);
       out_ << ";\n";
@@ -271,7 +295,7 @@ class Printer {
   void indent(int depth) { out_ << std::string(static_cast<size_t>(depth) * 2, ' '); }
 
   std::string decl_text(const Stmt& s) {
-    std::string text = (s.var->precise ? "precise " : "") + declarator(s.var->type, s.var->name);
+    std::string text = precise_keyword(*s.var) + declarator(s.var->type, s.var->name);
     if (s.expr) text += " = " + argument(s.expr);
     return text;
   }
@@ -505,6 +529,7 @@ class Printer {
   bool frag_data_dynamic_ = false;  // an index is computed: one array instead of one output per slot
   std::set<int> frag_data_slots_;
   std::map<std::string, PrintResult::BuiltinUse> builtin_first_use_;
+  bool precise_dropped_ = false;  // the warning is given once
 };
 
 }  // namespace

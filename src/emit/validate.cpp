@@ -18,7 +18,7 @@ std::string validate(std::string_view text, Stage stage, Target target) {
   shader.setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
   shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
   EProfile profile = target_is_es(target) ? EEsProfile : ECoreProfile;
-  if (shader.parse(GetDefaultResources(), target_version(target), profile, false, false, EShMsgDefault)) return "";
+  if (shader.parse(&frontend::resource_limits(), target_version(target), profile, false, false, EShMsgDefault)) return "";
   std::string log = shader.getInfoLog();
   return log.empty() ? "glslang rejected the output without a message" : log;
 }

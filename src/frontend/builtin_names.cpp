@@ -205,6 +205,18 @@ const char* builtin_function_name(TOperator op, int args) {
     case EOpAtomicXor: return "atomicXor";
     case EOpAtomicExchange: return "atomicExchange";
     case EOpAtomicCompSwap: return "atomicCompSwap";
+    case EOpAtomicCounterIncrement: return "atomicCounterIncrement";
+    case EOpAtomicCounterDecrement: return "atomicCounterDecrement";
+    case EOpAtomicCounter: return "atomicCounter";
+    case EOpAtomicCounterAdd: return "atomicCounterAdd";
+    case EOpAtomicCounterSubtract: return "atomicCounterSubtract";
+    case EOpAtomicCounterMin: return "atomicCounterMin";
+    case EOpAtomicCounterMax: return "atomicCounterMax";
+    case EOpAtomicCounterAnd: return "atomicCounterAnd";
+    case EOpAtomicCounterOr: return "atomicCounterOr";
+    case EOpAtomicCounterXor: return "atomicCounterXor";
+    case EOpAtomicCounterExchange: return "atomicCounterExchange";
+    case EOpAtomicCounterCompSwap: return "atomicCounterCompSwap";
     default: return nullptr;
   }
 }

@@ -17,6 +17,7 @@
 #include <tuple>
 #include <functional>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 namespace doublet::frontend {
@@ -63,6 +64,20 @@ void read_version_directive(std::string_view line, SourceInfo& info) {
 }
 
 }  // namespace
+
+const TBuiltInResource& resource_limits() {
+  static const TBuiltInResource limits = [] {
+    TBuiltInResource r = *GetDefaultResources();
+    constexpr int kAtomicCounterBindings = 8;
+    r.maxAtomicCounterBindings = kAtomicCounterBindings;
+    r.maxCombinedAtomicCounterBuffers = kAtomicCounterBindings;
+    r.maxVertexAtomicCounterBuffers = kAtomicCounterBindings;
+    r.maxFragmentAtomicCounterBuffers = kAtomicCounterBindings;
+    r.maxComputeAtomicCounterBuffers = kAtomicCounterBindings;
+    return r;
+  }();
+  return limits;
+}
 
 SourceInfo scan_version(std::string_view source) {
   SourceInfo info;
@@ -388,6 +403,66 @@ int version_line(std::string_view source) {
   return 1 + static_cast<int>(std::count(source.begin(), source.begin() + static_cast<long>(pos), '\n'));
 }
 
+// Vulkan-only GLSL names glslang refuses with messages about Vulkan or SPIR-V (or a bare
+// syntax error, for subpassInput): each with what an OpenGL / OpenGL ES shader writes instead.
+struct VulkanOnly {
+  const char* word;  // as it appears in the source line
+  const char* advice;
+};
+constexpr VulkanOnly kVulkanOnly[] = {
+    {"push_constant", "'layout(push_constant)' is Vulkan GLSL; OpenGL has no push constants: remove 'push_constant' "
+                      "to make it an ordinary uniform block"},
+    {"subpassInput", "subpass inputs (subpassInput, subpassLoad) are Vulkan GLSL; read the attachment as a texture: "
+                     "'uniform sampler2D' and texelFetch(tex, ivec2(gl_FragCoord.xy), 0)"},
+    {"input_attachment_index", "subpass inputs (layout(input_attachment_index)) are Vulkan GLSL; read the attachment "
+                               "as a texture: 'uniform sampler2D' and texelFetch(tex, ivec2(gl_FragCoord.xy), 0)"},
+    {"constant_id", "specialization constants (layout(constant_id)) are Vulkan GLSL; make it a plain const, or a "
+                    "macro set with -D NAME=VALUE"},
+    {"gl_VertexIndex", "'gl_VertexIndex' is Vulkan GLSL; OpenGL spells it gl_VertexID"},
+    {"gl_InstanceIndex", "'gl_InstanceIndex' is Vulkan GLSL; OpenGL spells it gl_InstanceID"},
+    {"set", "descriptor sets (layout(set = N)) are Vulkan GLSL; remove 'set = N' and keep 'binding = M' (OpenGL has "
+            "one binding space per resource kind)"},
+};
+
+bool has_word(std::string_view text, std::string_view word) {
+  auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (size_t pos = text.find(word); pos != std::string_view::npos; pos = text.find(word, pos + 1))
+    if ((pos == 0 || !is_word(text[pos - 1])) && (pos + word.size() >= text.size() || !is_word(text[pos + word.size()])))
+      return true;
+  return false;
+}
+
+// Rewrites glslang's errors on lines that use Vulkan-only GLSL (from diagnostic `first` on) into
+// one error per line that says so, names the target and what to write instead.
+void explain_vulkan_only(std::vector<Diagnostic>& diags, size_t first,
+                         const std::vector<std::pair<std::string, std::string>>& files, Target target) {
+  std::vector<Diagnostic> kept(diags.begin(), diags.begin() + static_cast<long>(first));
+  std::set<std::pair<std::string, int>> explained;
+  std::map<std::string, LineIndex, std::less<>> indexes;  // per file, built on its first error
+  for (size_t i = first; i < diags.size(); ++i) {
+    Diagnostic d = diags[i];
+    const VulkanOnly* found = nullptr;
+    for (const auto& [name, text] : files) {
+      if (name != d.file || d.severity != Severity::Error) continue;
+      const std::string_view row = indexes.try_emplace(name, text).first->second.line(d.line);
+      for (const auto& v : kVulkanOnly)
+        if (!found && has_word(row, v.word) && (std::string_view(v.word) != "set" || has_word(row, "layout"))) {
+          found = &v;
+          d.column = column_in_row(row, v.word);
+        }
+    }
+    if (!found) {
+      kept.push_back(std::move(d));
+      continue;
+    }
+    if (!explained.insert({d.file, d.line}).second) continue;  // one explanation per line
+    d.message = std::string(found->advice) + " (target " + std::string(to_string(target)) +
+                " is " + (target_is_es(target) ? "OpenGL ES" : "OpenGL") + " GLSL)";
+    kept.push_back(std::move(d));
+  }
+  diags = std::move(kept);
+}
+
 bool has_main(glslang::TIntermediate* intermediate) {
   auto* root = intermediate->getTreeRoot() ? intermediate->getTreeRoot()->getAsAggregate() : nullptr;
   if (!root) return false;
@@ -425,7 +500,7 @@ std::optional<Diagnostic> check_expanded_operators(const std::string& text, cons
   ShaderStrings strings;
   configure(shader, strings, text, preamble, options);
   std::string expanded;
-  if (!shader.preprocess(GetDefaultResources(), 450, ECompatibilityProfile, true, false,
+  if (!shader.preprocess(&resource_limits(), 450, ECompatibilityProfile, true, false,
                          static_cast<EShMessages>(EShMsgCascadingErrors), &expanded, includer))
     return std::nullopt;  // the parse reports the errors
   const std::size_t operators = max_statement_operators(expanded);
@@ -439,6 +514,7 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
            std::vector<Diagnostic>& diagnostics) {
   ensure_glslang_initialized();
   out.info = scan_version(source);
+  out.source = std::string(source);
   auto first_non_blank = source.find_first_not_of(" \t\r\n");
   if (first_non_blank == std::string_view::npos) {
     diagnostics.push_back({options.file_name, 1, 1, Severity::Error, "empty shader: no code to lower"});
@@ -481,12 +557,14 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
   configure(*out.shader, strings, text, preamble, options);
   auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
   // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
-  bool ok = out.shader->parse(GetDefaultResources(), 450, ECompatibilityProfile, true, false, messages, includer);
+  bool ok = out.shader->parse(&resource_limits(), 450, ECompatibilityProfile, true, false, messages, includer);
   if (!includer.limit_error.empty()) {
     diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.limit_error});
     return false;
   }
+  const size_t first_log_diagnostic = diagnostics.size();
   append_glslang_log(out.shader->getInfoLog(), options.file_name, files, diagnostics);
+  explain_vulkan_only(diagnostics, first_log_diagnostic, files, options.target);
   if (!ok) {
     bool any_error = false;
     for (const auto& d : diagnostics) any_error |= d.severity == Severity::Error;

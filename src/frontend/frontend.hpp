@@ -13,6 +13,8 @@
 
 #include "doublet/doublet.hpp"
 
+struct TBuiltInResource;
+
 namespace glslang {
 class TShader;
 class TIntermediate;
@@ -30,6 +32,7 @@ struct ParsedShader {
   glslang::TIntermediate* intermediate = nullptr;
   SourceInfo info;
   std::vector<std::string> included_files;
+  std::string source;  // the main file's text (global declarations are located in it)
   ParsedShader();
   ParsedShader(ParsedShader&&) noexcept;
   ~ParsedShader();
@@ -53,5 +56,11 @@ void append_glslang_log(std::string_view log, const std::string& main_name,
 std::vector<int> error_lines_of_main_string(std::string_view log);
 
 void ensure_glslang_initialized();
+
+// The resource limits shaders are parsed and re-validated with: glslang's default table, with the
+// atomic-counter limits raised from its 1 binding to 8 (the GL 4.6 minimum of
+// MAX_COMBINED_ATOMIC_COUNTER_BUFFERS is 1, but desktop drivers and Mesa offer 8 or more), so
+// real shaders with several counter bindings parse.
+const TBuiltInResource& resource_limits();
 
 }  // namespace doublet::frontend

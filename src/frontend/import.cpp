@@ -3,7 +3,9 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <cctype>
 #include <map>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -23,10 +25,56 @@ std::string demangle(const TString& mangled) {
 
 ir::Loc loc_of(const TSourceLoc& l) { return {l.line, l.column}; }
 
+// Where each name is declared at global scope in `text`: its first occurrence outside braces,
+// parentheses, comments and preprocessor lines, not followed by '(' (GLSL declares before use).
+// glslang gives the globals of its linker-object list no place. One pass over the text.
+std::unordered_map<std::string, ir::Loc> global_declarations(std::string_view text) {
+  std::unordered_map<std::string, ir::Loc> first;
+  auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  int line = 1, depth = 0;
+  size_t line_start = 0;
+  bool line_is_directive = false;
+  for (size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      line_start = ++i;
+      line_is_directive = false;
+      continue;
+    }
+    if (text.compare(i, 2, "//") == 0) {
+      i = text.find('\n', i);
+      if (i == std::string_view::npos) break;
+      continue;
+    }
+    if (text.compare(i, 2, "/*") == 0) {
+      size_t end = text.find("*/", i + 2);
+      if (end == std::string_view::npos) break;
+      for (; i < end; ++i)
+        if (text[i] == '\n') { ++line; line_start = i + 1; }
+      i = end + 2;
+      continue;
+    }
+    if (c == '#' && text.find_first_not_of(" \t", line_start) == i) line_is_directive = true;
+    if (c == '{' || c == '(') ++depth;
+    if (c == '}' || c == ')') --depth;
+    if (!is_word(c)) { ++i; continue; }
+    size_t end = i;
+    while (end < text.size() && is_word(text[end])) ++end;
+    if (depth == 0 && !line_is_directive) {
+      size_t next = text.find_first_not_of(" \t\r\n", end);
+      if (next == std::string_view::npos || text[next] != '(')
+        first.emplace(std::string(text.substr(i, end - i)), ir::Loc{line, static_cast<int>(i - line_start) + 1});
+    }
+    i = end;
+  }
+  return first;
+}
+
 class Importer {
  public:
-  Importer(const Options& options, ir::Module& module, std::vector<Diagnostic>& diags)
-      : options_(options), module_(module), diags_(diags) {}
+  Importer(const Options& options, std::string_view source, ir::Module& module, std::vector<Diagnostic>& diags)
+      : options_(options), source_(source), module_(module), diags_(diags) {}
 
   bool run(TIntermediate& intermediate);
 
@@ -52,6 +100,10 @@ class Importer {
       case EbtSampler:
         out.base = ir::Base::Opaque;
         out.name = t.getSampler().getString().c_str();
+        break;
+      case EbtAtomicUint:  // passed through as it is; check_target refuses it where the target lacks it
+        out.base = ir::Base::Opaque;
+        out.name = "atomic_uint";
         break;
       case EbtStruct:
       case EbtBlock: {
@@ -99,6 +151,7 @@ class Importer {
       f.name = member.type->getFieldName().c_str();
       f.type = import_type(*member.type, member.loc);
       f.layout = import_layout(member.type->getQualifier());
+      f.interp = import_interp(member.type->getQualifier());
       fields->push_back(std::move(f));
     }
     if (is_struct) {
@@ -128,6 +181,14 @@ class Importer {
     if (q.layoutMatrix == ElmRowMajor) l.matrix = "row_major";
     if (q.hasFormat()) l.format = TQualifier::getLayoutFormatString(q.layoutFormat);
     return l;
+  }
+
+  static ir::Interp import_interp(const TQualifier& q) {
+    if (q.flat) return ir::Interp::Flat;
+    if (q.nopersp) return ir::Interp::NoPerspective;
+    if (q.centroid) return ir::Interp::Centroid;
+    if (q.smooth) return ir::Interp::Smooth;
+    return ir::Interp::Default;
   }
 
   static ir::Storage import_storage(const TQualifier& q, const std::string& name) {
@@ -163,11 +224,11 @@ class Importer {
     v->declared_type = v->type;
     const TQualifier& q = sym.getQualifier();
     v->storage = import_storage(q, v->name);
+    // glslang marks `const T x = <not a constant expression>;` EvqConstReadOnly, as it marks
+    // const parameters: outside a parameter list it is a variable written once.
+    if (q.storage == EvqConstReadOnly && !importing_params_) v->storage = ir::Storage::Local;
     v->layout = import_layout(q);
-    if (q.flat) v->interp = ir::Interp::Flat;
-    else if (q.nopersp) v->interp = ir::Interp::NoPerspective;
-    else if (q.centroid) v->interp = ir::Interp::Centroid;
-    else if (q.smooth) v->interp = ir::Interp::Smooth;
+    v->interp = import_interp(q);
     v->invariant = q.invariant;
     v->precise = q.isNoContraction();
     v->readonly = q.readonly;
@@ -176,6 +237,10 @@ class Importer {
     v->volatile_ = q.volatil;
     v->restrict_ = q.restrict;
     v->loc = loc_of(sym.getLoc());
+    if (v->loc.line == 0 && sym.getType().isStruct() && !sym.getType().getStruct()->empty())
+      v->loc = loc_of(sym.getType().getStruct()->front().loc);  // a block from the linker objects: its first member
+    else if (v->loc.line == 0)
+      v->loc = global_declaration(v->name);
     vars_[sym.getId()] = v;
     if (v->storage == ir::Storage::Const && sym.getConstArray().size() > 0) {
       // A constant array/struct indexed dynamically: glslang keeps the symbol
@@ -522,7 +587,11 @@ class Importer {
     if (!seq.empty())
       if (auto* params = seq[0]->getAsAggregate())
         for (TIntermNode* p : params->getSequence())
-          if (auto* sym = p->getAsSymbolNode()) f->params.push_back(var_for(*sym));
+          if (auto* sym = p->getAsSymbolNode()) {
+            importing_params_ = true;
+            f->params.push_back(var_for(*sym));
+            importing_params_ = false;
+          }
     f->body = seq.size() > 1 ? block(seq[1]) : ir::Stmt::make(ir::Stmt::Kind::Block);
     module_.functions.push_back(f);
   }
@@ -534,6 +603,7 @@ class Importer {
       return;  // built-in blocks (gl_PerVertex)
     ir::VarPtr v = var_for(*sym);
     if (!global_index_.emplace(v.get(), module_.globals.size()).second) return;
+    if (v->storage == ir::Storage::Local) v->storage = ir::Storage::Global;  // a global `const` with a run-time value
     module_.globals.push_back(v);
     module_.global_inits.push_back(nullptr);
   }
@@ -564,9 +634,18 @@ class Importer {
   }
 
   const Options& options_;
+  std::string_view source_;  // the main file's text
+  std::optional<std::unordered_map<std::string, ir::Loc>> global_declarations_;  // built on first use
+
+  ir::Loc global_declaration(const std::string& name) {
+    if (!global_declarations_) global_declarations_ = global_declarations(source_);
+    auto it = global_declarations_->find(name);
+    return it == global_declarations_->end() ? ir::Loc{} : it->second;
+  }
   ir::Module& module_;
   std::vector<Diagnostic>& diags_;
   bool failed_ = false;
+  bool importing_params_ = false;  // var_for is reading a function's parameter list
   int next_id_ = 1;
   std::map<long long, ir::VarPtr> vars_;
   std::map<std::pair<long long, int>, ir::VarPtr> members_;
@@ -607,7 +686,7 @@ bool import_module(const ParsedShader& parsed, const Options& options, ir::Modul
                                                   : ir::StageKind::Compute;
   out.source_version = parsed.info.version;
   out.source_es = parsed.info.es;
-  Importer importer(options, out, diagnostics);
+  Importer importer(options, parsed.source, out, diagnostics);
   if (!importer.run(*parsed.intermediate)) return false;
   return place_declarations(out, options, diagnostics);
 }

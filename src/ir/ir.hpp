@@ -47,10 +47,13 @@ struct Layout {
   std::string format;   // image format ("rgba32f"), or empty
 };
 
+enum class Interp { Default, Smooth, Flat, NoPerspective, Centroid };
+
 struct Field {
   std::string name;
   Type type;
   Layout layout;
+  Interp interp = Interp::Default;  // members of in/out blocks
 };
 
 enum class Storage {
@@ -67,8 +70,6 @@ enum class Storage {
   ParamInOut,
   BuiltIn,   // gl_* variables; printed by name, never declared
 };
-
-enum class Interp { Default, Smooth, Flat, NoPerspective, Centroid };
 
 struct Var {
   int id = 0;

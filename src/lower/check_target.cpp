@@ -6,8 +6,17 @@
 // or % operators, no switch, no array constructors, varyings and attributes of float types only
 // (section 4.3.5); Appendix A makes while/do-while loops and indexing other than by
 // constant-index-expressions optional, so those are warnings.
+//
+// Every target: opaque types the target's language lacks (sampler1D, sampler2DRect and
+// samplerBuffer on ES, images and atomic_uint before ES 3.10 / desktop 4.20, ...) and storage
+// blocks before ES 3.10 / desktop 4.30. Which opaque types a target has is asked of glslang (a
+// one-line declaration parsed in the target's profile, cached), so the answer follows the specs
+// glslang implements instead of a table kept here.
+#include <map>
+#include <mutex>
 #include <set>
 
+#include "emit/validate.hpp"
 #include "ir/walk.hpp"
 #include "lower/lower.hpp"
 
@@ -129,9 +138,72 @@ class Es100Checker {
   std::set<std::string> reported_;
 };
 
+constexpr Target kAllTargets[] = {Target::Es100, Target::Es300, Target::Es310,
+                                  Target::Es320, Target::Glsl330, Target::Glsl450};
+
+// Whether the opaque type `name` exists in `target`'s language: glslang calls a missing one a
+// reserved word or does not parse it as a type at all.
+bool opaque_type_exists(const std::string& name, Target target) {
+  static std::mutex mutex;
+  static std::map<std::pair<std::string, Target>, bool> known;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto [it, inserted] = known.try_emplace({name, target}, true);
+  if (inserted) {
+    const std::string log =
+        emit::validate(std::string(target_is_es(target) ? "#version " + std::to_string(target_version(target)) +
+                                                              (target == Target::Es100 ? "" : " es")
+                                                        : "#version " + std::to_string(target_version(target)) + " core") +
+                           "\nprecision highp float;\nuniform highp " + name + " probe;\nvoid main() {}\n",
+                       Stage::Fragment, target);
+    it->second = log.find("Reserved word") == std::string::npos && log.find("syntax error") == std::string::npos;
+  }
+  return it->second;
+}
+
+// How to do without a desktop-only opaque type on ES, where there is a usual way.
+std::string replacement_hint(const std::string& name) {
+  if (name.find("1D") != std::string::npos) return "a 1D texture can be a 2D one of height 1 (sampler2D, y = 0.5)";
+  if (name.find("2DRect") != std::string::npos) return "use sampler2D with coordinates divided by the texture size";
+  if (name.find("Buffer") != std::string::npos) return "store the data in a 2D texture or a storage buffer";
+  if (name == "atomic_uint") return "count with atomicAdd on a uint in a storage buffer";
+  return "";
+}
+
+class TypeAvailabilityChecker {
+ public:
+  TypeAvailabilityChecker(const ir::Module& m, Context& c) : module_(m), ctx_(c) {}
+
+  void run() {
+    const Target target = ctx_.options.target;
+    const std::string target_name(to_string(target));
+    for (const auto& g : module_.globals) {
+      if (g->type.base == ir::Base::Opaque && !opaque_type_exists(g->type.name, target)) {
+        std::string elsewhere;
+        for (Target t : kAllTargets)
+          if (opaque_type_exists(g->type.name, t)) elsewhere += (elsewhere.empty() ? "" : ", ") + std::string(to_string(t));
+        std::string hint = replacement_hint(g->type.name);
+        ctx_.error(g->loc, "'" + g->name + "' has the type " + g->type.name + ", which " + target_name +
+                               " does not have; " + (hint.empty() ? "" : hint + ", or ") +
+                               (elsewhere.empty() ? "no target of doublet has it" : "target " + elsewhere));
+      }
+      const bool storage_blocks = target_is_es(target) ? target_version(target) >= 310 : target_version(target) >= 430;
+      if (g->type.base == ir::Base::Block && g->storage == ir::Storage::Buffer && !storage_blocks &&
+          target != Target::Es100)  // es100: Es100Checker refuses every block
+        ctx_.error(g->loc, "storage block '" + g->type.name + "' (buffer) is not available on " + target_name +
+                               ": storage blocks need GLSL ES 3.10 or desktop 4.30; use a uniform block if the "
+                               "shader only reads it, or target es310, es320 or glsl450");
+    }
+  }
+
+ private:
+  const ir::Module& module_;
+  Context& ctx_;
+};
+
 }  // namespace
 
 bool check_target(const ir::Module& module, Context& context) {
+  TypeAvailabilityChecker(module, context).run();
   if (context.options.target == Target::Es100) Es100Checker(module, context).run();
   return !context.failed;
 }

@@ -514,6 +514,11 @@ class Lints {
     for (const auto& v : module_.globals) {
       if (v->storage != ir::Storage::Out || !v->declared_type.contains_double() || v->interp == ir::Interp::Flat)
         continue;
+      if (v->type.base == ir::Base::Block && v->type.fields &&
+          std::none_of(v->type.fields->begin(), v->type.fields->end(), [](const ir::Field& f) {
+            return f.type.contains_double() && f.interp != ir::Interp::Flat;
+          }))
+        continue;  // an output block whose double members are all flat
       // ES 1.00 (source or target) has no `flat`: a uniform is the only way to keep the precision.
       const bool no_flat = ctx_.options.target == Target::Es100 || (module_.source_es && module_.source_version == 100);
       report(global_declaration(*v),

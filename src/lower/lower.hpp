@@ -34,6 +34,8 @@ struct Context {
   // uses the cheaper df64-fast rules (rules/fast.glsl) instead of the accurate ones.
   std::set<const ir::Function*> fast_functions;
   bool fast_global_inits = false;
+  // flatten_io_blocks: each variable made from an in/out block's member → the block's name.
+  std::map<const ir::Var*, std::string> flattened_blocks;
 
   void error(ir::Loc loc, const std::string& message);
   void warning(ir::Loc loc, const std::string& message);
@@ -51,6 +53,10 @@ bool is_df(const ir::Type& t);  // a df_double/df_dvecN struct (not an array of 
 int df_width(const ir::Type& t);
 
 bool lower_doubles(ir::Module& module, Context& context);
+// In/out blocks become plain in/out variables (BLOCK_MEMBER) on targets without I/O blocks.
+bool flatten_io_blocks(ir::Module& module, Context& context);
+// Global initialisers that are not constant expressions become assignments at the top of main.
+bool move_global_initialisers(ir::Module& module, Context& context);
 bool split_interfaces(ir::Module& module, Context& context, Manifest& manifest);
 // Diagnoses, by construct and target, what the lowered shader needs but the target lacks.
 bool check_target(const ir::Module& module, Context& context);

@@ -127,12 +127,13 @@ class DoubleLowering {
 
   // A block's double members become df_* struct members in place (hi and lo side by side); their
   // offsets change, so explicit member offsets are dropped, an explicit std140/std430 packing is
-  // emitted (shared/packed layouts could not be described), and split_interfaces reports the new
-  // layout in the manifest.
+  // emitted for uniform and storage blocks (shared/packed layouts could not be described; in/out
+  // blocks take no packing), and split_interfaces reports the new layout in the manifest.
   void lower_block(ir::Var& block) {
     // A copy: declared_type keeps the user's members for the manifest.
     block.type.fields = std::make_shared<std::vector<ir::Field>>(*block.type.fields);
-    if (block.layout.packing != "std140" && block.layout.packing != "std430")
+    const bool memory_block = block.storage == ir::Storage::Uniform || block.storage == ir::Storage::Buffer;
+    if (memory_block && block.layout.packing != "std140" && block.layout.packing != "std430")
       block.layout.packing = block.storage == ir::Storage::Buffer ? "std430" : "std140";
     for (auto& f : *block.type.fields) {
       f.type = lower_type(f.type, block.loc);

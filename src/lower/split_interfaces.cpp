@@ -131,6 +131,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
     if (interface && v->type.base != ir::Base::Block) {
       InterfaceVariable entry;
       entry.name = v->name;
+      if (auto it = ctx.flattened_blocks.find(v.get()); it != ctx.flattened_blocks.end()) entry.block = it->second;
       entry.storage = storage_name(v->storage, module.stage, es100);
       entry.type = ir::type_name(v->declared_type) + ir::array_suffix(v->declared_type);
       if (v->storage == ir::Storage::Uniform && !v->declared_type.is_double() && v->type.base == ir::Base::Struct &&
@@ -205,8 +206,10 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       entry.split = true;
       entry.lowered_type = v->type.name;
       entry.lowered_names = {entry.name};
-      entry.layout = v->layout.packing;
-      entry.members = block_layout(v->type, v->layout.packing);
+      if (v->storage == ir::Storage::Uniform || v->storage == ir::Storage::Buffer) {  // in/out blocks have no layout
+        entry.layout = v->layout.packing;
+        entry.members = block_layout(v->type, v->layout.packing);
+      }
       manifest.variables.push_back(entry);
     }
     globals.push_back(v);

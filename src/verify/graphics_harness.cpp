@@ -35,7 +35,23 @@ bool has_output(const GraphicsInterface& s, const std::string& name) {
   return std::any_of(s.outputs.begin(), s.outputs.end(), [&](const auto& o) { return o.name == name; });
 }
 
-// An output's name in the lowered shader: split pairs from the manifest; gl_FragColor becomes the
+// `instance.member` of an in/out block the lowering flattened (targets without I/O blocks): the
+// manifest's BLOCK_member variable, when exactly one flattened block has that member; else "".
+std::string flattened_block_member(const Manifest& manifest, const std::string& name) {
+  const size_t dot = name.find('.');
+  if (dot == std::string::npos) return {};
+  const std::string member = name.substr(dot + 1);
+  std::string found;
+  for (const auto& v : manifest.variables) {
+    if (v.block.empty() || v.name != v.block + "_" + member) continue;
+    if (!found.empty()) return {};  // two blocks with this member: the instance name cannot tell which
+    found = v.name;
+  }
+  return found;
+}
+
+// An output's name in the lowered shader: split pairs from the manifest; a flattened block member
+// its BLOCK_member variable; gl_FragColor becomes the
 // printer's declared `df_frag_color` on targets without it (src/emit/printer.cpp), gl_FragData[k]
 // its `df_frag_data_k`, and on es100 a
 // fragment shader's only output becomes gl_FragColor.
@@ -49,6 +65,7 @@ std::vector<std::string> lowered_output_names(const Manifest& manifest, const Gr
       if (has_output(lowered_if, slot)) return {slot};
     }
     if (native_if.outputs.size() == 1 && has_output(lowered_if, "gl_FragColor")) return {"gl_FragColor"};
+    if (std::string flat = flattened_block_member(manifest, name); !flat.empty()) return lowered_names(manifest, flat);
   }
   return lowered_names(manifest, name);
 }
@@ -107,7 +124,8 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
       notes_.push_back("input '" + in.name + "' is an integer: left at 0");
       continue;
     }
-    Variable v{in.name, false, in.scalar == 'd', in.components, lowered_names(manifest, in.name)};
+    const std::string flat = flattened_block_member(manifest, in.name);
+    Variable v{in.name, false, in.scalar == 'd', in.components, lowered_names(manifest, flat.empty() ? in.name : flat)};
     v.scalar = in.scalar;
     inputs_.push_back(std::move(v));
   }

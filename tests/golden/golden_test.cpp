@@ -267,7 +267,12 @@ void validate_expected(const std::string& file, const std::string& text, const S
   shader.setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
   shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
   const EProfile profile = target.es ? EEsProfile : ECoreProfile;
-  const bool parsed = shader.parse(GetDefaultResources(), target.version, profile,
+  // glslang's default table allows one atomic-counter binding; drivers offer 8 or more.
+  TBuiltInResource limits = *GetDefaultResources();
+  limits.maxAtomicCounterBindings = limits.maxCombinedAtomicCounterBuffers = 8;
+  limits.maxVertexAtomicCounterBuffers = limits.maxFragmentAtomicCounterBuffers = 8;
+  limits.maxComputeAtomicCounterBuffers = 8;
+  const bool parsed = shader.parse(&limits, target.version, profile,
                                    /*forceDefaultVersionAndProfile=*/false,
                                    /*forwardCompatible=*/false, EShMsgDefault);
   EXPECT_TRUE(parsed) << "glslang rejects it:\n" << shader.getInfoLog() << shader.getInfoDebugLog();
@@ -290,6 +295,7 @@ TEST_P(Golden, Matches) {
   options.stage = stage.stage;
   options.target = target.target;
   options.file_name = "cases/" + p.case_file();
+  options.include_dirs = {(kCasesDir / "include").string()};  // engine-style shared headers (#include "x.glsl")
   std::string bad_options = apply_case_options(*source, options);
   ASSERT_EQ(bad_options, "") << "cases/" << p.case_file() << ": bad options line";
   doublet::Result result = doublet::lower(case_source_for_lowering(*source), options);

@@ -1,0 +1,499 @@
+#version 450 core
+precision highp float;
+precision highp int;
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+struct df_dvec4 {
+  vec4 hi;
+  vec4 lo;
+};
+// doublet float-float runtime: 22 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+struct df_dvec3 { vec3 hi; vec3 lo; };
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
+df_double df_split(float a) {
+  precise float g = (a * 4097.0);
+  precise float d = (a - g);
+  precise float hi = (g + d);
+  precise float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  precise float p = (a * b);
+  precise float aa = (abs(a));
+  precise float ab = (abs(b));
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  precise float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  precise float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  precise float az = (abs(z.hi));
+  if (az > 0.0 && az <= 3.40282347e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_double df_mul(df_double a, df_double b) {
+  df_double c = df_two_prod(a.hi, b.hi);
+  precise float tl = (a.hi * b.lo);
+  precise float th = (a.lo * b.hi);
+  precise float cl2 = (th + tl);
+  precise float cl3 = (c.lo + cl2);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_dvec3 df_neg(df_dvec3 a) {
+  precise vec3 h = (-a.hi);
+  precise vec3 l = (-a.lo);
+  return df_dvec3(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec3 df_two_sum(vec3 a, vec3 b) {
+  precise vec3 s = (a + b);
+  precise vec3 bb = (s - a);
+  precise vec3 ab = (s - bb);
+  precise vec3 da = (a - ab);
+  precise vec3 db = (b - bb);
+  precise vec3 e = (da + db);
+  return df_dvec3(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
+  precise vec3 s = (a + b);
+  precise vec3 z = (s - a);
+  precise vec3 e = (b - z);
+  return df_dvec3(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 3: the width-1 df_finish applied to each component)
+df_dvec3 df_finish(df_dvec3 z, vec3 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  df_double r2 = df_finish(df_double(z.hi.z, z.lo.z), f.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 s = df_two_sum(a.hi, b.hi);
+  df_dvec3 t = df_two_sum(a.lo, b.lo);
+  precise vec3 c = (s.lo + t.hi);
+  df_dvec3 v = df_fast_two_sum(s.hi, c);
+  precise vec3 w = (t.lo + v.lo);
+  df_dvec3 z = df_fast_two_sum(v.hi, w);
+  df_dvec3 r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 23
+df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 nb = df_neg(b);
+  df_dvec3 z = df_add(a, nb);
+  return z;
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// (width 3: the width-1 df_two_prod applied to each component)
+df_dvec3 df_two_prod(vec3 a, vec3 b) {
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  df_double r2 = df_two_prod(a.z, b.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 c = df_two_prod(a.hi, b.hi);
+  precise vec3 tl = (a.hi * b.lo);
+  precise vec3 th = (a.lo * b.hi);
+  precise vec3 cl2 = (th + tl);
+  precise vec3 cl3 = (c.lo + cl2);
+  df_dvec3 z = df_fast_two_sum(c.hi, cl3);
+  df_dvec3 r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  precise float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  precise float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_dot: (a.x*b.x + a.y*b.y) + a.z*b.z.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 129
+df_double df_dot(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_double(m.hi.z, m.lo.z);
+  df_double xy = df_add(x, y);
+  df_double r = df_add(xy, z);
+  return r;
+}
+
+// df_lt: a < b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_lt(df_double a, df_double b) {
+  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+}
+
+// df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN
+// (IEEE 754-2008 section 5.4.1; GLSL leaves a < 0 undefined, the drivers give NaN).
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
+// Bound: 25/8 u^2
+// Flops: 31
+// Steps (LLMPR Algorithm 8, our no-FMA form):
+//   sh   = RN(sqrt(ah))
+//   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
+//   r0   = RN(ah - p)                exact: ah/2 <= p <= 2ah (Sterbenz)
+//   rho1 = RN(r0 - e)                == RN(ah - sh^2), the value fma(-sh, sh, ah) returns
+//   rho2 = RN(al + rho1)
+//   sl   = RN(rho2 / (2 sh))
+//   (zh,zl) = Fast2Sum(sh, sl)
+// sh is guarded too: Mesa rewrites sqrt(x)*sqrt(x) to |x|, which would zero the residual.
+// So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
+// correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
+// few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
+// not proved). Special values end in df_finish(z, sh): a = +-0 gives sl = 0/0 = NaN and so
+// (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
+// Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
+df_double df_sqrt(df_double a) {
+  precise float sh = (sqrt(a.hi));
+  df_double sq = df_two_prod(sh, sh);
+  precise float r0 = (a.hi - sq.hi);
+  precise float rho1 = (r0 - sq.lo);
+  precise float rho2 = (a.lo + rho1);
+  precise float sh2 = (sh * 2.0);
+  precise float sl = (rho2 / sh2);
+  df_double z = df_fast_two_sum(sh, sl);
+  df_double r = df_finish(z, sh);
+  return r;
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 30
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+df_double df_mul_f(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  precise float cl2 = (a.lo * b);
+  df_double t = df_fast_two_sum(c.hi, cl2);
+  precise float tl2 = (t.lo + c.lo);
+  df_double z = df_fast_two_sum(t.hi, tl2);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 39
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
+df_double df_div(df_double a, df_double b) {
+  precise float th = (a.hi / b.hi);
+  df_double r = df_mul_f(b, th);
+  precise float pih = (a.hi - r.hi);
+  precise float dl = (a.lo - r.lo);
+  precise float d = (pih + dl);
+  precise float tl = (d / b.hi);
+  df_double z = df_fast_two_sum(th, tl);
+  df_double q = df_finish(z, th);
+  return q;
+}
+
+// df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
+// power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
+// double-word number. Replaces df_mul (29 flops) and df_div by a power of two.
+// Algorithm: exact scaling of both words by a power of two, then df_finish
+// Source: HFPA (2018), section 2.2 (multiplication by a power of the radix is exact); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 3
+// Range: exact while lo*p stays normal (|lo*p| >= 2^-126) and hi*p does not overflow; an
+// overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
+df_double df_mul_pow2(df_double a, float p) {
+  precise float h = (a.hi * p);
+  precise float l = (a.lo * p);
+  df_double r = df_finish(df_double(h, l), h);
+  return r;
+}
+
+// df_sqr: a * a. Dekker's mul12 with both operands equal needs one Veltkamp split instead of
+// two and its two cross products are equal (one product, doubled exactly), and DWTimesDW1's two
+// terms ah*al and al*ah are equal too. Every rounding is the one df_mul(a, a) performs, so the
+// result is bit-identical to df_mul(a, a) (wherever a*a is finite) with 10 fewer operations.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with a = b, Dekker's TwoProd specialised to a square, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2); Dekker 1971
+// Bound: 7u^2
+// Flops: 19
+// Steps: p = RN(ah*ah); (sh,sl) = split(ah); t1 = RN(sh*sh - p); t2 = RN(t1 + 2*(sh*sl));
+//        e = RN(t2 + sl*sl) (exact: the partial sums of mul12); c = RN(ah*al);
+//        cl3 = RN(e + 2c); (zh,zl) = Fast2Sum(p, cl3); df_finish(z, p).
+// Range and special values: as df_mul. The split is not scaled: whenever a*a is finite,
+// |a| < 1.9e19 is far below the split's limit (8.3e34); when it overflows, p is Inf and
+// df_finish returns (Inf, 0) as df_mul does.
+df_double df_sqr(df_double a) {
+  precise float p = (a.hi * a.hi);
+  df_double s = df_split(a.hi);
+  precise float hh = (s.hi * s.hi);
+  precise float hl = (s.hi * s.lo);
+  precise float hl2 = (hl + hl);
+  precise float ll = (s.lo * s.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl2);
+  precise float e = (t2 + ll);
+  precise float c = (a.hi * a.lo);
+  precise float c2 = (c + c);
+  precise float cl3 = (e + c2);
+  df_double z = df_fast_two_sum(p, cl3);
+  df_double r = df_finish(z, p);
+  return r;
+}
+
+df_dvec3 df_splat_dvec3(df_double s) {
+  return df_dvec3(vec3(s.hi), vec3(s.lo));
+}
+
+df_dvec3 df_assign_dvec4_xyz(inout df_dvec4 v, df_dvec3 x) {
+  v.hi.xyz = x.hi;
+  v.lo.xyz = x.lo;
+  return x;
+}
+
+df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
+  return df_dvec4(vec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), vec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
+}
+
+layout(std430, binding = 0) readonly buffer Positions {
+  df_dvec4 position[];
+};
+layout(std430, binding = 1) buffer Velocities {
+  df_dvec4 velocity[];
+};
+layout(std430, binding = 2) writeonly buffer NextPositions {
+  df_dvec4 next_position[];
+};
+layout(binding = 3, offset = 0) uniform atomic_uint close_encounters;
+uniform float dt_hi;
+uniform float dt_lo;
+df_double dt;
+uniform float softening_hi;
+uniform float softening_lo;
+df_double softening;
+uniform int body_count;
+shared df_dvec4 tile[64];
+df_double softening2;
+
+
+void main()
+{
+  dt = df_double(dt_hi, dt_lo);
+  softening = df_double(softening_hi, softening_lo);
+  softening2 = df_sqr(softening);
+  uint i = gl_GlobalInvocationID.x;
+  df_dvec3 p = df_dvec3(position[i].hi.xyz, position[i].lo.xyz);
+  df_dvec3 acceleration = df_dvec3(vec3(0.0), vec3(0.0));
+  for (int start = 0; start < body_count; start += 64)
+  {
+    tile[gl_LocalInvocationID.x] = position[start + int(gl_LocalInvocationID.x)];
+    barrier();
+    for (int j = 0; j < 64; ++j)
+    {
+      df_dvec3 d = df_sub(df_dvec3(tile[j].hi.xyz, tile[j].lo.xyz), p);
+      df_double r2 = df_add(df_dot(d, d), softening2);
+      if (df_lt(r2, df_mul_pow2(softening2, 4.0)))
+      {
+        atomicCounterIncrement(close_encounters);
+      }
+      acceleration = df_add(acceleration, df_mul(d, df_splat_dvec3(df_div(df_double(tile[j].hi.w, tile[j].lo.w), df_mul(r2, df_sqrt(r2))))));
+    }
+    barrier();
+  }
+  df_assign_dvec4_xyz(velocity[i], df_add(df_dvec3(velocity[i].hi.xyz, velocity[i].lo.xyz), df_mul(acceleration, df_splat_dvec3(dt))));
+  next_position[i] = df_make_dvec4_3_1(df_add(p, df_mul(df_dvec3(velocity[i].hi.xyz, velocity[i].lo.xyz), df_splat_dvec3(dt))), df_double(position[i].hi.w, position[i].lo.w));
+}
