@@ -233,19 +233,23 @@ std::vector<float> packed_inputs(const Row& row) {
 
 // ---- sabotage: the previous rule text ----------------------------------------------------------
 
-// The rule library of the .glsl files in `dir` (parsed once per directory).
+// The rule library of the .glsl files in `dir`, each file `dir` lacks taken from rules/ as it is
+// (so a snapshot keeps only the files that changed); parsed once per directory.
 const doublet::rules::RuleLibrary& library_in(const std::string& dir) {
   static std::map<std::string, doublet::rules::RuleLibrary> cache;
   auto it = cache.find(dir);
   if (it != cache.end()) return it->second;
+  std::map<std::string, std::filesystem::path> sources;
+  for (const std::string& from : {std::string(DOUBLET_RULES_DIR), dir})  // dir's files win
+    for (const auto& e : std::filesystem::directory_iterator(from))
+      if (e.path().extension() == ".glsl") sources[e.path().filename().string()] = e.path();
   std::vector<std::pair<std::string, std::string>> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) {
-    std::ifstream f(e.path());
+  for (const auto& [name, path] : sources) {
+    std::ifstream f(path);
     std::stringstream ss;
     ss << f.rdbuf();
-    files.emplace_back(e.path().filename().string(), ss.str());
+    files.emplace_back(name, ss.str());
   }
-  std::sort(files.begin(), files.end());
   std::string error;
   auto parsed = doublet::rules::RuleLibrary::parse(files, &error);
   if (!parsed) {
