@@ -512,8 +512,17 @@ class Lints {
   void smooth_varyings() {
     if (module_.stage != ir::StageKind::Vertex) return;
     for (const auto& v : module_.globals) {
-      if (v->storage != ir::Storage::Out || !v->declared_type.contains_double() || v->interp == ir::Interp::Flat)
+      if (v->storage != ir::Storage::Out || !v->declared_type.contains_double()) continue;
+      if (v->interp == ir::Interp::Flat) {
+        // ES 1.00 prints no interpolation qualifier: the flat the user asked for is lost.
+        if (ctx_.options.target == Target::Es100)
+          report(global_declaration(*v),
+                 "'" + v->name + "' is a flat double vertex output, but ES 1.00 has no 'flat': its hi and lo "
+                 "are interpolated, which keeps only float precision where the vertices differ; pass the "
+                 "value as a uniform, or target es300",
+                 "smooth-double-varying");
         continue;
+      }
       if (v->type.base == ir::Base::Block && v->type.fields &&
           std::none_of(v->type.fields->begin(), v->type.fields->end(), [](const ir::Field& f) {
             return f.type.contains_double() && f.interp != ir::Interp::Flat;

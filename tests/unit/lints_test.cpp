@@ -234,6 +234,20 @@ TEST(SmoothDoubleVaryingLint, DoubleVertexOutputWithoutFlat) {
   EXPECT_NE(found[0].message.find("declare it flat, or pass the value as a uniform"), std::string::npos);
 }
 
+// The flat a shader asks for cannot be printed on ES 1.00: say so instead of dropping it silently.
+TEST(SmoothDoubleVaryingLint, FlatIsLostOnEs100) {
+  doublet::Options o = options(doublet::Stage::Vertex);
+  o.target = doublet::Target::Es100;
+  auto r = doublet::lower(kVertex, o);
+  ASSERT_TRUE(r.ok) << all(r);
+  auto found = lint(r, "smooth-double-varying");
+  ASSERT_EQ(found.size(), 2u) << all(r);
+  EXPECT_EQ(found[1].line, 4);
+  EXPECT_NE(found[1].message.find("'v_flat' is a flat double vertex output, but ES 1.00 has no 'flat'"),
+            std::string::npos)
+      << found[1].message;
+}
+
 TEST(SmoothDoubleVaryingLint, Es100HasNoFlatSoTheAdviceIsAUniform) {
   doublet::Options o = options(doublet::Stage::Vertex);
   o.target = doublet::Target::Es100;
