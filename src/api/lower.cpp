@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <map>
+#include <mutex>
 #include <set>
 
 #include "api/big_stack.hpp"
@@ -81,6 +83,26 @@ std::string matrix_struct_types(std::vector<std::pair<int, int>> shapes) {
   return out;
 }
 
+// The targets whose language has the built-in variable `name` in `stage`, asked of glslang with a
+// one-line probe per target (cached): compatibility-profile names (gl_Vertex) are in none.
+std::string targets_with_builtin_variable(const std::string& name, Stage stage) {
+  static std::mutex mutex;
+  static std::map<std::pair<std::string, Stage>, std::string> known;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto [it, inserted] = known.try_emplace({name, stage});
+  if (!inserted) return it->second;
+  for (Target t : {Target::Es100, Target::Es300, Target::Es310, Target::Es320, Target::Glsl330, Target::Glsl450}) {
+    const std::string version = "#version " + std::to_string(target_version(t)) +
+                                (t == Target::Es100 ? "" : target_is_es(t) ? " es" : " core");
+    const std::string layout = stage == Stage::Compute ? "layout(local_size_x = 1) in;\n" : "";
+    const std::string log = emit::validate(version + "\nprecision highp float;\n" + layout + "void main() { " + name + "; }\n",
+                                           stage, t);
+    if (log.find("undeclared identifier") == std::string::npos)
+      it->second += (it->second.empty() ? "" : ", ") + std::string(to_string(t));
+  }
+  return it->second;
+}
+
 // glslang's re-validation is the authority on which built-in variables and functions a target
 // and stage have (gl_ClipDistance on ES, gl_FragDepth or texelFetch on ES 1.00, ...). When it
 // rejects one the user's shader uses, say so at the use instead of an internal error.
@@ -104,10 +126,19 @@ bool report_builtins_the_target_lacks(const std::string& log,
       const std::string target(to_string(options.target));
       const std::string& written = use->second.source_name;
       const char* stage = *options.stage == Stage::Vertex ? "vertex" : *options.stage == Stage::Fragment ? "fragment" : "compute";
+      const bool variable = name.rfind("gl_", 0) == 0;
       std::string message = "the built-in '" + written + "'" + (written != name ? " (" + name + " there)" : "") +
-                            (name.rfind("gl_", 0) == 0 ? " does not exist in " : " has no such overload in ") + target +
-                            " " + stage + " shaders; remove it";
-      if (options.target != Target::Glsl450) message += ", or target glsl450 (desktop GLSL 4.50 has it)";
+                            (variable ? " does not exist in " : " has no such overload in ") + target + " " + stage +
+                            " shaders";
+      if (!variable) {
+        message += "; remove it";
+        if (options.target != Target::Glsl450) message += ", or target glsl450 (desktop GLSL 4.50 has it)";
+      } else if (const std::string have = targets_with_builtin_variable(written, *options.stage); !have.empty()) {
+        message += "; remove it, or target one that has it (" + have + ")";
+      } else {
+        message += " (a compatibility-profile built-in: doublet's desktop targets are core profiles); pass the value "
+                   "as a uniform or an attribute instead";
+      }
       diags.push_back({options.file_name, use->second.loc.line, use->second.loc.column, Severity::Error, message});
     }
   }

@@ -61,6 +61,31 @@ TEST(TargetBuiltins, MissingBuiltinIsAPositionedDiagnosticNotAnInternalError) {
   }
 }
 
+// The advice names the targets that have the variable (asked of glslang), or says that a
+// compatibility-profile built-in exists in none of them.
+TEST(TargetBuiltins, AdviceNamesTheTargetsThatHaveIt) {
+  const std::string clip =
+      "#version 450\nuniform double k;\nvoid main() {\n  gl_Position = vec4(float(k));\n"
+      "  gl_ClipDistance[0] = 1.0;\n}\n";
+  doublet::Result r = lower_for(clip, doublet::Stage::Vertex, doublet::Target::Es300);
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_NE(r.diagnostics[0].message.find("; remove it, or target one that has it (glsl330, glsl450)"), std::string::npos)
+      << r.diagnostics[0].message;
+  const std::string compat =
+      "#version 400 compatibility\nuniform dvec3 offset;\nvoid main() {\n"
+      "  gl_Position = vec4(dvec3(gl_Vertex.xyz) + offset, 1.0);\n}\n";
+  for (doublet::Target t : {doublet::Target::Es300, doublet::Target::Glsl450}) {
+    r = lower_for(compat, doublet::Stage::Vertex, t);
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].line, 4);
+    EXPECT_NE(r.diagnostics[0].message.find("the built-in 'gl_Vertex' does not exist in"), std::string::npos);
+    EXPECT_NE(r.diagnostics[0].message.find("(a compatibility-profile built-in: doublet's desktop targets are core "
+                                            "profiles); pass the value as a uniform or an attribute instead"),
+              std::string::npos)
+        << r.diagnostics[0].message;
+  }
+}
+
 TEST(TargetBuiltins, TargetsThatHaveTheBuiltinStillLowerIt) {
   const std::string clip =
       "#version 450\nuniform double k;\nvoid main() {\n  gl_Position = vec4(float(k));\n"
