@@ -172,6 +172,20 @@ VulkanDevice& shared_device() {
   return *d;
 }
 
+std::string allocate_memory(VulkanDevice& d, JobObjects& job, const VkMemoryRequirements& req,
+                            VkMemoryPropertyFlags flags, VkDeviceMemory* out) {
+  uint32_t type = UINT32_MAX;
+  for (uint32_t i = 0; i < d.memory.memoryTypeCount && type == UINT32_MAX; ++i)
+    if ((req.memoryTypeBits & (1u << i)) && (d.memory.memoryTypes[i].propertyFlags & flags) == flags) type = i;
+  if (type == UINT32_MAX) return "no memory type with the needed properties on " + d.name;
+  VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  mai.allocationSize = req.size;
+  mai.memoryTypeIndex = type;
+  if (VkResult r = vkAllocateMemory(d.device, &mai, nullptr, out); r != VK_SUCCESS) return vk_failed("vkAllocateMemory", r);
+  job.cleanup.push_back([&d, mem = *out] { vkFreeMemory(d.device, mem, nullptr); });
+  return {};
+}
+
 std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usage, const std::vector<uint8_t>& data,
                         HostBuffer* out) {
   VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -185,17 +199,10 @@ std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usa
 
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(d.device, buf, &req);
-  const VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  uint32_t type = UINT32_MAX;
-  for (uint32_t i = 0; i < d.memory.memoryTypeCount; ++i)
-    if ((req.memoryTypeBits & (1u << i)) && (d.memory.memoryTypes[i].propertyFlags & want) == want) { type = i; break; }
-  if (type == UINT32_MAX) return "no host-visible coherent memory type on " + d.name;
-  VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  mai.allocationSize = req.size;
-  mai.memoryTypeIndex = type;
   VkDeviceMemory mem;
-  if (VkResult r = vkAllocateMemory(d.device, &mai, nullptr, &mem); r != VK_SUCCESS) return vk_failed("vkAllocateMemory", r);
-  job.cleanup.push_back([&d, mem] { vkFreeMemory(d.device, mem, nullptr); });
+  if (std::string e = allocate_memory(d, job, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, &mem);
+      !e.empty())
+    return e;
   if (VkResult r = vkBindBufferMemory(d.device, buf, mem, 0); r != VK_SUCCESS) return vk_failed("vkBindBufferMemory", r);
   if (VkResult r = vkMapMemory(d.device, mem, 0, VK_WHOLE_SIZE, 0, &out->mapped); r != VK_SUCCESS)
     return vk_failed("vkMapMemory", r);

@@ -50,6 +50,10 @@ struct HostBuffer {
   void* mapped = nullptr;
 };
 
+// Memory for `req` from the first type it allows that has every bit of `flags`, freed with `job`.
+std::string allocate_memory(VulkanDevice& d, JobObjects& job, const VkMemoryRequirements& req,
+                            VkMemoryPropertyFlags flags, VkDeviceMemory* out);
+
 // A host-visible, coherent buffer holding `data` (zero-padded to at least 16 bytes), mapped.
 std::string make_buffer(VulkanDevice& d, JobObjects& job, VkBufferUsageFlags usage, const std::vector<uint8_t>& data,
                         HostBuffer* out);

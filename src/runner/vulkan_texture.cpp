@@ -42,16 +42,8 @@ std::string make_image(VulkanDevice& d, JobObjects& objs, TextureKind kind, uint
   objs.cleanup.push_back([&d, image] { vkDestroyImage(d.device, image, nullptr); });
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(d.device, image, &req);
-  uint32_t type = UINT32_MAX;
-  for (uint32_t i = 0; i < d.memory.memoryTypeCount && type == UINT32_MAX; ++i)
-    if (req.memoryTypeBits & (1u << i)) type = i;
-  if (type == UINT32_MAX) return "no memory type for a sampled image on " + d.name;
-  VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  mai.allocationSize = req.size;
-  mai.memoryTypeIndex = type;
   VkDeviceMemory mem;
-  if (VkResult r = vkAllocateMemory(d.device, &mai, nullptr, &mem); r != VK_SUCCESS) return vk_failed("vkAllocateMemory", r);
-  objs.cleanup.push_back([&d, mem] { vkFreeMemory(d.device, mem, nullptr); });
+  if (std::string e = allocate_memory(d, objs, req, 0, &mem); !e.empty()) return e;
   if (VkResult r = vkBindImageMemory(d.device, image, mem, 0); r != VK_SUCCESS) return vk_failed("vkBindImageMemory", r);
   return {};
 }
