@@ -30,7 +30,6 @@ std::optional<Mode> parse_mode(const std::string& s) {
 }
 
 namespace {
-bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Replaces the `#version` line (desktop 450 → ES 3.20 with highp defaults).
 std::string with_es_header(const std::string& source) {
@@ -41,31 +40,6 @@ std::string with_es_header(const std::string& source) {
          (eol == std::string::npos ? "" : source.substr(eol + 1));
 }
 }  // namespace
-
-std::string demote_doubles(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (size_t i = 0; i < s.size();) {
-    if (!ident_char(s[i])) {
-      out += s[i++];
-      continue;
-    }
-    size_t j = i;
-    while (j < s.size() && ident_char(s[j])) ++j;
-    std::string word = s.substr(i, j - i);
-    if (std::isdigit(static_cast<unsigned char>(word[0]))) {
-      // A number: 1.0lf / 2LF → 1.0 / 2 (exponent parts such as 1e-3 contain no 'l').
-      if (word.size() > 2 && (word.ends_with("lf") || word.ends_with("LF"))) word.resize(word.size() - 2);
-    } else if (word == "double") {
-      word = "float";
-    } else if (word.starts_with("dvec") || word.starts_with("dmat")) {
-      word = word.substr(1);
-    }
-    out += word;
-    i = j;
-  }
-  return out;
-}
 
 Variant make_variant(Mode mode, runner::Backend backend, const std::string& source, Target target,
                      const std::string& file_name) {

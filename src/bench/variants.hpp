@@ -30,9 +30,6 @@ struct Variant {
 // (es310/es320/glsl450) of every mode but native.
 Variant make_variant(Mode, runner::Backend, const std::string& source, Target target, const std::string& file_name);
 
-// Word-wise demotion: double → float, dvecN → vecN, dmat… → mat…, and the `lf`/`LF` literal suffix dropped
-// (the bench's fp32 used this before the compiler had --mode fp32; kept for the demos' comparison).
-std::string demote_doubles(const std::string& source);
 
 // Size of a variant: SPIR-V instructions as glslang compiles it (0 when it does not compile for
 // Vulkan, e.g. a double shader when fp64 is missing) and non-blank, non-comment source lines.

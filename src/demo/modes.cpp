@@ -1,5 +1,6 @@
 // Mode names and the per-mode shader text (see modes.hpp).
 #include "demo/modes.hpp"
+#include "frontend/demote.hpp"
 
 #include <algorithm>
 #include <regex>
@@ -36,19 +37,10 @@ bool parse_modes(const std::vector<std::string>& names, std::vector<Mode>* out, 
   return true;
 }
 
-std::string demote_doubles(std::string_view glsl) {
-  std::string s(glsl);
-  s = std::regex_replace(s, std::regex(R"(\bdouble\b)"), "float");
-  s = std::regex_replace(s, std::regex(R"(\bd(vec[234]|mat[234](x[234])?)\b)"), "$1");
-  // 1.0lf, 2lf, 1e9LF → the same float literal.
-  s = std::regex_replace(s, std::regex(R"(([0-9.](?:[eE][-+]?[0-9]+)?)(lf|LF)\b)"), "$1");
-  return s;
-}
-
 bool shader_for_mode(Mode mode, std::string_view source, Stage stage, Target target, std::string* out,
                      std::string* error) {
   if (mode == Mode::Fp32) {
-    *out = demote_doubles(source);
+    *out = frontend::demote_doubles(source);
     return true;
   }
   if (mode == Mode::Native) {

@@ -11,7 +11,7 @@
 namespace doublet::demo {
 
 enum class Mode {
-  Fp32,    // every double demoted to float (demote_doubles): what the app would get without doublet
+  Fp32,    // every double demoted to float (frontend::demote_doubles): what the app would get without doublet
   Df64,    // doublet's default lowering (float-float)
   Native,  // the original fp64 shader on lavapipe (shaderFloat64)
 };
@@ -24,10 +24,6 @@ std::vector<Mode> all_modes();
 // Parses --mode values (empty: all modes). On an unknown name returns false and sets *error.
 bool parse_modes(const std::vector<std::string>& names, std::vector<Mode>* out, std::string* error);
 
-// The fp32 baseline, made on the source text: `double`→`float`, `dvecN`→`vecN`, `dmat…`→`mat…`,
-// and the `lf`/`LF` suffix dropped from literals. Only for the demos' own shaders, which spell
-// doubles that way and nothing else (no identifiers that merely contain these words).
-std::string demote_doubles(std::string_view glsl);
 
 // The shader for a mode: Fp32 → demoted text, Df64 → doublet::lower to `target`, Native → the
 // text with its #version line replaced by "#version 450" (desktop GLSL, where doubles are core).

@@ -16,8 +16,6 @@ enum class Sabotage { None, DropLo, DropGuard };
 std::string_view to_string(Sabotage);
 std::optional<Sabotage> parse_sabotage(std::string_view);  // "none", "drop-lo", "drop-guard"
 
-// double/dvecN → float/vecN and `lf` literal suffixes removed, outside comments and strings.
-std::string demote_doubles(std::string_view source);
 
 // The lowering options and source a sabotage implies.
 void apply_sabotage(Sabotage, std::string* source, Options* options);

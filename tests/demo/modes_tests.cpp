@@ -4,11 +4,6 @@
 
 namespace doublet::demo {
 
-TEST(DemoModes, DemotionRewritesOnlyDoubleSpellings) {
-  EXPECT_EQ(demote_doubles("uniform dvec3 eye; double s = 2.0lf * 1e3LF; dmat4 m; doubled x;"),
-            "uniform vec3 eye; float s = 2.0 * 1e3; mat4 m; doubled x;");
-}
-
 TEST(DemoModes, UnimplementedPrecisionModesAreRejected) {
   std::vector<Mode> modes;
   std::string error;
