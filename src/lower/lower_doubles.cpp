@@ -619,13 +619,14 @@ class DoubleLowering {
       e->args = {converted};
       return e;
     }
+    // Arrays and user structs take their elements and members whole (a dmat2 member included).
+    if (e->type.is_array() || (e->type.base == ir::Base::Struct && !is_df(e->type))) return e;
     for (const auto& a : e->args)
       if (matrix::is_matrix(a->type)) {
         ctx_.error(a->loc, "building a scalar or vector from the components of a double matrix is not supported; "
                            "index its columns (m[j]) instead");
         return e;
       }
-    if (e->type.is_array() || (e->type.base == ir::Base::Struct && !is_df(e->type))) return e;  // arrays, user structs
     if (was_double) {
       int width = df_width(e->type);
       std::vector<ExprPtr> parts;
