@@ -32,15 +32,11 @@ void main() {
 
 // Starts `program args...` in `cwd` with stdin from /dev/null; does not wait.
 pid_t spawn(const std::string& program, const std::vector<std::string>& args, const fs::path& cwd) {
-  std::vector<std::string> argv_s{program};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& s : argv_s) argv.push_back(s.data());
-  argv.push_back(nullptr);
+  ExecArgs exec_args(program, args);
   pid_t pid = ::fork();
   if (pid == 0) {
     if (::chdir(cwd.c_str()) != 0) ::_exit(126);
-    ::execv(program.c_str(), argv.data());
+    ::execv(program.c_str(), exec_args.argv());
     ::_exit(127);
   }
   return pid;

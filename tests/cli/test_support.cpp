@@ -15,6 +15,12 @@
 namespace doublet::cli_test {
 namespace fs = std::filesystem;
 
+ExecArgs::ExecArgs(const std::string& program, const std::vector<std::string>& args) : strings_{program} {
+  strings_.insert(strings_.end(), args.begin(), args.end());
+  for (std::string& s : strings_) pointers_.push_back(s.data());
+  pointers_.push_back(nullptr);
+}
+
 ProcessResult run_process(const std::string& program, const std::vector<std::string>& args,
                           const fs::path& cwd, const std::optional<std::string>& stdin_data) {
   // Route everything through files: no pipe deadlocks, no threads.
@@ -22,11 +28,7 @@ ProcessResult run_process(const std::string& program, const std::vector<std::str
   fs::path in = io / "stdin", out = io / "stdout", err = io / "stderr";
   write_file(in, stdin_data.value_or(""));
 
-  std::vector<std::string> argv_s{program};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& s : argv_s) argv.push_back(s.data());
-  argv.push_back(nullptr);
+  ExecArgs exec_args(program, args);
 
   pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
@@ -37,7 +39,7 @@ ProcessResult run_process(const std::string& program, const std::vector<std::str
     if (fin < 0 || fout < 0 || ferr < 0 || ::dup2(fin, 0) < 0 || ::dup2(fout, 1) < 0 ||
         ::dup2(ferr, 2) < 0 || ::chdir(cwd.c_str()) != 0)
       ::_exit(126);
-    ::execv(program.c_str(), argv.data());
+    ::execv(program.c_str(), exec_args.argv());
     ::_exit(127);
   }
   int status = 0;

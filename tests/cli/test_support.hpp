@@ -17,6 +17,20 @@ struct ProcessResult {
 
 // Runs `program args...` in `cwd` with `stdin_data` on stdin (/dev/null when
 // nullopt) and returns its exit status, stdout and stderr.
+// `program` followed by `args`, as the null-terminated argument array execv takes (the strings
+// stay owned here, so the object must outlive the exec).
+class ExecArgs {
+ public:
+  ExecArgs(const std::string& program, const std::vector<std::string>& args);
+  ExecArgs(const ExecArgs&) = delete;
+  ExecArgs& operator=(const ExecArgs&) = delete;
+  char* const* argv() { return pointers_.data(); }
+
+ private:
+  std::vector<std::string> strings_;
+  std::vector<char*> pointers_;
+};
+
 ProcessResult run_process(const std::string& program, const std::vector<std::string>& args,
                           const std::filesystem::path& cwd,
                           const std::optional<std::string>& stdin_data = std::nullopt);
