@@ -186,7 +186,7 @@ bool make_web_page(const WebPageOptions& o, std::string* html, std::string* erro
           "computation in JavaScript doubles.</p>\n"
           "<p>Renderer: <span id=\"renderer\">...</span>. Status: <span id=\"status\">running...</span></p>\n"
           "<h2>Deep-zoom Mandelbrot (WebGL2 fragment shader)</h2>\n<p>" + html_escape(view) +
-          ". Where neighbouring pixels are closer than a float can tell apart, fp32 draws blocks or one flat colour. "
+          ". Where neighbouring pixels are closer than a float can tell apart, fp32 draws blocks or stripes. "
           "The JS-double reference checks one pixel in every " + std::to_string(o.reference_stride) + "x" +
           std::to_string(o.reference_stride) + " block.</p>\n<div id=\"mandelbrot\"></div>\n"
           "<h2>Two satellites on a geostationary orbit (WebGL2 vertex shader)</h2>\n"
