@@ -112,7 +112,8 @@ Command add_demo_command(CLI::App& app) {
       "demo", "Render the jitter and deep-zoom demos on Mesa's drivers, or write them as a web page (--web DIR)");
   demo->require_subcommand(0, 1);
   demo->add_option("--web", args->web_dir,
-                   "Write DIR/index.html: both demos in WebGL2 per mode, checked and timed in the browser");
+                   "Write DIR/index.html: both demos in WebGL2 per mode, checked and timed in the browser")
+      ->type_name("DIR");
   // Tests only: a page whose float-float panels must fail (no-guard: lowered without the optimizer
   // guard; drop-lo: the page uploads lo = 0). An empty group hides it from --help.
   demo->add_option("--sabotage", args->web_sabotage, "none | no-guard | drop-lo")->group("");
