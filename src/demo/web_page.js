@@ -392,7 +392,7 @@ async function run() {
                          element('td', {}, cell(jitter.wall, jitter.gpu))));
   }
   document.getElementById('timing-note').textContent =
-      `${config.timing_frames} frames per cell, ended by gl.finish() and a one-pixel readPixels; ` +
+      `${renderer}: ${config.timing_frames} frames per cell, ended by gl.finish() and a one-pixel readPixels; ` +
       (timer ? 'GPU time from EXT_disjoint_timer_query_webgl2.' : 'EXT_disjoint_timer_query_webgl2 is not available here.');
 
   // The jitter panels keep moving once the numbers are in: the camera sweeps 10 -> 50 m and back.
