@@ -43,6 +43,11 @@ namespace {
 
 using json = nlohmann::json;
 
+// WebGL2 is GLSL ES 3.00 with WebGL's extra rules; these two shaders use none of the constructs
+// WebGL refuses in doublet's es300 output (a ternary on doubles becomes one on structs).
+// A `webgl2` target, once doublet has one, goes here.
+constexpr Target kWebTarget = Target::Es300;
+
 const char* const kJitterFragmentShader = R"(#version 300 es
 precision highp float;
 in vec3 v_color;
@@ -78,7 +83,7 @@ bool shader_json(doublet::Mode mode, const char* source, Stage stage, WebSabotag
   } else {
     Options o;
     o.stage = stage;
-    o.target = Target::Es300;
+    o.target = kWebTarget;
     o.mode = mode;
     o.file_name = stage == Stage::Vertex ? "<web jitter.vert>" : "<web mandelbrot.frag>";
     if (sabotage == WebSabotage::NoGuard) o.guard = GuardKind::None;
