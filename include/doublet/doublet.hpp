@@ -16,7 +16,8 @@ namespace doublet {
 enum class Stage { Vertex, Fragment, Compute };
 
 // Output dialects. es* are GLSL ES, glsl* desktop GLSL (core profile).
-enum class Target { Es100, Es300, Es310, Es320, Glsl330, Glsl450 };
+// Wgsl: WebGPU Shading Language (no f64: every double is float-float; docs/web.md).
+enum class Target { Es100, Es300, Es310, Es320, Glsl330, Glsl450, Wgsl };
 
 // How the float-float error terms are protected from the driver's optimizer.
 //  Precise: every rule temporary is declared `precise` (ES 3.20, desktop 4.00+,
@@ -128,6 +129,9 @@ struct InterfaceVariable {
   // Blocks only: the packing emitted ("std140"/"std430") and every member's new place.
   std::string layout;
   std::vector<BlockMember> members;
+  // WGSL buffers (target wgsl): @group and @binding; -1 elsewhere.
+  int group = -1;
+  int binding = -1;
 };
 
 struct GuardInfo {

@@ -8,6 +8,7 @@
 
 #include "api/big_stack.hpp"
 #include "api/c_locale.hpp"
+#include "api/lower_wgsl.hpp"
 #include "doublet/doublet.hpp"
 #include "emit/printer.hpp"
 #include "emit/validate.hpp"
@@ -304,6 +305,7 @@ void cap_diagnostics(std::vector<Diagnostic>& diags, const std::string& file_nam
 }  // namespace
 
 Result lower(std::string_view source, const Options& options) {
+  if (options.target == Target::Wgsl) return lower_wgsl(source, options);
   try {
     if (source.size() > kMaxSourceBytes) {
       Result r;

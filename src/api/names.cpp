@@ -16,6 +16,7 @@ constexpr TargetName kTargets[] = {
     {Target::Es100, "es100", 100, true},   {Target::Es300, "es300", 300, true},
     {Target::Es310, "es310", 310, true},   {Target::Es320, "es320", 320, true},
     {Target::Glsl330, "glsl330", 330, false}, {Target::Glsl450, "glsl450", 450, false},
+    {Target::Wgsl, "wgsl", 0, false},
 };
 const TargetName& info(Target t) {
   for (const auto& n : kTargets)
@@ -104,6 +105,8 @@ std::string Manifest::to_json() const {
     if (!v.locations.empty()) e["locations"] = v.locations;
     if (!v.block.empty()) e["block"] = v.block;
     if (!v.layout.empty()) e["layout"] = v.layout;
+    if (v.group >= 0) e["group"] = v.group;
+    if (v.binding >= 0) e["binding"] = v.binding;
     if (!v.members.empty()) {
       e["members"] = nlohmann::ordered_json::array();
       for (const auto& m : v.members) {

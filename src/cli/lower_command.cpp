@@ -29,7 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr Target kAllTargets[] = {Target::Es100, Target::Es300,   Target::Es310,
-                                  Target::Es320, Target::Glsl330, Target::Glsl450};
+                                  Target::Es320, Target::Glsl330, Target::Glsl450, Target::Wgsl};
 
 std::string target_names(std::string_view sep) {
   std::string s;

@@ -1,0 +1,101 @@
+// See lower_wgsl.hpp. WGSL has no `precise`, so the guard is the uniform one (or none, for the
+// sabotage tests); doublet does not validate the WGSL itself (no WGSL front end is linked in):
+// the browser tests compile every golden WGSL file in Chromium's WebGPU (docs/web.md).
+#include "api/lower_wgsl.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <chrono>
+#include <regex>
+
+#include "api/big_stack.hpp"
+#include "api/c_locale.hpp"
+#include "emit/wgsl_printer.hpp"
+#include "frontend/frontend.hpp"
+#include "frontend/import.hpp"
+
+namespace doublet {
+namespace {
+
+bool has_error(const std::vector<Diagnostic>& diags) {
+  return std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
+}
+
+// The front end refuses identifiers with doublet's runtime prefix df_ (users may not declare
+// them), so the runtime's names cross the re-import under another prefix and come back after.
+constexpr const char* kCarrierPrefix = "doublet_rt_";
+
+std::string restore_prefix(std::string text) {
+  for (size_t at = text.find(kCarrierPrefix); at != std::string::npos; at = text.find(kCarrierPrefix, at))
+    text.replace(at, std::strlen(kCarrierPrefix), "df_");
+  return text;
+}
+
+void print_from_glsl(Result& result, const Options& options, const std::string& glsl_with_runtime_names) {
+  const std::string glsl = std::regex_replace(glsl_with_runtime_names, std::regex(R"(\bdf_)"), kCarrierPrefix);
+  Options internal = options;
+  internal.target = Target::Es310;
+  internal.defines.clear();
+  internal.includer = nullptr;
+  internal.mode_for.clear();
+  frontend::ParsedShader parsed;
+  std::vector<Diagnostic> diags;
+  ir::Module module;
+  if (!frontend::parse(glsl, internal, parsed, diags) || !frontend::import_module(parsed, internal, module, diags)) {
+    for (auto& d : diags) d.message = "internal error: the intermediate es310 GLSL does not re-import: " + d.message;
+    result.diagnostics.insert(result.diagnostics.end(), diags.begin(), diags.end());
+    return;
+  }
+  const std::string note = " (position in the intermediate GLSL: see `doublet lower --target es310 --guard uniform " +
+                           options.file_name + "`)";
+  emit::WgslPrintResult printed = emit::print_wgsl(module, options.file_name, note);
+  for (auto& d : printed.diagnostics) d.message = restore_prefix(d.message);
+  result.diagnostics.insert(result.diagnostics.end(), printed.diagnostics.begin(), printed.diagnostics.end());
+  if (has_error(result.diagnostics)) return;
+  if (!printed.uniform_buffer.name.empty()) {
+    for (auto& m : printed.uniform_buffer.members) m.name = restore_prefix(m.name);
+    result.manifest.variables.push_back(printed.uniform_buffer);
+  }
+  result.output = restore_prefix(printed.text);
+  result.ok = true;
+}
+
+}  // namespace
+
+Result lower_wgsl(std::string_view source, const Options& options) {
+  if (options.guard == GuardKind::Precise) {
+    Result r;
+    r.diagnostics.push_back({options.file_name, 0, 0, Severity::Error,
+                             "target wgsl has no 'precise' qualifier; use --guard uniform (the default there)"});
+    return r;
+  }
+  if (options.mode == Mode::Native) {
+    Result r;
+    r.diagnostics.push_back({options.file_name, 0, 0, Severity::Error,
+                             "--mode native keeps the doubles, and WGSL has no f64: use --mode df64 (the default)"});
+    return r;
+  }
+  Options glsl_options = options;
+  glsl_options.target = Target::Es310;
+  glsl_options.allow_gpu_shader5 = false;
+  if (glsl_options.guard == GuardKind::Auto) glsl_options.guard = GuardKind::Uniform;
+  Result result = lower(source, glsl_options);
+  result.manifest.target = "wgsl";
+  if (!result.ok) return result;
+  const std::string glsl = std::move(result.output);
+  result.output.clear();
+  result.ok = false;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    ScopedCLocale c_locale;
+    if (!run_with_big_stack([&] { print_from_glsl(result, options, glsl); })) print_from_glsl(result, options, glsl);
+  } catch (const std::exception& e) {
+    result.ok = false;
+    result.output.clear();
+    result.diagnostics.push_back({options.file_name, 0, 0, Severity::Error, std::string("internal error: ") + e.what()});
+  }
+  result.phase_seconds.emplace_back("wgsl", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return result;
+}
+
+}  // namespace doublet

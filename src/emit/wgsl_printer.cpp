@@ -1,0 +1,1014 @@
+// WGSL printer (see wgsl_printer.hpp). The module's functions keep their GLSL shape; what WGSL
+// spells differently is translated here, and what it cannot express is an error:
+//  - overloaded functions get the parameter types in their names (WGSL has no overloading);
+//  - out/inout parameters become ptr<function, T>, the argument `&x` (x a local variable);
+//  - the user's main becomes df_main; the entry point `main` copies the stage inputs (built-ins
+//    and @location inputs) into private variables, calls df_main and returns the outputs;
+//  - loose uniforms (the guard df_guard included) become members of one uniform buffer,
+//    df_uniforms, at the binding after the highest the shader uses (reported to the caller);
+//  - float literals are printed exactly (decimal where it is exact, else a hexadecimal float), so
+//    WGSL's implementation-chosen rounding of inexact literals never applies.
+#include "emit/wgsl_printer.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "ir/walk.hpp"
+
+namespace doublet::emit {
+namespace {
+
+using ir::Base;
+using ir::Expr;
+using ir::Stmt;
+using Kind = ir::Expr::Kind;
+
+// WGSL keywords and reserved words that a GLSL identifier could be (W3C WGSL, 15.2-15.3).
+const std::set<std::string>& wgsl_reserved() {
+  static const std::set<std::string> words = {
+      "alias", "bitcast", "break", "case", "const", "const_assert", "continue", "continuing", "default", "diagnostic",
+      "discard", "else", "enable", "false", "fn", "for", "if", "let", "loop", "override", "requires", "return",
+      "struct", "switch", "true", "var", "while", "array", "atomic", "bool", "f16", "f32", "i32", "u32", "mat2x2",
+      "mat3x3", "mat4x4", "ptr", "sampler", "vec2", "vec3", "vec4", "NULL", "Self", "abstract", "active", "alignas",
+      "alignof", "as", "asm", "async", "attribute", "auto", "await", "become", "cast", "catch", "class", "co_await",
+      "co_return", "co_yield", "coherent", "column_major", "common", "compile", "compile_fragment", "concept",
+      "const_cast", "consteval", "constexpr", "constinit", "crate", "debugger", "decltype", "delete", "demote",
+      "demote_to_helper", "do", "dynamic_cast", "enum", "explicit", "export", "extends", "extern", "external",
+      "fallthrough", "filter", "final", "finally", "friend", "from", "fxgroup", "get", "goto", "groupshared",
+      "highp", "impl", "implements", "import", "inline", "instanceof", "interface", "layout", "lowp", "macro",
+      "macro_rules", "match", "mediump", "meta", "mod", "module", "move", "mut", "mutable", "namespace", "new",
+      "nil", "noexcept", "noinline", "nointerpolation", "non_coherent", "noncoherent", "noperspective", "null",
+      "nullptr", "of", "operator", "package", "packoffset", "partition", "pass", "patch", "pixelfragment",
+      "precise", "precision", "premerge", "priv", "protected", "pub", "public", "readonly", "ref", "regardless",
+      "register", "reinterpret_cast", "require", "resource", "restrict", "self", "set", "shared", "sizeof",
+      "smooth", "snorm", "static", "static_assert", "static_cast", "std", "subroutine", "super", "target",
+      "template", "this", "thread_local", "throw", "trait", "try", "type", "typedef", "typeid", "typename",
+      "typeof", "union", "unless", "unorm", "unsafe", "unsized", "use", "using", "varying", "virtual", "volatile",
+      "wgsl", "where", "with", "writeonly", "yield", "main", "select", "all", "any"};
+  return words;
+}
+
+std::string ident(const std::string& name) { return wgsl_reserved().count(name) ? name + "_" : name; }
+
+// A float literal equal to `value` exactly. WGSL rounds an inexact literal in an implementation-
+// chosen direction, so a decimal is used only where it reads back exactly as a double.
+std::string f32_literal(float value) {
+  char buf[64];
+  for (int precision = 1; precision <= 9; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, static_cast<double>(value));
+    if (std::strtod(buf, nullptr) == static_cast<double>(value)) {
+      std::string s = buf;
+      if (s.find_first_of(".e") == std::string::npos) s += ".0";
+      return s + "f";
+    }
+  }
+  std::snprintf(buf, sizeof buf, "%af", static_cast<double>(value));
+  return buf;
+}
+
+struct Layout {
+  int align = 4, size = 4;
+};
+
+class WgslPrinter {
+ public:
+  WgslPrinter(const ir::Module& m, const std::string& file, const std::string& note) : m_(m), file_(file), note_(note) {
+    out_.imbue(std::locale::classic());
+  }
+
+  WgslPrintResult run() {
+    collect_overloads();
+    for (const auto& t : m_.structs) struct_definition(t);
+    globals();
+    for (const auto& f : m_.functions) function(*f);
+    entry_point();
+    std::string text = helpers_text();
+    return {text + out_.str(), diags_, uniform_buffer_};
+  }
+
+ private:
+  const ir::Module& m_;
+  std::string file_, note_;
+  std::ostringstream out_;
+  std::vector<Diagnostic> diags_;
+  InterfaceVariable uniform_buffer_;
+  std::map<std::string, int> overload_count_;
+  std::set<const ir::Var*> loose_uniforms_, pointer_params_;
+  std::map<const ir::Var*, std::string> block_var_names_;
+  std::map<std::string, std::string> helpers_;  // name -> WGSL text, emitted before the module
+  std::set<std::string> builtins_used_;        // gl_* variables the functions name
+
+  void error(ir::Loc loc, const std::string& msg) {
+    if (!diags_.empty() && diags_.back().line == loc.line && diags_.back().message.rfind(msg, 0) == 0) return;
+    diags_.push_back({file_, loc.line, loc.column, Severity::Error, msg + note_});
+  }
+
+  // ---- types ---------------------------------------------------------------
+  static std::string scalar_name(Base b) {
+    switch (b) {
+      case Base::Bool: return "bool";
+      case Base::Int: return "i32";
+      case Base::Uint: return "u32";
+      default: return "f32";
+    }
+  }
+
+  std::string type(const ir::Type& t, ir::Loc loc = {}) {
+    if (t.is_array()) {
+      ir::Type e = t.element();
+      int n = t.array_dims[0];
+      return "array<" + type(e, loc) + (n > 0 ? ", " + std::to_string(n) : "") + ">";
+    }
+    switch (t.base) {
+      case Base::Struct:
+      case Base::Block: return ident(t.name);
+      case Base::Opaque:
+        error(loc, "'" + t.name + "' cannot be expressed in WGSL by doublet (WGSL separates textures and samplers, "
+                   "and doublet's WGSL target does not translate them yet)");
+        return "f32";
+      case Base::Double: error(loc, "internal error: a double reached the WGSL printer"); return "f32";
+      case Base::Void: return "";
+      default: break;
+    }
+    const std::string s = scalar_name(t.base);
+    if (t.is_matrix()) return "mat" + std::to_string(t.cols) + "x" + std::to_string(t.vec) + "<" + s + ">";
+    if (t.vec > 1) return "vec" + std::to_string(t.vec) + "<" + s + ">";
+    return s;
+  }
+
+  // Host-shareable layout (W3C WGSL 13.4 "Memory Layout"); uniform adds the 16-byte rules.
+  Layout layout_of(const ir::Type& t, bool uniform) {
+    if (t.is_array()) {
+      Layout e = layout_of(t.element(), uniform);
+      int stride = (e.size + e.align - 1) / e.align * e.align;
+      int n = std::max(t.array_dims[0], 1);
+      return {uniform ? std::max(e.align, 16) : e.align, stride * n};
+    }
+    if (t.base == Base::Struct || t.base == Base::Block) {
+      int offset = 0, align = 4;
+      for (const auto& f : *t.fields) {
+        Layout l = layout_of(f.type, uniform);
+        if (uniform && (f.type.base == Base::Struct || f.type.is_array())) l.align = std::max(l.align, 16);
+        offset = (offset + l.align - 1) / l.align * l.align + l.size;
+        align = std::max(align, l.align);
+      }
+      if (uniform) align = std::max(align, 16);
+      return {align, (offset + align - 1) / align * align};
+    }
+    const int rows = t.vec;
+    const int col_align = rows == 1 ? 4 : rows == 2 ? 8 : 16;
+    const int col_size = rows * 4;
+    if (t.is_matrix()) return {col_align, t.cols * col_align};
+    return {col_align, col_size};
+  }
+
+  // ---- declarations --------------------------------------------------------
+  void struct_definition(const ir::Type& t, bool uniform = false) {
+    out_ << "struct " << ident(t.name) << " {\n";
+    for (const auto& f : *t.fields) {
+      out_ << "  ";
+      if (uniform && (f.type.base == Base::Struct || f.type.is_array())) out_ << "@align(16) ";
+      out_ << ident(f.name) << ": " << type(f.type) << ",\n";
+    }
+    out_ << "}\n\n";
+  }
+
+  static bool is_loose_uniform(const ir::Var& v) {
+    return v.storage == ir::Storage::Uniform && !v.block && v.type.base != Base::Block && v.type.base != Base::Opaque;
+  }
+
+  void globals() {
+    int max_binding = -1;
+    for (const auto& g : m_.globals) max_binding = std::max(max_binding, g->layout.binding);
+    std::set<int> bindings;
+    std::vector<ir::VarPtr> loose;
+    for (size_t i = 0; i < m_.globals.size(); ++i) {
+      const ir::VarPtr& v = m_.globals[i];
+      const ir::ExprPtr& init = m_.global_inits[i];
+      if (v->storage == ir::Storage::BuiltIn) continue;
+      if (v->type.base == Base::Opaque) {
+        type(v->type, v->loc);
+        continue;
+      }
+      if (is_loose_uniform(*v)) {
+        loose.push_back(v);
+        loose_uniforms_.insert(v.get());
+        continue;
+      }
+      const std::string name = ident(v->name);
+      switch (v->storage) {
+        case ir::Storage::Const: out_ << "const " << name << ": " << type(v->type, v->loc) << " = " << expr(init) << ";\n"; break;
+        case ir::Storage::Shared: out_ << "var<workgroup> " << name << ": " << type(v->type, v->loc) << ";\n"; break;
+        case ir::Storage::Uniform:
+        case ir::Storage::Buffer: {
+          if (v->type.is_array()) {
+            error(v->loc, "arrays of interface blocks cannot be expressed in WGSL (one binding holds one buffer)");
+            break;
+          }
+          const bool uniform = v->storage == ir::Storage::Uniform;
+          const int binding = std::max(v->layout.binding, 0);
+          if (!bindings.insert(binding).second)
+            error(v->loc, "binding " + std::to_string(binding) +
+                              " is used twice: WGSL has one binding namespace per group; give each block its own binding");
+          struct_definition(v->type, uniform);
+          const bool anonymous = v->name.rfind("anon@", 0) == 0;
+          const std::string var_name = anonymous ? "df_block_" + v->type.name : name;
+          block_var_names_[v.get()] = var_name;
+          out_ << "@group(0) @binding(" << binding << ") var<"
+               << (uniform ? "uniform" : v->readonly ? "storage, read" : "storage, read_write") << "> " << var_name
+               << ": " << ident(v->type.name) << ";\n";
+          break;
+        }
+        case ir::Storage::In:
+        case ir::Storage::Out:
+        case ir::Storage::Global:
+          out_ << "var<private> " << name << ": " << type(v->type, v->loc);
+          if (init) out_ << " = " << expr(init);
+          out_ << ";\n";
+          break;
+        default: break;
+      }
+    }
+    if (!loose.empty()) uniform_struct(loose, max_binding + 1);
+    out_ << "\n";
+  }
+
+  void uniform_struct(const std::vector<ir::VarPtr>& vars, int binding) {
+    uniform_buffer_.name = "df_uniforms";
+    uniform_buffer_.storage = "uniform";
+    uniform_buffer_.type = "df_uniforms";
+    uniform_buffer_.lowered_type = "df_uniforms";
+    uniform_buffer_.lowered_names = {"df_uniforms"};
+    uniform_buffer_.layout = "wgsl-uniform";
+    uniform_buffer_.group = 0;
+    uniform_buffer_.binding = binding;
+    out_ << "struct df_uniforms_t {\n";
+    int offset = 0;
+    for (const auto& v : vars) {
+      if (v->type.base == Base::Bool) error(v->loc, "bool uniform '" + v->name + "': WGSL buffers hold no bool; use int or uint");
+      Layout l = layout_of(v->type, true);
+      if (v->type.is_array() && l.size / std::max(v->type.array_dims[0], 1) % 16 != 0)
+        error(v->loc, "uniform array '" + v->name + "': WGSL's uniform buffers need a 16-byte element stride; use vec4 elements");
+      offset = (offset + l.align - 1) / l.align * l.align;
+      out_ << "  " << (l.align == 16 && (v->type.is_array() || v->type.base == Base::Struct) ? "@align(16) " : "")
+           << ident(v->name) << ": " << type(v->type, v->loc) << ",  // offset " << offset << "\n";
+      BlockMember m;
+      m.name = v->name;
+      m.type = ir::type_name(v->type) + ir::array_suffix(v->type);
+      m.lowered_type = type(v->type);
+      m.offset = offset;
+      m.size = l.size;
+      if (v->type.is_array()) m.array_stride = l.size / std::max(v->type.array_dims[0], 1);
+      if (v->type.is_matrix()) m.matrix_stride = l.size / v->type.cols;
+      uniform_buffer_.members.push_back(m);
+      offset += l.size;
+    }
+    out_ << "}\n@group(0) @binding(" << binding << ") var<uniform> df_uniforms: df_uniforms_t;\n";
+  }
+
+  // ---- functions -----------------------------------------------------------
+  std::string mangled_suffix(const std::vector<ir::Type>& types) {
+    std::string s;
+    for (const auto& t : types) {
+      std::string n = ir::type_name(t);
+      for (int d : t.array_dims) n += "_" + std::to_string(d);
+      s += "_" + n;
+    }
+    return s;
+  }
+
+  void collect_overloads() {
+    for (const auto& f : m_.functions) ++overload_count_[f->name];
+  }
+
+  std::string function_name(const std::string& name, const std::vector<ir::Type>& param_types) {
+    if (name == "main") return "df_main";
+    if (overload_count_[name] > 1) return ident(name) + mangled_suffix(param_types);
+    return ident(name);
+  }
+
+  void function(const ir::Function& f) {
+    std::vector<ir::Type> types;
+    for (const auto& p : f.params) types.push_back(p->type);
+    out_ << "fn " << function_name(f.name, types) << "(";
+    for (size_t i = 0; i < f.params.size(); ++i) {
+      const ir::Var& p = *f.params[i];
+      out_ << (i ? ", " : "") << ident(p.name) << ": ";
+      if (p.storage == ir::Storage::ParamOut || p.storage == ir::Storage::ParamInOut) {
+        pointer_params_.insert(&p);
+        out_ << "ptr<function, " << type(p.type, p.loc) << ">";
+      } else {
+        out_ << type(p.type, p.loc);
+      }
+    }
+    out_ << ")";
+    if (f.return_type.base != Base::Void) out_ << " -> " << type(f.return_type, f.loc);
+    out_ << " {\n";
+    // WGSL parameters are immutable: a parameter the body assigns gets a local copy.
+    std::set<const ir::Var*> assigned;
+    ir::visit(f.body, [&](const ir::ExprPtr& e) {
+      bool assign = (e->kind == Kind::Binary && e->op.back() == '=' && e->op != "==" && e->op != "<=" && e->op != ">=" &&
+                     e->op != "!=") ||
+                    (e->kind == Kind::Unary && e->op.find_first_of("+-") != std::string::npos && e->op.size() == 3);
+      if (!assign) return;
+      ir::ExprPtr root = e->args[0];
+      while (root->kind == Kind::Member || root->kind == Kind::Index) root = root->args[0];
+      if (root->kind == Kind::Sym) assigned.insert(root->var.get());
+    });
+    for (const auto& p : f.params)
+      if (assigned.count(p.get()) && !pointer_params_.count(p.get())) {
+        shadowed_params_.insert(p.get());
+        out_ << "  var " << ident(p->name) << "_v: " << type(p->type) << " = " << ident(p->name) << ";\n";
+      }
+    for (const auto& s : f.body->body) statement(s, 1);
+    out_ << "}\n\n";
+  }
+  std::set<const ir::Var*> shadowed_params_;
+
+  // ---- statements ----------------------------------------------------------
+  void indent(int depth) { out_ << std::string(static_cast<size_t>(depth) * 2, ' '); }
+
+  void block(const ir::StmtPtr& s, int depth) {
+    if (!s) return;
+    if (s->kind == Stmt::Kind::Block)
+      for (const auto& b : s->body) statement(b, depth);
+    else
+      statement(s, depth);
+  }
+
+  // An assignment, increment or call as a WGSL statement (no trailing ';').
+  std::string simple_statement(const ir::ExprPtr& e) {
+    if (e->kind == Kind::Unary && (e->op == "x++" || e->op == "++x" || e->op == "x--" || e->op == "--x")) {
+      const bool inc = e->op.find('+') != std::string::npos;
+      if (e->type.base == Base::Float) return lvalue(e->args[0]) + (inc ? " += 1.0f" : " -= 1.0f");
+      return lvalue(e->args[0]) + (inc ? "++" : "--");
+    }
+    if (e->kind == Kind::Binary && ir::is_compound_arithmetic(e->op) ) return lvalue(e->args[0]) + " " + e->op + " " + expr(e->args[1]);
+    if (e->kind == Kind::Binary && (e->op == "=" || e->op == "%=" || e->op == "&=" || e->op == "|=" || e->op == "^=" ||
+                                    e->op == "<<=" || e->op == ">>=")) {
+      const ir::ExprPtr& target = e->args[0];
+      if (target->kind == Kind::Member && target->name.size() > 1 && target->args[0]->type.base != Base::Struct &&
+          target->args[0]->type.base != Base::Block) {
+        if (e->op != "=") error(e->loc, "compound assignment to a multi-component swizzle cannot be expressed in WGSL");
+        return swizzle_assignment(target, e->args[1]);
+      }
+      std::string rhs = expr(e->args[1]);
+      if (e->op == "<<=" || e->op == ">>=") rhs = shift_amount(e->args[1]);
+      return lvalue(target) + " " + e->op + " " + rhs;
+    }
+    if (e->kind == Kind::Comma) {
+      std::string s;
+      for (size_t i = 0; i < e->args.size(); ++i) s += (i ? "; " : "") + simple_statement(e->args[i]);
+      return s;
+    }
+    if (e->kind == Kind::Call || (e->kind == Kind::Builtin && e->type.base == Base::Void)) return expr(e);
+    if (ir::has_side_effects(e)) {
+      if (e->kind == Kind::Call || e->kind == Kind::Builtin) return "_ = " + expr(e);
+    }
+    return "_ = " + expr(e);
+  }
+
+  // v.xz = e -> { let t = e; v.x = t.x; v.z = t.y; } (WGSL assigns one component at a time).
+  std::string swizzle_assignment(const ir::ExprPtr& target, const ir::ExprPtr& value) {
+    const ir::ExprPtr& base = target->args[0];
+    if (!ir::is_pure(base)) error(target->loc, "assignment to a swizzle of an expression with side effects cannot be expressed in WGSL");
+    std::string tmp = "df_swz" + std::to_string(++temp_counter_);
+    std::string s = "{ let " + tmp + " = " + expr(value) + "; ";
+    static const char* comps = "xyzw";
+    for (size_t i = 0; i < target->name.size(); ++i) {
+      char c = target->name[i];
+      const char* p = std::strchr("xyzwrgbastpq", c);
+      int k = p ? static_cast<int>(p - "xyzwrgbastpq") % 4 : 0;
+      s += lvalue(base) + "." + comps[k] + " = " + tmp + "." + comps[i] + "; ";
+    }
+    return s + "}";
+  }
+  int temp_counter_ = 0;
+
+  void statement(const ir::StmtPtr& s, int depth) {
+    if (!s) return;
+    switch (s->kind) {
+      case Stmt::Kind::Block:
+        indent(depth);
+        out_ << "{\n";
+        block(s, depth + 1);
+        indent(depth);
+        out_ << "}\n";
+        return;
+      case Stmt::Kind::Expr:
+        indent(depth);
+        if (s->expr->kind == Kind::Call && copy_in_out_call(*s->expr)) return;
+        out_ << simple_statement(s->expr) << ";\n";
+        return;
+      case Stmt::Kind::Decl:
+        indent(depth);
+        out_ << "var " << ident(s->var->name) << ": " << type(s->var->type, s->var->loc);
+        if (s->expr) out_ << " = " << expr(s->expr);
+        out_ << ";\n";
+        return;
+      case Stmt::Kind::If:
+        indent(depth);
+        out_ << "if " << condition(s->expr) << " {\n";
+        block(s->body[0], depth + 1);
+        indent(depth);
+        out_ << "}";
+        if (s->body.size() > 1 && s->body[1]) {
+          out_ << " else {\n";
+          block(s->body[1], depth + 1);
+          indent(depth);
+          out_ << "}";
+        }
+        out_ << "\n";
+        return;
+      case Stmt::Kind::Loop: loop(*s, depth); return;
+      case Stmt::Kind::Switch: switch_statement(*s, depth); return;
+      case Stmt::Kind::Case:
+      case Stmt::Kind::Default: error(s->loc, "a case label outside a switch"); return;
+      case Stmt::Kind::Break: indent(depth); out_ << "break;\n"; return;
+      case Stmt::Kind::Continue: indent(depth); out_ << "continue;\n"; return;
+      case Stmt::Kind::Discard: indent(depth); out_ << "discard;\n"; return;
+      case Stmt::Kind::Return:
+        indent(depth);
+        out_ << "return" << (s->expr ? " " + expr(s->expr) : "") << ";\n";
+        return;
+    }
+  }
+
+  std::string condition(const ir::ExprPtr& e) { return "(" + expr(e) + ")"; }
+
+  // for/while: { init; loop { if !(cond) { break; } body; continuing { step } } };
+  // do-while: loop { body; continuing { break if !(cond); } }.
+  void loop(const Stmt& s, int depth) {
+    indent(depth);
+    out_ << "{\n";
+    if (s.body[0]) block(s.body[0], depth + 1);
+    indent(depth + 1);
+    out_ << "loop {\n";
+    if (s.test_first && s.expr) {
+      indent(depth + 2);
+      out_ << "if !" << condition(s.expr) << " { break; }\n";
+    }
+    block(s.body[1], depth + 2);
+    if (s.step || !s.test_first) {
+      indent(depth + 2);
+      out_ << "continuing {\n";
+      if (s.step) {
+        indent(depth + 3);
+        out_ << simple_statement(s.step) << ";\n";
+      }
+      if (!s.test_first) {
+        indent(depth + 3);
+        out_ << "break if !" << condition(s.expr) << ";\n";
+      }
+      indent(depth + 2);
+      out_ << "}\n";
+    }
+    indent(depth + 1);
+    out_ << "}\n";
+    indent(depth);
+    out_ << "}\n";
+  }
+
+  // GLSL's labels and fall-through become WGSL clauses: labels with no statement between them
+  // share a clause; a clause must end in break/return/continue/discard (no fall-through).
+  void switch_statement(const Stmt& s, int depth) {
+    indent(depth);
+    out_ << "switch " << condition(s.expr) << " {\n";
+    const auto& items = s.body[0]->body;
+    bool has_default = false;
+    for (size_t i = 0; i < items.size();) {
+      std::vector<std::string> labels;
+      ir::Loc at = items[i]->loc;
+      while (i < items.size() && (items[i]->kind == Stmt::Kind::Case || items[i]->kind == Stmt::Kind::Default)) {
+        labels.push_back(items[i]->kind == Stmt::Kind::Default ? "default" : expr(items[i]->expr));
+        has_default |= items[i]->kind == Stmt::Kind::Default;
+        ++i;
+      }
+      std::vector<ir::StmtPtr> body;
+      while (i < items.size() && items[i]->kind != Stmt::Kind::Case && items[i]->kind != Stmt::Kind::Default)
+        body.push_back(items[i++]);
+      if (labels.empty()) {
+        error(at, "statements before the first case label");
+        continue;
+      }
+      const bool ends = !body.empty() && ends_in_jump(body.back());
+      if (!ends && i < items.size())
+        error(at, "a switch case that falls through into the next cannot be expressed in WGSL; end it with 'break'");
+      if (!body.empty() && body.back()->kind == Stmt::Kind::Break) body.pop_back();
+      indent(depth + 1);
+      std::string joined;
+      for (size_t k = 0; k < labels.size(); ++k) joined += (k ? ", " : "") + labels[k];
+      out_ << (labels.size() == 1 && labels[0] == "default" ? "default" : "case " + joined) << ": {\n";
+      for (const auto& b : body) statement(b, depth + 2);
+      indent(depth + 1);
+      out_ << "}\n";
+    }
+    if (!has_default) {
+      indent(depth + 1);
+      out_ << "default: {}\n";
+    }
+    indent(depth);
+    out_ << "}\n";
+  }
+
+  // ir::has_side_effects, except that a call of a float-float runtime function (they write no
+  // global and have no out parameters, apart from df_assign_component_*) has none of its own.
+  bool has_effects(const ir::ExprPtr& e) {
+    if (e->kind == Kind::Call && e->name.rfind("doublet_rt_", 0) == 0) {
+      const ir::Function* f = callee_of(*e);
+      if (!f) return true;
+      for (const auto& p : f->params)
+        if (p->storage != ir::Storage::ParamIn) return true;
+      for (const auto& a : e->args)
+        if (has_effects(a)) return true;
+      return false;
+    }
+    if (e->kind == Kind::Call || e->kind == Kind::Sym || e->kind == Kind::Const) return ir::has_side_effects(e);
+    if (e->kind == Kind::Binary || e->kind == Kind::Unary || e->kind == Kind::Builtin) {
+      auto shallow = std::make_shared<Expr>(*e);
+      shallow->args.clear();
+      for (const auto& a : e->args) {
+        if (has_effects(a)) return true;
+        shallow->args.push_back(ir::Expr::make(Kind::Const, a->type));
+        shallow->args.back()->values.resize(1);
+      }
+      return ir::has_side_effects(shallow);
+    }
+    for (const auto& a : e->args)
+      if (has_effects(a)) return true;
+    return false;
+  }
+
+  static bool ends_in_jump(const ir::StmtPtr& s) {
+    if (s->kind == Stmt::Kind::Block) return !s->body.empty() && ends_in_jump(s->body.back());
+    return s->kind == Stmt::Kind::Break || s->kind == Stmt::Kind::Return || s->kind == Stmt::Kind::Continue ||
+           s->kind == Stmt::Kind::Discard;
+  }
+
+  // ---- expressions ---------------------------------------------------------
+  std::string lvalue(const ir::ExprPtr& e) { return expr(e); }
+
+  std::string symbol(const ir::Var& v) {
+    if (pointer_params_.count(&v)) return "(*" + ident(v.name) + ")";
+    if (shadowed_params_.count(&v)) return ident(v.name) + "_v";
+    if (loose_uniforms_.count(&v)) return "df_uniforms." + ident(v.name);
+    if (v.block) {
+      auto it = block_var_names_.find(v.block.get());
+      return (it != block_var_names_.end() ? it->second : ident(v.block->name)) + "." + ident(v.name);
+    }
+    if (auto it = block_var_names_.find(&v); it != block_var_names_.end()) return it->second;
+    if (v.storage == ir::Storage::BuiltIn) {
+      builtins_used_.insert(v.name);
+      if (v.name == "gl_WorkGroupSize")
+        return "vec3<u32>(" + std::to_string(m_.local_size[0]) + "u, " + std::to_string(std::max(m_.local_size[1], 1)) +
+               "u, " + std::to_string(std::max(m_.local_size[2], 1)) + "u)";
+      return "df_" + v.name.substr(3);
+    }
+    return ident(v.name);
+  }
+
+  std::string scalar(const ir::Scalar& v, Base base) {
+    switch (base) {
+      case Base::Bool: return v.b ? "true" : "false";
+      case Base::Int:
+        if (v.i == -2147483648LL) return "i32(-2147483647i - 1i)";
+        return v.i < 0 ? "(" + std::to_string(v.i) + "i)" : std::to_string(v.i) + "i";
+      case Base::Uint: return std::to_string(static_cast<unsigned long long>(v.i) & 0xffffffffULL) + "u";
+      default: {
+        const float f = static_cast<float>(v.d);
+        if (std::isnan(f)) return nonfinite("0x7fc00000u");
+        if (std::isinf(f)) return nonfinite(f > 0 ? "0x7f800000u" : "0xff800000u");
+        std::string s = f32_literal(f);
+        return f < 0 || std::signbit(f) ? "(" + s + ")" : s;
+      }
+    }
+  }
+
+  // WGSL's constant evaluation rejects infinities and NaNs: they come from bits read at run time.
+  std::string nonfinite(const std::string& bits) {
+    helpers_["df_bits_u32"] = "fn df_bits_u32(bits: u32) -> f32 {\n  var b = bits;\n  return bitcast<f32>(b);\n}\n";
+    return "df_bits_u32(" + bits + ")";
+  }
+
+  std::string constant(const ir::Type& t, const std::vector<ir::Scalar>& values, size_t& at) {
+    if (t.is_array()) {
+      std::string s = type(t) + "(";
+      for (int i = 0; i < t.array_dims[0]; ++i) s += (i ? ", " : "") + constant(t.element(), values, at);
+      return s + ")";
+    }
+    if (t.base == Base::Struct) {
+      std::string s = ident(t.name) + "(";
+      for (size_t i = 0; i < t.fields->size(); ++i) s += (i ? ", " : "") + constant((*t.fields)[i].type, values, at);
+      return s + ")";
+    }
+    const int n = t.vec * std::max(t.cols, 1);
+    if (n == 1) return at < values.size() ? scalar(values[at++], t.base) : "0";
+    std::string s = type(t) + "(";
+    for (int i = 0; i < n; ++i) s += (i ? ", " : "") + (at < values.size() ? scalar(values[at++], t.base) : "0");
+    return s + ")";
+  }
+
+  std::string binary(const Expr& e) {
+    const std::string& op = e.op;
+    const ir::Type& lt = e.args[0]->type;
+    const ir::Type& rt = e.args[1]->type;
+    if (op.size() >= 2 && op.back() == '=' && op != "==" && op != "!=" && op != "<=" && op != ">=") {
+      error(e.loc, "an assignment inside an expression cannot be expressed in WGSL; make it a statement of its own");
+      return "0";
+    }
+    std::string a = expr(e.args[0]), b = expr(e.args[1]);
+    if (op == "^^") return "(" + a + " != " + b + ")";
+    if (op == "<<" || op == ">>") return "(" + a + " " + op + " " + shift_amount(e.args[1]) + ")";
+    if ((op == "==" || op == "!=") && (lt.base == Base::Struct || lt.is_array())) {
+      error(e.loc, "comparing structs or arrays with '" + op + "' cannot be expressed in WGSL; compare the members");
+      return "false";
+    }
+    if ((op == "==" || op == "!=") && lt.is_matrix()) {
+      std::string s;
+      for (int c = 0; c < lt.cols; ++c)
+        s += (c ? " && " : "") + std::string("all(") + a + "[" + std::to_string(c) + "] == " + b + "[" + std::to_string(c) + "])";
+      return op == "==" ? "(" + s + ")" : "!(" + s + ")";
+    }
+    if ((op == "==" || op == "!=") && lt.vec > 1) return std::string(op == "==" ? "all" : "any") + "(" + a + " " + op + " " + b + ")";
+    if (op == "%" && (lt.base == Base::Float || rt.base == Base::Float)) {
+      error(e.loc, "'%' on floats");
+      return "0";
+    }
+    return "(" + a + " " + op + " " + b + ")";
+  }
+
+  // WGSL shifts by u32 (or vecN<u32>) only.
+  std::string shift_amount(const ir::ExprPtr& e) {
+    if (e->type.base == Base::Uint) return expr(e);
+    return (e->type.vec > 1 ? "vec" + std::to_string(e->type.vec) + "<u32>(" : std::string("u32(")) + expr(e) + ")";
+  }
+
+  std::string args_text(const std::vector<ir::ExprPtr>& args, size_t from = 0) {
+    std::string s;
+    for (size_t i = from; i < args.size(); ++i) s += (i > from ? ", " : "") + expr(args[i]);
+    return s;
+  }
+
+  const ir::Function* callee_of(const Expr& e) {
+    for (const auto& f : m_.functions) {
+      if (f->name != e.name || f->params.size() != e.args.size()) continue;
+      bool same = true;
+      for (size_t i = 0; i < f->params.size(); ++i)
+        same &= ir::type_name(f->params[i]->type) == ir::type_name(e.args[i]->type) &&
+                f->params[i]->type.array_dims == e.args[i]->type.array_dims;
+      if (same) return f.get();
+    }
+    return nullptr;
+  }
+
+  static bool is_local_root(const ir::ExprPtr& arg) {
+    return arg->kind == Kind::Sym && (arg->var->storage == ir::Storage::Local || arg->var->storage == ir::Storage::ParamIn ||
+                                      arg->var->storage == ir::Storage::ParamOut || arg->var->storage == ir::Storage::ParamInOut);
+  }
+
+  // f(buffer[i], ...) as a statement, where an out/inout argument is not a local variable: WGSL
+  // pointers to function memory only, so the argument is copied to a local and back (GLSL's own
+  // copy-in/copy-out semantics for out parameters).
+  bool copy_in_out_call(const Expr& e) {
+    const ir::Function* callee = callee_of(e);
+    if (!callee) return false;
+    std::vector<size_t> copied;
+    for (size_t i = 0; i < e.args.size(); ++i) {
+      const auto st = callee->params[i]->storage;
+      if ((st == ir::Storage::ParamOut || st == ir::Storage::ParamInOut) && !is_local_root(e.args[i])) copied.push_back(i);
+    }
+    if (copied.empty()) return false;
+    auto rewritten = std::make_shared<Expr>(e);
+    out_ << "{\n";
+    std::vector<std::pair<std::string, ir::ExprPtr>> back;
+    for (size_t i : copied) {
+      if (!ir::is_pure(e.args[i])) {
+        error(e.args[i]->loc, "an out/inout argument with side effects cannot be expressed in WGSL; assign it to a local first");
+        continue;
+      }
+      auto tmp = std::make_shared<ir::Var>();
+      tmp->name = "df_arg" + std::to_string(++temp_counter_);
+      tmp->type = e.args[i]->type;
+      tmp->storage = ir::Storage::Local;
+      out_ << "  var " << tmp->name << ": " << type(tmp->type) << " = " << expr(e.args[i]) << ";\n";
+      auto sym = ir::Expr::make(Kind::Sym, tmp->type, e.args[i]->loc);
+      sym->var = tmp;
+      back.emplace_back(lvalue(e.args[i]), sym);
+      rewritten->args[i] = sym;
+    }
+    out_ << "  " << call(*rewritten) << ";\n";
+    for (const auto& [target, sym] : back) out_ << "  " << target << " = " << sym->var->name << ";\n";
+    out_ << "}\n";
+    return true;
+  }
+
+  std::string call(const Expr& e) {
+    std::vector<ir::Type> types;
+    for (const auto& a : e.args) types.push_back(a->type);
+    const ir::Function* callee = callee_of(e);
+    std::string s = function_name(e.name, types) + "(";
+    for (size_t i = 0; i < e.args.size(); ++i) {
+      s += i ? ", " : "";
+      const bool pointer = callee && (callee->params[i]->storage == ir::Storage::ParamOut ||
+                                      callee->params[i]->storage == ir::Storage::ParamInOut);
+      if (!pointer) {
+        s += expr(e.args[i]);
+        continue;
+      }
+      ir::ExprPtr root = e.args[i];
+      while (root->kind == Kind::Index || (root->kind == Kind::Member && root->args[0]->type.base == Base::Struct))
+        root = root->args[0];
+      const bool local = is_local_root(e.args[i]);
+      if (!local)
+        error(e.args[i]->loc, "an out/inout argument that is not a whole local variable cannot be expressed in WGSL "
+                              "(a pointer must point to function memory); pass a local variable and copy it");
+      if (root->kind == Kind::Sym && pointer_params_.count(root->var.get()))
+        s += ident(root->var->name);
+      else
+        s += "&" + expr(e.args[i]);
+    }
+    return s + ")";
+  }
+
+  std::string splat(const ir::ExprPtr& a, const ir::Type& like) {
+    if (a->type.vec == like.vec || like.is_matrix()) return expr(a);
+    ir::Type t = like;
+    t.base = a->type.base;
+    return type(t) + "(" + expr(a) + ")";
+  }
+
+  std::string bits_helper(const std::string& name, const ir::Type& t, const std::string& body_op) {
+    const std::string tn = type(t);
+    ir::Type u = t;
+    u.base = Base::Uint;
+    ir::Type b = t;
+    b.base = Base::Bool;
+    const std::string key = name + "_" + std::to_string(t.vec);
+    const std::string fn = "df_" + name + (t.vec > 1 ? std::to_string(t.vec) : "");
+    helpers_[key] = "fn " + fn + "(x: " + tn + ") -> " + type(b) + " {\n  let m = bitcast<" + type(u) + ">(x) & " + type(u) +
+                    "(0x7fffffffu);\n  return m " + body_op + " " + type(u) + "(0x7f800000u);\n}\n";
+    return fn;
+  }
+
+  std::string builtin(const Expr& e) {
+    const std::string& n = e.name;
+    const auto& a = e.args;
+    static const std::map<std::string, std::string> renamed = {
+        {"inversesqrt", "inverseSqrt"}, {"dFdx", "dpdx"},          {"dFdy", "dpdy"},
+        {"roundEven", "round"},         {"bitCount", "countOneBits"}, {"findLSB", "firstTrailingBit"},
+        {"findMSB", "firstLeadingBit"}, {"bitfieldReverse", "reverseBits"}, {"bitfieldExtract", "extractBits"},
+        {"bitfieldInsert", "insertBits"}, {"packHalf2x16", "pack2x16float"}, {"unpackHalf2x16", "unpack2x16float"},
+        {"packUnorm2x16", "pack2x16unorm"}, {"unpackUnorm2x16", "unpack2x16unorm"}, {"packSnorm2x16", "pack2x16snorm"},
+        {"unpackSnorm2x16", "unpack2x16snorm"}, {"packUnorm4x8", "pack4x8unorm"}, {"unpackUnorm4x8", "unpack4x8unorm"},
+        {"packSnorm4x8", "pack4x8snorm"}, {"unpackSnorm4x8", "unpack4x8snorm"}, {"barrier", "workgroupBarrier"},
+        {"memoryBarrierShared", "workgroupBarrier"}, {"groupMemoryBarrier", "workgroupBarrier"},
+        {"memoryBarrierBuffer", "storageBarrier"}, {"memoryBarrier", "storageBarrier"}, {"fwidth", "fwidth"}};
+    static const std::set<std::string> same = {
+        "abs", "sign", "floor", "ceil", "fract", "trunc", "round", "sqrt", "exp", "exp2", "log", "log2", "pow", "sin",
+        "cos", "tan", "asin", "acos", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "length", "distance", "dot",
+        "cross", "normalize", "reflect", "refract", "faceForward", "transpose", "determinant", "all", "any", "fma",
+        "ldexp", "radians", "degrees"};
+    static const std::set<std::string> splatting = {"min", "max", "clamp", "step", "smoothstep"};
+    static const std::map<std::string, std::string> comparisons = {
+        {"lessThan", "<"}, {"lessThanEqual", "<="}, {"greaterThan", ">"}, {"greaterThanEqual", ">="},
+        {"equal", "=="}, {"notEqual", "!="}};
+    if (n == "length" && a.size() == 1 && a[0]->type.is_array()) {
+      if (a[0]->type.array_dims[0] > 0) return std::to_string(a[0]->type.array_dims[0]) + "i";
+      return "i32(arrayLength(&" + expr(a[0]) + "))";
+    }
+    if (auto it = comparisons.find(n); it != comparisons.end()) return "(" + expr(a[0]) + " " + it->second + " " + expr(a[1]) + ")";
+    if (n == "not") return "!(" + expr(a[0]) + ")";
+    if (n == "atan") return a.size() == 2 ? "atan2(" + args_text(a) + ")" : "atan(" + expr(a[0]) + ")";
+    if (n == "floatBitsToUint" || n == "floatBitsToInt" || n == "uintBitsToFloat" || n == "intBitsToFloat")
+      return "bitcast<" + type(e.type) + ">(" + expr(a[0]) + ")";
+    if (n == "mod") {
+      const ir::Type& t = e.type;
+      const std::string key = "mod_" + type(t) + "_" + type(a[1]->type);
+      const std::string fn = "df_mod" + mangled_suffix({t, a[1]->type});
+      helpers_[key] = "fn " + fn + "(x: " + type(t) + ", y: " + type(a[1]->type) + ") -> " + type(t) +
+                      " {\n  return x - y * floor(x / y);\n}\n";
+      return fn + "(" + args_text(a) + ")";
+    }
+    if (n == "isnan") return bits_helper("isnan", a[0]->type, ">") + "(" + expr(a[0]) + ")";
+    if (n == "isinf") return bits_helper("isinf", a[0]->type, "==") + "(" + expr(a[0]) + ")";
+    if (n == "mix" && a.size() == 3 && a[2]->type.base == Base::Bool)
+      return "select(" + expr(a[0]) + ", " + expr(a[1]) + ", " + expr(a[2]) + ")";
+    if (n == "mix") return "mix(" + expr(a[0]) + ", " + expr(a[1]) + ", " + expr(a[2]) + ")";
+    if (splatting.count(n)) {
+      std::string s = n + "(";
+      for (size_t i = 0; i < a.size(); ++i) s += (i ? ", " : "") + splat(a[i], e.type);
+      return s + ")";
+    }
+    if (same.count(n)) return n + "(" + args_text(a) + ")";
+    if (auto it = renamed.find(n); it != renamed.end()) return it->second + "(" + args_text(a) + ")";
+    error(e.loc, "the built-in function '" + n + "' has no WGSL translation in doublet");
+    return "0";
+  }
+
+  std::string construct(const Expr& e) {
+    const ir::Type& t = e.type;
+    const auto& a = e.args;
+    if (t.base == Base::Struct || t.is_array()) return type(t, e.loc) + "(" + args_text(a) + ")";
+    if (t.is_matrix()) {
+      if (a.size() == 1 && a[0]->type.vec == 1 && !a[0]->type.is_matrix()) {
+        // GLSL: a scalar on the diagonal.
+        std::string s = type(t) + "(";
+        for (int c = 0; c < t.cols; ++c)
+          for (int r = 0; r < t.vec; ++r) s += std::string(c || r ? ", " : "") + (c == r ? expr(a[0]) : "0.0f");
+        return s + ")";
+      }
+      if (a.size() == 1 && a[0]->type.is_matrix() && (a[0]->type.cols != t.cols || a[0]->type.vec != t.vec)) {
+        error(e.loc, "a matrix built from a matrix of another shape cannot be expressed in WGSL");
+        return "0";
+      }
+      return type(t) + "(" + args_text(a) + ")";
+    }
+    // A vector or scalar from a larger vector: GLSL drops the extra components, WGSL does not.
+    if (a.size() == 1 && a[0]->type.vec > t.vec && !a[0]->type.is_matrix()) {
+      static const char* comps = "xyzw";
+      const std::string part = t.vec == 1 ? "x" : std::string(comps, static_cast<size_t>(t.vec));
+      const std::string inner = expr(a[0]) + "." + part;
+      return a[0]->type.base == t.base ? inner : type(t) + "(" + inner + ")";
+    }
+    if (a.size() == 1 && a[0]->type.base == t.base && a[0]->type.vec == t.vec) return expr(a[0]);
+    // Mixed scalar bases inside a vector constructor: convert each argument first.
+    std::string s = type(t) + "(";
+    for (size_t i = 0; i < a.size(); ++i) {
+      std::string part = expr(a[i]);
+      if (a[i]->type.base != t.base && a.size() > 1) {
+        ir::Type conv = a[i]->type;
+        conv.base = t.base;
+        part = type(conv) + "(" + part + ")";
+      }
+      s += (i ? ", " : "") + part;
+    }
+    return s + ")";
+  }
+
+  std::string expr(const ir::ExprPtr& e) {
+    if (!e) return "";
+    switch (e->kind) {
+      case Kind::Sym: return symbol(*e->var);
+      case Kind::Const: {
+        size_t at = 0;
+        return constant(e->type, e->values, at);
+      }
+      case Kind::Unary: {
+        const std::string& op = e->op;
+        if (op.size() == 3) {
+          error(e->loc, "'" + op + "' inside an expression cannot be expressed in WGSL; make it a statement of its own");
+          return "0";
+        }
+        return op + "(" + expr(e->args[0]) + ")";
+      }
+      case Kind::Binary: return binary(*e);
+      case Kind::Ternary: {
+        const ir::Type& t = e->type;
+        if (has_effects(e->args[1]) || has_effects(e->args[2]))
+          error(e->loc, "a ?: whose branches have side effects cannot be expressed in WGSL (select evaluates both); "
+                        "use if/else");
+        std::string c = expr(e->args[0]);
+        if (t.base == Base::Struct || t.is_array() || t.is_matrix()) {
+          // select() takes scalars and vectors only: a helper evaluates both operands the same way.
+          const std::string tn = type(t, e->loc);
+          std::string fn = "df_select_" + tn;
+          for (char& ch : fn)
+            if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+          helpers_[fn] = "fn " + fn + "(f: " + tn + ", t: " + tn + ", c: bool) -> " + tn +
+                         " {\n  if c {\n    return t;\n  }\n  return f;\n}\n";
+          return fn + "(" + expr(e->args[2]) + ", " + expr(e->args[1]) + ", " + c + ")";
+        }
+        if (t.vec > 1) c = "vec" + std::to_string(t.vec) + "<bool>(" + c + ")";
+        return "select(" + expr(e->args[2]) + ", " + expr(e->args[1]) + ", " + c + ")";
+      }
+      case Kind::Call: return call(*e);
+      case Kind::Builtin: return builtin(*e);
+      case Kind::Construct: return construct(*e);
+      case Kind::Member: return expr(e->args[0]) + "." + (e->args[0]->type.base == Base::Struct ||
+                                                                  e->args[0]->type.base == Base::Block
+                                                              ? ident(e->name)
+                                                              : e->name);
+      case Kind::Index: {
+        std::string index = expr(e->args[1]);
+        return expr(e->args[0]) + "[" + index + "]";
+      }
+      case Kind::Comma:
+        error(e->loc, "a comma expression inside an expression cannot be expressed in WGSL");
+        return "0";
+    }
+    return "0";
+  }
+
+  // ---- entry point ---------------------------------------------------------
+  struct BuiltinIo {
+    const char* glsl;
+    const char* wgsl;
+    const char* wgsl_type;  // the attribute's type
+    const char* private_type;
+    const char* convert;  // printf-like conversion from wgsl_type to private_type ("%s" when none)
+  };
+
+  void entry_point() {
+    static const BuiltinIo inputs[] = {
+        {"gl_GlobalInvocationID", "global_invocation_id", "vec3<u32>", "vec3<u32>", ""},
+        {"gl_LocalInvocationID", "local_invocation_id", "vec3<u32>", "vec3<u32>", ""},
+        {"gl_WorkGroupID", "workgroup_id", "vec3<u32>", "vec3<u32>", ""},
+        {"gl_NumWorkGroups", "num_workgroups", "vec3<u32>", "vec3<u32>", ""},
+        {"gl_LocalInvocationIndex", "local_invocation_index", "u32", "u32", ""},
+        {"gl_VertexID", "vertex_index", "u32", "i32", "i32"},
+        {"gl_VertexIndex", "vertex_index", "u32", "i32", "i32"},
+        {"gl_InstanceID", "instance_index", "u32", "i32", "i32"},
+        {"gl_InstanceIndex", "instance_index", "u32", "i32", "i32"},
+        {"gl_FragCoord", "position", "vec4<f32>", "vec4<f32>", ""},
+        {"gl_FrontFacing", "front_facing", "bool", "bool", ""},
+    };
+    const bool vertex = m_.stage == ir::StageKind::Vertex, fragment = m_.stage == ir::StageKind::Fragment;
+    std::vector<std::string> params, copies, outputs, out_values;
+    std::set<std::string> seen_builtin_attr;
+    for (const auto& io : inputs) {
+      if (!builtins_used_.count(io.glsl)) continue;
+      if (fragment && std::string(io.glsl) == "gl_FragCoord") {}
+      out_ << "var<private> df_" << (io.glsl + 3) << ": " << io.private_type << ";\n";
+      const std::string param = std::string("df_in_") + io.wgsl;
+      if (seen_builtin_attr.insert(io.wgsl).second) params.push_back("@builtin(" + std::string(io.wgsl) + ") " + param + ": " + io.wgsl_type);
+      copies.push_back("df_" + std::string(io.glsl + 3) + " = " + (*io.convert ? std::string(io.convert) + "(" + param + ")" : param));
+    }
+    for (const auto& name : builtins_used_) {
+      bool known = name == "gl_WorkGroupSize" || name == "gl_Position" || name == "gl_FragDepth";
+      for (const auto& io : inputs) known |= name == io.glsl;
+      if (!known) error({}, "the built-in variable '" + name + "' has no WGSL translation in doublet");
+    }
+    int in_location = 0, out_location = 0;
+    for (const auto& g : m_.globals) {
+      if (g->storage == ir::Storage::In && !vertex && !fragment) continue;
+      if (g->storage == ir::Storage::In) {
+        int loc = g->layout.location >= 0 ? g->layout.location : in_location;
+        in_location = loc + 1;
+        const bool flat = g->type.base != Base::Float || g->interp == ir::Interp::Flat;
+        params.push_back("@location(" + std::to_string(loc) + ")" + (flat && fragment ? " @interpolate(flat)" : "") +
+                         " df_in_" + g->name + ": " + type(g->type, g->loc));
+        copies.push_back(ident(g->name) + " = df_in_" + g->name);
+      } else if (g->storage == ir::Storage::Out) {
+        int loc = g->layout.location >= 0 ? g->layout.location : out_location;
+        out_location = loc + 1;
+        const bool flat = g->type.base != Base::Float || g->interp == ir::Interp::Flat;
+        outputs.push_back("@location(" + std::to_string(loc) + ")" + (flat && vertex ? " @interpolate(flat)" : "") + " " +
+                          ident(g->name) + ": " + type(g->type, g->loc));
+        out_values.push_back(ident(g->name));
+      }
+    }
+    if (vertex) {
+      out_ << "var<private> df_Position: vec4<f32>;\n";
+      outputs.insert(outputs.begin(), "@builtin(position) gl_Position: vec4<f32>");
+      out_values.insert(out_values.begin(), "df_Position");
+    }
+    if (fragment && builtins_used_.count("gl_FragDepth")) {
+      out_ << "var<private> df_FragDepth: f32;\n";
+      outputs.push_back("@builtin(frag_depth) gl_FragDepth: f32");
+      out_values.push_back("df_FragDepth");
+    }
+    if (!outputs.empty()) {
+      out_ << "\nstruct df_stage_out {\n";
+      for (const auto& o : outputs) out_ << "  " << o << ",\n";
+      out_ << "}\n";
+    }
+    out_ << "\n";
+    if (m_.stage == ir::StageKind::Compute)
+      out_ << "@compute @workgroup_size(" << std::max(m_.local_size[0], 1) << ", " << std::max(m_.local_size[1], 1) << ", "
+           << std::max(m_.local_size[2], 1) << ")\n";
+    else
+      out_ << (vertex ? "@vertex\n" : "@fragment\n");
+    out_ << "fn main(";
+    for (size_t i = 0; i < params.size(); ++i) out_ << (i ? ", " : "") << params[i];
+    out_ << ")" << (outputs.empty() ? "" : " -> df_stage_out") << " {\n";
+    for (const auto& c : copies) out_ << "  " << c << ";\n";
+    out_ << "  df_main();\n";
+    if (!outputs.empty()) {
+      out_ << "  return df_stage_out(";
+      for (size_t i = 0; i < out_values.size(); ++i) out_ << (i ? ", " : "") << out_values[i];
+      out_ << ");\n";
+    }
+    out_ << "}\n";
+  }
+
+  std::string helpers_text() {
+    std::string s;
+    for (const auto& [name, text] : helpers_) s += text + "\n";
+    return s;
+  }
+};
+
+}  // namespace
+
+WgslPrintResult print_wgsl(const ir::Module& module, const std::string& file_name, const std::string& position_note) {
+  return WgslPrinter(module, file_name, position_note).run();
+}
+
+}  // namespace doublet::emit

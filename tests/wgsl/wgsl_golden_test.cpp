@@ -1,0 +1,117 @@
+// Golden tests of `--target wgsl`: every tests/wgsl/cases/<name>.<vert|frag|comp> is lowered to
+// WGSL and compared byte for byte with expected/<name>.<stage>.wgsl; a case the target refuses
+// has expected/<name>.<stage>.errors instead (the formatted diagnostics). The expected WGSL is
+// compiled by a real WGSL front end (Chromium's WebGPU) in wgsl_browser_test.cpp.
+//   DOUBLET_UPDATE_GOLDEN=1 ctest --test-dir build -R '^wgsl_golden\.'   rewrites the expected files.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kDir = DOUBLET_WGSL_DIR;
+
+std::string read(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> cases() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(kDir / "cases")) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class WgslGolden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(WgslGolden, Matches) {
+  const std::string file = GetParam();
+  const std::string stage_name = file.substr(file.rfind('.') + 1);
+  doublet::Options options;
+  options.stage = doublet::parse_stage(stage_name);
+  options.target = doublet::Target::Wgsl;
+  options.file_name = "cases/" + file;
+  doublet::Result result = doublet::lower(read(kDir / "cases" / file), options);
+  std::string diagnostics;
+  for (const auto& d : result.diagnostics)
+    if (d.severity == doublet::Severity::Error) diagnostics += doublet::format_diagnostic(d) + "\n";
+  const fs::path wgsl = kDir / "expected" / (file + ".wgsl"), errors = kDir / "expected" / (file + ".errors");
+  const bool update = std::getenv("DOUBLET_UPDATE_GOLDEN") && std::string(std::getenv("DOUBLET_UPDATE_GOLDEN")) == "1";
+  if (update) {
+    fs::remove(wgsl);
+    fs::remove(errors);
+    std::ofstream(result.ok ? wgsl : errors, std::ios::binary) << (result.ok ? result.output : diagnostics);
+    return;
+  }
+  if (fs::exists(errors)) {
+    EXPECT_FALSE(result.ok) << "expected errors, got WGSL";
+    EXPECT_EQ(read(errors), diagnostics);
+    // Every refusal is positioned: file:line:col: error:
+    std::istringstream lines(diagnostics);
+    for (std::string line; std::getline(lines, line);)
+      EXPECT_TRUE(std::regex_search(line, std::regex(R"(^cases/[^:]+:\d+:\d+: error: )"))) << line;
+    return;
+  }
+  ASSERT_TRUE(result.ok) << diagnostics;
+  EXPECT_EQ(result.manifest.target, "wgsl");
+  EXPECT_EQ(read(wgsl), result.output) << "update with DOUBLET_UPDATE_GOLDEN=1 and review the diff";
+  // WGSL has no f64 and doublet never prints a double in it.
+  EXPECT_EQ(result.output.find("f64"), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, WgslGolden, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string s = info.param;
+                           for (char& c : s)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return s;
+                         });
+
+// The loose uniforms (the guard among them) are one uniform buffer whose place the manifest gives.
+TEST(WgslManifest, UniformBufferBindingAndOffsets) {
+  doublet::Options options;
+  options.stage = doublet::Stage::Compute;
+  options.target = doublet::Target::Wgsl;
+  doublet::Result result = doublet::lower(read(kDir / "cases" / "add_dvec2.comp"), options);
+  ASSERT_TRUE(result.ok);
+  const auto& vars = result.manifest.variables;
+  auto it = std::find_if(vars.begin(), vars.end(), [](const auto& v) { return v.name == "df_uniforms"; });
+  ASSERT_NE(it, vars.end()) << result.manifest.to_json();
+  EXPECT_EQ(it->group, 0);
+  EXPECT_EQ(it->binding, 1);  // after the storage buffer at binding 0
+  ASSERT_EQ(it->members.size(), 5u);  // a_hi a_lo b_hi b_lo df_guard
+  const int offsets[] = {0, 8, 16, 24, 32};
+  for (size_t k = 0; k < 5; ++k) EXPECT_EQ(it->members[k].offset, offsets[k]) << it->members[k].name;
+  EXPECT_EQ(it->members[4].name, "df_guard");
+  EXPECT_NE(result.manifest.to_json().find("\"binding\": 1"), std::string::npos);
+}
+
+TEST(WgslTarget, PreciseGuardAndNativeModeAreRefused) {
+  doublet::Options options;
+  options.stage = doublet::Stage::Compute;
+  options.target = doublet::Target::Wgsl;
+  options.guard = doublet::GuardKind::Precise;
+  auto r = doublet::lower("#version 450\nlayout(local_size_x=1) in;\nvoid main(){}\n", options);
+  EXPECT_FALSE(r.ok);
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_NE(r.diagnostics[0].message.find("no 'precise'"), std::string::npos);
+  options.guard = doublet::GuardKind::Auto;
+  options.mode = doublet::Mode::Native;
+  r = doublet::lower("#version 450\nlayout(local_size_x=1) in;\nvoid main(){}\n", options);
+  EXPECT_FALSE(r.ok);
+}
+
+}  // namespace
