@@ -556,6 +556,13 @@ class WgslPrinter {
   std::string lvalue(const ir::ExprPtr& e) { return expr(e); }
 
   std::string symbol(const ir::Var& v) {
+    if (v.storage == ir::Storage::BuiltIn) {
+      builtins_used_.insert(v.name);
+      if (v.name == "gl_WorkGroupSize")
+        return "vec3<u32>(" + std::to_string(m_.local_size[0]) + "u, " + std::to_string(std::max(m_.local_size[1], 1)) +
+               "u, " + std::to_string(std::max(m_.local_size[2], 1)) + "u)";
+      return "df_" + v.name.substr(3);
+    }
     if (pointer_params_.count(&v)) return "(*" + ident(v.name) + ")";
     if (shadowed_params_.count(&v)) return ident(v.name) + "_v";
     if (loose_uniforms_.count(&v)) return "df_uniforms." + ident(v.name);
@@ -564,13 +571,6 @@ class WgslPrinter {
       return (it != block_var_names_.end() ? it->second : ident(v.block->name)) + "." + ident(v.name);
     }
     if (auto it = block_var_names_.find(&v); it != block_var_names_.end()) return it->second;
-    if (v.storage == ir::Storage::BuiltIn) {
-      builtins_used_.insert(v.name);
-      if (v.name == "gl_WorkGroupSize")
-        return "vec3<u32>(" + std::to_string(m_.local_size[0]) + "u, " + std::to_string(std::max(m_.local_size[1], 1)) +
-               "u, " + std::to_string(std::max(m_.local_size[2], 1)) + "u)";
-      return "df_" + v.name.substr(3);
-    }
     return ident(v.name);
   }
 

@@ -1,14 +1,15 @@
 #version 450
-// The numeric kernel of the WebGPU accuracy tests: per element, the operation `op` (0 add,
-// 1 sub, 2 mul, 3 div, 4 sqrt, 5 (x+y)-x, 6 (x*y+x)/y) on doubles stored as float pairs.
+// The numeric kernel of the WebGPU accuracy tests: element i applies operation op = i / per_op
+// (0 add, 1 sub, 2 mul, 3 div, 4 sqrt, 5 (x+y)-x, 6 (x*y+x)/y) to doubles stored as float pairs.
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Inputs { vec4 xy[]; };  // x.hi, x.lo, y.hi, y.lo
 layout(std430, binding = 1) buffer Outputs { vec2 r[]; };          // hi, lo
-uniform int op;
+uniform uint per_op;
 uniform uint count;
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= count) return;
+  int op = int(i / per_op);
   double x = double(xy[i].x) + double(xy[i].y);
   double y = double(xy[i].z) + double(xy[i].w);
   double z;

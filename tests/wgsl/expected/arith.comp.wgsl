@@ -14,7 +14,7 @@ struct Outputs {
 
 @group(0) @binding(1) var<storage, read_write> df_block_Outputs: Outputs;
 struct df_uniforms_t {
-  op: i32,  // offset 0
+  per_op: u32,  // offset 0
   count: u32,  // offset 4
   df_guard: f32,  // offset 8
 }
@@ -163,9 +163,10 @@ fn df_main() {
   if ((i >= df_uniforms.count)) {
     return;
   }
+  var op: i32 = i32((i / df_uniforms.per_op));
   var x: df_double = df_two_sum(df_block_Inputs.xy[i][0i], df_block_Inputs.xy[i][1i]);
   var y: df_double = df_two_sum(df_block_Inputs.xy[i][2i], df_block_Inputs.xy[i][3i]);
-  switch (df_uniforms.op) {
+  switch (op) {
     case 0i: {
       {
         {

@@ -92,7 +92,7 @@ fn df_main() {
   eye = df_dvec3(df_uniforms.eye_hi, df_uniforms.eye_lo);
   var p: df_dvec3 = df_sub(df_two_sum(position_hi, position_lo), eye);
   color = df_to_float(df_abs(p));
-  anon@0.gl_Position = (df_uniforms.view_projection * vec4<f32>(df_to_float(p), 1.0f));
+  df_Position = (df_uniforms.view_projection * vec4<f32>(df_to_float(p), 1.0f));
 }
 
 var<private> df_Position: vec4<f32>;
