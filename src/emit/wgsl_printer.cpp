@@ -593,7 +593,7 @@ class WgslPrinter {
 
   // WGSL's constant evaluation rejects infinities and NaNs: they come from bits read at run time.
   std::string nonfinite(const std::string& bits) {
-    helpers_["df_bits_u32"] = "fn df_bits_u32(bits: u32) -> f32 {\n  var b = bits;\n  return bitcast<f32>(b);\n}\n";
+    helpers_["df_bits_u32"] = "fn df_bits_u32(bits: u32) -> f32 {\n  return bitcast<f32>(bits);\n}\n";
     return "df_bits_u32(" + bits + ")";
   }
 
@@ -786,6 +786,20 @@ class WgslPrinter {
     if (auto it = comparisons.find(n); it != comparisons.end()) return "(" + expr(a[0]) + " " + it->second + " " + expr(a[1]) + ")";
     if (n == "not") return "!(" + expr(a[0]) + ")";
     if (n == "atan") return a.size() == 2 ? "atan2(" + args_text(a) + ")" : "atan(" + expr(a[0]) + ")";
+    if (n == "uintBitsToFloat" || n == "intBitsToFloat") {
+      // A constant argument would make this a const-expression, where WGSL rejects an infinite or
+      // NaN result: a function call (never a const-expression) defers it to run time.
+      bool constant = true;
+      ir::visit(a[0], [&](const ir::ExprPtr& x) { constant &= x->kind != Kind::Sym && x->kind != Kind::Call; });
+      if (constant) {
+        const std::string tn = type(a[0]->type);
+        std::string fn = "df_runtime_" + tn;
+        for (char& ch : fn)
+          if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+        helpers_[fn] = "fn " + fn + "(x: " + tn + ") -> " + tn + " {\n  return x;\n}\n";
+        return "bitcast<" + type(e.type) + ">(" + fn + "(" + expr(a[0]) + "))";
+      }
+    }
     if (n == "floatBitsToUint" || n == "floatBitsToInt" || n == "uintBitsToFloat" || n == "intBitsToFloat")
       return "bitcast<" + type(e.type) + ">(" + expr(a[0]) + ")";
     if (n == "mod") {
