@@ -404,7 +404,7 @@ class WgslPrinter {
         return;
       case Stmt::Kind::Expr:
         indent(depth);
-        if (s->expr->kind == Kind::Call && copy_in_out_call(*s->expr)) return;
+        if (s->expr->kind == Kind::Call && copy_in_out_call(*s->expr, depth)) return;
         out_ << simple_statement(s->expr) << ";\n";
         return;
       case Stmt::Kind::Decl:
@@ -676,7 +676,8 @@ class WgslPrinter {
   // f(buffer[i], ...) as a statement, where an out/inout argument is not a local variable: WGSL
   // pointers to function memory only, so the argument is copied to a local and back (GLSL's own
   // copy-in/copy-out semantics for out parameters).
-  bool copy_in_out_call(const Expr& e) {
+  bool copy_in_out_call(const Expr& e, int depth) {
+    const std::string pad(static_cast<size_t>(depth + 1) * 2, ' ');
     const ir::Function* callee = callee_of(e);
     if (!callee) return false;
     std::vector<size_t> copied;
@@ -697,14 +698,15 @@ class WgslPrinter {
       tmp->name = "df_arg" + std::to_string(++temp_counter_);
       tmp->type = e.args[i]->type;
       tmp->storage = ir::Storage::Local;
-      out_ << "  var " << tmp->name << ": " << type(tmp->type) << " = " << expr(e.args[i]) << ";\n";
+      out_ << pad << "var " << tmp->name << ": " << type(tmp->type) << " = " << expr(e.args[i]) << ";\n";
       auto sym = ir::Expr::make(Kind::Sym, tmp->type, e.args[i]->loc);
       sym->var = tmp;
       back.emplace_back(lvalue(e.args[i]), sym);
       rewritten->args[i] = sym;
     }
-    out_ << "  " << call(*rewritten) << ";\n";
-    for (const auto& [target, sym] : back) out_ << "  " << target << " = " << sym->var->name << ";\n";
+    out_ << pad << call(*rewritten) << ";\n";
+    for (const auto& [target, sym] : back) out_ << pad << target << " = " << sym->var->name << ";\n";
+    indent(depth);
     out_ << "}\n";
     return true;
   }

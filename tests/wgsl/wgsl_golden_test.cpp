@@ -115,3 +115,39 @@ TEST(WgslTarget, PreciseGuardAndNativeModeAreRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// What WGSL cannot express is a positioned error, never a crash or WGSL that does not compile.
+std::vector<doublet::Diagnostic> wgsl_errors(const std::string& body) {
+  doublet::Options options;
+  options.stage = doublet::Stage::Compute;
+  options.target = doublet::Target::Wgsl;
+  options.file_name = "e.comp";
+  const std::string source = "#version 450\nlayout(local_size_x = 1) in;\nstruct S { double a; };\n"
+                             "layout(std430, binding = 0) buffer B { float v[]; };\nvoid main() {\n" + body + "\n}\n";
+  auto r = doublet::lower(source, options);
+  EXPECT_FALSE(r.ok) << r.output;
+  std::vector<doublet::Diagnostic> errors;
+  for (const auto& d : r.diagnostics)
+    if (d.severity == doublet::Severity::Error) errors.push_back(d);
+  return errors;
+}
+
+TEST(WgslRefusals, AreErrorsWithPositions) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"int i = 0; v[i++] = 1.0;", "'x++' inside an expression"},
+      {"S s = S(1.0lf); S t = s; v[0] = s == t ? 1.0 : 0.0;", "comparing structs"},
+      {"int i = int(v[0]); switch (i) { case 0: v[1] = 1.0; case 1: v[2] = 2.0; break; }", "falls through"},
+  };
+  for (const auto& [body, fragment] : cases) {
+    auto errors = wgsl_errors(body);
+    ASSERT_FALSE(errors.empty()) << body;
+    EXPECT_NE(errors[0].message.find(fragment), std::string::npos) << body << "\n" << errors[0].message;
+    EXPECT_GT(errors[0].line, 0) << body;
+    EXPECT_GT(errors[0].column, 0) << body;
+    EXPECT_EQ(errors[0].message.find("internal error"), std::string::npos) << errors[0].message;
+  }
+}
+
+}  // namespace
