@@ -32,7 +32,11 @@ std::string restore_prefix(std::string text) {
 }
 
 void print_from_glsl(Result& result, const Options& options, const std::string& glsl_with_runtime_names) {
-  const std::string glsl = std::regex_replace(glsl_with_runtime_names, std::regex(R"(\bdf_)"), kCarrierPrefix);
+  // ES precision statements for opaque types (atomic_uint, images) do not parse as desktop GLSL,
+  // which the front end reads: they go; the WGSL printer refuses those types at their declaration.
+  const std::string glsl = std::regex_replace(
+      std::regex_replace(glsl_with_runtime_names, std::regex(R"(\bdf_)"), kCarrierPrefix),
+      std::regex(R"(precision highp (?!float;|int;)\w+;)"), "");
   Options internal = options;
   internal.target = Target::Es310;
   internal.defines.clear();
@@ -52,6 +56,12 @@ void print_from_glsl(Result& result, const Options& options, const std::string& 
   for (auto& d : printed.diagnostics) d.message = restore_prefix(d.message);
   result.diagnostics.insert(result.diagnostics.end(), printed.diagnostics.begin(), printed.diagnostics.end());
   if (has_error(result.diagnostics)) return;
+  for (auto& v : result.manifest.variables)
+    for (const auto& b : printed.block_bindings)
+      if ((v.storage == "uniform" || v.storage == "buffer") && (v.name == b.block || (!b.instance.empty() && v.name == b.instance))) {
+        v.group = 0;
+        v.binding = b.binding;
+      }
   if (!printed.uniform_buffer.name.empty()) {
     for (auto& m : printed.uniform_buffer.members) m.name = restore_prefix(m.name);
     result.manifest.variables.push_back(printed.uniform_buffer);

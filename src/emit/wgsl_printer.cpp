@@ -90,7 +90,7 @@ class WgslPrinter {
     for (const auto& f : m_.functions) function(*f);
     entry_point();
     std::string text = helpers_text();
-    return {text + out_.str(), diags_, uniform_buffer_};
+    return {text + out_.str(), diags_, uniform_buffer_, block_bindings_};
   }
 
  private:
@@ -99,6 +99,7 @@ class WgslPrinter {
   std::ostringstream out_;
   std::vector<Diagnostic> diags_;
   InterfaceVariable uniform_buffer_;
+  std::vector<WgslPrintResult::BlockBinding> block_bindings_;
   std::map<std::string, int> overload_count_;
   std::set<const ir::Var*> loose_uniforms_, pointer_params_;
   std::map<const ir::Var*, std::string> block_var_names_;
@@ -130,8 +131,13 @@ class WgslPrinter {
       case Base::Struct:
       case Base::Block: return ident(t.name);
       case Base::Opaque:
-        error(loc, "'" + t.name + "' cannot be expressed in WGSL by doublet (WGSL separates textures and samplers, "
-                   "and doublet's WGSL target does not translate them yet)");
+        if (t.name == "atomic_uint")
+          error(loc, "atomic counters ('atomic_uint') have no WGSL counterpart; use an atomic<u32> in a storage buffer");
+        else if (t.name.find("image") != std::string::npos)
+          error(loc, "'" + t.name + "' (a storage image) is not translated to WGSL by doublet yet");
+        else
+          error(loc, "'" + t.name + "' cannot be expressed in WGSL by doublet (WGSL separates textures and samplers, "
+                     "and doublet's WGSL target does not translate them yet)");
         return "f32";
       case Base::Double: error(loc, "internal error: a double reached the WGSL printer"); return "f32";
       case Base::Void: return "";
@@ -180,14 +186,39 @@ class WgslPrinter {
     out_ << "}\n\n";
   }
 
+  // The instance name of a block, "" for an anonymous one.
+  static std::string anonymous_name(const ir::Var& v) { return v.name.rfind("anon@", 0) == 0 ? "" : v.name; }
+
   static bool is_loose_uniform(const ir::Var& v) {
     return v.storage == ir::Storage::Uniform && !v.block && v.type.base != Base::Block && v.type.base != Base::Opaque;
   }
 
+  // Explicit bindings first (GL's uniform and storage blocks have separate binding namespaces,
+  // WGSL's group 0 has one: a clash is an error); blocks without one take the next free numbers in
+  // declaration order, and the loose-uniform buffer the one after them all.
+  std::map<const ir::Var*, int> assign_bindings(int& next_free) {
+    std::map<const ir::Var*, int> assigned;
+    std::set<int> used;
+    auto is_block = [](const ir::Var& v) {
+      return (v.storage == ir::Storage::Uniform || v.storage == ir::Storage::Buffer) && v.type.base == Base::Block;
+    };
+    for (const auto& v : m_.globals)
+      if (is_block(*v) && v->layout.binding >= 0) {
+        if (!used.insert(v->layout.binding).second)
+          error(v->loc, "binding " + std::to_string(v->layout.binding) +
+                            " is used twice: WGSL has one binding namespace per group (GL's uniform and storage "
+                            "blocks have two); give each block its own binding");
+        assigned[v.get()] = v->layout.binding;
+      }
+    next_free = used.empty() ? 0 : *used.rbegin() + 1;
+    for (const auto& v : m_.globals)
+      if (is_block(*v) && v->layout.binding < 0) assigned[v.get()] = next_free++;
+    return assigned;
+  }
+
   void globals() {
-    int max_binding = -1;
-    for (const auto& g : m_.globals) max_binding = std::max(max_binding, g->layout.binding);
-    std::set<int> bindings;
+    int uniform_binding = 0;
+    const std::map<const ir::Var*, int> bindings_of = assign_bindings(uniform_binding);
     std::vector<ir::VarPtr> loose;
     for (size_t i = 0; i < m_.globals.size(); ++i) {
       const ir::VarPtr& v = m_.globals[i];
@@ -213,13 +244,10 @@ class WgslPrinter {
             break;
           }
           const bool uniform = v->storage == ir::Storage::Uniform;
-          const int binding = std::max(v->layout.binding, 0);
-          if (!bindings.insert(binding).second)
-            error(v->loc, "binding " + std::to_string(binding) +
-                              " is used twice: WGSL has one binding namespace per group; give each block its own binding");
+          const int binding = bindings_of.at(v.get());
+          block_bindings_.push_back({v->type.name, anonymous_name(*v), binding});
           struct_definition(v->type, uniform);
-          const bool anonymous = v->name.rfind("anon@", 0) == 0;
-          const std::string var_name = anonymous ? "df_block_" + v->type.name : name;
+          const std::string var_name = anonymous_name(*v).empty() ? "df_block_" + v->type.name : name;
           block_var_names_[v.get()] = var_name;
           out_ << "@group(0) @binding(" << binding << ") var<"
                << (uniform ? "uniform" : v->readonly ? "storage, read" : "storage, read_write") << "> " << var_name
@@ -236,7 +264,7 @@ class WgslPrinter {
         default: break;
       }
     }
-    if (!loose.empty()) uniform_struct(loose, max_binding + 1);
+    if (!loose.empty()) uniform_struct(loose, uniform_binding);
     out_ << "\n";
   }
 
@@ -623,6 +651,9 @@ class WgslPrinter {
       error(e.loc, "an assignment inside an expression cannot be expressed in WGSL; make it a statement of its own");
       return "0";
     }
+    const bool per_column = (op == "+" || op == "-" || op == "/") && (lt.is_matrix() || rt.is_matrix()) &&
+                            !(lt.is_matrix() && rt.is_matrix() && op != "/");
+    if (per_column) return matrix_per_column(e, op);
     std::string a = expr(e.args[0]), b = expr(e.args[1]);
     if (op == "^^") return "(" + a + " != " + b + ")";
     if (op == "<<" || op == ">>") return "(" + a + " " + op + " " + shift_amount(e.args[1]) + ")";
@@ -642,6 +673,24 @@ class WgslPrinter {
       return "0";
     }
     return "(" + a + " " + op + " " + b + ")";
+  }
+
+  // Matrix-scalar + - /, matrix / matrix and matrixCompMult are component-wise in GLSL; WGSL has them
+  // only for vectors, so they are applied column by column (the operands are evaluated per column).
+  std::string matrix_per_column(const Expr& e, const std::string& op) {
+    const ir::Type& t = e.type;
+    for (const auto& arg : e.args)
+      if (!ir::is_pure(arg)) {
+        error(e.loc, "a component-wise matrix operation on an operand with side effects cannot be expressed in WGSL");
+        return "0";
+      }
+    auto column = [&](const ir::ExprPtr& x, int c) {
+      return x->type.is_matrix() ? expr(x) + "[" + std::to_string(c) + "]" : expr(x);
+    };
+    std::string s = type(t) + "(";
+    for (int c = 0; c < t.cols; ++c)
+      s += std::string(c ? ", " : "") + "(" + column(e.args[0], c) + " " + op + " " + column(e.args[1], c) + ")";
+    return s + ")";
   }
 
   // WGSL shifts by u32 (or vecN<u32>) only.
@@ -786,6 +835,11 @@ class WgslPrinter {
       return "i32(arrayLength(&" + expr(a[0]) + "))";
     }
     if (auto it = comparisons.find(n); it != comparisons.end()) return "(" + expr(a[0]) + " " + it->second + " " + expr(a[1]) + ")";
+    if (n == "matrixCompMult") {
+      auto product = ir::make_node(Kind::Binary, "", e.type, a, e.loc);
+      product->op = "*";
+      return matrix_per_column(*product, "*");
+    }
     if (n == "not") return "!(" + expr(a[0]) + ")";
     if (n == "atan") return a.size() == 2 ? "atan2(" + args_text(a) + ")" : "atan(" + expr(a[0]) + ")";
     if (n == "uintBitsToFloat" || n == "intBitsToFloat") {
@@ -841,8 +895,19 @@ class WgslPrinter {
         return s + ")";
       }
       if (a.size() == 1 && a[0]->type.is_matrix() && (a[0]->type.cols != t.cols || a[0]->type.vec != t.vec)) {
-        error(e.loc, "a matrix built from a matrix of another shape cannot be expressed in WGSL");
-        return "0";
+        // GLSL: element (c, r) comes from the operand where it has one, else from the identity.
+        if (!ir::is_pure(a[0])) {
+          error(e.loc, "a matrix built from a matrix of another shape with side effects cannot be expressed in WGSL");
+          return "0";
+        }
+        const std::string m = expr(a[0]);
+        std::string s = type(t) + "(";
+        for (int c = 0; c < t.cols; ++c)
+          for (int r = 0; r < t.vec; ++r)
+            s += std::string(c || r ? ", " : "") +
+                 (c < a[0]->type.cols && r < a[0]->type.vec ? m + "[" + std::to_string(c) + "][" + std::to_string(r) + "]"
+                                                             : c == r ? "1.0f" : "0.0f");
+        return s + ")";
       }
       return type(t) + "(" + args_text(a) + ")";
     }
@@ -882,6 +947,7 @@ class WgslPrinter {
           error(e->loc, "'" + op + "' inside an expression cannot be expressed in WGSL; make it a statement of its own");
           return "0";
         }
+        if (op == "-" && e->type.is_matrix()) return "(" + expr(e->args[0]) + " * -1.0f)";  // no matrix negation in WGSL
         return op + "(" + expr(e->args[0]) + ")";
       }
       case Kind::Binary: return binary(*e);

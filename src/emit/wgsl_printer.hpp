@@ -17,6 +17,12 @@ struct WgslPrintResult {
   std::vector<Diagnostic> diagnostics;
   // The uniform buffer that gathers the loose uniforms (the guard included), when any.
   InterfaceVariable uniform_buffer;  // name empty when there is none
+  // Every uniform and storage block's @binding (all in @group(0)).
+  struct BlockBinding {
+    std::string block, instance;  // instance: "" when anonymous
+    int binding = 0;
+  };
+  std::vector<BlockBinding> block_bindings;
 };
 
 // `position_note` is appended to every error: the IR positions are those of the intermediate GLSL.

@@ -59,6 +59,45 @@ TEST(WgslBrowser, EveryGoldenWgslCompilesInChromiumWebGpu) {
   }
 }
 
+// Every shader of the GLSL golden cases and the corpus, lowered to WGSL: it either lowers (and
+// then Chromium compiles it; all of them in one page run) or is refused with positioned errors,
+// never an internal error.
+TEST(WgslBrowser, GoldenAndCorpusShadersLowerToWgslThatCompilesOrArePositionedErrors) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  const fs::path root = DOUBLET_SOURCE_DIR;
+  std::vector<doublet::runner::WgslModule> modules;
+  int refused = 0;
+  for (const fs::path dir : {root / "tests/golden/cases", root / "tests/corpus"})
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const std::string ext = e.path().extension().string();
+      if (ext != ".comp" && ext != ".vert" && ext != ".frag") continue;
+      std::string source = read(e.path());
+      // The golden harness's header lines (targets, options) come before #version.
+      while (source.rfind("// targets:", 0) == 0 || source.rfind("// options:", 0) == 0) source.erase(0, source.find('\n') + 1);
+      doublet::Options options;
+      options.stage = doublet::parse_stage(ext.substr(1));
+      options.target = doublet::Target::Wgsl;
+      options.file_name = e.path().filename().string();
+      options.include_dirs = {(root / "tests/golden/cases/include").string(), (root / "tests/corpus/include").string()};
+      auto r = doublet::lower(source, options);
+      if (r.ok) {
+        modules.push_back({options.file_name, ext.substr(1), r.output});
+        continue;
+      }
+      ++refused;
+      for (const auto& d : r.diagnostics) {
+        if (d.severity != doublet::Severity::Error) continue;
+        EXPECT_EQ(d.message.find("internal error"), std::string::npos) << doublet::format_diagnostic(d);
+        EXPECT_GT(d.line, 0) << doublet::format_diagnostic(d);
+      }
+    }
+  ASSERT_GE(modules.size(), 40u);
+  auto run = doublet::runner::validate_wgsl_in_browser(modules);
+  ASSERT_TRUE(run.ok) << run.error << "\n" << run.log;
+  std::cout << modules.size() << " shaders lowered to WGSL, " << refused << " refused\n";
+  for (const auto& r : run.results) EXPECT_TRUE(r.ok) << r.name << ":\n" << r.messages;
+}
+
 // ---- accuracy ---------------------------------------------------------------
 constexpr int kOps = 7;
 constexpr int kPerOp = 512;
