@@ -50,6 +50,7 @@ int run_sweep(const VerifyArgs& a) {
   o.ops = a.sweep == "all" ? verify::sweep_ops() : std::vector<std::string>{a.sweep};
   const std::optional<Target> target = parse_target(a.target);
   if (!target) return input_error("unknown target '" + a.target + "'");
+  if (*target == Target::Wgsl) return input_error("--sweep runs GLSL on lavapipe and Mesa GLES: use --target es310 (--target wgsl prints that lowering as WGSL)");
   o.target = *target;
   o.grid_step = a.grid_step;
   o.heatmap_dir = a.heatmap_dir;
@@ -125,6 +126,10 @@ int run_verify(const VerifyArgs& a) {
   if (!o.lower.stage) return input_error("cannot tell the stage of '" + a.shader + "': use -S vert|frag|comp");
   const std::optional<Target> target = parse_target(a.target);
   if (!target) return input_error("unknown target '" + a.target + "'");
+  if (*target == Target::Wgsl)
+    return input_error("verify runs the lowered GLSL on lavapipe and Mesa GLES: --target wgsl is not verified here "
+                       "(its WGSL is the es310 lowering printed as WGSL; verify --target es310, and see docs/web.md for "
+                       "the WGSL accuracy tests on WebGPU)");
   o.lower.target = *target;
   for (const std::string& d : a.defines) {
     const size_t eq = d.find('=');
