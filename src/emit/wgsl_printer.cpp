@@ -656,7 +656,16 @@ class WgslPrinter {
     if (per_column) return matrix_per_column(e, op);
     std::string a = expr(e.args[0]), b = expr(e.args[1]);
     if (op == "^^") return "(" + a + " != " + b + ")";
-    if (op == "<<" || op == ">>") return "(" + a + " " + op + " " + shift_amount(e.args[1]) + ")";
+    if (op == "<<" || op == ">>") {
+      std::string amount = shift_amount(e.args[1]);
+      if (lt.vec > 1 && rt.vec == 1) amount = "vec" + std::to_string(lt.vec) + "<u32>(" + amount + ")";
+      return "(" + a + " " + op + " " + amount + ")";
+    }
+    // GLSL's bitwise operators take a vector and a scalar; WGSL's want one type: splat the scalar.
+    if ((op == "&" || op == "|" || op == "^") && lt.vec != rt.vec) {
+      if (lt.vec == 1) a = splat(e.args[0], rt);
+      if (rt.vec == 1) b = splat(e.args[1], lt);
+    }
     if ((op == "==" || op == "!=") && (lt.base == Base::Struct || lt.is_array())) {
       error(e.loc, "comparing structs or arrays with '" + op + "' cannot be expressed in WGSL; compare the members");
       return "false";

@@ -20,6 +20,9 @@ void main() {
   switch (i) { case 1: case 2: v[2] = 3.0; break; default: v[2] = float(m); }
   v[3] = float(s.a * double(g)) + atan(1.0, 2.0) + inversesqrt(4.0);
   v[4] = float(i >> 1) + float(uint(i) << 2u);
+  uvec2 bits = floatBitsToUint(vec2(v[6], v[7]));
+  bits = ((bits >> 23u) & 0xffu) | (bits << uvec2(1u, 2u)) ^ 1u;  // the integer forms df64-int's runtime uses
+  v[6] = uintBitsToFloat(bits.x) + uintBitsToFloat(bits.y);
   bvec2 bb = lessThan(vec2(1.0), vec2(2.0));
   v[5] = mix(1.0, 2.0, bb.x) + (all(bb) ? 1.0 : 0.0);
 }

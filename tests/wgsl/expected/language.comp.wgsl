@@ -121,6 +121,9 @@ fn df_main() {
   }
   df_block_B.v[3i] = ((df_to_float(df_mul_f2(s.a, g)) + 0x1.dac67p-2f) + 0.5f);
   df_block_B.v[4i] = (f32((i >> u32(1i))) + f32((u32(i) << 2u)));
+  var bits: vec2<u32> = bitcast<vec2<u32>>(vec2<f32>(df_block_B.v[6i], df_block_B.v[7i]));
+  bits = (((bits >> vec2<u32>(23u)) & vec2<u32>(255u)) | ((bits << vec2<u32>(1u, 2u)) ^ vec2<u32>(1u)));
+  df_block_B.v[6i] = (bitcast<f32>(bits[0i]) + bitcast<f32>(bits[1i]));
   var bb: vec2<bool> = vec2<bool>(true, true);
   df_block_B.v[5i] = (select(1.0f, 2.0f, bb[0i]) + select(0.0f, 1.0f, all(bb)));
 }
