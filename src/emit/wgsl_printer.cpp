@@ -104,7 +104,7 @@ class WgslPrinter {
   std::set<const ir::Var*> loose_uniforms_, pointer_params_;
   std::map<const ir::Var*, std::string> block_var_names_;
   std::map<std::string, std::string> helpers_;  // name -> WGSL text, emitted before the module
-  std::set<std::string> builtins_used_;        // gl_* variables the functions name
+  std::map<std::string, ir::Loc> builtins_used_;  // gl_* variables the functions name, first use
 
   void error(ir::Loc loc, const std::string& msg) {
     if (!diags_.empty() && diags_.back().line == loc.line && diags_.back().message.rfind(msg, 0) == 0) return;
@@ -396,11 +396,8 @@ class WgslPrinter {
       for (size_t i = 0; i < e->args.size(); ++i) s += (i ? "; " : "") + simple_statement(e->args[i]);
       return s;
     }
-    if (e->kind == Kind::Call || (e->kind == Kind::Builtin && e->type.base == Base::Void)) return expr(e);
-    if (ir::has_side_effects(e)) {
-      if (e->kind == Kind::Call || e->kind == Kind::Builtin) return "_ = " + expr(e);
-    }
-    return "_ = " + expr(e);
+    if (e->type.base == Base::Void) return expr(e);  // a call of a void function or built-in
+    return "_ = " + expr(e);                         // a value computed and dropped
   }
 
   // v.xz = e -> { let t = e; v.x = t.x; v.z = t.y; } (WGSL assigns one component at a time).
@@ -585,7 +582,7 @@ class WgslPrinter {
 
   std::string symbol(const ir::Var& v) {
     if (v.storage == ir::Storage::BuiltIn) {
-      builtins_used_.insert(v.name);
+      builtins_used_.emplace(v.name, current_loc_);
       if (v.name == "gl_WorkGroupSize")
         return "vec3<u32>(" + std::to_string(m_.local_size[0]) + "u, " + std::to_string(std::max(m_.local_size[1], 1)) +
                "u, " + std::to_string(std::max(m_.local_size[2], 1)) + "u)";
@@ -942,10 +939,14 @@ class WgslPrinter {
     return s + ")";
   }
 
+  ir::Loc current_loc_;  // of the symbol being printed (first uses of built-ins)
+
   std::string expr(const ir::ExprPtr& e) {
     if (!e) return "";
     switch (e->kind) {
-      case Kind::Sym: return symbol(*e->var);
+      case Kind::Sym:
+        current_loc_ = e->loc;
+        return symbol(*e->var);
       case Kind::Const: {
         size_t at = 0;
         return constant(e->type, e->values, at);
@@ -1025,16 +1026,15 @@ class WgslPrinter {
     std::set<std::string> seen_builtin_attr;
     for (const auto& io : inputs) {
       if (!builtins_used_.count(io.glsl)) continue;
-      if (fragment && std::string(io.glsl) == "gl_FragCoord") {}
       out_ << "var<private> df_" << (io.glsl + 3) << ": " << io.private_type << ";\n";
       const std::string param = std::string("df_in_") + io.wgsl;
       if (seen_builtin_attr.insert(io.wgsl).second) params.push_back("@builtin(" + std::string(io.wgsl) + ") " + param + ": " + io.wgsl_type);
       copies.push_back("df_" + std::string(io.glsl + 3) + " = " + (*io.convert ? std::string(io.convert) + "(" + param + ")" : param));
     }
-    for (const auto& name : builtins_used_) {
+    for (const auto& [name, loc] : builtins_used_) {
       bool known = name == "gl_WorkGroupSize" || name == "gl_Position" || name == "gl_FragDepth";
       for (const auto& io : inputs) known |= name == io.glsl;
-      if (!known) error({}, "the built-in variable '" + name + "' has no WGSL translation in doublet");
+      if (!known) error(loc, "the built-in variable '" + name + "' has no WGSL translation in doublet");
     }
     int in_location = 0, out_location = 0;
     for (const auto& g : m_.globals) {

@@ -151,3 +151,21 @@ TEST(WgslRefusals, AreErrorsWithPositions) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(WgslRefusals, BuiltInVariableWithoutCounterpartIsPositioned) {
+  doublet::Options options;
+  options.stage = doublet::Stage::Vertex;
+  options.target = doublet::Target::Wgsl;
+  options.file_name = "p.vert";
+  auto r = doublet::lower("#version 450\nuniform double s;\nvoid main() {\n  gl_Position = vec4(float(s));\n"
+                          "  gl_PointSize = 2.0;\n}\n", options);
+  ASSERT_FALSE(r.ok);
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_NE(r.diagnostics[0].message.find("'gl_PointSize' has no WGSL translation"), std::string::npos)
+      << r.diagnostics[0].message;
+  EXPECT_GT(r.diagnostics[0].line, 0);
+}
+
+}  // namespace
