@@ -1,0 +1,410 @@
+// The transcendental extension (rules/transcendental.glsl) on real drivers: for each function a
+// compute shader written with doubles is lowered by doublet and run on lavapipe and Mesa GLES
+// (llvmpipe); each result is compared with MPFR (200 bits) on the exact float-float input, and
+// with the host's binary64 libm as a second reference. Inputs span each function's whole range
+// (log-uniform magnitudes) plus grids at its special points (multiples of pi/2, 1 for log, 0,
+// the overflow thresholds). Checks: every result within its documented bound
+// (docs/transcendentals.md), >= 44 correct bits in the normal range. Sabotages, each of which
+// must break the bounds: no optimizer guard, doubles demoted to float (drop lo), and each
+// argument reduction skipped by editing the lowered text.
+// DOUBLET_TRANSCENDENTAL_SAMPLES=N sets the random samples per function (default 8192).
+#include <gtest/gtest.h>
+#include <mpfr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+#include "frontend/demote.hpp"
+#include "runner/runner.hpp"
+
+namespace {
+
+using doublet::runner::Backend;
+constexpr double kU2 = 0x1p-48;
+
+struct Input {
+  float xh, xl, yh, yl;
+  int family;
+};
+
+struct Function {
+  const char* name;
+  const char* expr;  // GLSL over double x, y
+  int (*mpfr_fn1)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
+  int (*mpfr_fn2)(mpfr_ptr, mpfr_srcptr, mpfr_srcptr, mpfr_rnd_t);
+  double (*host1)(double);
+  double (*host2)(double, double);
+  // Allowed absolute error for input (x, y) and exact result ref (docs/transcendentals.md).
+  std::function<double(double x, double y, double ref)> allowed;
+  // Families (by name) and a generator for each: fills x (and y) from rng.
+  std::vector<std::pair<const char*, std::function<void(std::mt19937_64&, double&, double&)>>> families;
+  // The normal range where >= 44 bits are required (false: bound only).
+  std::function<bool(double x, double y, double ref)> normal = nullptr;
+  // Where the Uniform guard (targets without `precise`) keeps the bound: |x| <= this.
+  double uniform_guard_limit = INFINITY;
+};
+
+double uniform(std::mt19937_64& rng, double lo, double hi) {
+  return lo + (hi - lo) * (static_cast<double>(rng() >> 11) * 0x1p-53);
+}
+double log_uniform(std::mt19937_64& rng, double lo_exp, double hi_exp, bool both_signs = true) {
+  double v = std::exp2(uniform(rng, lo_exp, hi_exp));
+  return both_signs && (rng() & 1) ? -v : v;
+}
+double rel(double c, double ref) { return c * kU2 * std::fabs(ref); }
+
+std::vector<Function> functions() {
+  const double pio2 = 1.5707963267948966;
+  auto near_multiple = [pio2](std::mt19937_64& rng, double& x, double&) {
+    // The float-float nearest k pi/2 (k up to 2^20), then moved by up to 2^-40 relative.
+    double k = std::floor(log_uniform(rng, 0, 20, false));
+    x = k * pio2 * (1 + uniform(rng, -1, 1) * 0x1p-40) * ((rng() & 1) ? -1 : 1);
+  };
+  std::vector<Function> f;
+  f.push_back({"exp", "exp(x)", mpfr_exp, nullptr, ::exp, nullptr,
+               [](double, double, double r) { return rel(10, r); },
+               {{"uniform", [](auto& g, double& x, double&) { x = uniform(g, -70.5, 88.7); }},
+                {"small", [](auto& g, double& x, double&) { x = log_uniform(g, -40, 0); }},
+                {"k-ln2/2", [](auto& g, double& x, double&) {
+                   x = (std::floor(uniform(g, -100, 127)) + 0.5) * 0.6931471805599453 + uniform(g, -1, 1) * 0x1p-30;
+                   x = std::clamp(x, -70.5, 88.7);
+                 }}}});
+  f.push_back({"exp2", "exp2(x)", mpfr_exp2, nullptr, ::exp2, nullptr,
+               [](double, double, double r) { return rel(12, r); },
+               {{"uniform", [](auto& g, double& x, double&) { x = uniform(g, -101.5, 127.99); }},
+                {"small", [](auto& g, double& x, double&) { x = log_uniform(g, -40, 0); }},
+                {"half-integers", [](auto& g, double& x, double&) {
+                   x = std::floor(uniform(g, -100, 127)) + 0.5 + uniform(g, -1, 1) * 0x1p-30;
+                 }}}});
+  f.push_back({"log", "log(x)", mpfr_log, nullptr, ::log, nullptr,
+               [](double, double, double r) { return rel(28, r); },
+               {{"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -125, 127.9, false); }},
+                {"near-1", [](auto& g, double& x, double&) { x = 1 + log_uniform(g, -45, -1); }},
+                {"near-sqrt2", [](auto& g, double& x, double&) {
+                   x = std::ldexp(0.7071067811865476 * (1 + uniform(g, -1, 1) * 0x1p-30), static_cast<int>(uniform(g, -60, 60)));
+                 }}}});
+  f.push_back({"log2", "log2(x)", mpfr_log2, nullptr, ::log2, nullptr,
+               [](double, double, double r) { return rel(37, r); },
+               {{"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -125, 127.9, false); }},
+                {"near-1", [](auto& g, double& x, double&) { x = 1 + log_uniform(g, -45, -1); }}}});
+  f.push_back({"pow", "pow(x, y)", nullptr, mpfr_pow, nullptr, ::pow,
+               [](double x, double y, double r) { return rel(40 + 31 * std::fabs(y * std::log(x)), r); },
+               {{"|y log x| < 1/2", [](auto& g, double& x, double& y) {
+                   x = log_uniform(g, -20, 20, false);
+                   y = uniform(g, -0.5, 0.5) / std::max(std::fabs(std::log(x)), 1e-300);
+                 }},
+                {"|y log x| < 70", [](auto& g, double& x, double& y) {  // results in the normal range
+                   x = log_uniform(g, -60, 60, false);
+                   y = uniform(g, -70, 70) / std::max(std::fabs(std::log(x)), 1e-300);
+                 }}},
+               [](double x, double y, double) { return std::fabs(y * std::log(x)) <= 0.5; }});
+  auto trig_bound = [](double c) {
+    return [c](double x, double, double r) { return rel(c, r) + std::fabs(x) * 0x1p-96; };
+  };
+  std::vector<std::pair<const char*, std::function<void(std::mt19937_64&, double&, double&)>>> trig_families{
+      {"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -30, 30); }},
+      {"|x|<pi/4", [](auto& g, double& x, double&) { x = uniform(g, -0.7854, 0.7854); }},
+      {"|x|<2^20", [](auto& g, double& x, double&) { x = uniform(g, -0x1p20, 0x1p20); }},
+      {"near-k-pi/2", near_multiple},
+      {"2^30-2^34", [](auto& g, double& x, double&) { x = log_uniform(g, 30, 34); }},
+      {"2^34-2^36", [](auto& g, double& x, double&) { x = log_uniform(g, 34, 36); }},
+      {"2^36-2^38", [](auto& g, double& x, double&) { x = log_uniform(g, 36, 38); }},
+      {"2^38-2^40", [](auto& g, double& x, double&) { x = log_uniform(g, 38, 39.99); }}};
+  f.push_back({"sin", "sin(x)", mpfr_sin, nullptr, ::sin, nullptr, trig_bound(20), trig_families, nullptr, 0x1p20});
+  f.push_back({"cos", "cos(x)", mpfr_cos, nullptr, ::cos, nullptr, trig_bound(20), trig_families, nullptr, 0x1p20});
+  f.push_back({"tan", "tan(x)", mpfr_tan, nullptr, ::tan, nullptr,
+               [](double x, double, double r) { return rel(40, r) + std::fabs(x) * 0x1p-96 * (1 + r * r); },
+               trig_families, nullptr, 0x1p20});
+  f.push_back({"atan", "atan(x)", mpfr_atan, nullptr, ::atan, nullptr,
+               [](double, double, double r) { return rel(70, r); },
+               {{"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -60, 60); }},
+                {"near-1", [](auto& g, double& x, double&) { x = (1 + uniform(g, -1, 1) * 0x1p-20) * ((g() & 1) ? -1 : 1); }}}});
+  f.push_back({"atan2", "atan(y, x)", nullptr, mpfr_atan2, nullptr, ::atan2,
+               [](double, double, double r) { return rel(70, r); },
+               {{"log-uniform", [](auto& g, double& x, double& y) {
+                   x = log_uniform(g, -40, 40);
+                   y = log_uniform(g, -40, 40);
+                 }},
+                {"near-diagonals", [](auto& g, double& x, double& y) {
+                   x = log_uniform(g, -10, 10);
+                   y = x * (1 + uniform(g, -1, 1) * 0x1p-20) * ((g() & 1) ? -1 : 1);
+                 }}}});
+  auto unit_families = std::vector<std::pair<const char*, std::function<void(std::mt19937_64&, double&, double&)>>>{
+      {"uniform", [](auto& g, double& x, double&) { x = uniform(g, -1, 1); }},
+      {"near-+-1", [](auto& g, double& x, double&) { x = (1 - log_uniform(g, -45, -1, false)) * ((g() & 1) ? -1 : 1); }},
+      {"near-0", [](auto& g, double& x, double&) { x = log_uniform(g, -60, -1); }}};
+  f.push_back({"asin", "asin(x)", mpfr_asin, nullptr, ::asin, nullptr,
+               [](double, double, double r) { return rel(75, r); }, unit_families});
+  f.push_back({"acos", "acos(x)", mpfr_acos, nullptr, ::acos, nullptr,
+               [](double, double, double r) { return rel(75, r); }, unit_families});
+  auto hyper_families = std::vector<std::pair<const char*, std::function<void(std::mt19937_64&, double&, double&)>>>{
+      {"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -40, 6.47); }},
+      {"near-0.3465", [](auto& g, double& x, double&) { x = 0.3465 * (1 + uniform(g, -1, 1) * 0x1p-10) * ((g() & 1) ? -1 : 1); }}};
+  f.push_back({"sinh", "sinh(x)", mpfr_sinh, nullptr, ::sinh, nullptr,
+               [](double, double, double r) { return rel(50, r); }, hyper_families});
+  f.push_back({"cosh", "cosh(x)", mpfr_cosh, nullptr, ::cosh, nullptr,
+               [](double, double, double r) { return rel(20, r); }, hyper_families});
+  f.push_back({"tanh", "tanh(x)", mpfr_tanh, nullptr, ::tanh, nullptr,
+               [](double, double, double r) { return rel(50, r); },
+               {{"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -40, 4.6); }},
+                {"near-0.17", [](auto& g, double& x, double&) { x = 0.17325 * (1 + uniform(g, -1, 1) * 0x1p-10) * ((g() & 1) ? -1 : 1); }}}});
+  return f;
+}
+
+std::string shader_for(const Function& fn) {
+  return std::string(R"(#version 450
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer In { vec4 xy[]; };
+layout(std430, binding = 1) writeonly buffer Out { vec2 r[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  vec4 v = xy[i];
+  double x = double(v.x) + double(v.y);
+  double y = double(v.z) + double(v.w);
+  double z = )") + fn.expr + R"(;
+  float hi = float(z);
+  r[i] = vec2(hi, float(z - double(hi)));
+}
+)";
+}
+
+int sample_count() {
+  const char* env = std::getenv("DOUBLET_TRANSCENDENTAL_SAMPLES");
+  int n = env ? std::atoi(env) : 8192;
+  return std::max(64, (n + 63) / 64 * 64);
+}
+
+std::vector<Input> make_inputs(const Function& fn, int n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<Input> in(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const int family = i % static_cast<int>(fn.families.size());
+    double x = 0, y = 0;
+    fn.families[static_cast<size_t>(family)].second(rng, x, y);
+    float xh = static_cast<float>(x), yh = static_cast<float>(y);
+    in[static_cast<size_t>(i)] = {xh, static_cast<float>(x - xh), yh, static_cast<float>(y - yh), family};
+  }
+  return in;
+}
+
+struct FamilyResult {
+  int samples = 0, failures = 0;
+  double min_bits = 99, min_bits_host = 99, worst_ratio = 0;
+  std::string worst;
+};
+
+struct Measurement {
+  std::string error;
+  std::vector<FamilyResult> families;
+  double normal_min_bits = 99;
+  int failures = 0;
+};
+
+// How the lowered text is run: as doublet emits it, or edited by a sabotage.
+using Edit = std::function<std::string(const std::string&)>;
+
+Measurement measure(const Function& fn, Backend backend, doublet::Target target, doublet::GuardKind guard,
+                    bool demote = false, const Edit& edit = nullptr) {
+  Measurement m;
+  std::string glsl;
+  if (demote) {
+    glsl = doublet::frontend::demote_doubles(shader_for(fn));
+    glsl.replace(glsl.find("#version 450"), 12, "#version 310 es\nprecision highp float;");
+  } else {
+    doublet::Options options;
+    options.stage = doublet::Stage::Compute;
+    options.target = target;
+    options.guard = guard;
+    options.file_name = std::string(fn.name) + ".comp";
+    doublet::Result lowered = doublet::lower(shader_for(fn), options);
+    if (!lowered.ok) {
+      for (const auto& d : lowered.diagnostics) m.error += doublet::format_diagnostic(d) + "\n";
+      return m;
+    }
+    glsl = edit ? edit(lowered.output) : lowered.output;
+    if (glsl.empty()) {
+      m.error = "the sabotage edit found nothing to change";
+      return m;
+    }
+  }
+  const int n = sample_count();
+  auto inputs = make_inputs(fn, n, 20261124);
+  doublet::runner::ComputeJob job;
+  job.glsl = glsl;
+  job.buffers.resize(2);
+  job.buffers[0].resize(inputs.size() * 16);
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    const float w[4] = {inputs[i].xh, inputs[i].xl, inputs[i].yh, inputs[i].yl};
+    std::memcpy(job.buffers[0].data() + i * 16, w, 16);
+  }
+  job.buffers[1].assign(inputs.size() * 8, 0);
+  job.groups_x = static_cast<uint32_t>(n / 64);
+  auto result = doublet::runner::run_compute(backend, job);
+  if (!result.ok) {
+    m.error = result.error;
+    return m;
+  }
+  m.families.resize(fn.families.size());
+  // The Uniform guard is what doublet emits (Auto) for targets without `precise`.
+  const bool uniform_guard = guard == doublet::GuardKind::Uniform ||
+                             (guard == doublet::GuardKind::Auto && target != doublet::Target::Es320 &&
+                              target != doublet::Target::Glsl450);
+  const double limit = uniform_guard ? fn.uniform_guard_limit : INFINITY;
+  mpfr_t x, y, ref, got, err;
+  for (mpfr_ptr p : {x, y, ref, got, err}) mpfr_init2(p, 200);
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    const Input& in = inputs[i];
+    float out[2];
+    std::memcpy(out, result.buffers[1].data() + i * 8, 8);
+    mpfr_set_flt(x, in.xh, MPFR_RNDN);
+    mpfr_add_d(x, x, in.xl, MPFR_RNDN);  // exact at 200 bits
+    mpfr_set_flt(y, in.yh, MPFR_RNDN);
+    mpfr_add_d(y, y, in.yl, MPFR_RNDN);
+    if (fn.mpfr_fn1) fn.mpfr_fn1(ref, x, MPFR_RNDN);
+    else fn.mpfr_fn2(ref, fn.name == std::string("atan2") ? y : x, fn.name == std::string("atan2") ? x : y, MPFR_RNDN);
+    const double xd = mpfr_get_d(x, MPFR_RNDN), yd = mpfr_get_d(y, MPFR_RNDN), rd = mpfr_get_d(ref, MPFR_RNDN);
+    mpfr_set_flt(got, out[0], MPFR_RNDN);
+    mpfr_add_d(got, got, out[1], MPFR_RNDN);
+    mpfr_sub(err, got, ref, MPFR_RNDN);
+    mpfr_abs(err, err, MPFR_RNDN);
+    const double abs_err = mpfr_get_d(err, MPFR_RNDU);
+    const double allowed = fn.allowed(xd, yd, rd);
+    const double bits = abs_err == 0 ? 99 : -std::log2(abs_err / std::fabs(rd));
+    const double host = fn.host1 ? fn.host1(xd) : (fn.name == std::string("atan2") ? fn.host2(yd, xd) : fn.host2(xd, yd));
+    const double host_err = std::fabs(static_cast<double>(out[0]) + static_cast<double>(out[1]) - host);
+    const double bits_host = host_err == 0 ? 99 : -std::log2(host_err / std::fabs(host));
+    FamilyResult& fam = m.families[static_cast<size_t>(in.family)];
+    ++fam.samples;
+    const bool bad = (!(abs_err <= allowed) || std::isnan(out[0])) && std::fabs(xd) <= limit;
+    if (bad) ++fam.failures, ++m.failures;
+    fam.min_bits_host = std::min(fam.min_bits_host, bits_host);
+    const double ratio = std::isnan(out[0]) ? INFINITY : abs_err / allowed;
+    if (bits < fam.min_bits || std::isnan(bits)) {
+      fam.min_bits = std::isnan(bits) ? -1 : bits;
+    }
+    if (ratio > fam.worst_ratio || (bad && fam.worst.empty())) {
+      fam.worst_ratio = ratio;
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "x=%a y=%a got=%a+%a want=%a", xd, yd, out[0], out[1], rd);
+      fam.worst = buf;
+    }
+    if ((!fn.normal || fn.normal(xd, yd, rd)) && std::fabs(xd) <= limit) m.normal_min_bits = std::min(m.normal_min_bits, std::isnan(bits) ? -1 : bits);
+  }
+  for (mpfr_ptr p : {x, y, ref, got, err}) mpfr_clear(p);
+  return m;
+}
+
+std::string report(const Function& fn, const Measurement& m) {
+  std::string s;
+  for (size_t k = 0; k < m.families.size(); ++k) {
+    const FamilyResult& f = m.families[k];
+    char line[512];
+    std::snprintf(line, sizeof line, "  %-6s %-16s n=%6d min bits %6.2f (vs host double %6.2f)  worst err/bound %8.3g  failures %d  %s\n",
+                  fn.name, fn.families[k].first, f.samples, f.min_bits, f.min_bits_host, f.worst_ratio, f.failures,
+                  f.worst.c_str());
+    s += line;
+  }
+  char line[128];
+  std::snprintf(line, sizeof line, "  %-6s normal range: min bits %.2f\n", fn.name, m.normal_min_bits);
+  return s + line;
+}
+
+struct Case {
+  Backend backend;
+  doublet::Target target;
+};
+
+class Transcendentals : public ::testing::TestWithParam<Case> {};
+
+TEST_P(Transcendentals, WithinDocumentedBoundsAndAtLeast44BitsInTheNormalRange) {
+  auto [backend, target] = GetParam();
+  ASSERT_EQ(doublet::runner::backend_unavailable_reason(backend), "");
+  for (const Function& fn : functions()) {
+    Measurement m = measure(fn, backend, target, doublet::GuardKind::Auto);
+    ASSERT_TRUE(m.error.empty()) << fn.name << ": " << m.error;
+    std::printf("%s", report(fn, m).c_str());
+    EXPECT_EQ(m.failures, 0) << fn.name << "\n" << report(fn, m);
+    EXPECT_GE(m.normal_min_bits, 44.0) << fn.name << "\n" << report(fn, m);
+  }
+}
+
+TEST_P(Transcendentals, WithoutTheGuardTheBoundsBreak) {
+  auto [backend, target] = GetParam();
+  int broken = 0;
+  std::string all;
+  for (const Function& fn : functions()) {
+    Measurement m = measure(fn, backend, target, doublet::GuardKind::None);
+    ASSERT_TRUE(m.error.empty()) << fn.name << ": " << m.error;
+    broken += m.failures > 0;
+    all += report(fn, m);
+  }
+  std::printf("guard removed:\n%s", all.c_str());
+  EXPECT_GE(broken, 10) << all;
+}
+
+TEST_P(Transcendentals, DroppingLoBreaksEveryFunction) {
+  auto [backend, target] = GetParam();
+  for (const Function& fn : functions()) {
+    Measurement m = measure(fn, backend, target, doublet::GuardKind::Auto, true);
+    ASSERT_TRUE(m.error.empty()) << fn.name << ": " << m.error;
+    EXPECT_GT(m.failures, 0) << fn.name << " kept its bound with doubles demoted to float\n" << report(fn, m);
+    EXPECT_LT(m.normal_min_bits, 30.0) << fn.name;
+  }
+}
+
+// Each argument reduction skipped by editing one step of the lowered text; the edit must apply.
+// Every occurrence is replaced (the pi/2 reduction has two rounds).
+Edit replace(const std::string& from, const std::string& to) {
+  return [from, to](const std::string& text) {
+    std::string out = text;
+    size_t count = 0;
+    for (size_t at = out.find(from); at != std::string::npos; at = out.find(from, at + to.size()), ++count)
+      out.replace(at, from.size(), to);
+    return count ? out : std::string();
+  };
+}
+
+TEST_P(Transcendentals, SkippingAnArgumentReductionBreaksTheBound) {
+  auto [backend, target] = GetParam();
+  struct Sabotage {
+    const char* function;
+    Edit edit;
+  };
+  const std::vector<Sabotage> sabotages{
+      {"exp", replace("floor(a.hi * 1.44269504 + 0.5)", "floor(0.5)")},          // no ln 2 reduction
+      {"exp2", replace("floor(a.hi + 0.5)", "floor(0.5)")},                      // no integer split
+      {"log", replace("m0.hi < 0.707106781", "m0.hi < 0.0")},                    // m left in [0.5, 1)
+      {"sin", replace("floor(t.hi + 0.5)", "floor(0.5)")},                       // no pi/2 reduction
+      {"cos", replace("floor(t.hi + 0.5)", "floor(0.5)")},
+      {"atan", replace("df_double h = df_atan_halve(h1);", "df_double h = h1;")},  // one half-angle step
+  };
+  for (const Sabotage& s : sabotages) {
+    for (const Function& fn : functions()) {
+      if (fn.name != std::string(s.function)) continue;
+      Measurement m = measure(fn, backend, target, doublet::GuardKind::Auto, false, s.edit);
+      ASSERT_TRUE(m.error.empty()) << fn.name << ": " << m.error;
+      std::printf("reduction skipped:\n%s", report(fn, m).c_str());
+      EXPECT_GT(m.failures, 0) << fn.name << " kept its bound without its argument reduction\n" << report(fn, m);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Drivers, Transcendentals,
+                         ::testing::Values(Case{Backend::Vulkan, doublet::Target::Es310},
+                                           Case{Backend::Vulkan, doublet::Target::Glsl450},
+                                           Case{Backend::Gles, doublet::Target::Es310},
+                                           Case{Backend::Gles, doublet::Target::Es320}),
+                         [](const auto& info) {
+                           return std::string(doublet::runner::backend_name(info.param.backend)) + "_" +
+                                  std::string(doublet::to_string(info.param.target));
+                         });
+
+}  // namespace
