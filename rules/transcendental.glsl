@@ -26,7 +26,7 @@
 // Algorithm: Taylor polynomial of expm1, float tail and DWTimesDW1/AccurateDWPlusDW Horner steps
 // Source: Hida, Li, Bailey, ARITH-15, 2001 (double-double exp); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 12u^2
-// Flops: 440
+// Flops: 467
 // @widths 1
 $DF df_expm1_kernel($DF r) {
   $PRECISE $F t = $SAFE((((1.14707456e-11 * r.hi + 1.60590438e-10) * r.hi + 2.0876757e-09) * r.hi + 2.50521084e-08) * r.hi + 2.75573192e-07);
@@ -61,7 +61,7 @@ $DF df_expm1_kernel($DF r) {
 // Algorithm: Cody-Waite reduction by ln 2 (three words), df_expm1_kernel, df_ldexp
 // Source: Cody, Waite, Software Manual for the Elementary Functions, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 10u^2
-// Flops: 520
+// Flops: 557
 // Range: normal results for -70.7 <= x <= 88.72; float-float overflows above ln(FLT_MAX).
 // @widths 1 2 3 4
 // @per-component
@@ -96,7 +96,7 @@ $DF df_exp($DF a) {
 // Algorithm: split into integer and fraction, DWTimesDW1 by ln 2, df_expm1_kernel, df_ldexp
 // Source: Cody, Waite, 1980; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 12u^2
-// Flops: 510
+// Flops: 528
 // Range: normal results for -102 <= x <= 127.99.
 // @widths 1 2 3 4
 // @per-component
@@ -129,7 +129,7 @@ $DF df_exp2($DF a) {
 // Algorithm: atanh series of (m - 1)/(m + 1), DWDivDW2 and float-float Horner steps
 // Source: Muller, Elementary Functions, 3rd ed., 2016; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 28u^2
-// Flops: 370
+// Flops: 369
 // @widths 1
 $DF df_log_kernel($DF m) {
   $DF f = df_add_f(m, $F(-1.0));
@@ -205,7 +205,7 @@ $DF df_log($DF a) {
 // Algorithm: df_log_reduce, df_log_kernel, DWTimesDW1 by log2(e), DWPlusFP of the exponent
 // Source: Muller, Elementary Functions, 3rd ed., 2016; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 37u^2
-// Flops: 425
+// Flops: 424
 // Range: every finite x > 0.
 // @widths 1 2 3 4
 // @per-component
@@ -233,7 +233,7 @@ $DF df_log2($DF a) {
 // Algorithm: df_log, DWTimesDW1, df_exp
 // Source: Muller, Elementary Functions, 3rd ed., 2016; C99 Annex F.9.4.4
 // Bound: 40u^2 + 31u^2 * abs(y * log(x)) (relative)
-// Flops: 990
+// Flops: 1021
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
@@ -258,7 +258,7 @@ $DF df_pow($DF x, $DF y) {
 // Algorithm: Cody-Waite reduction by pi/2 with a four-word constant, exact TwoProd products, two-word k
 // Source: Cody, Waite, 1980; Muller, Elementary Functions, 3rd ed., 2016, section 11.2
 // Bound: 6u^2 * abs(r) + abs(x) * 2^-96 (absolute)
-// Flops: 290
+// Flops: 269
 // Range: |x| < 2^40 with the Precise guard; with the Uniform guard (no `precise`: ES 3.00/3.10, GL 3.30)
 // Mesa's optimizer costs bits for |x| > 2^20 (docs/transcendentals.md). Callers return NaN beyond 2^40.
 // @widths 1
@@ -297,7 +297,7 @@ $DF df_trig_reduce($DF a, out int q) {
 // Algorithm: Taylor polynomial of sin in w = r^2, float tail, float-float Horner steps
 // Source: Hida, Li, Bailey, ARITH-15, 2001; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 12u^2
-// Flops: 290
+// Flops: 275
 // @widths 1
 $DF df_sin_kernel($DF r, $DF w) {
   $PRECISE $F t = $SAFE(((2.81145725e-15 * w.hi - 7.64716373e-13) * w.hi + 1.60590438e-10) * w.hi - 2.50521084e-08);
@@ -322,7 +322,7 @@ $DF df_sin_kernel($DF r, $DF w) {
 // Algorithm: Taylor polynomial of cos in w = r^2, float tail, float-float Horner steps
 // Source: Hida, Li, Bailey, ARITH-15, 2001; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 8u^2
-// Flops: 300
+// Flops: 286
 // @widths 1
 $DF df_cos_kernel($DF w) {
   $PRECISE $F t = $SAFE(((-1.5619207e-16 * w.hi + 4.77947733e-14) * w.hi - 1.14707456e-11) * w.hi + 2.0876757e-09);
@@ -347,7 +347,7 @@ $DF df_cos_kernel($DF w) {
 // Algorithm: quadrant selection of df_sin_kernel / df_cos_kernel
 // Source: Cody, Waite, 1980; Muller, Elementary Functions, 3rd ed., 2016, section 11.1
 // Bound: 18u^2
-// Flops: 330
+// Flops: 317 (on the path taken)
 // @widths 1
 // @min-es 300
 // @uses df_mul:1 df_sin_kernel:1 df_cos_kernel:1 df_neg:1
@@ -372,7 +372,7 @@ $DF df_sin_quadrant($DF r, int q) {
 // Algorithm: df_trig_reduce (Cody-Waite, four-word pi/2), df_sin_quadrant
 // Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 20u^2 (relative) plus abs(x) * 2^-96 absolute
-// Flops: 640
+// Flops: 590 (on the path taken)
 // Range: |x| < 2^40.
 // @widths 1 2 3 4
 // @per-component
@@ -397,7 +397,7 @@ $DF df_sin($DF a) {
 // Algorithm: df_trig_reduce (Cody-Waite, four-word pi/2), df_sin_quadrant at quadrant q + 1
 // Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 20u^2 (relative) plus abs(x) * 2^-96 absolute
-// Flops: 640
+// Flops: 590 (on the path taken)
 // Range: |x| < 2^40.
 // @widths 1 2 3 4
 // @per-component
@@ -420,7 +420,7 @@ $DF df_cos($DF a) {
 // Algorithm: df_trig_reduce, df_sin_kernel and df_cos_kernel, DWDivDW2
 // Source: Cody, Waite, 1980; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 40u^2 (relative) plus abs(x) * 2^-96 absolute times (1 + tan(x)^2)
-// Flops: 960
+// Flops: 943
 // Range: |x| < 2^40.
 // @widths 1 2 3 4
 // @per-component
@@ -453,7 +453,7 @@ $DF df_tan($DF a) {
 // Algorithm: DWTimesDW1, DWPlusFP, SQRTDWtoDW, DWPlusFP, DWDivDW2
 // Source: Muller, Elementary Functions, 3rd ed., 2016 (half-angle reduction); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 22u^2
-// Flops: 125
+// Flops: 121
 // @widths 1
 $DF df_atan_halve($DF t) {
   $DF t2 = df_mul(t, t);
@@ -470,7 +470,7 @@ $DF df_atan_halve($DF t) {
 // Algorithm: two df_atan_halve steps, Taylor polynomial of atan, float-float Horner steps
 // Source: Muller, Elementary Functions, 3rd ed., 2016; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 55u^2
-// Flops: 520
+// Flops: 552
 // @widths 1
 $DF df_atan_kernel($DF t) {
   $DF h1 = df_atan_halve(t);
@@ -499,7 +499,7 @@ $DF df_atan_kernel($DF t) {
 // Algorithm: DWDivDW2 of the smaller by the larger, df_atan_kernel, AccurateDWPlusDW with pi/2
 // Source: Muller, Elementary Functions, 3rd ed., 2016; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 70u^2
-// Flops: 590
+// Flops: 614 (on the path taken)
 // @widths 1
 // @uses df_lt:1 df_div:1 df_atan_kernel:1 df_sub:1
 $DF df_atan2_unit($DF ay, $DF ax) {
@@ -515,10 +515,10 @@ $DF df_atan2_unit($DF ay, $DF ax) {
 }
 
 // df_atan: arctangent, in (-pi/2, pi/2). atan(+-0) = +-0, atan(+-Inf) = +-pi/2, NaN -> NaN.
-// Algorithm: df_atan2_unit(|x|, 1), sign of x
+// Algorithm: df_atan2_unit(abs(x), 1), sign of x
 // Source: Muller, Elementary Functions, 3rd ed., 2016; C99 Annex F.9.1.3
 // Bound: 70u^2
-// Flops: 600
+// Flops: 620 (on the path taken)
 // @widths 1 2 3 4
 // @per-component
 // @uses df_abs:1 df_atan2_unit:1 df_neg:1
@@ -541,7 +541,7 @@ $DF df_atan($DF a) {
 // Algorithm: df_atan2_unit, AccurateDWPlusDW with pi (float-float), sign
 // Source: Muller, Elementary Functions, 3rd ed., 2016; C99 Annex F.9.1.4
 // Bound: 70u^2
-// Flops: 620
+// Flops: 645 (on the path taken)
 // @widths 1 2 3 4
 // @per-component
 // @uses df_abs:1 df_atan2_unit:1 df_sub:1 df_neg:1
@@ -568,7 +568,7 @@ $DF df_atan2($DF y, $DF x) {
 // Algorithm: DWPlusFP, DWTimesDW1, SQRTDWtoDW, df_atan2
 // Source: Muller, Elementary Functions, 3rd ed., 2016; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 75u^2
-// Flops: 700
+// Flops: 729 (on the path taken)
 // Range: |x| <= 1.
 // @widths 1 2 3 4
 // @per-component
@@ -590,7 +590,7 @@ $DF df_asin($DF a) {
 // Algorithm: DWPlusFP, DWTimesDW1, SQRTDWtoDW, df_atan2
 // Source: Muller, Elementary Functions, 3rd ed., 2016; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 75u^2
-// Flops: 700
+// Flops: 729 (on the path taken)
 // Range: |x| <= 1.
 // @widths 1 2 3 4
 // @per-component
@@ -610,7 +610,7 @@ $DF df_acos($DF a) {
 // Algorithm: df_expm1_kernel, or df_exp and DWPlusFP
 // Source: Hida, Li, Bailey, ARITH-15, 2001; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 30u^2
-// Flops: 530
+// Flops: 568 (on the path taken)
 // @widths 1
 // @min-es 300
 // @uses df_expm1_kernel:1 df_exp:1 df_add_f:1
@@ -631,7 +631,7 @@ $DF df_expm1($DF a) {
 // Algorithm: df_expm1, DWPlusFP, DWDivDW2, AccurateDWPlusDW, sign
 // Source: Muller, Elementary Functions, 3rd ed., 2016 (sinh from expm1); C99 Annex F.9.2.5
 // Bound: 50u^2
-// Flops: 610
+// Flops: 645 (on the path taken)
 // Range: |x| <= 88.72.
 // @widths 1 2 3 4
 // @per-component
@@ -666,7 +666,7 @@ $DF df_sinh($DF a) {
 // Algorithm: df_exp, DWDivDW2, AccurateDWPlusDW
 // Source: Muller, Elementary Functions, 3rd ed., 2016; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 20u^2
-// Flops: 590
+// Flops: 622
 // Range: |x| <= 88.72.
 // @widths 1 2 3 4
 // @per-component
@@ -687,7 +687,7 @@ $DF df_cosh($DF a) {
 // Algorithm: df_expm1, DWPlusFP, DWDivDW2, sign
 // Source: Muller, Elementary Functions, 3rd ed., 2016 (tanh from expm1); C99 Annex F.9.2.6
 // Bound: 50u^2
-// Flops: 590
+// Flops: 625 (on the path taken)
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
