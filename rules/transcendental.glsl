@@ -536,12 +536,13 @@ $DF df_atan($DF a) {
 }
 
 // df_atan2: atan(y, x), the angle of (x, y) in [-pi, pi]: df_atan2_unit on |y|, |x|, then
-// pi - a when x < 0 and the sign of y. atan(+-0, x >= 0) = +-0, atan(+-0, x < 0) = +-pi;
-// atan(0, 0) = 0 (GLSL leaves it undefined; x = -0 is taken as +0, C gives pi); a NaN gives NaN.
+// pi - a when x < 0 and the sign of y (a zero's sign read as the sign of 1/y). atan(+-0, x >= 0)
+// = +-0, atan(+-0, x < 0) = +-pi; atan(+-0, +-0) = y (GLSL leaves it undefined; C gives +-pi for
+// x = -0); a NaN gives NaN.
 // Algorithm: df_atan2_unit, AccurateDWPlusDW with pi (float-float), sign
 // Source: Muller, Elementary Functions, 3rd ed., 2016; C99 Annex F.9.1.4
 // Bound: 70u^2
-// Flops: 645 (on the path taken)
+// Flops: 646 (on the path taken)
 // @widths 1 2 3 4
 // @per-component
 // @uses df_abs:1 df_atan2_unit:1 df_sub:1 df_neg:1
@@ -556,7 +557,8 @@ $DF df_atan2($DF y, $DF x) {
   if (x.hi < 0.0) {
     b = df_sub($DF($F(3.14159274), $F(-8.74227766e-08)), a);
   }
-  if (y.hi < 0.0) {
+  $PRECISE $F ys = $SAFE(y.hi == 0.0 ? 1.0 / y.hi : y.hi);
+  if (ys < 0.0) {
     $DF n = df_neg(b);
     return n;
   }
@@ -631,7 +633,7 @@ $DF df_expm1($DF a) {
 // Algorithm: df_expm1, DWPlusFP, DWDivDW2, AccurateDWPlusDW, sign
 // Source: Muller, Elementary Functions, 3rd ed., 2016 (sinh from expm1); C99 Annex F.9.2.5
 // Bound: 50u^2
-// Flops: 645 (on the path taken)
+// Flops: 646 (on the path taken)
 // Range: |x| <= 88.72.
 // @widths 1 2 3 4
 // @per-component
