@@ -562,9 +562,9 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
     return out.shader->parse(&resource_limits(), 450, ECompatibilityProfile, true, false, messages, includer);
   };
   bool ok = attempt(preamble);
-  // The transcendental extension (frontend/transcendentals.hpp): only a shader that does not parse
-  // as it is gets the double prototypes, so every shader that parses today parses the same.
-  if (!ok && includer.limit_error.empty() && mentions_transcendental(text)) {
+  // The transcendental extension (frontend/transcendentals.hpp): only a shader whose parse fails on
+  // a call of exp, sin, ... gets the double prototypes, so every other shader parses as before.
+  if (!ok && includer.limit_error.empty() && refuses_transcendental(out.shader->getInfoLog())) {
     ok = attempt(preamble + transcendental_prototypes());
     out.transcendentals = ok;
   }

@@ -1,6 +1,5 @@
 #include "frontend/transcendentals.hpp"
 
-#include <cctype>
 #include <set>
 
 #include "ir/walk.hpp"
@@ -20,21 +19,11 @@ bool is_name(std::string_view word) {
 
 }  // namespace
 
-bool mentions_transcendental(std::string_view text) {
-  auto is_word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  for (size_t i = 0; i < text.size();) {
-    if (!is_word(text[i]) || (i > 0 && is_word(text[i - 1]))) {
-      ++i;
-      continue;
-    }
-    size_t end = i;
-    while (end < text.size() && is_word(text[end])) ++end;
-    size_t next = end;
-    while (next < text.size() && (text[next] == ' ' || text[next] == '\t')) ++next;
-    if (next < text.size() && text[next] == '(' && is_name(text.substr(i, end - i))) return true;
-    i = end;
-  }
-  return false;
+bool refuses_transcendental(std::string_view glslang_log) {
+  for (const char* n : kUnary)
+    if (glslang_log.find("'" + std::string(n) + "' : no matching overloaded function found") != std::string_view::npos)
+      return true;
+  return glslang_log.find("'pow' : no matching overloaded function found") != std::string_view::npos;
 }
 
 const std::string& transcendental_prototypes() {

@@ -60,6 +60,16 @@ TEST(Transcendentals, FloatCallsKeepTheirMeaning) {
 
 // (Desktop target: GLSL ES forbids user functions named like built-ins, a limit of doublet's
 // printer for every such name, transcendental or not.)
+// A shader whose only errors are elsewhere is not re-parsed: its diagnostics are the same as
+// without the extension (no "double" errors from exp(1) resolving to a prototype).
+TEST(Transcendentals, OtherErrorsAreReportedAsBefore) {
+  auto r = lower("void main() { float f = exp(1); d[1] = double(f) + undeclared; }\n");
+  ASSERT_FALSE(r.ok);
+  EXPECT_NE(messages(r).find("t.comp:4:52: error: undeclared identifier 'undeclared'"), std::string::npos)
+      << messages(r);
+  EXPECT_EQ(messages(r).find("double"), std::string::npos) << messages(r);
+}
+
 TEST(Transcendentals, UserDefinitionsWin) {
   auto r = lower("double exp(double x) { return x + 1.0lf; }\nvoid main() { d[1] = exp(d[0]); }\n",
                  doublet::Target::Glsl450);
