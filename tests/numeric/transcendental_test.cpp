@@ -481,6 +481,147 @@ TEST_P(Transcendentals, SpecialValuesFollowC) {
   EXPECT_TRUE(failures.empty()) << failures;
 }
 
+// The vertex and fragment stages (geodesy runs in vertex shaders; Mesa flushes subnormals there
+// and optimizes each stage on its own): eight functions on inputs over wide ranges, each result
+// within its documented bound of MPFR; without the optimizer guard some must break it.
+struct StageCase {
+  Backend backend;
+  doublet::runner::GraphicsStage stage;
+  doublet::Target target;
+};
+
+constexpr uint32_t kStageSamples = 512;
+
+// Per sample: 8 inputs (a.xyzw, b.xyzw), each exact float-float.
+std::vector<double> stage_inputs() {
+  std::mt19937_64 rng(11);
+  const double lo[8] = {-100, -30, 0.01, -100, -2, -5, -1, -1000}, hi[8] = {100, 30, 100, 100, 2, 5, 1, 1000};
+  std::vector<double> v;
+  for (uint32_t i = 0; i < kStageSamples; ++i)
+    for (int k = 0; k < 8; ++k) {
+      const double x = uniform(rng, lo[k], hi[k]);
+      const float h = static_cast<float>(x);
+      v.push_back(static_cast<double>(h) + static_cast<double>(static_cast<float>(x - h)));
+    }
+  return v;
+}
+
+std::string stage_shader(doublet::runner::GraphicsStage stage) {
+  const bool fragment = stage == doublet::runner::GraphicsStage::Fragment;
+  std::string s = "#version 450\n";
+  s += fragment ? "flat in dvec4 a;\nflat in dvec4 b;\nlayout(location = 0) out vec4 r_hi;\nlayout(location = 1) out vec4 r_lo;\n"
+                  "layout(location = 2) out vec4 s_hi;\nlayout(location = 3) out vec4 s_lo;\n"
+                : "in dvec4 a;\nin dvec4 b;\nlayout(location = 0) out dvec4 r;\nlayout(location = 2) out dvec4 s;\n";
+  s += "void main() {\n"
+       "  dvec4 rr = dvec4(sin(a.x), exp(a.y), log(a.z), atan(a.w, a.x));\n"
+       "  dvec4 ss = dvec4(pow(a.z, b.x), tanh(b.y), acos(b.z), cos(b.w));\n";
+  s += fragment ? "  r_hi = vec4(rr);\n  r_lo = vec4(rr - dvec4(r_hi));\n  s_hi = vec4(ss);\n  s_lo = vec4(ss - dvec4(s_hi));\n"
+                : "  r = rr;\n  s = ss;\n  gl_Position = vec4(0.0);\n";
+  return s + "}\n";
+}
+
+// Results over their bounds (and a description of the worst); -1 with *error when nothing ran.
+int stage_failures(const StageCase& c, doublet::GuardKind guard, std::string* worst, std::string* error) {
+  doublet::Options o;
+  o.stage = c.stage == doublet::runner::GraphicsStage::Vertex ? doublet::Stage::Vertex : doublet::Stage::Fragment;
+  o.target = c.target;
+  o.guard = guard;
+  o.file_name = "stage.glsl";
+  auto lowered = doublet::lower(stage_shader(c.stage), o);
+  if (!lowered.ok) {
+    for (const auto& d : lowered.diagnostics) *error += doublet::format_diagnostic(d) + "\n";
+    return -1;
+  }
+  const std::vector<double> in = stage_inputs();
+  doublet::runner::GraphicsJob job;
+  job.stage = c.stage;
+  job.glsl = lowered.output;
+  job.count = kStageSamples;
+  for (const char* v : {"a", "b"}) {
+    std::vector<double> h, l;
+    for (uint32_t i = 0; i < kStageSamples; ++i)
+      for (int k = 0; k < 4; ++k) {
+        const double x = in[i * 8 + (v[0] == 'a' ? 0 : 4) + k];
+        h.push_back(static_cast<float>(x));
+        l.push_back(x - static_cast<float>(x));
+      }
+    job.inputs[std::string(v) + "_hi"] = h;
+    job.inputs[std::string(v) + "_lo"] = l;
+  }
+  auto result = doublet::runner::run_graphics(c.backend, job);
+  if (!result.ok) {
+    *error = result.error;
+    return -1;
+  }
+  int failures = 0;
+  double worst_ratio = 0;
+  mpfr_t x, y, ref;
+  for (mpfr_ptr p : {x, y, ref}) mpfr_init2(p, 200);
+  const char* names[8] = {"sin", "exp", "log", "atan2", "pow", "tanh", "acos", "cos"};
+  for (uint32_t i = 0; i < kStageSamples; ++i) {
+    const double* v = &in[i * 8];
+    for (int k = 0; k < 8; ++k) {
+      const char* word = k < 4 ? "r" : "s";
+      const double got = result.outputs[std::string(word) + "_hi"][i * 4 + k % 4] +
+                         result.outputs[std::string(word) + "_lo"][i * 4 + k % 4];
+      double allowed = 0;
+      switch (k) {  // the inputs are exact in binary64, so MPFR sees the shader's values
+        case 0: mpfr_set_d(x, v[0], MPFR_RNDN); mpfr_sin(ref, x, MPFR_RNDN); break;
+        case 1: mpfr_set_d(x, v[1], MPFR_RNDN); mpfr_exp(ref, x, MPFR_RNDN); break;
+        case 2: mpfr_set_d(x, v[2], MPFR_RNDN); mpfr_log(ref, x, MPFR_RNDN); break;
+        case 3: mpfr_set_d(y, v[3], MPFR_RNDN); mpfr_set_d(x, v[0], MPFR_RNDN); mpfr_atan2(ref, y, x, MPFR_RNDN); break;
+        case 4: mpfr_set_d(x, v[2], MPFR_RNDN); mpfr_set_d(y, v[4], MPFR_RNDN); mpfr_pow(ref, x, y, MPFR_RNDN); break;
+        case 5: mpfr_set_d(x, v[5], MPFR_RNDN); mpfr_tanh(ref, x, MPFR_RNDN); break;
+        case 6: mpfr_set_d(x, v[6], MPFR_RNDN); mpfr_acos(ref, x, MPFR_RNDN); break;
+        default: mpfr_set_d(x, v[7], MPFR_RNDN); mpfr_cos(ref, x, MPFR_RNDN); break;
+      }
+      const double want = mpfr_get_d(ref, MPFR_RNDN);
+      const double c_u2[8] = {20, 10, 28, 70, 40 + 31 * std::fabs(v[4] * std::log(v[2])), 50, 75, 20};
+      allowed = c_u2[k] * kU2 * std::fabs(want) + ((k == 0 || k == 7) ? std::fabs(v[k == 0 ? 0 : 7]) * 0x1p-96 : 0);
+      mpfr_set_d(x, got, MPFR_RNDN);
+      mpfr_sub(x, x, ref, MPFR_RNDN);
+      const double err = std::fabs(mpfr_get_d(x, MPFR_RNDN));
+      const double ratio = std::isnan(got) ? INFINITY : err / allowed;
+      if (!(ratio <= 1)) ++failures;
+      if (!(ratio <= worst_ratio)) {
+        worst_ratio = ratio;
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%s: got %a want %a (error / bound %.3g)", names[k], got, want, ratio);
+        *worst = buf;
+      }
+    }
+  }
+  for (mpfr_ptr p : {x, y, ref}) mpfr_clear(p);
+  return failures;
+}
+
+class TranscendentalStages : public ::testing::TestWithParam<StageCase> {};
+
+TEST_P(TranscendentalStages, WithinBoundsAndBrokenWithoutTheGuard) {
+  std::string worst, error;
+  const int failures = stage_failures(GetParam(), doublet::GuardKind::Auto, &worst, &error);
+  ASSERT_GE(failures, 0) << error;
+  std::printf("worst: %s\n", worst.c_str());
+  EXPECT_EQ(failures, 0) << worst;
+  std::string sabotaged_worst;
+  const int sabotaged = stage_failures(GetParam(), doublet::GuardKind::None, &sabotaged_worst, &error);
+  ASSERT_GE(sabotaged, 0) << error;
+  std::printf("guard removed: %d results over their bounds, worst %s\n", sabotaged, sabotaged_worst.c_str());
+  EXPECT_GT(sabotaged, 0) << "the stage check kept its bounds without the optimizer guard";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Drivers, TranscendentalStages,
+    ::testing::Values(StageCase{Backend::Vulkan, doublet::runner::GraphicsStage::Vertex, doublet::Target::Glsl450},
+                      StageCase{Backend::Vulkan, doublet::runner::GraphicsStage::Fragment, doublet::Target::Glsl450},
+                      StageCase{Backend::Gles, doublet::runner::GraphicsStage::Vertex, doublet::Target::Es300},
+                      StageCase{Backend::Gles, doublet::runner::GraphicsStage::Fragment, doublet::Target::Es320}),
+    [](const auto& info) {
+      return std::string(doublet::runner::backend_name(info.param.backend)) + "_" +
+             (info.param.stage == doublet::runner::GraphicsStage::Vertex ? "vert" : "frag") + "_" +
+             std::string(doublet::to_string(info.param.target));
+    });
+
 INSTANTIATE_TEST_SUITE_P(Drivers, Transcendentals,
                          ::testing::Values(Case{Backend::Vulkan, doublet::Target::Es310},
                                            Case{Backend::Vulkan, doublet::Target::Glsl450},
