@@ -249,6 +249,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     if (!ctx.rules_used.empty()) {
       if (guard.style == rules::GuardStyle::Precise) result.manifest.guard.kind = "precise";
       if (guard.style == rules::GuardStyle::Uniform) {
+        print_options.guard_uniform = options.guard_uniform_name;
         result.manifest.guard.kind = "uniform";
         result.manifest.guard.uniform_name = options.guard_uniform_name;
         result.manifest.guard.uniform_type = "float";

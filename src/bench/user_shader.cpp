@@ -1,29 +1,32 @@
 #include "bench/user_shader.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
+
+#include "doublet/doublet.hpp"
+#include "frontend/read_limited.hpp"
 
 namespace doublet::bench {
 namespace {
 
-bool read(const std::filesystem::path& p, std::string* out) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  *out = ss.str();
-  return true;
+// The file's text, within what is left of doublet's source limit (the shader and its includes
+// together, as doublet::lower counts them): a /dev/zero or an endless pipe is refused, not read.
+bool read(const std::filesystem::path& p, std::size_t already_read, std::string* out, std::string* error) {
+  const std::size_t budget = already_read >= kMaxSourceBytes ? 0 : kMaxSourceBytes - already_read;
+  switch (frontend::read_file_limited(p.string(), budget, *out).status) {
+    case frontend::ReadStatus::Ok: return true;
+    case frontend::ReadStatus::TooLarge: *error = p.string() + ": " + frontend::source_too_large_message("input"); return false;
+    case frontend::ReadStatus::Failed: break;
+  }
+  *error = "cannot read " + p.string();
+  return false;
 }
 
 bool expand(const std::filesystem::path& path, const std::vector<std::string>& dirs, std::set<std::string>& seen,
             std::string* out, std::string* error) {
   std::string text;
-  if (!read(path, &text)) {
-    *error = "cannot read " + path.string();
-    return false;
-  }
+  if (!read(path, out->size(), &text, error)) return false;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     const size_t hash = line.find_first_not_of(" \t");

@@ -1,6 +1,8 @@
 // `doublet demo jitter|mandelbrot`: render the demos (src/demo) and print the numbers.
+// `doublet demo --web DIR`: write the browser page (src/demo/web_page.*) into DIR.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -8,6 +10,7 @@
 #include "commands.hpp"
 #include "demo/jitter.hpp"
 #include "demo/mandelbrot.hpp"
+#include "demo/web_page.hpp"
 
 namespace doublet::cli {
 namespace {
@@ -18,6 +21,8 @@ struct DemoArgs {
   std::vector<double> center;  // X,Y
   std::vector<double> zooms;
   std::string out_dir = "demo-out";
+  std::string web_dir;               // --web DIR
+  std::string web_sabotage = "none";  // hidden --sabotage, for the page's tests
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -83,12 +88,35 @@ int run_mandelbrot_demo(const CLI::App& app, const DemoArgs& a) {
   return kExitOk;
 }
 
+int write_web_demo(const CLI::App& app, const DemoArgs& a) {
+  demo::WebPageOptions o;
+  const std::optional<demo::WebSabotage> sabotage = demo::parse_web_sabotage(a.web_sabotage);
+  if (!sabotage) return usage_error(app, "--sabotage takes none, no-guard or drop-lo");
+  o.sabotage = *sabotage;
+  if (std::string e = demo::write_web_page(a.web_dir, o); !e.empty()) return fail("--web", e);
+  const std::string page = (std::filesystem::path(a.web_dir) / "index.html").string();
+  std::printf("wrote %s (self-contained: open it from the file system or any static server)\n", page.c_str());
+  std::printf("modes:");
+  for (Mode m : o.modes) std::printf(" %s", std::string(to_string(m)).c_str());
+  if (o.sabotage != demo::WebSabotage::None)
+    std::printf("  (SABOTAGED: %s)", std::string(demo::to_string(o.sabotage)).c_str());
+  std::printf("\n");
+  return kExitOk;
+}
+
 }  // namespace
 
 Command add_demo_command(CLI::App& app) {
   auto args = std::make_shared<DemoArgs>();
-  CLI::App* demo = app.add_subcommand("demo", "Render the jitter and deep-zoom demos on Mesa's drivers");
-  demo->require_subcommand(1);
+  CLI::App* demo = app.add_subcommand(
+      "demo", "Render the jitter and deep-zoom demos on Mesa's drivers, or write them as a web page (--web DIR)");
+  demo->require_subcommand(0, 1);
+  demo->add_option("--web", args->web_dir,
+                   "Write DIR/index.html: both demos in WebGL2 per mode, checked and timed in the browser")
+      ->type_name("DIR");
+  // Tests only: a page whose float-float panels must fail (no-guard: lowered without the optimizer
+  // guard; drop-lo: the page uploads lo = 0). An empty group hides it from --help.
+  demo->add_option("--sabotage", args->web_sabotage, "none | no-guard | drop-lo")->group("");
   const char* modes_help = "fp32 (doubles demoted to float), df64 (doublet), native (fp64 on lavapipe); default: all";
   CLI::App* jitter = demo->add_subcommand("jitter", "Satellites at geostationary distance: vertex wobble per mode");
   jitter->add_option("--mode", args->modes, modes_help)->delimiter(',');
@@ -100,6 +128,14 @@ Command add_demo_command(CLI::App& app) {
   mandel->add_option("--zoom", args->zooms, "Complex-plane units per pixel (default: 1e-7 and 1e-12)");
   mandel->add_option("-o,--out-dir", args->out_dir, "Where the PNGs go (default demo-out)");
   return {demo, [=] {
+            const bool web = !args->web_dir.empty();
+            if (web && (jitter->parsed() || mandel->parsed()))
+              return usage_error(*demo, "--web writes the page of both demos: give it without jitter/mandelbrot");
+            if (web) return write_web_demo(*demo, *args);
+            if (demo->count("--web")) return usage_error(*demo, "--web needs a directory");
+            if (args->web_sabotage != "none") return usage_error(*demo, "--sabotage goes with --web");
+            if (!jitter->parsed() && !mandel->parsed())
+              return usage_error(*demo, "say which demo: jitter, mandelbrot, or --web DIR");
             if (jitter->parsed()) return run_jitter_demo(*jitter, *args);
             return run_mandelbrot_demo(*mandel, *args);
           }};

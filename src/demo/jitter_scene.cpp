@@ -46,6 +46,8 @@ JitterGeometry jitter_geometry() {
   return g;
 }
 
+JitterOrbit jitter_orbit() { return {kCentre, kRadial, kAlongTrack, kNorth}; }
+
 JitterCamera jitter_camera(int i, int frames, double aspect) {
   const double s = frames > 1 ? static_cast<double>(i) / (frames - 1) : 0.0;
   const double distance = 10.0 + 40.0 * s;

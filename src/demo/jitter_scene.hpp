@@ -17,6 +17,12 @@ struct JitterGeometry {
 };
 JitterGeometry jitter_geometry();
 
+// Where the pair sits: its centre (Earth-centred metres) and the orbit's unit axes there.
+struct JitterOrbit {
+  std::array<double, 3> centre, radial, along_track, north;
+};
+JitterOrbit jitter_orbit();
+
 struct JitterCamera {
   std::array<double, 3> eye;                // Earth-centred metres
   std::array<float, 16> view_projection;   // column-major; rotation and projection, no translation

@@ -91,7 +91,27 @@ class Printer {
       out_ << "layout(local_size_x = " << module_.local_size[0] << ", local_size_y = " << module_.local_size[1]
            << ", local_size_z = " << module_.local_size[2] << ") in;\n";
     out_ << "\n";
+    if (!options_.guard_uniform.empty()) hoist_loose_uniforms();
     if (!options_.runtime.empty()) out_ << options_.runtime << "\n";
+  }
+
+  static bool is_loose_numeric_uniform(const ir::Var& v) {
+    const ir::Base b = v.type.base;
+    return v.storage == ir::Storage::Uniform && !v.block &&
+           (b == ir::Base::Float || b == ir::Base::Int || b == ir::Base::Uint || b == ir::Base::Bool);
+  }
+
+  // See PrintOptions::guard_uniform.
+  void hoist_loose_uniforms() {
+    bool any = false;
+    for (size_t i = 0; i < module_.globals.size(); ++i) {
+      const ir::VarPtr& v = module_.globals[i];
+      if (!is_loose_numeric_uniform(*v) || v->name == options_.guard_uniform) continue;
+      global(v, module_.global_inits[i]);
+      hoisted_.insert(v.get());
+      any = true;
+    }
+    if (any) out_ << "\n";
   }
 
   void struct_definition(const ir::Type& t) {
@@ -264,7 +284,7 @@ class Printer {
   }
 
   void global(const ir::VarPtr& v, const ir::ExprPtr& init) {
-    if (v.get() == frag_output_) return;
+    if (v.get() == frag_output_ || hoisted_.count(v.get())) return;
     if (v->storage == ir::Storage::BuiltIn) return;
     if (v->type.base == ir::Base::Block) {
       out_ << qualifiers(*v) << v->type.name << " {\n";
@@ -524,6 +544,7 @@ class Printer {
   std::ostringstream out_;
   std::vector<Diagnostic> diags_;
   const ir::Var* frag_output_ = nullptr;
+  std::set<const ir::Var*> hoisted_;  // loose uniforms printed before the runtime (hoist_loose_uniforms)
   bool frag_color_declared_ = false;
   int frag_data_size_ = 0;  // elements of df_frag_data, the gl_FragData stand-in (0: not used)
   bool frag_data_dynamic_ = false;  // an index is computed: one array instead of one output per slot

@@ -19,6 +19,7 @@ class MacroBudget::Weigher {
 
   void feed(const Item& item) {
     double repeat = 0;
+    bool pastes = false;  // this item names a macro whose expansion pastes a name together
     switch (item.kind) {
       case Item::Plain: add(item.value, multiplier_); break;
       case Item::Open:
@@ -28,6 +29,7 @@ class MacroBudget::Weigher {
           calls_.push_back({depth_, multiplier_});
           multiplier_ *= pending_repeat_;
         }
+        if (pending_pastes_) paste_calls_.push_back(depth_);
         break;
       case Item::Close:
         add(1, multiplier_);
@@ -35,11 +37,25 @@ class MacroBudget::Weigher {
           multiplier_ = calls_.back().second;
           calls_.pop_back();
         }
+        // CAT(RE,P)(x): the call's result may be a function-like macro's name, called by the next list.
+        if (!paste_calls_.empty() && paste_calls_.back() == depth_) {
+          paste_calls_.pop_back();
+          repeat = budget_.paste_repeat_;
+        }
         --depth_;
         break;
-      case Item::Ident: repeat = ident(item.value); break;
+      case Item::Ident:
+        repeat = ident(item.value);
+        pastes = budget_.pastes_in(item.value);
+        if (pastes && !budget_.is_function_like(item.value)) repeat = std::max(repeat, budget_.paste_repeat_);
+        break;
+      case Item::Paste:  // joins two tokens into a name that may be any macro's
+        add(budget_.paste_size_, multiplier_);
+        repeat = budget_.paste_repeat_;
+        break;
     }
     pending_repeat_ = repeat;
+    pending_pastes_ = pastes;
   }
 
   double total() const { return total_; }
@@ -77,7 +93,9 @@ class MacroBudget::Weigher {
   std::unordered_map<int, size_t> param_index_;  // a macro may have thousands of parameters
   std::vector<double> param_weight_;
   double total_ = 0, spelled_ = 0, multiplier_ = 1, pending_repeat_ = 0;
+  bool pending_pastes_ = false;
   int depth_ = 0;
+  std::vector<int> paste_calls_;  // paren depths of calls of macros that paste
   std::vector<std::pair<int, double>> calls_;  // (paren depth, multiplier outside)
 };
 
@@ -108,6 +126,10 @@ void MacroBudget::tokenize(std::string_view text, std::vector<Item>& out, bool i
       } else {
         plain();  // named by no definition: cannot expand
       }
+    } else if (c == '#' && text.size() > 1 && text[1] == '#') {
+      out.push_back({Item::Paste, 0});
+      has_paste_ = true;
+      text.remove_prefix(2);
     } else {
       if (c == '(') out.push_back({Item::Open, 0});
       else if (c == ')') out.push_back({Item::Close, 0});
@@ -138,8 +160,13 @@ void MacroBudget::define(std::string_view rest, const MacroOrigin& origin) {
   tokenize(rest, d.body, true);
   const int id = intern(name);
   if (definitions_.size() <= static_cast<size_t>(id)) definitions_.resize(static_cast<size_t>(id) + 1);
+  if (std::any_of(d.body.begin(), d.body.end(), [](const Item& i) { return i.kind == Item::Paste; })) {
+    if (pastes_.size() <= static_cast<size_t>(id)) pastes_.resize(static_cast<size_t>(id) + 1, false);
+    pastes_[static_cast<size_t>(id)] = true;
+  }
   definitions_[static_cast<size_t>(id)].push_back(std::move(d));
   state_.clear();  // sizes are recomputed with the new definition
+  pastes_settled_ = false;
 }
 
 void MacroBudget::add_definitions(std::string_view text, const std::string& file) {
@@ -195,7 +222,34 @@ void MacroBudget::measure_definitions(int id) {
   repeat_[id] = repeat;
 }
 
+// Each round weighs every macro with a paste counting as the largest macro of the round before,
+// so round k follows pastes that make pasting macros' names k deep; it stops when nothing grows.
+void MacroBudget::settle_pastes() {
+  if (pastes_settled_) return;
+  pastes_settled_ = true;
+  paste_size_ = 1;
+  paste_repeat_ = 0;
+  if (!has_paste_) return;
+  for (int round = 0; round < kPasteRounds; ++round) {
+    state_.assign(names_.size(), State::Unknown);
+    size_tables();
+    double largest_size = 1, largest_repeat = 0;
+    for (size_t id = 0; id < definitions_.size(); ++id) {
+      if (definitions_[id].empty()) continue;
+      measure(static_cast<int>(id));
+      largest_size = std::max(largest_size, size_[id]);
+      largest_repeat = std::max(largest_repeat, repeat_[id]);
+    }
+    const bool settled = largest_size <= paste_size_ && largest_repeat <= paste_repeat_;
+    paste_size_ = std::max(paste_size_, largest_size);
+    paste_repeat_ = std::max(paste_repeat_, largest_repeat);
+    if (settled) break;
+  }
+  state_.assign(names_.size(), State::Unknown);  // measured again with the final paste weights
+}
+
 MacroBudget::Weight MacroBudget::weigh(std::string_view text) {
+  settle_pastes();
   size_tables();
   Weigher w(*this);
   std::vector<Item> items;
@@ -213,6 +267,7 @@ MacroBudget::Weight MacroBudget::weigh(std::string_view text) {
 }
 
 MacroBudget::Largest MacroBudget::largest_macro() {
+  settle_pastes();
   Largest largest;
   for (size_t id = 0; id < definitions_.size(); ++id) {
     if (definitions_[id].empty()) continue;

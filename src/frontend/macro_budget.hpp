@@ -9,8 +9,11 @@
 // definition of a name counts (#if and #undef are ignored, so the bound may be
 // high, never low), a macro inside its own expansion counts once (it is not
 // re-expanded), and the arguments of a function-like macro count as many times
-// as its body names a parameter. Token pasting (##) only joins tokens. Linear
-// in the text and definitions; no recursion.
+// as its body names a parameter. Token pasting (##) can make the name of any
+// macro (CAT(B,26) -> B26), so a paste counts as the largest macro there is,
+// and as repeating a following argument list as much as any macro does; a
+// paste that makes the name of another pasting macro is followed
+// kPasteRounds deep. Linear in the text and definitions; no recursion.
 #pragma once
 
 #include <cstdint>
@@ -53,7 +56,7 @@ class MacroBudget {
 
  private:
   struct Item {
-    enum Kind : std::uint8_t { Plain, Ident, Open, Close } kind;
+    enum Kind : std::uint8_t { Plain, Ident, Open, Close, Paste } kind;
     int value;  // Plain: how many tokens; Ident: interned name
   };
   struct Definition {
@@ -71,8 +74,16 @@ class MacroBudget {
   void size_tables();
   void define(std::string_view rest, const MacroOrigin& origin);
   bool is_macro(int id) const { return id < static_cast<int>(definitions_.size()) && !definitions_[id].empty(); }
+  bool is_function_like(int id) const {
+    return is_macro(id) && definitions_[id].back().function_like;
+  }
+  // Some definition of `id` pastes tokens (its expansion may end in any macro's name).
+  bool pastes_in(int id) const { return id < static_cast<int>(pastes_.size()) && pastes_[id]; }
   void measure(int id);  // fills size_/repeat_ for `id` and everything it names
   void measure_definitions(int id);
+  // Fixes paste_size_/paste_repeat_ once the definitions are known (see the header comment).
+  void settle_pastes();
+  static constexpr int kPasteRounds = 8;
 
   struct NameHash {
     using is_transparent = void;
@@ -84,6 +95,9 @@ class MacroBudget {
   std::vector<State> state_;
   std::vector<double> size_;    // tokens one use expands to
   std::vector<double> repeat_;  // how often the body repeats an argument (function-like)
+  std::vector<bool> pastes_;  // by id: some definition's body has ##
+  bool has_paste_ = false, pastes_settled_ = false;
+  double paste_size_ = 1, paste_repeat_ = 0;  // what one ## result may expand to
 };
 
 }  // namespace doublet::frontend

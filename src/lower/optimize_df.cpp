@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
 #include <set>
 
+#include "frontend/text_scan.hpp"
 #include "ir/walk.hpp"
 
 namespace doublet::passes {
@@ -229,8 +229,13 @@ bool optimize_df(ir::Module& module, Context& ctx, OptimizeStats* stats) {
   static const std::set<std::string> replaceable{"df_mul", "df_div", "df_mul_f", "df_add", "df_sub", "df_from_float"};
   std::string helper_text;
   for (const auto& [name, text] : ctx.helpers) helper_text += text;
+  // A call `name(` in the helpers' text, not the tail of a longer name (df_mul in df_mul_pow2( is not
+  // a call of df_mul; xdf_mul( is not either).
   const auto in_helpers = [&](const std::string& name) {
-    return std::regex_search(helper_text, std::regex("\\b" + name + "\\("));
+    const std::string call = name + "(";
+    for (size_t at = helper_text.find(call); at != std::string::npos; at = helper_text.find(call, at + 1))
+      if (at == 0 || !frontend::is_word_char(helper_text[at - 1])) return true;
+    return false;
   };
   std::vector<rules::RuleRef> kept;
   for (const auto& r : ctx.rules_used)

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
+#include <string_view>
 #include <nlohmann/json.hpp>
-#include <regex>
 
 #include "frontend/frontend.hpp"
 #include "frontend/import.hpp"
+#include "frontend/text_scan.hpp"
 #include "plan/analysis.hpp"
 
 namespace doublet::plan {
@@ -38,15 +40,49 @@ std::string kind_of(const ir::Var* v) {
   }
 }
 
+// True when `line` declares `name` as an interface variable: a storage word (in, out, uniform,
+// buffer, attribute, varying), then `name` as a whole word with nothing but an optional array size
+// before the `;`, and no `;`, `{` or `}` in between. A scanner, not a regex: libstdc++'s matcher
+// recurses per character, and a user's 4 MB line would overflow the stack.
+bool declares_interface_variable(std::string_view line, const std::string& name) {
+  static const std::set<std::string_view> storage{"in", "out", "uniform", "buffer", "attribute", "varying"};
+  bool storage_seen = false;
+  size_t i = 0;
+  while (i < line.size()) {
+    const char c = line[i];
+    if (c == ';' || c == '{' || c == '}') {
+      storage_seen = false;
+      ++i;
+      continue;
+    }
+    if (!frontend::is_word_char(c)) {
+      ++i;
+      continue;
+    }
+    size_t end = i;
+    while (end < line.size() && frontend::is_word_char(line[end])) ++end;
+    const std::string_view word = line.substr(i, end - i);
+    i = end;
+    if (storage.count(word)) storage_seen = true;
+    if (!storage_seen || word != name) continue;
+    std::string_view rest = frontend::trim_blanks(line.substr(end));
+    if (!rest.empty() && rest.front() == '[') {
+      const size_t close = rest.find_first_of("]");
+      if (close == std::string_view::npos) continue;
+      rest = frontend::trim_blanks(rest.substr(close + 1));
+    }
+    if (!rest.empty() && rest.front() == ';') return true;
+  }
+  return false;
+}
+
 // glslang places interface variables at their first use; the table wants the declaration.
 int declaration_line(std::string_view source, const std::string& name, int fallback) {
-  const std::regex decl("\\b(in|out|uniform|buffer|attribute|varying)\\b[^;{}]*\\b" + name + "\\b\\s*(\\[[^\\]]*\\])?\\s*;");
   int line = 1;
   size_t start = 0;
   while (start < source.size()) {
     const size_t end = std::min(source.find('\n', start), source.size());
-    const std::string text(source.substr(start, end - start));
-    if (std::regex_search(text, decl)) return line;
+    if (declares_interface_variable(source.substr(start, end - start), name)) return line;
     start = end + 1;
     ++line;
   }

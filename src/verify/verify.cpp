@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <regex>
 #include <sstream>
 
+#include "frontend/text_scan.hpp"
 #include "verify/compute_harness.hpp"
 #include "verify/graphics_harness.hpp"
 
@@ -17,10 +17,16 @@ namespace {
 // there), with the -D definitions after the #version line (a #line keeps line numbers) and every
 // `#include "..."` expanded the way the lowering resolves it (Options::includer, else next to the
 // including file, then the -I directories), so that both runs compile the same program.
+// The file an `#include "name"` or `#include <name>` line names, else "". (A scanner, not a regex:
+// libstdc++'s matcher recurses per character and a long line would overflow the stack.)
 std::string include_line_target(const std::string& line) {
-  static const std::regex include(R"(^[ \t]*#[ \t]*include[ \t]*["<]([^">]+)[">].*$)");
-  std::smatch m;
-  return std::regex_match(line, m, include) ? m[1].str() : std::string();
+  std::string_view rest;
+  if (frontend::directive_name(line, rest) != "include") return "";
+  rest = frontend::trim_blanks(rest);
+  if (rest.empty() || (rest.front() != '"' && rest.front() != '<')) return "";
+  const size_t end = rest.find_first_of("\">", 1);
+  if (end == std::string_view::npos || end == 1) return "";
+  return std::string(rest.substr(1, end - 1));
 }
 
 std::optional<IncludeResult> resolve_include(const Options& o, const std::string& requested, const std::string& from) {
@@ -61,11 +67,20 @@ bool expand_includes(const Options& o, const std::string& text, const std::strin
 }
 
 std::string as_native_450(std::string_view source, const Options& o, std::string* error) {
-  static const std::regex version(R"(^[ \t]*#[ \t]*version[^\n]*)", std::regex::multiline);
   std::string s(source);
-  std::smatch m;
-  const bool has_version = std::regex_search(s, m, version);
-  const size_t body_at = has_version ? static_cast<size_t>(m.position(0) + m.length(0)) : 0;
+  // The first line that is a #version directive: [version_at, body_at) without its newline.
+  size_t version_at = 0, body_at = 0;
+  bool has_version = false;
+  for (size_t start = 0; start < s.size() && !has_version;) {
+    const size_t end = std::min(s.find('\n', start), s.size());
+    std::string_view rest;
+    if (frontend::directive_name(std::string_view(s).substr(start, end - start), rest) == "version") {
+      has_version = true;
+      version_at = start;
+      body_at = end;
+    }
+    start = end + 1;
+  }
   const int body_line = has_version ? 1 + static_cast<int>(std::count(s.begin(), s.begin() + static_cast<long>(body_at), '\n')) : 1;
   std::string header = "#version 450\n";
   for (const auto& [name, value] : o.defines) header += "#define " + name + " " + (value.empty() ? "1" : value) + "\n";
@@ -74,7 +89,7 @@ std::string as_native_450(std::string_view source, const Options& o, std::string
   if (has_version && !body.empty() && body.front() == '\n') body.erase(0, 1);
   std::string expanded;
   if (!expand_includes(o, body, o.file_name, 0, &expanded, error)) return {};
-  return (has_version ? s.substr(0, static_cast<size_t>(m.position(0))) : std::string()) + header + expanded;
+  return (has_version ? s.substr(0, version_at) : std::string()) + header + expanded;
 }
 
 std::string diagnostics_text(const Result& r) {

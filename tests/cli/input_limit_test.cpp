@@ -111,6 +111,20 @@ class InputLimitCli : public ::testing::Test {
   ScratchDir dir;
 };
 
+// `plan` and `verify` scanned the user's lines with std::regex too (declaration lines, #version and
+// #include of the native reference); a 4 MiB line would overflow the stack there as well.
+TEST_F(InputLimitCli, PlanAndVerifyTakeFourMegabyteLines) {
+  const std::string scenes = std::string(DOUBLET_SOURCE_DIR) + "/examples/scenes/";
+  write_file(dir / "long.comp", read_file(scenes + "globe_rte.comp") + "\n" + std::string(4u << 20, ' ') + "\n");
+  const std::string scene = " --scene '" + scenes + "globe_compute.scene.json'";
+  const ProcessResult plan = run_shell("exec " + cli + " plan long.comp" + scene);
+  EXPECT_EQ(plan.exit_code, 0) << plan.err;
+  EXPECT_NE(plan.out.find("double flops per invocation"), std::string::npos) << plan.out;
+  const ProcessResult verify = run_shell("exec " + cli + " verify long.comp --backend gles --samples 2" + scene);
+  EXPECT_EQ(verify.exit_code, 0) << verify.err;
+  EXPECT_NE(verify.out.find("result: PASS"), std::string::npos) << verify.out;
+}
+
 TEST_F(InputLimitCli, DevZeroIsRefused) {
   expect_refusal(run_shell("exec " + cli + " lower /dev/zero -S vert -o out.vert"), "/dev/zero");
   EXPECT_EQ(dir.entries(), std::vector<std::string>{});

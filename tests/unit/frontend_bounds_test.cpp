@@ -184,6 +184,40 @@ TEST(MacroBudgetScan, BoundsAreNeverBelowTheRealExpansion) {
   EXPECT_EQ(b.weigh("D(D(y))").spelled, 7);
 }
 
+// Token pasting makes names the scan cannot read: CAT(B,26) is B26. A paste counts as the largest
+// macro (and its result may be called like the most repeating one). Before, CAT(B,26) with B26 a
+// 2^26-token chain counted as one token: glslang expanded it for 28 s and the operator limit
+// caught it afterwards; at B30 it ran out of memory.
+TEST(MacroBudgetScan, PastedNamesCountAsTheLargestMacro) {
+  std::string chain = "#define CAT(a,b) a##b\n#define B0 x+\n";
+  for (int i = 1; i <= 26; ++i) chain += "#define B" + std::to_string(i) + " B" + std::to_string(i - 1) + " B" + std::to_string(i - 1) + "\n";
+  MacroBudget b;
+  b.add_definitions(chain, "t");
+  EXPECT_GE(b.weigh("CAT(B,26)").expanded, std::pow(2.0, 27));
+  // A pasted function-like name called by the next list repeats it as the macro would.
+  MacroBudget r;
+  r.add_definitions("#define CAT(a,b) a##b\n#define REP(x) x x x\n", "t");
+  EXPECT_GE(r.weigh("CAT(RE,P)(CAT(RE,P)(CAT(RE,P)(y)))").expanded, 27);
+  // A paste that makes another pasting macro's name is followed too.
+  MacroBudget d;
+  d.add_definitions(chain + "#define TWICE(a,b) a##b a##b\n", "t");
+  EXPECT_GE(d.weigh("CAT(TWI,CE)(B,26)").expanded, std::pow(2.0, 28));
+}
+
+TEST(FrontendBounds, PasteBombIsRefusedQuickly) {
+  std::string s = "#version 300 es\n#define CAT(a,b) a##b\n#define B0 1.0+\n";
+  for (int i = 1; i <= 30; ++i) s += "#define B" + std::to_string(i) + " B" + std::to_string(i - 1) + " B" + std::to_string(i - 1) + "\n";
+  const auto start = std::chrono::steady_clock::now();
+  auto r = doublet::lower(s + "void main() { gl_Position = vec4(CAT(B,30) 1.0); }\n", vertex_options());
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(first_error(r).find("expands to about"), std::string::npos) << first_error(r);
+  // Ordinary pasting still lowers.
+  auto ok = doublet::lower("#version 300 es\n#define CAT(a,b) a##b\n#define GET(n) CAT(u_, n)\nuniform float u_scale;\n"
+                           "void main() { gl_Position = vec4(GET(scale) + 1.0); }\n", vertex_options());
+  EXPECT_TRUE(ok.ok) << first_error(ok);
+}
+
 TEST(MacroBudgetScan, LongChainsNeedNoDeepRecursion) {
   std::string s = "#define M0 x\n";
   for (int i = 1; i < 200000; ++i) s += "#define M" + std::to_string(i) + " M" + std::to_string(i - 1) + "\n";

@@ -3,6 +3,11 @@ precision highp float;
 precision highp int;
 layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;
 
+uniform vec2 a_hi;
+uniform vec2 a_lo;
+uniform vec2 b_hi;
+uniform vec2 b_lo;
+
 // doublet float-float runtime: 6 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
@@ -104,11 +109,7 @@ vec2 df_to_float(df_dvec2 a) {
   return r.hi;
 }
 
-uniform vec2 a_hi;
-uniform vec2 a_lo;
 df_dvec2 a;
-uniform vec2 b_hi;
-uniform vec2 b_lo;
 df_dvec2 b;
 layout(std430, binding = 0) buffer Result {
   vec2 result;

@@ -3,6 +3,9 @@ precision highp float;
 precision highp int;
 precision highp atomic_uint;
 
+uniform float far_plane_hi;
+uniform float far_plane_lo;
+
 // doublet float-float runtime: 9 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -175,8 +178,6 @@ df_double df_mul_pow2(df_double a, float p) {
 layout(binding = 0, offset = 0) uniform atomic_uint fragments;
 layout(binding = 0, offset = 4) uniform atomic_uint far_fragments;
 uniform sampler2D albedo;
-uniform float far_plane_hi;
-uniform float far_plane_lo;
 df_double far_plane;
 in vec2 uv;
 flat in float depth_hi;

@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform float scale_hi;
+uniform float scale_lo;
+uniform vec3 light_hi;
+uniform vec3 light_lo;
+
 // doublet float-float runtime: 77 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -1194,11 +1199,7 @@ df_dvec3 df_splat_dvec3(df_double s) {
   return df_dvec3(vec3(s.hi), vec3(s.lo));
 }
 
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale;
-uniform vec3 light_hi;
-uniform vec3 light_lo;
 df_dvec3 light;
 in vec3 normal_in;
 out vec4 color;

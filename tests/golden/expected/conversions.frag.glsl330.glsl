@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 dir_hi;
+uniform vec3 dir_lo;
+uniform float bias_hi;
+uniform float bias_lo;
+
 struct df_dvec4 {
   vec4 hi;
   vec4 lo;
@@ -672,11 +677,7 @@ df_double df_swizzle_dvec2_y(df_dvec2 v) {
 
 flat in ivec2 cell;
 flat in uvec2 id;
-uniform vec3 dir_hi;
-uniform vec3 dir_lo;
 df_dvec3 dir;
-uniform float bias_hi;
-uniform float bias_lo;
 df_double bias;
 out vec4 color;
 

@@ -3,6 +3,11 @@ precision highp float;
 precision highp int;
 precision highp image2D;
 
+uniform mat4 view_hi;
+uniform mat4 view_lo;
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+
 struct df_dmat4 {
   mat4 hi;
   mat4 lo;
@@ -547,11 +552,7 @@ df_dvec4 df_mul_dmat4_dvec4(df_dmat4 m, df_dvec4 v) {
 
 layout(binding = 0) uniform sampler2D albedo;
 layout(rgba32f, binding = 1) readonly uniform image2D heights;
-uniform mat4 view_hi;
-uniform mat4 view_lo;
 df_dmat4 view;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
 flat in vec3 world_hi;
 flat in vec3 world_lo;

@@ -2,6 +2,9 @@
 precision highp float;
 precision highp int;
 
+uniform float zoom_hi;
+uniform float zoom_lo;
+
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -153,8 +156,6 @@ df_double df_mul_f2(df_double a, float b) {
 }
 
 uniform sampler2D tex;
-uniform float zoom_hi;
-uniform float zoom_lo;
 df_double zoom;
 in vec2 v_uv;
 layout(location = 0) out highp vec4 df_frag_color;

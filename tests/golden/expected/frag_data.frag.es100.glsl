@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform float a_hi;
+uniform float a_lo;
+uniform float b_hi;
+uniform float b_lo;
+
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -167,11 +172,7 @@ df_double df_div(df_double a, df_double b) {
   return q;
 }
 
-uniform float a_hi;
-uniform float a_lo;
 df_double a;
-uniform float b_hi;
-uniform float b_lo;
 df_double b;
 
 

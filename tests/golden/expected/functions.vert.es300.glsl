@@ -2,6 +2,9 @@
 precision highp float;
 precision highp int;
 
+uniform float time_hi;
+uniform float time_lo;
+
 // doublet float-float runtime: 23 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
@@ -451,8 +454,6 @@ df_dvec2 df_splat_dvec2(df_double s) {
 in vec2 uv_hi;
 in vec2 uv_lo;
 df_dvec2 uv;
-uniform float time_hi;
-uniform float time_lo;
 df_double time;
 out vec2 v_uv;
 df_dvec2 accumulated;

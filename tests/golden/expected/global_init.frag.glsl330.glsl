@@ -2,6 +2,9 @@
 precision highp float;
 precision highp int;
 
+uniform float farPlane_hi;
+uniform float farPlane_lo;
+
 // doublet float-float runtime: 7 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -141,8 +144,6 @@ df_double df_mul_pow2(df_double a, float p) {
   return r;
 }
 
-uniform float farPlane_hi;
-uniform float farPlane_lo;
 df_double farPlane;
 const df_double kScale = df_double(0.5, 0.0);
 df_double half_far = df_double(1.0, 0.0);

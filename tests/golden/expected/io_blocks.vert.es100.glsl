@@ -2,6 +2,9 @@
 precision highp float;
 precision highp int;
 
+uniform mat4 model_hi;
+uniform mat4 model_lo;
+
 struct df_dvec3 {
   vec3 hi;
   vec3 lo;
@@ -285,8 +288,6 @@ varying vec2 VertexData_uv;
 varying float Extra_depth_hi;
 varying float Extra_depth_lo;
 df_double Extra_depth;
-uniform mat4 model_hi;
-uniform mat4 model_lo;
 df_dmat4 model;
 
 

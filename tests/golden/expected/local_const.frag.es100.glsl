@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform float u_hi;
+uniform float u_lo;
+uniform vec2 v_hi;
+uniform vec2 v_lo;
+
 // doublet float-float runtime: 13 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
@@ -267,11 +272,7 @@ df_dvec2 df_splat_dvec2(df_double s) {
   return df_dvec2(vec2(s.hi), vec2(s.lo));
 }
 
-uniform float u_hi;
-uniform float u_lo;
 df_double u;
-uniform vec2 v_hi;
-uniform vec2 v_lo;
 df_dvec2 v;
 const df_double g = df_double(0.33333334, -9.934108e-09);
 varying vec2 uv;

@@ -2,6 +2,14 @@
 precision highp float;
 precision highp int;
 
+uniform mat4 model_hi;
+uniform mat4 model_lo;
+uniform mat3 normal_basis_hi;
+uniform mat3 normal_basis_lo;
+uniform mat2 warp_hi[2];
+uniform mat2 warp_lo[2];
+uniform int column;
+
 struct df_dmat2 {
   mat2 hi;
   mat2 lo;
@@ -1019,16 +1027,9 @@ df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
   return df_dvec4(vec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), vec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
 }
 
-uniform mat4 model_hi;
-uniform mat4 model_lo;
 df_dmat4 model;
-uniform mat3 normal_basis_hi;
-uniform mat3 normal_basis_lo;
 df_dmat3 normal_basis;
-uniform mat2 warp_hi[2];
-uniform mat2 warp_lo[2];
 df_dmat2 warp[2];
-uniform int column;
 in vec4 position_hi;
 in vec4 position_lo;
 df_dvec4 position;

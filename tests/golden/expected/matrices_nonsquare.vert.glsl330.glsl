@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform mat3x2 project_hi;
+uniform mat3x2 project_lo;
+uniform mat2x4 lift_hi;
+uniform mat2x4 lift_lo;
+
 struct df_dmat2x4 {
   mat2x4 hi;
   mat2x4 lo;
@@ -498,11 +503,7 @@ df_dvec4 df_make_dvec4_2_2(df_dvec2 a0, df_dvec2 a1) {
   return df_dvec4(vec4(a0.hi.x, a0.hi.y, a1.hi.x, a1.hi.y), vec4(a0.lo.x, a0.lo.y, a1.lo.x, a1.lo.y));
 }
 
-uniform mat3x2 project_hi;
-uniform mat3x2 project_lo;
 df_dmat3x2 project;
-uniform mat2x4 lift_hi;
-uniform mat2x4 lift_lo;
 df_dmat2x4 lift;
 in vec3 position_hi;
 in vec3 position_lo;

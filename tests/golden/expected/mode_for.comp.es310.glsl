@@ -3,6 +3,8 @@ precision highp float;
 precision highp int;
 layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;
 
+uniform float dt;
+
 // doublet float-float runtime: 9 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -172,7 +174,6 @@ df_double df_mul_f2(df_double a, float b) {
 layout(std430, binding = 0) buffer State {
   vec4 state[];
 };
-uniform float dt;
 
 df_double integrate(df_double x, df_double v);
 

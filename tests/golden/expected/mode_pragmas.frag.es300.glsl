@@ -2,6 +2,10 @@
 precision highp float;
 precision highp int;
 
+uniform float gain;
+uniform float origin_hi;
+uniform float origin_lo;
+
 // doublet float-float runtime: 11 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -190,9 +194,6 @@ df_double df_mul_f2(df_double a, float b) {
   return r;
 }
 
-uniform float gain;
-uniform float origin_hi;
-uniform float origin_lo;
 df_double origin;
 flat in float sample_hi;
 flat in float sample_lo;

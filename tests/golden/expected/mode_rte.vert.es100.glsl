@@ -2,6 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+uniform float scale_hi;
+uniform float scale_lo;
+uniform mat4 viewProj;
+
 // doublet float-float runtime: 11 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -161,13 +167,8 @@ df_double df_from_float(float f) {
 attribute vec3 position_hi;
 attribute vec3 position_lo;
 df_dvec3 position;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale;
-uniform mat4 viewProj;
 varying float distanceToEye;
 
 

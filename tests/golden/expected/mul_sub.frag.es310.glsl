@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform float a_hi;
+uniform float a_lo;
+uniform float b_hi;
+uniform float b_lo;
+
 // doublet float-float runtime: 10 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -184,11 +189,7 @@ float df_to_float(df_double a) {
   return r.hi;
 }
 
-uniform float a_hi;
-uniform float a_lo;
 df_double a;
-uniform float b_hi;
-uniform float b_lo;
 df_double b;
 out vec4 color;
 

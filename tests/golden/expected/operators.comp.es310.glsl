@@ -3,6 +3,8 @@ precision highp float;
 precision highp int;
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
 
+uniform int k;
+
 struct df_dvec2 {
   vec2 hi;
   vec2 lo;
@@ -378,7 +380,6 @@ df_double df_assign_component_dvec4(inout df_dvec4 v, int i, df_double x) {
 layout(std430, binding = 0) buffer Data {
   vec4 values[];
 };
-uniform int k;
 
 
 void main()

@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform float x_hi;
+uniform float x_lo;
+uniform float f;
+uniform float g;
+
 // doublet float-float runtime: 12 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -216,11 +221,7 @@ df_double df_mul_f2(df_double a, float b) {
   return r;
 }
 
-uniform float x_hi;
-uniform float x_lo;
 df_double x;
-uniform float f;
-uniform float g;
 out vec4 color;
 
 

@@ -2,6 +2,9 @@
 precision highp float;
 precision highp int;
 
+uniform float u_hi;
+uniform float u_lo;
+
 // doublet float-float runtime: 6 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -122,8 +125,6 @@ df_double df_mul_f2(df_double a, float b) {
   return r;
 }
 
-uniform float u_hi;
-uniform float u_lo;
 df_double u;
 in vec2 uv;
 layout(location = 0) out highp vec4 df_frag_color;

@@ -2,6 +2,10 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+uniform mat4 viewProj;
+
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -129,10 +133,7 @@ vec3 df_to_float(df_dvec3 a) {
 in vec3 position_hi;
 in vec3 position_lo;
 df_dvec3 position;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
-uniform mat4 viewProj;
 
 
 void main()

@@ -2,6 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform vec2 center_hi;
+uniform vec2 center_lo;
+uniform float scale_hi;
+uniform float scale_lo;
+uniform vec2 resolution;
+
 // doublet float-float runtime: 23 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
@@ -428,13 +434,8 @@ df_dvec2 df_splat_dvec2(df_double s) {
   return df_dvec2(vec2(s.hi), vec2(s.lo));
 }
 
-uniform vec2 center_hi;
-uniform vec2 center_lo;
 df_dvec2 center;
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale;
-uniform vec2 resolution;
 uniform sampler2D palette;
 in vec2 v_uv;
 df_double pixel_size;

@@ -2,6 +2,10 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 u_eye_ecef_hi;
+uniform vec3 u_eye_ecef_lo;
+uniform mat4 u_view_projection;
+
 // doublet float-float runtime: 22 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -401,10 +405,7 @@ df_dvec3 df_make_dvec3_1_1_1(df_double a0, df_double a1, df_double a2) {
 const df_double kEquatorialRadius = df_double(6378137.0, 0.0);
 const df_double kFlattening = df_double(0.0033528106, 3.6035303e-11);
 const df_double kEccentricity2 = df_double(0.00669438, -2.0380743e-10);
-uniform vec3 u_eye_ecef_hi;
-uniform vec3 u_eye_ecef_lo;
 df_dvec3 u_eye_ecef;
-uniform mat4 u_view_projection;
 df_dvec3 g_eye;
 attribute vec3 a_lon_lat_height;
 varying float v_height;

@@ -4,6 +4,12 @@ precision highp int;
 precision highp atomic_uint;
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
+uniform float dt_hi;
+uniform float dt_lo;
+uniform float softening_hi;
+uniform float softening_lo;
+uniform int body_count;
+
 struct df_dvec4 {
   vec4 hi;
   vec4 lo;
@@ -461,13 +467,8 @@ layout(std430, binding = 2) writeonly buffer NextPositions {
   df_dvec4 next_position[];
 };
 layout(binding = 3, offset = 0) uniform atomic_uint close_encounters;
-uniform float dt_hi;
-uniform float dt_lo;
 df_double dt;
-uniform float softening_hi;
-uniform float softening_lo;
 df_double softening;
-uniform int body_count;
 shared df_dvec4 tile[64];
 df_double softening2;
 

@@ -2,6 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform float time_seconds_hi;
+uniform float time_seconds_lo;
+uniform vec3 camera_position_hi;
+uniform vec3 camera_position_lo;
+uniform mat4 view_projection;
+
 // doublet float-float runtime: 32 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -603,13 +609,8 @@ struct Orbit {
 };
 
 uniform Orbit orbit;
-uniform float time_seconds_hi;
-uniform float time_seconds_lo;
 df_double time_seconds;
-uniform vec3 camera_position_hi;
-uniform vec3 camera_position_lo;
 df_dvec3 camera_position;
-uniform mat4 view_projection;
 attribute float phase_offset;
 varying float brightness;
 const df_double kTwoPi = df_double(6.2831855, -1.7484555e-07);

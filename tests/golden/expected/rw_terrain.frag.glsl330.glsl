@@ -2,6 +2,9 @@
 precision highp float;
 precision highp int;
 
+uniform float sea_level_hi;
+uniform float sea_level_lo;
+
 // doublet float-float runtime: 24 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -452,8 +455,6 @@ layout(std140) uniform Lighting {
 };
 uniform sampler2D albedo;
 uniform samplerCube sky;
-uniform float sea_level_hi;
-uniform float sea_level_lo;
 df_double sea_level;
 layout(location = 0) out vec4 frag_color;
 float sea_mask = 0.0;

@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform vec2 tile_origin_hi;
+uniform vec2 tile_origin_lo;
+uniform float tile_size_hi;
+uniform float tile_size_lo;
+
 struct df_dmat4 {
   mat4 hi;
   mat4 lo;
@@ -659,11 +664,7 @@ layout(std140) uniform Camera {
   df_double planet_radius;
 } camera;
 uniform sampler2D height_map;
-uniform vec2 tile_origin_hi;
-uniform vec2 tile_origin_lo;
 df_dvec2 tile_origin;
-uniform float tile_size_hi;
-uniform float tile_size_lo;
 df_double tile_size;
 layout(location = 0) in vec2 grid;
 flat out vec3 TerrainData_world_hi;

@@ -2,6 +2,10 @@
 precision highp float;
 precision highp int;
 
+uniform vec2 c_hi;
+uniform vec2 c_lo;
+uniform int pick;
+
 // doublet float-float runtime: 16 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
@@ -325,10 +329,7 @@ struct Orbit {
 };
 
 const Pair kPairs[2] = Pair[2](Pair(df_double(0.1, -1.4901161e-09), 1.0), Pair(df_double(0.33333334, -9.934108e-09), 2.0));
-uniform vec2 c_hi;
-uniform vec2 c_lo;
 df_dvec2 c;
-uniform int pick;
 out vec4 color;
 
 

@@ -2,6 +2,9 @@
 precision highp float;
 precision highp int;
 
+uniform float exposure_hi;
+uniform float exposure_lo;
+
 // doublet float-float runtime: 3 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -55,8 +58,6 @@ df_double df_mul_pow2(df_double a, float p) {
 uniform sampler1D ramp;
 uniform sampler2DRect screen;
 uniform samplerBuffer samples;
-uniform float exposure_hi;
-uniform float exposure_lo;
 df_double exposure;
 in vec2 uv;
 out vec4 color;

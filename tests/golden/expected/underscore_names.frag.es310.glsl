@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform float scale_hi;
+uniform float scale_lo;
+uniform vec2 offset_hi;
+uniform vec2 offset_lo;
+
 struct df_dvec2 {
   vec2 hi;
   vec2 lo;
@@ -147,11 +152,7 @@ df_double df_mul_f2(df_double a, float b) {
   return r;
 }
 
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale_;
-uniform vec2 offset_hi;
-uniform vec2 offset_lo;
 df_dvec2 offset_;
 out vec4 color;
 

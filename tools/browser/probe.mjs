@@ -1,6 +1,6 @@
 // Browser probe (docs/web.md): which WebGL2 / WebGPU stack headless Chromium has here, and what
 // it does to float-float arithmetic.
-//   node probe.mjs GUARDED.frag UNGUARDED.frag
+//   node tools/browser/probe.mjs GUARDED.frag UNGUARDED.frag   (scripts/web-probe/run does it all)
 // GUARDED.frag is probe.frag lowered by `doublet lower --target es300`; UNGUARDED.frag the same
 // text with the uniform guard removed (the sabotage). Each runs add/sub/mul/div/sqrt on 4096
 // float-float inputs in a WebGL2 fragment shader; a hand-written WGSL compute kernel (TwoSum,
