@@ -2,6 +2,16 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 lat_lon_height_hi;
+uniform vec3 lat_lon_height_lo;
+uniform vec3 eye_ecef_hi;
+uniform vec3 eye_ecef_lo;
+uniform float mean_anomaly_hi;
+uniform float mean_anomaly_lo;
+uniform float eccentricity_hi;
+uniform float eccentricity_lo;
+uniform mat4 view_projection;
+
 // doublet float-float runtime: 59 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
@@ -1212,19 +1222,10 @@ df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
   return df_dvec2(vec2(a0.hi, a1.hi), vec2(a0.lo, a1.lo));
 }
 
-uniform vec3 lat_lon_height_hi;
-uniform vec3 lat_lon_height_lo;
 df_dvec3 lat_lon_height;
-uniform vec3 eye_ecef_hi;
-uniform vec3 eye_ecef_lo;
 df_dvec3 eye_ecef;
-uniform float mean_anomaly_hi;
-uniform float mean_anomaly_lo;
 df_double mean_anomaly;
-uniform float eccentricity_hi;
-uniform float eccentricity_lo;
 df_double eccentricity;
-uniform mat4 view_projection;
 out float shade;
 
 df_dvec3 ecef(df_dvec3 llh);
