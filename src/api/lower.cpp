@@ -221,6 +221,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   next_phase("interfaces");
   if (!passes::move_global_initialisers(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
+  if (!passes::rename_functions_named_like_builtins(module, ctx)) return result;
   if (!passes::check_target(module, ctx)) return result;
   next_phase("print");
 
