@@ -129,6 +129,36 @@ std::vector<GraphicsResult> failed(const std::string& error, const std::string& 
   return {r};
 }
 
+// One program's reply: { error } or { jobs: [base64 words] }, one result per job; like
+// run_graphics_batch, the results stop at the first failure, which carries the error.
+std::vector<GraphicsResult> decode_program(const json& reply, const std::vector<GraphicsJob>& jobs,
+                                           const WebGl2Program& program, const std::string& renderer) {
+  if (!reply.is_object()) return failed("the WebGL2 page's reply is not an object", renderer);
+  if (reply.contains("error"))
+    return failed("WebGL2 (" + renderer + "): " + (reply["error"].is_string() ? reply["error"].get<std::string>() : reply["error"].dump()),
+                  renderer);
+  if (!reply.contains("jobs") || !reply["jobs"].is_array() || reply["jobs"].size() != jobs.size())
+    return failed("the WebGL2 page did not return one result per draw", renderer);
+  const size_t want = size_t{jobs[0].count} * program.output_words * 4;
+  std::vector<GraphicsResult> results;
+  for (const json& words_b64 : reply["jobs"]) {
+    GraphicsResult result;
+    result.device = renderer;
+    std::vector<uint8_t> bytes;
+    if (!words_b64.is_string() || !unbase64(words_b64.get<std::string>(), &bytes) || bytes.size() != want) {
+      result.error = "the WebGL2 page returned " + std::to_string(bytes.size()) + " output bytes, not " + std::to_string(want);
+      results.push_back(std::move(result));
+      break;
+    }
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), bytes.size());
+    webgl2_unpack_outputs(program, jobs[0].count, words, &result);
+    result.ok = true;
+    results.push_back(std::move(result));
+  }
+  return results;
+}
+
 }  // namespace
 
 std::vector<std::vector<GraphicsResult>> webgl2_run_graphics(const std::vector<std::vector<GraphicsJob>>& batches) {
@@ -178,30 +208,16 @@ std::vector<std::vector<GraphicsResult>> webgl2_run_graphics(const std::vector<s
     for (size_t b : sent) results[b] = failed(std::string("the WebGL2 page's result is not JSON: ") + e.what());
     return results;
   }
-  const std::string renderer = reply.value("renderer", "");
-  const json& replies = reply.at("programs");
+  const std::string renderer = reply.is_object() && reply.contains("renderer") && reply["renderer"].is_string()
+                                   ? reply["renderer"].get<std::string>() : "";
+  const json* replies = reply.is_object() && reply.contains("programs") ? &reply["programs"] : nullptr;
   for (size_t k = 0; k < sent.size(); ++k) {
     const size_t b = sent[k];
-    const json& r = replies.at(k);
-    if (r.contains("error")) {
-      results[b] = failed("WebGL2 (" + renderer + "): " + r.at("error").get<std::string>(), renderer);
+    if (!replies || !replies->is_array() || k >= replies->size()) {
+      results[b] = failed("the WebGL2 page reported no result for this program", renderer);
       continue;
     }
-    for (const json& words_b64 : r.at("jobs")) {
-      GraphicsResult result;
-      result.device = renderer;
-      std::vector<uint8_t> bytes;
-      const size_t want = size_t{batches[b][0].count} * programs[b].output_words * 4;
-      if (!unbase64(words_b64.get<std::string>(), &bytes) || bytes.size() != want) {
-        result.error = "the WebGL2 page returned " + std::to_string(bytes.size()) + " output bytes, not " + std::to_string(want);
-      } else {
-        std::vector<uint32_t> words(bytes.size() / 4);
-        std::memcpy(words.data(), bytes.data(), bytes.size());
-        webgl2_unpack_outputs(programs[b], batches[b][0].count, words, &result);
-        result.ok = true;
-      }
-      results[b].push_back(std::move(result));
-    }
+    results[b] = decode_program((*replies)[k], batches[b], programs[b], renderer);
   }
   return results;
 }
