@@ -124,6 +124,16 @@ std::string wrap_webgl2(GraphicsStage stage, const std::string& glsl, WebGl2Prog
   // storage buffers this transport does not use).
   std::string user = wrapped.user_text;
   user.replace(0, user.find('\n'), "#version 300 es");
+  // The lines the wrapper added after #version (the main rename, renamed fragment outputs) would
+  // shift the browser's line numbers: a #line puts the rest back on the lowered text's numbering.
+  const std::string rename = "#define main doublet_user_main\n";
+  if (size_t at = user.find(rename); at != std::string::npos) {
+    at += rename.size();
+    const std::string legacy_output = "highp vec4 doublet_Frag";  // graphics_wrapper.cpp's declarations
+    while (user.compare(at, legacy_output.size(), legacy_output) == 0) at = user.find('\n', at) + 1;
+    const long version_line = 1 + std::count(glsl.begin(), glsl.begin() + m.position(1), '\n');
+    user.insert(at, "#line " + std::to_string(version_line + 1) + "\n");
+  }
 
   const uint32_t slots = out->output_words / 4;
   const uint32_t per_pass = stage == GraphicsStage::Vertex ? kWebGl2VertexSlots : kWebGl2FragmentSlots;

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -131,6 +132,18 @@ TEST(WebGl2VerifyErrors, ShaderWebGlRejectsIsADriverFailureWithTheBrowsersLog) {
   EXPECT_EQ(r.exit_code, 3) << r.out;
   EXPECT_NE(r.out.find("ternary operator is not allowed for structures"), std::string::npos) << r.out;
   EXPECT_NE(r.report.at("runs").at(0).at("error").get<std::string>().find("GLSL compile failed"), std::string::npos);
+  // The log's line number is the lowered text's (the wrapper's own lines are not counted).
+  const fs::path lowered = fs::temp_directory_path() / ("doublet-webgl2-ternary-" + std::to_string(::getpid()) + ".frag");
+  ASSERT_EQ(std::system((std::string(DOUBLET_CLI_PATH) + " lower " + kShaders + "/webgl2/ternary.frag --target es300 -o " +
+                         lowered.string()).c_str()), 0);
+  std::ifstream in(lowered);
+  int line_number = 0, ternary_line = 0;
+  for (std::string line; std::getline(in, line);)
+    if (++line_number && line.find("df_double r = ") != std::string::npos && line.find(" ? ") != std::string::npos)
+      ternary_line = line_number;
+  fs::remove(lowered);
+  ASSERT_GT(ternary_line, 0);
+  EXPECT_NE(r.out.find("0:" + std::to_string(ternary_line) + ": '?:'"), std::string::npos) << "line " << ternary_line << "\n" << r.out;
 }
 
 // Decided before anything runs: no browser needed.
