@@ -160,6 +160,12 @@ TEST(WebGl2VerifyErrors, TargetWebGl2CannotCompileIsAnInputError) {
   EXPECT_NE(r.out.find("--target es300"), std::string::npos) << r.out;
 }
 
+TEST(WebGl2VerifyErrors, SweepOnWebGl2IsAnInputError) {
+  const CliRun r = verify("--sweep add --backend webgl2");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("WebGL2 lacks"), std::string::npos) << r.out;
+}
+
 // With --backend all a compute shader still runs on the drivers that have compute; WebGL2 is skipped with a note.
 TEST(WebGl2VerifyErrors, AllSkipsWebGl2ForComputeWithANote) {
   const CliRun r = verify(kShaders + "/arith_pairs.comp --spec " + kShaders + "/arith_pairs.json --samples 256 --backend all");
