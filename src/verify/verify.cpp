@@ -169,7 +169,7 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
   harness.generate(options.seed);
   report->notes = harness.notes();
   report->inputs_beyond_float_range = harness.inputs_beyond_float_range();
-  if (t == Target::Es100 || t == Target::Es300)
+  if (t == Target::Es100 || t == Target::Es300 || t == Target::Webgl2)
     report->notes.push_back(report->target + " text runs as #version 310 es (the capture's storage buffers need 3.10; "
                             "in/out, attribute/varying, gl_FragColor/gl_FragData and texture2D/textureCube are "
                             "rewritten, the rest of the text is unchanged)");
