@@ -12,8 +12,8 @@
 // `tmp` is a local declared, uninitialised, at the top of the enclosing function.
 // When the condition is a constant the chosen operand replaces the ternary.
 //
-// WebGL also forbids the sequence operator on arrays and structs that contain arrays (ANGLE's
-// ParseContext, WebGL 1.0 §6.x), so a ternary of such a type is rewritten only where it is a whole
+// ANGLE (the compiler behind Chromium's WebGL) also refuses the sequence operator on arrays and
+// on structs that contain arrays, so a ternary of such a type is rewritten only where it is a whole
 // declaration initialiser or a whole assignment's right side (`T x = c ? a : b;` becomes
 // `T x; if (c) x = a; else x = b;`); elsewhere it is diagnosed at its position.
 #include <string>
