@@ -42,7 +42,7 @@ constexpr int kExitDriver = 3;
 std::string default_target(const VerifyArgs& a, std::optional<Stage> stage) {
   if (!a.target.empty()) return a.target;
   if ((a.backend == "webgl2" || a.backend == "all") && stage != Stage::Compute)
-    return parse_target("webgl2") ? "webgl2" : "es300";
+    return "webgl2";
   return "es310";
 }
 
@@ -206,7 +206,7 @@ Command add_verify_command(CLI::App& app) {
   cmd->add_option("--grid-step", args->grid_step, "exponent step of the sweep grid (default 1)")
       ->check(CLI::Range(1, 64));
   cmd->add_option("-S", args->stage, "stage: vert|frag|comp (default: from the extension)");
-  cmd->add_option("--target", args->target, "target of the lowering (default es310; es300 for vert/frag with webgl2/all)");
+  cmd->add_option("--target", args->target, "target of the lowering (default es310; webgl2 for vert/frag with --backend webgl2/all)");
   cmd->add_option("--samples", args->samples, "input sets (default 1024)")->check(CLI::PositiveNumber);
   cmd->add_option("--seed", args->seed, "random seed (default 1)");
   cmd->add_option("--range", args->ranges, "NAME=LO:HI input range (repeatable)");

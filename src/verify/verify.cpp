@@ -93,7 +93,7 @@ std::string as_native_450(std::string_view source, const Options& o, std::string
 }
 
 // WebGL2 compiles GLSL ES 1.00 and 3.00 (and the webgl2 target's text, ES 3.00 with WebGL's rules).
-bool runs_on_webgl2(Target t) { return t == Target::Es100 || t == Target::Es300 || to_string(t) == "webgl2"; }
+bool runs_on_webgl2(Target t) { return t == Target::Es100 || t == Target::Es300 || t == Target::Webgl2; }
 
 bool has_backend(const VerifyOptions& o, runner::Backend b) {
   return std::find(o.backends.begin(), o.backends.end(), b) != o.backends.end();
@@ -194,7 +194,7 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
   report->inputs_beyond_float_range = harness.inputs_beyond_float_range();
   const bool storage_capture = std::any_of(options.backends.begin(), options.backends.end(),
                                            [](runner::Backend b) { return b != runner::Backend::WebGl2; });
-  if ((t == Target::Es100 || t == Target::Es300) && storage_capture)
+  if ((t == Target::Es100 || t == Target::Es300 || t == Target::Webgl2) && storage_capture)
     report->notes.push_back(report->target + " text runs as #version 310 es (the capture's storage buffers need 3.10; "
                             "in/out, attribute/varying, gl_FragColor/gl_FragData and texture2D/textureCube are "
                             "rewritten, the rest of the text is unchanged)");

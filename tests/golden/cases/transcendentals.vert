@@ -1,4 +1,4 @@
-// targets: es300 es310 es320 glsl330 glsl450
+// targets: es300 es310 es320 glsl330 glsl450 webgl2
 #version 330 core
 // The transcendental extension (docs/transcendentals.md): WGS84 geodetic -> ECEF, Kepler's
 // equation by Newton steps, and the other functions on scalars and vectors.
