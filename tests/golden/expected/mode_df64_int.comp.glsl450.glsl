@@ -34,7 +34,7 @@ uint df_int_magnitude(float x) {
 
 // df_int_signed: the integer significand of x with x's sign, two's complement in a uint.
 // Algorithm: df_int_magnitude, negated modulo 2^32 when the sign bit is set
-// Source: ESSL 3.00 section 4.1.3 (uint arithmetic wraps modulo 2^32)
+// Source: ESSL 3.00 (2012) section 4.1.3 (uint arithmetic wraps modulo 2^32)
 // Bound: exact
 // Flops: 0 (integer: df_int_magnitude, 1 shift, 1 sub, 1 select)
 uint df_int_signed(float x) {
