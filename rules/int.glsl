@@ -8,9 +8,10 @@
 // exponents (floatBitsToUint), as the residual (a + b) - s or a*b - p. No float expression in
 // these rules depends on another one cancelling, so no algebraic rewrite of float code
 // (reassociation, x + y - x -> y, contraction, constant folding of a guard) can delete the
-// error term: the residual is exact for whatever value the hardware produced for s or p, as
-// long as that value is within 2^6 ulps of the exact result (then the residual still fits
-// in 24 bits and its 32-bit modular difference is the true one).
+// error term: the residual is computed for whatever value the hardware produced for s or p.
+// It is exact when s = RN(a + b) (p = RN(a * b)), as IEEE requires; if a rewrite made s a few
+// ulps off (fewer than 2^5), the 32-bit modular difference is still the true residual and
+// float(n) rounds it to 24 bits, so hi + lo stays within about u^2 of the exact value.
 //
 // Sources:
 //   [Knuth]  D. E. Knuth, The Art of Computer Programming, vol. 2, 3rd ed., 1998, section 4.2.2
