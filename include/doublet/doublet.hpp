@@ -35,8 +35,11 @@ enum class GuardKind { Auto, Precise, Uniform, None /* unprotected: tests only *
 //            (relative-to-eye/center in the Cesium sense);
 //  Df64Fast: float-float with the cheaper algorithms and their weaker bounds;
 //  Df64:     float-float with the accurate algorithms (the default);
+//  Df64Int:  df64 with the error terms of TwoSum/TwoProd computed by integer operations on
+//            the decoded floats (rules/int.glsl): no optimizer guard needed; ES 3.00+, whole
+//            shader only;
 //  Native:   doubles kept as they are (desktop targets with fp64; the reference).
-enum class Mode { Fp32, Rte, Df64Fast, Df64, Native };
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Native, Df64Int };
 
 enum class Severity { Error, Warning, Note };
 
@@ -175,7 +178,7 @@ Result lower(std::string_view source, const Options& options);
 std::string_view to_string(Target t);           // "es300"
 std::string_view to_string(Stage s);            // "vert"
 std::optional<Target> parse_target(std::string_view name);
-std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native"
+std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native", "df64-int"
 std::optional<Mode> parse_mode(std::string_view name);
 std::optional<Stage> parse_stage(std::string_view name);  // "vert"|"frag"|"comp"
 // The lints Options::disabled_lints can name: "float-literal", "wasted-double", ...

@@ -164,8 +164,22 @@ Result lower_unchecked(std::string_view source, const Options& options) {
                          "or glsl450"});
     return result;
   }
+  // df64-int is df64 with the integer error-free transformations of rules/int.glsl: the passes
+  // see df64; the rule library swaps the EFTs. They need no guard, so Auto means None.
+  const bool integer_eft = options.mode == Mode::Df64Int;
+  if (integer_eft && options.target == Target::Es100) {
+    diags.push_back({options.file_name, 0, 0, Severity::Error,
+                     "--mode df64-int needs uint and floatBitsToUint (GLSL ES 3.00 or later): use --target es300 or "
+                     "later, or --mode df64"});
+    return result;
+  }
+  Options df64_options = options;
+  if (integer_eft) {
+    df64_options.mode = Mode::Df64;
+    if (df64_options.guard == GuardKind::Auto) df64_options.guard = GuardKind::None;
+  }
   GuardChoice guard;
-  if (!choose_guard(options, guard, diags)) return result;
+  if (!choose_guard(df64_options, guard, diags)) return result;
   const bool native = options.mode == Mode::Native;
   if (native && options.target != Target::Glsl450) {
     diags.push_back({options.file_name, 0, 0, Severity::Error,
@@ -207,7 +221,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   if (!frontend::import_module(parsed, options, module, diags)) return result;
   parsed.release_ast();  // the IR owns everything now: free glslang's memory before the passes
 
-  passes::Context ctx{options, diags};
+  passes::Context ctx{df64_options, diags};
   if (!passes::flatten_io_blocks(module, ctx)) return result;
   next_phase("lints");
   passes::run_lints(module, source, ctx);  // on the IR as imported, before any pass rewrites it
@@ -238,6 +252,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     request.guard = guard.style;
     request.guard_uniform = options.guard_uniform_name;
     request.es_version = target_is_es(options.target) ? target_version(options.target) : 320;
+    request.integer_eft = integer_eft;
     rules::EmitResult emitted = rules::RuleLibrary::builtin().emit(request);
     if (!emitted.ok) {
       // A rule the target lacks: point at the first expression that needs it.

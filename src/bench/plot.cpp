@@ -38,6 +38,7 @@ uint32_t colour(Mode m) {
     case Mode::Rte: return 0xff0099ffu;       // orange
     case Mode::Df64Fast: return 0xffcc3399u;  // purple
     case Mode::Df64: return 0xff2222ddu;      // red
+    case Mode::Df64Int: return 0xff222288u;   // dark red
     case Mode::Native: return 0xff22aa22u;    // green
   }
   return 0xff000000u;

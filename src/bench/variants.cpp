@@ -13,13 +13,14 @@ const char* mode_name(Mode m) {
     case Mode::Rte: return "rte";
     case Mode::Df64Fast: return "df64-fast";
     case Mode::Df64: return "df64";
+    case Mode::Df64Int: return "df64-int";
     case Mode::Native: return "native";
   }
   return "?";
 }
 
 const std::vector<Mode>& all_bench_modes() {
-  static const std::vector<Mode> modes{Mode::Fp32, Mode::Rte, Mode::Df64Fast, Mode::Df64, Mode::Native};
+  static const std::vector<Mode> modes{Mode::Fp32, Mode::Rte, Mode::Df64Fast, Mode::Df64, Mode::Df64Int, Mode::Native};
   return modes;
 }
 
@@ -61,6 +62,7 @@ Variant make_variant(Mode mode, runner::Backend backend, const std::string& sour
   o.mode = mode == Mode::Fp32     ? doublet::Mode::Fp32
            : mode == Mode::Rte    ? doublet::Mode::Rte
            : mode == Mode::Df64Fast ? doublet::Mode::Df64Fast
+           : mode == Mode::Df64Int  ? doublet::Mode::Df64Int
                                   : doublet::Mode::Df64;
   Result r = lower(source, o);
   if (r.ok) {

@@ -15,7 +15,7 @@
 
 namespace doublet::bench {
 
-enum class Mode { Fp32, Rte, Df64Fast, Df64, Native };
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Df64Int, Native };
 const std::vector<Mode>& all_bench_modes();  // in that order
 const char* mode_name(Mode);
 std::optional<Mode> parse_mode(const std::string&);

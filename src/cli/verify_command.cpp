@@ -228,7 +228,7 @@ Command add_verify_command(CLI::App& app) {
       ->check(CLI::IsMember({"none", "drop-lo", "drop-guard"}));
   cmd->add_option("-D", args->defines, "NAME[=VALUE] preprocessor define");
   cmd->add_option("-I", args->include_dirs, "include directory");
-  cmd->add_option("--mode", args->mode, "precision mode of the lowering: fp32|rte|df64-fast|df64 (default df64)");
+  cmd->add_option("--mode", args->mode, "precision mode of the lowering: fp32|rte|df64-fast|df64|df64-int (default df64)");
   cmd->add_option("--mode-for", args->mode_for, "NAME=MODE per global, function or FUNCTION.LOCAL (repeatable)");
   cmd->footer("Exit status: 0 pass, 1 an output below its min bits, 2 input error, 3 driver failure.");
   return Command{cmd, [args] { return run_verify(*args); }};

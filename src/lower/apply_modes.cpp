@@ -32,6 +32,12 @@ bool is_comparison(const std::string& op) {
   return op == "<" || op == ">" || op == "<=" || op == ">=" || op == "==" || op == "!=";
 }
 
+// df64-int is a property of the emitted runtime (its TwoSum/TwoProd), shared by every
+// float-float operation of the shader, so it cannot be chosen per declaration.
+constexpr const char* kDf64IntWholeShader =
+    "mode df64-int applies to the whole shader only (--mode df64-int): it replaces the runtime's error-free "
+    "transformations, which every float-float operation shares";
+
 // Float arithmetic in fp32 and rte; float-float in df64-fast and df64.
 Base arithmetic_base(Mode m) { return m == Mode::Fp32 || m == Mode::Rte ? Base::Float : Base::Double; }
 
@@ -147,6 +153,10 @@ class ModeApplier {
                                  "declaration");
       return;
     }
+    if (p.mode == Mode::Df64Int) {
+      error_at(p.line, p.column, kDf64IntWholeShader);
+      return;
+    }
     if (function) {
       // Every overload defined on that line (there is one).
       function_modes_[function] = p.mode;
@@ -157,6 +167,10 @@ class ModeApplier {
   void apply_name(const std::string& name, Mode mode) {
     if (mode == Mode::Native) {
       error_at(0, 0, "--mode-for " + name + "=native: mode native applies to the whole shader only (--mode native)");
+      return;
+    }
+    if (mode == Mode::Df64Int) {
+      error_at(0, 0, "--mode-for " + name + "=df64-int: " + kDf64IntWholeShader);
       return;
     }
     bool found = false;

@@ -36,6 +36,7 @@ struct Chunk {
   std::vector<int> widths;
   int min_es = 100;
   bool per_component = false;
+  std::string variant;  // "int": replaces the same-named chunk when EmitRequest::integer_eft
   std::vector<std::pair<std::string, std::vector<std::string>>> uses;  // callee -> widths ("2", "W")
   std::vector<std::string> callees;  // chunk names referenced by the definition, first use order
   std::map<std::string, std::string> fields;  // Algorithm, Source, Bound, Flops
@@ -182,16 +183,22 @@ bool is_width_placeholder(const std::string& t) {
 struct RuleLibrary::Impl {
   std::vector<Chunk> chunks;
   std::map<std::pair<std::string, int>, size_t> index;  // (name, width) -> chunk
+  std::map<std::pair<std::string, int>, size_t> int_index;  // (name, width) -> "@variant int" chunk
   std::set<std::string> names;
   std::string init_error;  // builtin() only: the embedded rules failed to parse
 
-  const Chunk* find(const std::string& name, int width) const {
+  // integer_eft: the "@variant int" chunk of that name and width when there is one.
+  const Chunk* find(const std::string& name, int width, bool integer_eft = false) const {
+    if (integer_eft) {
+      auto v = int_index.find({name, width});
+      if (v != int_index.end()) return &chunks[v->second];
+    }
     auto it = index.find({name, width});
     return it == index.end() ? nullptr : &chunks[it->second];
   }
 
   // Direct dependencies of one instance.
-  bool deps(const Chunk& c, int width, std::vector<RuleRef>& out, std::string* error) const {
+  bool deps(const Chunk& c, int width, std::vector<RuleRef>& out, std::string* error, bool integer_eft = false) const {
     if (c.per_component && width > 1) {
       out.push_back({c.name, 1});
       return true;
@@ -200,7 +207,7 @@ struct RuleLibrary::Impl {
       auto u = std::find_if(c.uses.begin(), c.uses.end(), [&](const auto& p) { return p.first == callee; });
       if (u != c.uses.end()) {
         for (const auto& spec : u->second) out.push_back({callee, spec == "W" ? width : std::stoi(spec)});
-      } else if (find(callee, width)) {
+      } else if (find(callee, width, integer_eft)) {
         out.push_back({callee, width});
       } else {
         *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " (width " + std::to_string(width) +
@@ -400,6 +407,9 @@ bool parse_file(const std::string& file, const std::string& text, std::vector<Ch
           if (w.size() != 1 || (w[0] != "100" && w[0] != "300" && w[0] != "310" && w[0] != "320"))
             return fail(start, c.name + ": @min-es takes one of 100 300 310 320");
           c.min_es = std::stoi(w[0]);
+        } else if (key == "@variant") {
+          if (w.size() != 1 || w[0] != "int") return fail(start, c.name + ": @variant takes 'int'");
+          c.variant = w[0];
         } else if (key == "@per-component") {
           if (!w.empty()) return fail(start, c.name + ": @per-component takes no value");
           c.per_component = true;
@@ -468,7 +478,8 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       const Chunk& c = im.chunks[i];
       im.names.insert(c.name);
       for (int w : c.widths) {
-        if (!im.index.emplace(std::make_pair(c.name, w), i).second) {
+        auto& index = c.variant.empty() ? im.index : im.int_index;
+        if (!index.emplace(std::make_pair(c.name, w), i).second) {
           *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(w) +
                    " is defined twice";
           return std::nullopt;
@@ -494,12 +505,20 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       }
     }
     // Every instance: dependencies exist, placeholders substitute, no cycles.
+    for (const auto& [key, idx] : im.int_index)
+      if (!im.index.count(key)) {
+        const Chunk& c = im.chunks[idx];
+        *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(key.second) +
+                 ": @variant int replaces nothing (no plain chunk of that name and width)";
+        return std::nullopt;
+      }
+    bool integer_eft = false;
     std::map<std::pair<std::string, int>, int> state;  // 1 visiting, 2 done
     std::vector<RuleRef> stack;
     std::function<bool(const RuleRef&)> visit = [&](const RuleRef& r) -> bool {
       auto key = std::make_pair(r.name, r.width);
       if (state[key] == 2) return true;
-      const Chunk* c = im.find(r.name, r.width);
+      const Chunk* c = im.find(r.name, r.width, integer_eft);
       if (!c) {
         *error = "rule " + r.name + " has no width " + std::to_string(r.width);
         return false;
@@ -511,7 +530,7 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       }
       state[key] = 1;
       std::vector<RuleRef> ds;
-      if (!im.deps(*c, r.width, ds, error)) return false;
+      if (!im.deps(*c, r.width, ds, error, integer_eft)) return false;
       for (const auto& d : ds)
         if (!visit(d)) return false;
       for (GuardStyle g : {GuardStyle::Precise, GuardStyle::Uniform, GuardStyle::None}) {
@@ -521,8 +540,12 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       state[key] = 2;
       return true;
     };
-    for (const auto& [key, idx] : im.index)
-      if (!visit({key.first, key.second})) return std::nullopt;
+    for (bool variant : {false, true}) {
+      integer_eft = variant;
+      state.clear();
+      for (const auto& [key, idx] : im.index)
+        if (!visit({key.first, key.second})) return std::nullopt;
+    }
     return lib;
   } catch (const std::exception& e) {
     *error = std::string("rule library: ") + e.what();
@@ -571,6 +594,7 @@ std::vector<RuleInfo> RuleLibrary::info() const {
     r.widths = c.widths;
     r.min_es = c.min_es;
     r.per_component = c.per_component;
+    r.variant = c.variant;
     r.file = c.file;
     r.algorithm = c.fields.at("Algorithm");
     r.source = c.fields.at("Source");
@@ -625,9 +649,9 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return false;
       }
       state[key] = 1;
-      const Chunk* c = im.find(r.name, r.width);
+      const Chunk* c = im.find(r.name, r.width, request.integer_eft);
       std::vector<RuleRef> ds;
-      if (!c || !im.deps(*c, r.width, ds, &error)) {
+      if (!c || !im.deps(*c, r.width, ds, &error, request.integer_eft)) {
         if (error.empty()) error = "rule " + r.name + " has no width " + std::to_string(r.width);
         return false;
       }
@@ -645,7 +669,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return result;
       }
     for (const auto& r : order) {
-      const Chunk* c = im.find(r.name, r.width);
+      const Chunk* c = im.find(r.name, r.width, request.integer_eft);
       if (c->min_es > request.es_version) {
         std::string msg = r.name + " is not available on " + es_name(request.es_version) + " (it needs " +
                           es_name(c->min_es) + " or later)";
@@ -667,7 +691,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     std::set<int> struct_widths;
     for (const auto& r : order) {
       std::string text;
-      if (!im.instantiate(*im.find(r.name, r.width), r.width, s, text, &error)) {
+      if (!im.instantiate(*im.find(r.name, r.width, request.integer_eft), r.width, s, text, &error)) {
         result.error = error;
         return result;
       }
@@ -682,6 +706,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
       out += request.guard == GuardStyle::Precise   ? "precise"
              : request.guard == GuardStyle::Uniform ? "uniform " + request.guard_uniform
                                                     : "none (unprotected)";
+      if (request.integer_eft) out += ", error-free transformations: integer (df64-int)";
       out += "\n";
       for (int w : struct_widths) {
         const std::string f = vec_type("float", "vec", w);

@@ -17,6 +17,7 @@
 //   // @per-component         widths > 1 are generated: the width-1 rule applied to
 //                             each component (for rules that need a per-component branch)
 //   // @uses df_add:1         callee widths, when not the chunk's own width
+//   // @variant int           replaces the same-named chunk when EmitRequest::integer_eft
 // Required header lines: "Algorithm:", "Source:", "Bound:", "Flops:".
 #pragma once
 
@@ -40,6 +41,8 @@ struct EmitRequest {
   GuardStyle guard = GuardStyle::Uniform;
   std::string guard_uniform = "df_guard";
   int es_version = 300;             // 100/300/310/320; desktop targets pass 320
+  bool integer_eft = false;         // df64-int: the "@variant int" chunks (rules/int.glsl) replace
+                                    // the same-named float EFTs
 };
 
 struct EmitResult {
@@ -55,6 +58,7 @@ struct RuleInfo {
   std::vector<int> widths;
   int min_es = 100;
   bool per_component = false;
+  std::string variant;    // "int" for a df64-int replacement (rules/int.glsl), else empty
   std::string file;       // e.g. "arith.glsl"
   std::string algorithm;  // the "Algorithm:" line
   std::string source;     // the "Source:" line

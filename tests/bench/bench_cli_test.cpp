@@ -28,7 +28,7 @@ TEST(BenchCli, JsonHasTheDocumentedKeys) {
   for (const char* key : {"command", "shader", "target", "elements", "warmup", "repetitions", "devices",
                           "clocks", "native_reference_backend", "results", "notes"})
     EXPECT_TRUE(j.contains(key)) << key;
-  ASSERT_EQ(j["results"].size(), 2u * 2u * 5u);  // --modes all: fp32 rte df64-fast df64 native
+  ASSERT_EQ(j["results"].size(), 2u * 2u * 6u);  // --modes all: fp32 rte df64-fast df64 df64-int native
   for (const auto& r : j["results"])
     for (const char* key : {"op", "backend", "mode", "ok", "not_applicable", "steps", "note", "seconds", "median_seconds", "min_seconds", "ops_per_second",
                             "time_vs_fp32", "time_vs_native", "finite_output", "spirv_instructions", "glsl_lines",
@@ -62,7 +62,7 @@ TEST(BenchCli, UserShaderWithIncludesRunsInEveryMode) {
   std::ifstream in(json_path);
   const nlohmann::json j = nlohmann::json::parse(in);
   std::filesystem::remove(json_path);
-  ASSERT_EQ(j["results"].size(), 10u);  // 2 backends x 5 modes
+  ASSERT_EQ(j["results"].size(), 12u);  // 2 backends x 6 modes
   for (const auto& r : j["results"]) {
     if (r["backend"] == "gles" && r["mode"] == "native") continue;
     EXPECT_TRUE(r["ok"].get<bool>()) << r["mode"] << " " << r["backend"] << ": " << r["note"];

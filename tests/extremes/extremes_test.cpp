@@ -337,7 +337,7 @@ struct Outcome {
   std::vector<std::pair<float, float>> results;  // (float(r), float(r - float(r))) per input
 };
 
-Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage) {
+Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage, doublet::Mode mode) {
   Outcome o;
   const std::string source = shader(row, c.compute, c.stage);
   std::string glsl = source;
@@ -348,6 +348,7 @@ Outcome run(const Row& row, const Config& c, bool native, Sabotage sabotage) {
                           : (c.stage == GraphicsStage::Vertex ? doublet::Stage::Vertex : doublet::Stage::Fragment);
     opt.target = c.target;
     opt.file_name = std::string(row.name) + ".glsl";
+    opt.mode = mode;
     // The previous rules predate the whole-shader optimizer's substitutes (rules/opt.glsl).
     if (sabotage == Sabotage::BaselineRules || sabotage == Sabotage::RulesBeforeIssue13) opt.optimize = false;
     auto lowered = doublet::lower(source, opt);
@@ -436,14 +437,14 @@ std::string judge(Expect expect, bool compute, double x, std::pair<float, float>
 }
 
 // Failures of one row in one configuration ("" when it matches).
-std::string check(const Row& row, const Config& c, Sabotage sabotage) {
+std::string check(const Row& row, const Config& c, Sabotage sabotage, doublet::Mode mode = doublet::Mode::Df64) {
   static std::map<std::string, Outcome> native_cache;
   const std::string key = std::string(row.name) + (c.compute ? "/comp" : c.stage == GraphicsStage::Vertex ? "/vert" : "/frag");
   auto it = native_cache.find(key);
-  if (it == native_cache.end()) it = native_cache.emplace(key, run(row, c, true, Sabotage::None)).first;
+  if (it == native_cache.end()) it = native_cache.emplace(key, run(row, c, true, Sabotage::None, doublet::Mode::Df64)).first;
   const Outcome& native = it->second;
   if (!native.error.empty()) return "native fp64 run failed: " + native.error;
-  Outcome lowered = run(row, c, false, sabotage);
+  Outcome lowered = run(row, c, false, sabotage, mode);
   if (!lowered.error.empty()) return "lowered run failed: " + lowered.error;
   std::string failures;
   for (size_t i = 0; i < row.inputs.size(); ++i) {
@@ -466,6 +467,14 @@ TEST_P(Extremes, BehavesLikeNativeFp64) {
     ASSERT_EQ(doublet::runner::backend_unavailable_reason(b), "") << doublet::runner::backend_name(b);
   std::string failures;
   for (const auto& c : configs()) failures += check(GetParam(), c, Sabotage::None);
+  EXPECT_EQ(failures, "") << GetParam().expr;
+}
+
+// The same row under --mode df64-int (integer error terms, no guard; docs/modes.md): every
+// configuration, as df64.
+TEST_P(Extremes, Df64IntBehavesLikeNativeFp64) {
+  std::string failures;
+  for (const auto& c : configs()) failures += check(GetParam(), c, Sabotage::None, doublet::Mode::Df64Int);
   EXPECT_EQ(failures, "") << GetParam().expr;
 }
 

@@ -33,9 +33,11 @@ const std::regex kBound(R"(^(exact|0\.5 ulp.*|.*u\^2.*)$)");
 TEST(RuleHeaders, EveryEmittedFunctionStatesBoundAndSource) {
   const RuleLibrary& lib = RuleLibrary::builtin();
   int checked = 0;
-  for (const auto& ref : lib.all()) {
+  for (const auto& ref : lib.all())
+    for (bool integer_eft : {false, true}) {  // df64-int's replacements (rules/int.glsl) too
     EmitRequest req;
     req.used = {ref};
+    req.integer_eft = integer_eft;
     EmitResult r = lib.emit(req);
     ASSERT_TRUE(r.ok) << r.error;
     for (const auto& f : test::split_functions(r.text)) {
@@ -48,8 +50,8 @@ TEST(RuleHeaders, EveryEmittedFunctionStatesBoundAndSource) {
       EXPECT_TRUE(std::regex_search(flops, std::regex(R"(^\d+)"))) << "'Flops:' is not a count: " << flops;
       ++checked;
     }
-  }
-  EXPECT_GT(checked, 250);
+    }
+  EXPECT_GT(checked, 500);
 }
 
 TEST(RuleHeaders, EmittedTextIsAscii) {
@@ -96,7 +98,8 @@ TEST(RuleHeaders, DocsTableMatchesHeaders) {
     if (line.rfind("| `", 0) == 0) rows.push_back(line);
   for (const auto& info : RuleLibrary::builtin().info()) {
     SCOPED_TRACE(info.name + " widths " + widths_text(info.widths));
-    const std::string key = "| `" + info.name + "` | " + widths_text(info.widths) + " |";
+    const std::string variant = info.variant.empty() ? "" : " (df64-" + info.variant + ")";
+    const std::string key = "| `" + info.name + "`" + variant + " | " + widths_text(info.widths) + " |";
     const std::string* row = nullptr;
     for (const auto& r : rows)
       if (r.rfind(key, 0) == 0) row = &r;

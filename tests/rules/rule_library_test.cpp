@@ -20,8 +20,10 @@ using test::trim;
 
 const RuleLibrary& lib() { return RuleLibrary::builtin(); }
 
-EmitResult emit_one(const std::string& name, int width, GuardStyle g = GuardStyle::Uniform, int es = 320) {
+EmitResult emit_one(const std::string& name, int width, GuardStyle g = GuardStyle::Uniform, int es = 320,
+                    bool integer_eft = false) {
   EmitRequest req;
+  req.integer_eft = integer_eft;
   req.used = {{name, width}};
   req.guard = g;
   req.es_version = es;
@@ -287,8 +289,9 @@ TEST(RuleLibrary, EveryFloatOperationIsGuarded) {
   const std::regex int_type(R"(^(int|uint|bool|[iub]vec[234])$)");
   const std::regex float_type(R"(^(float|vec[234])$)");
   for (GuardStyle g : {GuardStyle::Uniform, GuardStyle::Precise}) {
-    for (const auto& ref : lib().all()) {
-      EmitResult r = emit_one(ref.name, ref.width, g);
+    for (const auto& ref : lib().all())
+      for (bool integer_eft : {false, true}) {  // df64-int's rules/int.glsl too
+      EmitResult r = emit_one(ref.name, ref.width, g, 320, integer_eft);
       ASSERT_TRUE(r.ok) << r.error;
       for (const auto& f : split_functions(r.text)) {
         std::string stmt;
@@ -352,7 +355,8 @@ TEST(RuleLibrary, MinEsIsEnforced) {
   }
   // Everything else is ES 1.00 unless its header says @min-es (and then it is refused below that).
   std::map<std::string, int> min_es;
-  for (const auto& info : lib().info()) min_es[info.name] = std::max(min_es[info.name], info.min_es);
+  for (const auto& info : lib().info())  // df64-int replacements are not emitted without integer_eft
+    if (info.variant.empty()) min_es[info.name] = std::max(min_es[info.name], info.min_es);
   for (const auto& ref : lib().all()) {
     if (ref.name == "df_from_uint" || ref.name == "df_to_uint") continue;
     EXPECT_EQ(emit_one(ref.name, ref.width, GuardStyle::Uniform, 100).ok, min_es[ref.name] == 100) << ref.name;

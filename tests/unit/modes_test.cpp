@@ -278,8 +278,9 @@ void main() { color = vec4(float(f(a)) + f(1.0)); }
 }
 
 TEST(Modes, ParseAndSpellEveryMode) {
-  for (Mode m : {Mode::Fp32, Mode::Rte, Mode::Df64Fast, Mode::Df64, Mode::Native})
+  for (Mode m : {Mode::Fp32, Mode::Rte, Mode::Df64Fast, Mode::Df64, Mode::Native, Mode::Df64Int})
     EXPECT_EQ(doublet::parse_mode(doublet::to_string(m)), m);
+  EXPECT_EQ(doublet::to_string(Mode::Df64Int), "df64-int");
   EXPECT_EQ(doublet::parse_mode("df64fast"), std::nullopt);
 }
 
