@@ -17,7 +17,7 @@ namespace doublet::demo {
 // The page's panels, left to right (doublet's own Mode, not demo::Mode of modes.hpp, which has
 // no df64 variants). Mode::Fp32 is the shader with its doubles demoted to float;
 // every other mode is doublet::lower with Options::mode set to it. A new mode is one more entry.
-inline std::vector<doublet::Mode> web_page_modes() { return {doublet::Mode::Fp32, doublet::Mode::Df64}; }
+inline std::vector<doublet::Mode> web_page_modes() { return {doublet::Mode::Fp32, doublet::Mode::Df64, doublet::Mode::Df64Int}; }
 
 // Hidden test option (--sabotage): a page whose float-float panels must fail their checks.
 enum class WebSabotage {
