@@ -6,6 +6,7 @@
 // Sabotages (no ties-to-even; no sticky bit) must make the count of differing results nonzero.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -82,7 +83,7 @@ std::vector<uint64_t> make_inputs() {
   std::vector<uint64_t> ab(2 * size_t(kCount));
   for (uint32_t i = 0; i < kCount; ++i) {
     uint64_t a = 0, b = 0;
-    switch (i % 5) {
+    switch (i % 6) {
       case 0:  // random bit patterns
         a = rng(), b = rng();
         break;
@@ -100,6 +101,12 @@ std::vector<uint64_t> make_inputs() {
         const uint64_t e = rng() % 60;
         a = random_sign((e << 52) | (rng() >> 12));
         b = random_sign(((e + rng() % 3) << 52) | (rng() >> 12));
+        break;
+      }
+      case 4: {  // a / 2^j or a * 2^-j exactly halfway between two subnormals (a's significand odd)
+        const uint64_t j = 1 + rng() % 60;
+        a = random_sign((j << 52) | (rng() >> 12) | 1);
+        b = random_sign((rng() & 1) ? (j + 1023) << 52 : (1023 - j) << 52);
         break;
       }
       default:  // a special value against anything
@@ -202,6 +209,45 @@ TEST_P(ExactOps, BitIdenticalToNativeFp64) {
     std::cout << "[ exact ] " << op.name << " on " << backend_name(backend) << " vs native: " << describe(d) << "\n";
     RecordProperty(std::string(op.name) + "_" + backend_name(backend) + "_differing", int(d.differing));
     EXPECT_EQ(d.differing, 0u) << op.name << " on " << backend_name(backend) << ": " << describe(d);
+  }
+}
+
+// A sabotage is a text replacement in the emitted library; each must change some results of
+// every operation it concerns (so the inputs above really exercise ties, sticky bits and
+// subnormal results).
+struct Sabotage {
+  const char* name;
+  std::vector<std::pair<std::string, std::string>> edits;
+  std::vector<const char*> ops;
+};
+
+TEST(ExactSabotage, EachSabotageMakesResultsDiffer) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  static const std::vector<uint64_t> ab = make_inputs();
+  const std::vector<Sabotage> sabotages = {
+      {"ties-away (no ties-to-even)", {{"if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;", ""}}, {"add", "sub", "mul", "div"}},
+      {"no sticky bit",
+       {{"r.x |= lost != 0u ? 1u : 0u;", ""},
+        {"if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;", ""},
+        {"if ((rem.x | rem.y) != 0u) q.x |= 1u;", ""},
+        {"if ((rem.x | rem.y) != 0u) root.x |= 1u;", ""}},
+       {"add", "sub", "mul", "div", "sqrt"}},
+      {"flush subnormal results to zero", {{"sig = ex_shr_jam64(sig, -e);", "sig = uvec2(0u);"}}, {"add", "sub", "mul", "div"}},
+  };
+  for (const Sabotage& sab : sabotages) {
+    for (const char* name : sab.ops) {
+      const Op& op = *std::find_if(ops().begin(), ops().end(), [&](const Op& o) { return std::string(o.name) == name; });
+      std::string library = exact_library({std::string("ex_") + op.name});
+      for (const auto& [from, to] : sab.edits) {
+        const size_t at = library.find(from);
+        if (at != std::string::npos) library.replace(at, from.size(), to);
+      }
+      const Diff d = compare(run(Backend::Vulkan, exact_shader(op, library), ab),
+                             run(Backend::Vulkan, native_shader(op), ab), ab);
+      std::cout << "[ exact ] sabotage '" << sab.name << "', " << op.name << ": " << d.differing << " of " << kCount
+                << " differ\n";
+      EXPECT_GT(d.differing, 0u) << sab.name << " left " << op.name << " bit-identical";
+    }
   }
 }
 
