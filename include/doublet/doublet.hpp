@@ -34,7 +34,10 @@ enum class GuardKind { Auto, Precise, Uniform, None /* unprotected: tests only *
 //  Df64Fast: float-float with the cheaper algorithms and their weaker bounds;
 //  Df64:     float-float with the accurate algorithms (the default);
 //  Native:   doubles kept as they are (desktop targets with fp64; the reference).
-enum class Mode { Fp32, Rte, Df64Fast, Df64, Native };
+//  Exact:    IEEE binary64 bit patterns in two uint words (high, low), every operation in integer
+//            arithmetic, bit-identical to native fp64 (rules/exact.glsl; ES 3.00+, desktop; whole
+//            shader only).
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Native, Exact };
 
 enum class Severity { Error, Warning, Note };
 

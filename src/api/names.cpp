@@ -37,6 +37,7 @@ std::optional<Target> parse_target(std::string_view name) {
 namespace {
 constexpr std::pair<Mode, const char*> kModes[] = {
     {Mode::Fp32, "fp32"}, {Mode::Rte, "rte"}, {Mode::Df64Fast, "df64-fast"}, {Mode::Df64, "df64"}, {Mode::Native, "native"},
+    {Mode::Exact, "exact"},
 };
 }  // namespace
 

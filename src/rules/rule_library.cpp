@@ -106,6 +106,7 @@ struct Subst {
   int width = 1;
   GuardStyle guard = GuardStyle::None;
   std::string guard_uniform = "df_guard";
+  bool exact_words = false;  // EmitRequest::exact_words: uint words in the df_* structs
 };
 
 // Replaces the placeholders of docs/rules-format.md. Returns false (and sets *error) on an
@@ -269,7 +270,7 @@ struct RuleLibrary::Impl {
       return l;
     };
     if (c.ret_type == "$DF") {
-      const std::string v = vec_type("float", "vec", width);
+      const std::string v = s.exact_words ? vec_type("uint", "uvec", width) : vec_type("float", "vec", width);
       out += "  return " + ret_w + "(" + v + "(" + list(".hi") + "), " + v + "(" + list(".lo") + "));\n";
     } else {
       out += "  return " + ret_w + "(" + list("") + ");\n";
@@ -663,6 +664,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     Subst s;
     s.guard = request.guard;
     s.guard_uniform = request.guard_uniform;
+    s.exact_words = request.exact_words;
     std::vector<std::string> functions;
     std::set<int> struct_widths;
     for (const auto& r : order) {
@@ -684,7 +686,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
                                                     : "none (unprotected)";
       out += "\n";
       for (int w : struct_widths) {
-        const std::string f = vec_type("float", "vec", w);
+        const std::string f = request.exact_words ? vec_type("uint", "uvec", w) : vec_type("float", "vec", w);
         out += "struct " + df_type(w) + " { " + f + " hi; " + f + " lo; };\n";
       }
       if (request.guard == GuardStyle::Uniform)

@@ -40,6 +40,8 @@ struct EmitRequest {
   GuardStyle guard = GuardStyle::Uniform;
   std::string guard_uniform = "df_guard";
   int es_version = 300;             // 100/300/310/320; desktop targets pass 320
+  // Mode exact: the df_* structs hold uint words (binary64 high and low words), not floats.
+  bool exact_words = false;
 };
 
 struct EmitResult {

@@ -34,11 +34,11 @@ struct Op {
 
 const std::vector<Op>& ops() {
   static const std::vector<Op> list = {
-      {"add", 2, "ex_add(a, b)", "a + b", [](double a, double b) { return a + b; }},
-      {"sub", 2, "ex_sub(a, b)", "a - b", [](double a, double b) { return a - b; }},
-      {"mul", 2, "ex_mul(a, b)", "a * b", [](double a, double b) { return a * b; }},
-      {"div", 2, "ex_div(a, b)", "a / b", [](double a, double b) { return a / b; }},
-      {"sqrt", 1, "ex_sqrt(a)", "sqrt(a)", [](double a, double) { return std::sqrt(a); }},
+      {"add", 2, "ex_add_bits(a, b)", "a + b", [](double a, double b) { return a + b; }},
+      {"sub", 2, "ex_sub_bits(a, b)", "a - b", [](double a, double b) { return a - b; }},
+      {"mul", 2, "ex_mul_bits(a, b)", "a * b", [](double a, double b) { return a * b; }},
+      {"div", 2, "ex_div_bits(a, b)", "a / b", [](double a, double b) { return a / b; }},
+      {"sqrt", 1, "ex_sqrt_bits(a)", "sqrt(a)", [](double a, double) { return std::sqrt(a); }},
   };
   return list;
 }
@@ -199,7 +199,7 @@ TEST_P(ExactOps, BitIdenticalToNativeFp64) {
   REQUIRE_BACKEND(Backend::Gles);
   const Op& op = ops()[GetParam()];
   static const std::vector<uint64_t> ab = make_inputs();
-  const std::string library = exact_library({std::string("ex_") + op.name});
+  const std::string library = exact_library({std::string("ex_") + op.name + "_bits"});
   const std::vector<uint64_t> native = run(Backend::Vulkan, native_shader(op), ab);
   ASSERT_EQ(native.size(), kCount);
   const Diff native_vs_host = compare(native, host_results(op, ab), ab);
@@ -237,7 +237,7 @@ TEST(ExactSabotage, EachSabotageMakesResultsDiffer) {
   for (const Sabotage& sab : sabotages) {
     for (const char* name : sab.ops) {
       const Op& op = *std::find_if(ops().begin(), ops().end(), [&](const Op& o) { return std::string(o.name) == name; });
-      std::string library = exact_library({std::string("ex_") + op.name});
+      std::string library = exact_library({std::string("ex_") + op.name + "_bits"});
       for (const auto& [from, to] : sab.edits) {
         const size_t at = library.find(from);
         if (at != std::string::npos) library.replace(at, from.size(), to);

@@ -1,0 +1,147 @@
+// `doublet lower --mode exact`: a whole fp64 compute shader (literals, dvec2 arithmetic and
+// swizzles, compound assignment, ++, comparisons, conversions, the common built-ins) lowered to
+// ES 3.10 and run on lavapipe and Mesa GLES must store the same 64 bits per result as the
+// original shader on native fp64 (lavapipe), for 2^18 input pairs of the exact_ops_test kinds.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <iostream>
+#include <random>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+#include "test_util.hpp"
+
+namespace doublet::runner::test {
+namespace {
+
+constexpr uint32_t kPairs = 1u << 18;
+constexpr uint32_t kResults = 24;  // results per pair (r[kResults * i + k])
+
+const char* kSource = R"(#version 450
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer In { uvec4 ab[]; };
+layout(std430, binding = 1) writeonly buffer Out { uvec2 r[]; };
+double twice_plus(double x, double y) { return x + x + y; }
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  uint o = 24u * i;
+  double a = packDouble2x32(ab[i].xy), b = packDouble2x32(ab[i].zw);
+  r[o + 0u] = unpackDouble2x32(a + b);
+  r[o + 1u] = unpackDouble2x32(a - b * 3.0);
+  r[o + 2u] = unpackDouble2x32(a * b / 0.1lf);
+  r[o + 3u] = unpackDouble2x32(floor(a));
+  r[o + 4u] = unpackDouble2x32(ceil(a));
+  r[o + 5u] = unpackDouble2x32(trunc(a));
+  r[o + 6u] = unpackDouble2x32(roundEven(a));
+  r[o + 7u] = unpackDouble2x32(round(a));
+  r[o + 8u] = unpackDouble2x32(fract(a));
+  r[o + 9u] = unpackDouble2x32(mod(a, b));
+  r[o + 10u] = unpackDouble2x32(min(a, b));
+  r[o + 11u] = unpackDouble2x32(max(a, b));
+  r[o + 12u] = unpackDouble2x32(sign(a));
+  r[o + 13u] = unpackDouble2x32(-abs(a));
+  r[o + 14u] = uvec2(floatBitsToUint(float(a)), 0u);
+  r[o + 15u] = unpackDouble2x32(double(uintBitsToFloat(ab[i].y)));
+  r[o + 16u] = uvec2(uint(a < b) | uint(a <= b) << 1 | uint(a > b) << 2 | uint(a >= b) << 3 | uint(a == b) << 4 |
+                     uint(a != b) << 5, uint(isnan(a)) | uint(isinf(a)) << 1);
+  dvec2 v = dvec2(a, b);
+  v = v * v.yx + dvec2(1.0, -2.0);
+  v.x += b;
+  r[o + 17u] = unpackDouble2x32(v.x);
+  r[o + 18u] = unpackDouble2x32(v.y);
+  r[o + 19u] = uvec2(abs(a) < 2147483648.0 ? uint(int(a)) : 0u, 0u);
+  r[o + 20u] = uvec2(a >= 0.0 && a < 4294967296.0 ? uint(a) : 0u, 0u);
+  double c = sqrt(abs(b));
+  c++;  // one addition: in a longer chain Mesa may reassociate the native side's constant
+  r[o + 21u] = unpackDouble2x32(twice_plus(a, c));
+  r[o + 22u] = unpackDouble2x32(double(int(ab[i].x)) + double(ab[i].w));
+  r[o + 23u] = unpackDouble2x32(double(a < b) - clamp(a, -1.0, 1.0));
+}
+)";
+
+const char* kResultNames[kResults] = {"a+b", "a-b*3", "a*b/0.1", "floor", "ceil", "trunc", "roundEven", "round",
+                                      "fract", "mod", "min", "max", "sign", "-abs", "float(a)", "double(float)",
+                                      "comparisons", "dvec2 x", "dvec2 y", "int(a)", "uint(a)", "call, sqrt, ++",
+                                      "double(int)+double(uint)", "double(bool)-clamp"};
+
+bool is_nan(uint64_t x) { return (x & 0x7FFFFFFFFFFFFFFFull) > 0x7FF0000000000000ull; }
+
+std::vector<uint64_t> make_pairs() {
+  std::mt19937_64 rng(115);
+  const uint64_t specials[] = {0, 1, 0x000FFFFFFFFFFFFFull, 0x0010000000000000ull, 0x7FEFFFFFFFFFFFFFull,
+                               0x7FF0000000000000ull, 0x7FF8000000000000ull, 0x3FF0000000000000ull,
+                               0x3FE0000000000000ull, 0x4004000000000000ull, 0x4330000000000000ull};
+  std::vector<uint64_t> ab(2 * size_t(kPairs));
+  for (auto& x : ab) {
+    switch (rng() % 4) {
+      case 0: x = rng(); break;
+      case 1: x = ((1000 + rng() % 90) << 52) | (rng() >> 12); break;  // 2^-23 .. 2^66: integers and fractions
+      case 2: x = ((1023 + rng() % 53) << 52) | ((rng() >> 12) & ~((1ull << (rng() % 53)) - 1)); break;  // halves
+      default: x = specials[rng() % 11]; break;
+    }
+    if (rng() & 1) x |= 0x8000000000000000ull;
+  }
+  return ab;
+}
+
+std::vector<uint64_t> run(Backend backend, const std::string& glsl, const std::vector<uint64_t>& ab) {
+  ComputeJob job;
+  job.glsl = glsl;
+  job.buffers = {to_bytes(ab), std::vector<uint8_t>(size_t(kPairs) * kResults * 8)};
+  job.groups_x = kPairs / 64;
+  ComputeResult res = run_compute(backend, job);
+  EXPECT_TRUE(res.ok) << backend_name(backend) << ": " << res.error;
+  return res.ok ? from_bytes<uint64_t>(res.buffers[1]) : std::vector<uint64_t>{};
+}
+
+TEST(ExactLowering, WholeShaderBitIdenticalToNativeFp64) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  REQUIRE_BACKEND(Backend::Gles);
+  Options options;
+  options.stage = Stage::Compute;
+  options.target = Target::Es310;
+  options.mode = Mode::Exact;
+  Result lowered = lower(kSource, options);
+  std::string diagnostics;
+  for (const Diagnostic& d : lowered.diagnostics) diagnostics += format_diagnostic(d) + "\n";
+  ASSERT_TRUE(lowered.ok) << diagnostics;
+  EXPECT_EQ(diagnostics, "");
+  const std::string code = std::regex_replace(lowered.output, std::regex("//[^\n]*"), "");
+  EXPECT_FALSE(std::regex_search(code, std::regex(R"(\b(double|dvec[234])\b)"))) << "a double survived";
+  const std::vector<uint64_t> ab = make_pairs();
+  const std::vector<uint64_t> native = run(Backend::Vulkan, kSource, ab);
+  ASSERT_EQ(native.size(), size_t(kPairs) * kResults);
+  for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
+    const std::vector<uint64_t> got = run(backend, lowered.output, ab);
+    ASSERT_EQ(got.size(), native.size());
+    uint32_t total = 0, nan_payloads = 0;
+    for (uint32_t k = 0; k < kResults; ++k) {
+      uint32_t differing = 0, first = 0;
+      for (uint32_t i = 0; i < kPairs; ++i) {
+        const uint64_t g = got[size_t(i) * kResults + k], n = native[size_t(i) * kResults + k];
+        if (g == n) continue;
+        if (k != 14 && k != 16 && k != 19 && k != 20 && is_nan(g) && is_nan(n)) {
+          ++nan_payloads;  // both NaN: which NaN operand native passes on depends on its instruction order
+          continue;
+        }
+        if (differing++ == 0) first = i;
+      }
+      total += differing;
+      if (differing)
+        std::printf("[ exact ] %s %-26s %u of %u differ; first a=%016llx b=%016llx got %016llx want %016llx\n",
+                    backend_name(backend), kResultNames[k], differing, kPairs, (unsigned long long)ab[2 * first],
+                    (unsigned long long)ab[2 * first + 1], (unsigned long long)got[size_t(first) * kResults + k],
+                    (unsigned long long)native[size_t(first) * kResults + k]);
+    }
+    std::cout << "[ exact ] lowered shader on " << backend_name(backend) << ": " << total << " of "
+              << kPairs * kResults << " results differ from native fp64; " << nan_payloads
+              << " NaN results carry another NaN's payload or sign\n";
+    EXPECT_EQ(total, 0u) << backend_name(backend);
+  }
+}
+
+}  // namespace
+}  // namespace doublet::runner::test
