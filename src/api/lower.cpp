@@ -256,6 +256,16 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     request.exact_words = exact;
     request.guard_uniform = options.guard_uniform_name;
     request.es_version = target_is_es(options.target) ? target_version(options.target) : 320;
+    if (exact)  // an operation rules/exact.glsl does not have yet: said where the shader first uses it
+      for (const auto& ref : ctx.rules_used)
+        if (!rules::RuleLibrary::builtin().has(ref)) {
+          auto use = ctx.rule_first_use.find(ref.name);
+          ir::Loc at = use != ctx.rule_first_use.end() ? use->second : ir::Loc{};
+          diags.push_back({options.file_name, at.line, at.column, Severity::Error,
+                           "this double operation (" + ref.name.substr(3) + ", width " + std::to_string(ref.width) +
+                               ") is not implemented by --mode exact yet; use --mode df64 for it"});
+          return result;
+        }
     rules::EmitResult emitted = rules::RuleLibrary::builtin().emit(request);
     if (!emitted.ok) {
       // A rule the target lacks: point at the first expression that needs it.

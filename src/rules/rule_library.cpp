@@ -680,10 +680,15 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     }
     std::string out;
     if (!order.empty()) {
-      out += "// doublet float-float runtime: " + std::to_string(order.size()) + " functions from rules/*.glsl, guard: ";
-      out += request.guard == GuardStyle::Precise   ? "precise"
-             : request.guard == GuardStyle::Uniform ? "uniform " + request.guard_uniform
-                                                    : "none (unprotected)";
+      if (request.exact_words) {
+        out += "// doublet exact binary64 runtime (mode exact): " + std::to_string(order.size()) +
+               " functions from rules/exact.glsl, integer arithmetic (no optimizer guard needed)";
+      } else {
+        out += "// doublet float-float runtime: " + std::to_string(order.size()) + " functions from rules/*.glsl, guard: ";
+        out += request.guard == GuardStyle::Precise   ? "precise"
+               : request.guard == GuardStyle::Uniform ? "uniform " + request.guard_uniform
+                                                      : "none (unprotected)";
+      }
       out += "\n";
       for (int w : struct_widths) {
         const std::string f = request.exact_words ? vec_type("uint", "uvec", w) : vec_type("float", "vec", w);

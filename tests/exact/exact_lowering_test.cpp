@@ -87,6 +87,14 @@ std::vector<uint64_t> make_pairs() {
   return ab;
 }
 
+Result lower_exact(const std::string& source, Target target = Target::Es310) {
+  Options options;
+  options.stage = Stage::Compute;
+  options.target = target;
+  options.mode = Mode::Exact;
+  return lower(source, options);
+}
+
 std::vector<uint64_t> run(Backend backend, const std::string& glsl, const std::vector<uint64_t>& ab) {
   ComputeJob job;
   job.glsl = glsl;
@@ -141,6 +149,71 @@ TEST(ExactLowering, WholeShaderBitIdenticalToNativeFp64) {
               << " NaN results carry another NaN's payload or sign\n";
     EXPECT_EQ(total, 0u) << backend_name(backend);
   }
+}
+
+// The same comparison must see the arithmetic broken: ties rounded away from zero instead of to
+// even, edited into the lowered text.
+TEST(ExactLowering, SabotagedRoundingDiffers) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  Result lowered = lower_exact(kSource);
+  ASSERT_TRUE(lowered.ok);
+  std::string sabotaged = lowered.output;
+  const std::string tie = "if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;";
+  ASSERT_NE(sabotaged.find(tie), std::string::npos);
+  sabotaged.replace(sabotaged.find(tie), tie.size(), "");
+  const std::vector<uint64_t> ab = make_pairs();
+  const std::vector<uint64_t> native = run(Backend::Vulkan, kSource, ab), got = run(Backend::Vulkan, sabotaged, ab);
+  ASSERT_EQ(got.size(), native.size());
+  uint32_t differing = 0;
+  for (size_t i = 0; i < got.size(); ++i) differing += got[i] != native[i] && !(is_nan(got[i]) && is_nan(native[i]));
+  std::cout << "[ exact ] lowered shader with ties away from zero: " << differing << " results differ\n";
+  EXPECT_GT(differing, 0u);
+}
+
+// What mode exact refuses, each with a clear diagnostic (never an internal error).
+TEST(ExactLowering, RefusalsAreDiagnosed) {
+  auto first_error = [](const Result& r) {
+    for (const Diagnostic& d : r.diagnostics)
+      if (d.severity == Severity::Error) return format_diagnostic(d);
+    return std::string("(no error)");
+  };
+  const char* plain = "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer B { double x; };\n"
+                      "void main() { x = x * 2.0; }\n";
+  Options options;
+  options.stage = Stage::Vertex;
+  options.target = Target::Es100;
+  options.mode = Mode::Exact;
+  Result es100 = lower("#version 450\nin double a;\nvoid main() { gl_Position = vec4(float(a)); }\n", options);
+  EXPECT_FALSE(es100.ok);
+  EXPECT_NE(first_error(es100).find("--mode exact needs 32-bit integers"), std::string::npos) << first_error(es100);
+
+  Result matrix = lower_exact("#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer B { dmat2 m; };\n"
+                              "void main() { m = m * m; }\n");
+  EXPECT_FALSE(matrix.ok);
+  EXPECT_NE(first_error(matrix).find(":3:"), std::string::npos) << first_error(matrix);
+  EXPECT_NE(first_error(matrix).find("dmat2 is not supported by --mode exact"), std::string::npos) << first_error(matrix);
+
+  Result pragma = lower_exact(std::string("#version 450\n#pragma doublet mode(fp32)\n") + (plain + 13));
+  EXPECT_FALSE(pragma.ok);
+  EXPECT_NE(first_error(pragma).find("<stdin>:2:"), std::string::npos) << first_error(pragma);
+
+  Options per_name;
+  per_name.stage = Stage::Compute;
+  per_name.target = Target::Es310;
+  per_name.mode = Mode::Df64;
+  per_name.mode_for = {{"main", Mode::Exact}};
+  Result named = lower(plain, per_name);
+  EXPECT_FALSE(named.ok);
+  EXPECT_NE(first_error(named).find("applies to the whole shader only"), std::string::npos) << first_error(named);
+
+  Result unsupported = lower_exact("#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer B { double x; };\n"
+                                   "void main() { x = smoothstep(0.0, 1.0, x); }\n");
+  EXPECT_FALSE(unsupported.ok);
+  EXPECT_NE(first_error(unsupported).find("<stdin>:4:"), std::string::npos) << first_error(unsupported);
+  EXPECT_EQ(first_error(unsupported).find("internal error"), std::string::npos) << first_error(unsupported);
+
+  Result ok = lower_exact(plain);
+  EXPECT_TRUE(ok.ok) << first_error(ok);
 }
 
 }  // namespace
