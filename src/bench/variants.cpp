@@ -14,6 +14,7 @@ const char* mode_name(Mode m) {
     case Mode::Df64Fast: return "df64-fast";
     case Mode::Df64: return "df64";
     case Mode::Native: return "native";
+    case Mode::Exact: return "exact";
   }
   return "?";
 }
@@ -26,6 +27,7 @@ const std::vector<Mode>& all_bench_modes() {
 std::optional<Mode> parse_mode(const std::string& s) {
   for (Mode m : all_bench_modes())
     if (s == mode_name(m)) return m;
+  if (s == mode_name(Mode::Exact)) return Mode::Exact;
   return std::nullopt;
 }
 
@@ -61,6 +63,7 @@ Variant make_variant(Mode mode, runner::Backend backend, const std::string& sour
   o.mode = mode == Mode::Fp32     ? doublet::Mode::Fp32
            : mode == Mode::Rte    ? doublet::Mode::Rte
            : mode == Mode::Df64Fast ? doublet::Mode::Df64Fast
+           : mode == Mode::Exact  ? doublet::Mode::Exact
                                   : doublet::Mode::Df64;
   Result r = lower(source, o);
   if (r.ok) {
