@@ -15,9 +15,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   FuzzedDataProvider bytes(data, size);
   static constexpr doublet::Target kTargets[] = {doublet::Target::Es100,  doublet::Target::Es300,
                                                  doublet::Target::Es310,  doublet::Target::Es320,
-                                                 doublet::Target::Glsl330, doublet::Target::Glsl450};
+                                                 doublet::Target::Glsl330, doublet::Target::Glsl450,
+                                                 doublet::Target::Webgl2};
   // ES 1.00 lacks % and the bitwise operators the generator uses: ES 3.00 and later, desktop.
-  const doublet::Target target = kTargets[1 + bytes.ConsumeIntegralInRange<int>(0, 4)];
+  const doublet::Target target = kTargets[1 + bytes.ConsumeIntegralInRange<int>(0, 5)];
   const int statements = bytes.ConsumeIntegralInRange<int>(1, 8);
   const int depth = bytes.ConsumeIntegralInRange<int>(1, 6);
   doublet::roundtrip::Chooser choose = [&](uint32_t bound) { return bytes.ConsumeIntegralInRange<uint32_t>(0, bound - 1); };

@@ -696,7 +696,8 @@ $U ex_to_uint($DF a) {
 // @per-component
 // @min-es 300
 $DF ex_from_bool($B b) {
-  return b ? df_double(0x3FF00000u, 0u) : df_double(0u, 0u);
+  if (b) return df_double(0x3FF00000u, 0u);  // no struct ternary: WebGL 2.0 forbids it
+  return df_double(0u, 0u);
 }
 
 // ex_to_bool: bool(a) (mode exact): a != 0.0 (true for NaN).
@@ -918,7 +919,8 @@ $DF ex_mod($DF a, $DF b) {
 $DF ex_min($DF a, $DF b) {
   if (ex_is_nan(ex_bits(a))) return b;
   if (ex_is_nan(ex_bits(b))) return a;
-  return ex_lt_bits(ex_bits(a), ex_bits(b)) ? a : b;
+  if (ex_lt_bits(ex_bits(a), ex_bits(b))) return a;
+  return b;
 }
 
 // ex_max: max(a, b) (mode exact): the other operand when one is NaN (IEEE maxNum, as native fp64 on lavapipe gives), else a > b ? a : b.
@@ -932,7 +934,8 @@ $DF ex_min($DF a, $DF b) {
 $DF ex_max($DF a, $DF b) {
   if (ex_is_nan(ex_bits(a))) return b;
   if (ex_is_nan(ex_bits(b))) return a;
-  return ex_lt_bits(ex_bits(b), ex_bits(a)) ? a : b;
+  if (ex_lt_bits(ex_bits(b), ex_bits(a))) return a;
+  return b;
 }
 
 // ex_clamp: clamp(x, lo, hi) = min(max(x, lo), hi) (mode exact).

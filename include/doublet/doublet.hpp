@@ -16,7 +16,7 @@ namespace doublet {
 enum class Stage { Vertex, Fragment, Compute };
 
 // Output dialects. es* are GLSL ES, glsl* desktop GLSL (core profile).
-enum class Target { Es100, Es300, Es310, Es320, Glsl330, Glsl450 };
+enum class Target { Es100, Es300, Es310, Es320, Glsl330, Glsl450, Webgl2 };  // webgl2: ES 3.00 under WebGL 2.0's rules
 
 // How the float-float error terms are protected from the driver's optimizer.
 //  Precise: every rule temporary is declared `precise` (ES 3.20, desktop 4.00+,

@@ -11,6 +11,7 @@
 #include "doublet/doublet.hpp"
 #include "emit/printer.hpp"
 #include "emit/validate.hpp"
+#include "emit/webgl_rules.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/import.hpp"
 #include "frontend/mode_pragmas.hpp"
@@ -92,7 +93,7 @@ std::string targets_with_builtin_variable(const std::string& name, Stage stage) 
   std::lock_guard<std::mutex> lock(mutex);
   auto [it, inserted] = known.try_emplace({name, stage});
   if (!inserted) return it->second;
-  for (Target t : {Target::Es100, Target::Es300, Target::Es310, Target::Es320, Target::Glsl330, Target::Glsl450}) {
+  for (Target t : {Target::Es100, Target::Es300, Target::Es310, Target::Es320, Target::Glsl330, Target::Glsl450}) {  // webgl2 = es300 here
     const std::string version = "#version " + std::to_string(target_version(t)) +
                                 (t == Target::Es100 ? "" : target_is_es(t) ? " es" : " core");
     const std::string layout = stage == Stage::Compute ? "layout(local_size_x = 1) in;\n" : "";
@@ -156,7 +157,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     return result;
   }
   if (*options.stage == Stage::Compute && (options.target == Target::Es100 || options.target == Target::Es300 ||
-                                            options.target == Target::Glsl330)) {
+                                            options.target == Target::Webgl2 || options.target == Target::Glsl330)) {
     diags.push_back({options.file_name, 0, 0, Severity::Error,
                      "target " + std::string(to_string(options.target)) +
                          " has no compute shaders (they need ES 3.10 or desktop 4.30); use --target es310, es320 "
@@ -242,6 +243,8 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   next_phase("interfaces");
   if (!passes::move_global_initialisers(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
+  if (!passes::rename_functions_named_like_builtins(module, ctx)) return result;
+  if (!passes::select_structs(module, ctx)) return result;
   if (!passes::check_target(module, ctx)) return result;
   next_phase("print");
 
@@ -278,6 +281,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     for (const auto& name : ctx.helper_order) helpers += "\n" + ctx.helpers[name];
     print_options.runtime = missing_struct_types(ctx.widths_used, emitted.text, exact) +
                             matrix_struct_types(ctx.matrices_used) + emitted.text + helpers;
+    if (options.target == Target::Webgl2) print_options.runtime = emit::spell_float_max_for_webgl(print_options.runtime);
     if (!ctx.rules_used.empty() && !exact) {
       if (guard.style == rules::GuardStyle::Precise) result.manifest.guard.kind = "precise";
       if (guard.style == rules::GuardStyle::Uniform) {
@@ -312,6 +316,17 @@ Result lower_unchecked(std::string_view source, const Options& options) {
                      "internal error: the lowered shader is not valid " + std::string(to_string(options.target)) +
                          " GLSL (please report this with the input):\n" + log});
     return result;
+  }
+  if (options.target == Target::Webgl2) {
+    std::string broken;
+    for (const auto& v : emit::webgl_violations(printed.text))
+      broken += "  line " + std::to_string(v.line) + ": " + v.message + "\n";
+    if (!broken.empty()) {
+      diags.push_back({options.file_name, 0, 0, Severity::Error,
+                       "internal error: the lowered shader breaks WebGL 2.0's rules (please report this with the "
+                       "input):\n" + broken});
+      return result;
+    }
   }
   result.output = std::move(printed.text);
   result.ok = true;

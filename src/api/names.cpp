@@ -16,6 +16,7 @@ constexpr TargetName kTargets[] = {
     {Target::Es100, "es100", 100, true},   {Target::Es300, "es300", 300, true},
     {Target::Es310, "es310", 310, true},   {Target::Es320, "es320", 320, true},
     {Target::Glsl330, "glsl330", 330, false}, {Target::Glsl450, "glsl450", 450, false},
+    {Target::Webgl2, "webgl2", 300, true},
 };
 const TargetName& info(Target t) {
   for (const auto& n : kTargets)

@@ -39,6 +39,13 @@ const std::vector<Kernel>& kernels() {
       {"dot3", "df_dot (3)", rule_flops("df_dot", 3), 5, 1024},
       {"length3", "df_length (2-4)", rule_flops("df_length", 3), 6, 1024},
       {"mat4", "df_mul_dmatCxR_dvecC (4 × df_dot 4)", 4 * rule_flops("df_dot", 4), 28, 256},
+      // The transcendental extension (docs/transcendentals.md): each step adds a negation or an
+      // addition to keep the chain bounded; native fp64 has no such function, so no native row.
+      {"exp", "df_exp", rule_flops("df_exp", 1), 2, 128},
+      {"log", "df_log", rule_flops("df_log", 1), 2, 128},
+      {"cos", "df_cos", rule_flops("df_cos", 1), 1, 128},
+      {"atan", "df_atan", rule_flops("df_atan", 1), 2, 128},
+      {"pow", "df_pow", rule_flops("df_pow", 1), 2, 64},
   };
   return k;
 }
@@ -68,6 +75,13 @@ Body body(const std::string& op) {
   if (op == "sqrt") return {"double x = p.x + p.y;", "x = sqrt(x);", "vec4(float(x))"};
   if (op == "dot3") return {"dvec3 v = p.xyz; dvec3 w = p.wzy * 0.3;", "v.x = dot(v, w);", "vec4(vec3(v), 0.0)"};
   if (op == "length3") return {"dvec3 v = p.xyz;", "v.x = length(v);", "vec4(vec3(v), 0.0)"};
+  // Fixed points keep these chains bounded: exp(-x) -> 0.567, log(x + 2) -> 1.146, cos(x) -> 0.739,
+  // atan(x) + 1 -> 2.132, x^0.5 + 1 -> 2.618.
+  if (op == "exp") return {"double x = p.x;", "x = exp(-x);", "vec4(float(x))"};
+  if (op == "log") return {"double x = p.x;", "x = log(x + 2.0);", "vec4(float(x))"};
+  if (op == "cos") return {"double x = p.x;", "x = cos(x);", "vec4(float(x))"};
+  if (op == "atan") return {"double x = p.x;", "x = atan(x) + 1.0;", "vec4(float(x))"};
+  if (op == "pow") return {"double x = p.x; double y = 0.5;", "x = pow(x, y) + 1.0;", "vec4(float(x))"};
   return {"dmat4 m = dmat4(dvec4(mcol[0]), dvec4(mcol[1]), dvec4(mcol[2]), dvec4(mcol[3])); dvec4 v = p;",
           "v = m * v;", "vec4(v)"};
 }

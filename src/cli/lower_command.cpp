@@ -28,8 +28,8 @@ namespace doublet::cli {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr Target kAllTargets[] = {Target::Es100, Target::Es300,   Target::Es310,
-                                  Target::Es320, Target::Glsl330, Target::Glsl450};
+constexpr Target kAllTargets[] = {Target::Es100,   Target::Es300,   Target::Es310, Target::Es320,
+                                  Target::Glsl330, Target::Glsl450, Target::Webgl2};
 
 std::string target_names(std::string_view sep) {
   std::string s;

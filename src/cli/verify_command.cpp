@@ -21,7 +21,7 @@ namespace doublet::cli {
 namespace {
 
 struct VerifyArgs {
-  std::string shader, stage, target = "es310", backend = "both", sabotage = "none";
+  std::string shader, stage, target, backend = "both", sabotage = "none";  // target: default_target()
   std::string spec, json;
   std::string scene, plan;  // doublet plan: --scene FILE, --plan FILE (docs/plan.md)
   std::vector<std::string> ranges, defines, include_dirs;
@@ -37,6 +37,15 @@ struct VerifyArgs {
 constexpr int kExitBelowMinBits = 1;
 constexpr int kExitDriver = 3;
 
+// --target's default: es310 (compute needs 3.10), but ES 3.00 for a vertex/fragment run that
+// includes WebGL2 (the webgl2 target once the lowering has one), which runs nothing newer.
+std::string default_target(const VerifyArgs& a, std::optional<Stage> stage) {
+  if (!a.target.empty()) return a.target;
+  if ((a.backend == "webgl2" || a.backend == "all") && stage != Stage::Compute)
+    return "webgl2";
+  return "es310";
+}
+
 int input_error(const std::string& message) {
   std::cerr << "doublet verify: error: " << message << "\n";
   return kExitInput;
@@ -46,10 +55,12 @@ int input_error(const std::string& message) {
 // --sweep OP|all: per-operation sweeps against MPFR; exit 1 when an op leaves its bound.
 int run_sweep(const VerifyArgs& a) {
   if (a.sweep_stage != "comp") return input_error("--sweep supports --stage comp only so far");
+  if (a.backend == "webgl2") return input_error("--sweep runs compute shaders, which WebGL2 lacks (--backend vulkan|gles|both)");
   verify::SweepOptions o;
   o.ops = a.sweep == "all" ? verify::sweep_ops() : std::vector<std::string>{a.sweep};
-  const std::optional<Target> target = parse_target(a.target);
-  if (!target) return input_error("unknown target '" + a.target + "'");
+  const std::string target_name = a.target.empty() ? "es310" : a.target;
+  const std::optional<Target> target = parse_target(target_name);
+  if (!target) return input_error("unknown target '" + target_name + "'");
   o.target = *target;
   o.grid_step = a.grid_step;
   o.heatmap_dir = a.heatmap_dir;
@@ -123,8 +134,9 @@ int run_verify(const VerifyArgs& a) {
   o.lower.file_name = a.shader;
   o.lower.stage = a.stage.empty() ? stage_from_path(a.shader) : parse_stage(a.stage);
   if (!o.lower.stage) return input_error("cannot tell the stage of '" + a.shader + "': use -S vert|frag|comp");
-  const std::optional<Target> target = parse_target(a.target);
-  if (!target) return input_error("unknown target '" + a.target + "'");
+  const std::string target_name = default_target(a, o.lower.stage);
+  const std::optional<Target> target = parse_target(target_name);
+  if (!target) return input_error("unknown target '" + target_name + "'");
   o.lower.target = *target;
   for (const std::string& d : a.defines) {
     const size_t eq = d.find('=');
@@ -140,6 +152,8 @@ int run_verify(const VerifyArgs& a) {
   o.min_bits = a.min_bits;
   if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
   else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
+  else if (a.backend == "webgl2") o.backends = {runner::Backend::WebGl2};
+  else if (a.backend == "all") o.backends = {runner::Backend::Vulkan, runner::Backend::Gles, runner::Backend::WebGl2};
   const std::optional<verify::Sabotage> sabotage = verify::parse_sabotage(a.sabotage);
   o.sabotage = sabotage.value_or(verify::Sabotage::None);
   if (!a.spec.empty()) {
@@ -187,7 +201,7 @@ int run_verify(const VerifyArgs& a) {
 Command add_verify_command(CLI::App& app) {
   auto args = std::make_shared<VerifyArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "verify", "Run SHADER natively (fp64, lavapipe) and lowered (lavapipe / Mesa GLES); report accuracy per output");
+      "verify", "Run SHADER natively (fp64, lavapipe) and lowered (lavapipe / Mesa GLES / Chromium WebGL2); report accuracy per output");
   cmd->add_option("SHADER", args->shader, "shader file (.vert, .frag or .comp); not with --sweep");
   cmd->add_option("--sweep", args->sweep, "OP|all: per-operation sweep against MPFR (add sub mul div sqrt)");
   cmd->add_option("--stage", args->sweep_stage, "stage of the sweep (comp)");
@@ -195,7 +209,7 @@ Command add_verify_command(CLI::App& app) {
   cmd->add_option("--grid-step", args->grid_step, "exponent step of the sweep grid (default 1)")
       ->check(CLI::Range(1, 64));
   cmd->add_option("-S", args->stage, "stage: vert|frag|comp (default: from the extension)");
-  cmd->add_option("--target", args->target, "target of the lowering (default es310)");
+  cmd->add_option("--target", args->target, "target of the lowering (default es310; webgl2 for vert/frag with --backend webgl2/all)");
   cmd->add_option("--samples", args->samples, "input sets (default 1024)")->check(CLI::PositiveNumber);
   cmd->add_option("--seed", args->seed, "random seed (default 1)");
   cmd->add_option("--range", args->ranges, "NAME=LO:HI input range (repeatable)");
@@ -204,8 +218,10 @@ Command add_verify_command(CLI::App& app) {
   cmd->add_option("--plan", args->plan, "lower with this plan file from `doublet plan` (docs/plan.md)");
   cmd->add_option("--json", args->json, "write the report as JSON to this file ('-': stdout)");
   cmd->add_option("--min-bits", args->min_bits, "exit 1 when any output keeps fewer correct bits");
-  cmd->add_option("--backend", args->backend, "vulkan|gles|both (default both)")
-      ->check(CLI::IsMember({"vulkan", "gles", "both"}));
+  cmd->add_option("--backend", args->backend,
+                  "vulkan|gles|webgl2|both|all: where the lowered shader runs (both = vulkan + gles, the default; "
+                  "all = vulkan + gles + webgl2; webgl2 = headless Chromium)")
+      ->check(CLI::IsMember({"vulkan", "gles", "webgl2", "both", "all"}));
   cmd->add_option("--sabotage", args->sabotage, "drop-lo|drop-guard: break the lowering on purpose")
       ->check(CLI::IsMember({"none", "drop-lo", "drop-guard"}));
   cmd->add_option("-D", args->defines, "NAME[=VALUE] preprocessor define");

@@ -72,7 +72,8 @@ class Printer {
   void header() {
     switch (options_.target) {
       case Target::Es100: out_ << "#version 100\n"; break;
-      case Target::Es300: out_ << "#version 300 es\n"; break;
+      case Target::Es300:
+      case Target::Webgl2: out_ << "#version 300 es\n"; break;
       case Target::Es310: out_ << "#version 310 es\n"; break;
       case Target::Es320: out_ << "#version 320 es\n"; break;
       case Target::Glsl330: out_ << "#version 330 core\n"; break;

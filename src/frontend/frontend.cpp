@@ -4,6 +4,7 @@
 #include "api/big_stack.hpp"
 #include "frontend/macro_budget.hpp"
 #include "frontend/text_scan.hpp"
+#include "frontend/transcendentals.hpp"
 
 #include <glslang/Include/ResourceLimits.h>
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -552,12 +553,21 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
     }
   }
 
-  out.shader = std::make_unique<glslang::TShader>(to_glslang(*options.stage));
   ShaderStrings strings;
-  configure(*out.shader, strings, text, preamble, options);
-  auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
-  // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
-  bool ok = out.shader->parse(&resource_limits(), 450, ECompatibilityProfile, true, false, messages, includer);
+  auto attempt = [&](const std::string& with_preamble) {
+    out.shader = std::make_unique<glslang::TShader>(to_glslang(*options.stage));
+    configure(*out.shader, strings, text, with_preamble, options);
+    auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
+    // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.
+    return out.shader->parse(&resource_limits(), 450, ECompatibilityProfile, true, false, messages, includer);
+  };
+  bool ok = attempt(preamble);
+  // The transcendental extension (frontend/transcendentals.hpp): only a shader whose parse fails on
+  // a call of exp, sin, ... gets the double prototypes, so every other shader parses as before.
+  if (!ok && includer.limit_error.empty() && refuses_transcendental(out.shader->getInfoLog())) {
+    ok = attempt(preamble + transcendental_prototypes());
+    out.transcendentals = ok;
+  }
   if (!includer.limit_error.empty()) {
     diagnostics.push_back({options.file_name, 1, 1, Severity::Error, includer.limit_error});
     return false;

@@ -33,6 +33,7 @@ struct ParsedShader {
   SourceInfo info;
   std::vector<std::string> included_files;
   std::string source;  // the main file's text (global declarations are located in it)
+  bool transcendentals = false;  // parsed with the transcendental prototypes (transcendentals.hpp)
   ParsedShader();
   ParsedShader(ParsedShader&&) noexcept;
   ~ParsedShader();

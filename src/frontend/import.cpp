@@ -1,4 +1,5 @@
 #include "frontend/import.hpp"
+#include "frontend/transcendentals.hpp"
 
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ShaderLang.h>
@@ -688,6 +689,7 @@ bool import_module(const ParsedShader& parsed, const Options& options, ir::Modul
   out.source_es = parsed.info.es;
   Importer importer(options, parsed.source, out, diagnostics);
   if (!importer.run(*parsed.intermediate)) return false;
+  if (parsed.transcendentals) mark_transcendental_calls(out);
   return place_declarations(out, options, diagnostics);
 }
 

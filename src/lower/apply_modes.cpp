@@ -431,7 +431,7 @@ class ModeApplier {
                                                      "frexp", "ldexp"};
     const Target t = ctx_.options.target;
     if (t == Target::Es100) return !missing_es100.count(name);
-    if (t == Target::Es300 || t == Target::Glsl330) return name != "frexp" && name != "ldexp";
+    if (t == Target::Es300 || t == Target::Webgl2 || t == Target::Glsl330) return name != "frexp" && name != "ldexp";
     return true;
   }
 

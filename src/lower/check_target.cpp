@@ -17,6 +17,7 @@
 #include <set>
 
 #include "emit/validate.hpp"
+#include "emit/webgl_rules.hpp"
 #include "ir/walk.hpp"
 #include "lower/lower.hpp"
 
@@ -138,8 +139,8 @@ class Es100Checker {
   std::set<std::string> reported_;
 };
 
-constexpr Target kAllTargets[] = {Target::Es100, Target::Es300, Target::Es310,
-                                  Target::Es320, Target::Glsl330, Target::Glsl450};
+constexpr Target kAllTargets[] = {Target::Es100,   Target::Es300,   Target::Es310, Target::Es320,
+                                  Target::Glsl330, Target::Glsl450, Target::Webgl2};
 
 // Whether the opaque type `name` exists in `target`'s language: glslang calls a missing one a
 // reserved word or does not parse it as a type at all.
@@ -200,11 +201,69 @@ class TypeAvailabilityChecker {
   Context& ctx_;
 };
 
+// WebGL 2.0 on top of ES 3.00: the user's names (reserved webgl_ / _webgl_ prefixes, at most
+// emit::kWebglMaxIdentifierLength characters), and no ternary on a struct or an array left over
+// by select_structs.
+class WebglChecker {
+ public:
+  WebglChecker(const ir::Module& m, Context& c) : module_(m), ctx_(c) {}
+
+  void run() {
+    for (const auto& t : module_.structs) check_type_name(t, {});
+    for (const auto& g : module_.globals) check_name(g->name, g->loc);
+    for (size_t i = 0; i < module_.globals.size(); ++i)
+      if (module_.global_inits[i]) check_expr(module_.global_inits[i]);
+    for (const auto& f : module_.functions) {
+      check_name(f->name, f->loc);
+      for (const auto& p : f->params) check_name(p->name, p->loc);
+      check_stmt(f->body);
+    }
+  }
+
+ private:
+  void check_name(const std::string& name, ir::Loc loc) {
+    if (name.rfind("gl_", 0) == 0 || !reported_.insert(name).second) return;
+    if (name.rfind("webgl_", 0) == 0 || name.rfind("_webgl_", 0) == 0)
+      ctx_.error(loc, "'" + name + "': WebGL reserves identifiers beginning with webgl_ and _webgl_; rename it");
+    else if (name.size() > emit::kWebglMaxIdentifierLength)
+      ctx_.error(loc, "'" + name.substr(0, 32) + "...' has " + std::to_string(name.size()) +
+                          " characters: WebGL 2.0 allows identifiers of at most " +
+                          std::to_string(emit::kWebglMaxIdentifierLength) + "; shorten it");
+  }
+
+  void check_type_name(const ir::Type& t, ir::Loc loc) {
+    check_name(t.name, loc);
+    if (t.fields)
+      for (const auto& f : *t.fields) check_name(f.name, loc);
+  }
+
+  void check_expr(const ir::ExprPtr& root) {
+    ir::visit(root, [&](const ir::ExprPtr& e) {
+      if (e->kind == Kind::Ternary && (e->type.base == ir::Base::Struct || e->type.is_array()))
+        ctx_.error(e->loc, "internal error: a ternary on " + ir::type_name(e->type) +
+                               " is left for webgl2, which forbids it (please report this with the input)");
+    });
+  }
+
+  void check_stmt(const ir::StmtPtr& s) {
+    if (!s) return;
+    if (s->kind == ir::Stmt::Kind::Decl) check_name(s->var->name, s->loc);
+    if (s->expr) check_expr(s->expr);
+    if (s->step) check_expr(s->step);
+    for (const auto& b : s->body) check_stmt(b);
+  }
+
+  const ir::Module& module_;
+  Context& ctx_;
+  std::set<std::string> reported_;
+};
+
 }  // namespace
 
 bool check_target(const ir::Module& module, Context& context) {
   TypeAvailabilityChecker(module, context).run();
   if (context.options.target == Target::Es100) Es100Checker(module, context).run();
+  if (context.options.target == Target::Webgl2) WebglChecker(module, context).run();
   return !context.failed;
 }
 

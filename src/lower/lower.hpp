@@ -58,6 +58,10 @@ bool flatten_io_blocks(ir::Module& module, Context& context);
 // Global initialisers that are not constant expressions become assignments at the top of main.
 bool move_global_initialisers(ir::Module& module, Context& context);
 bool split_interfaces(ir::Module& module, Context& context, Manifest& manifest);
+// GLSL ES forbids overloading built-in names: user functions named like one are renamed (NAME_user).
+bool rename_functions_named_like_builtins(ir::Module& module, Context& context);
+// webgl2: every ternary on a struct becomes a selection through a temporary (WebGL forbids them).
+bool select_structs(ir::Module& module, Context& context);
 // Diagnoses, by construct and target, what the lowered shader needs but the target lacks.
 bool check_target(const ir::Module& module, Context& context);
 

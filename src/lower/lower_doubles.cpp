@@ -591,6 +591,14 @@ class DoubleLowering {
         {"greaterThan", {"df_greater_than", Builtin::Bools}},
         {"greaterThanEqual", {"df_greater_than_equal", Builtin::Bools}},
         {"equal", {"df_equal_components", Builtin::Bools}}, {"notEqual", {"df_not_equal_components", Builtin::Bools}},
+        // The transcendental extension (frontend/transcendentals.hpp, rules/transcendental.glsl).
+        {"exp", {"df_exp", Builtin::Same}},          {"exp2", {"df_exp2", Builtin::Same}},
+        {"log", {"df_log", Builtin::Same}},          {"log2", {"df_log2", Builtin::Same}},
+        {"pow", {"df_pow", Builtin::Same}},          {"sin", {"df_sin", Builtin::Same}},
+        {"cos", {"df_cos", Builtin::Same}},          {"tan", {"df_tan", Builtin::Same}},
+        {"asin", {"df_asin", Builtin::Same}},        {"acos", {"df_acos", Builtin::Same}},
+        {"atan", {"df_atan", Builtin::Same}},        {"sinh", {"df_sinh", Builtin::Same}},
+        {"cosh", {"df_cosh", Builtin::Same}},        {"tanh", {"df_tanh", Builtin::Same}},
     };
     const std::string& n = e->name;
     if (n == "unpackDouble2x32")
@@ -621,6 +629,7 @@ class DoubleLowering {
       if (is_df(a->type)) width = std::max(width, df_width(a->type));
     if (n == "mix" && args[2]->type.base == ir::Base::Bool) rule_name = "df_mix_bool";
     if (n == "normalize" && width == 1) rule_name = "df_sign";
+    if (n == "atan" && args.size() == 2) rule_name = "df_atan2";
     if (n == "frexp" && width > 1) {
       ctx_.error(e->loc, "frexp on double vectors is not supported yet; call it per component");
       return e;

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "runner/graphics_wrapper.hpp"
+#include "runner/webgl2.hpp"
 
 namespace doublet::runner {
 namespace detail {
@@ -83,7 +84,16 @@ bool reflect_graphics(GraphicsStage stage, const std::string& glsl, GraphicsInte
 
 GraphicsResult run_graphics(Backend backend, const GraphicsJob& job) { return run_graphics_batch(backend, {job}).back(); }
 
+std::vector<std::vector<GraphicsResult>> run_graphics_batches(Backend backend,
+                                                             const std::vector<std::vector<GraphicsJob>>& batches) {
+  if (backend == Backend::WebGl2) return detail::webgl2_run_graphics(batches);
+  std::vector<std::vector<GraphicsResult>> results;
+  for (const auto& jobs : batches) results.push_back(run_graphics_batch(backend, jobs));
+  return results;
+}
+
 std::vector<GraphicsResult> run_graphics_batch(Backend backend, const std::vector<GraphicsJob>& jobs) {
+  if (backend == Backend::WebGl2) return detail::webgl2_run_graphics({jobs}).front();
   GraphicsResult failed;
   if (jobs.empty()) {
     failed.error = "run_graphics_batch: no jobs";

@@ -258,6 +258,7 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
   out->iface.input_stride = lay_out(out->iface.inputs);
   out->iface.output_stride = lay_out(out->iface.outputs);
 
+  out->user_text = body;
   std::string w = "#undef main\n";
   if (out->es) w += "precision highp float;\nprecision highp int;\n";
   if (stage == GraphicsStage::Vertex) w += kVertexIndexMacro;

@@ -24,6 +24,10 @@ struct WrappedProgram {
   std::string vertex, fragment;  // full texts of both stages
   GraphicsInterface iface;       // inputs/outputs with std430 offsets and strides (no uniforms yet)
   bool es = true;                // GLSL ES text (else desktop #version 450)
+  // The user's rewritten stage before the storage-buffer main() is appended (its #version line,
+  // `#define main doublet_user_main`, the globals): other transports (webgl2_wrapper.cpp) append
+  // their own main().
+  std::string user_text;
 };
 
 // Empty on success, else why the shader cannot be wrapped.

@@ -1,10 +1,11 @@
 #include "runner/runner.hpp"
 
+#include "runner/browser.hpp"
 #include "runner/internal.hpp"
 
 namespace doublet::runner {
 
-const char* backend_name(Backend b) { return b == Backend::Vulkan ? "Vulkan" : "GLES"; }
+const char* backend_name(Backend b) { return b == Backend::Vulkan ? "Vulkan" : b == Backend::Gles ? "GLES" : "WebGL2"; }
 
 ComputeResult run_compute(Backend backend, const ComputeJob& job) {
   return run_compute_batch(backend, {job}).back();
@@ -17,6 +18,11 @@ std::vector<ComputeResult> run_compute_batch(Backend backend, const std::vector<
     return {result};
   }
   if (backend == Backend::Gles) return detail::gles_run(jobs);
+  if (backend == Backend::WebGl2) {
+    ComputeResult result;
+    result.error = "WebGL2 has no compute shaders";
+    return {result};
+  }
   detail::SpirvProgram program;
   std::string error;
   if (!detail::compile_glsl(jobs[0].glsl, &program, &error)) {
@@ -44,6 +50,7 @@ ComputeResult run_spirv_compute(const std::vector<uint32_t>& spirv, const Comput
 }
 
 std::string backend_unavailable_reason(Backend backend) {
+  if (backend == Backend::WebGl2) return browser_unavailable_reason();
   return backend == Backend::Gles ? detail::gles_unavailable_reason() : detail::vulkan_unavailable_reason();
 }
 

@@ -2,6 +2,8 @@
 // the drivers' optimizers actually do to float-float code (see /work/shared/NUMERICS.md).
 //   Backend::Vulkan — glslang → SPIR-V (validated by SPIRV-Tools) → lavapipe.
 //   Backend::Gles   — the text as-is → Mesa's GLES 3.2 compiler (llvmpipe, EGL surfaceless).
+//   Backend::WebGl2 — vertex/fragment only: GLSL ES 1.00/3.00 text in headless Chromium's WebGL2
+//                     (tools/browser, webgl2.hpp); one browser start per run_graphics_batches call.
 // The driver objects (VkInstance/VkDevice, EGL context) are created once per process, lazily;
 // run_compute is thread-safe (calls on one backend are serialised).
 #pragma once
@@ -13,7 +15,7 @@
 
 namespace doublet::runner {
 
-enum class Backend { Vulkan, Gles };
+enum class Backend { Vulkan, Gles, WebGl2 };
 
 const char* backend_name(Backend);
 
@@ -177,6 +179,9 @@ struct GraphicsResult {
 GraphicsResult run_graphics(Backend, const GraphicsJob&);
 // Many draws with one compiled pipeline (jobs[0].glsl, .stage and .count are used for all).
 std::vector<GraphicsResult> run_graphics_batch(Backend, const std::vector<GraphicsJob>& jobs);
+// Several batches, each with its own program, results per batch. On WebGl2 all of them run in one
+// page (one browser start); elsewhere this is run_graphics_batch per batch.
+std::vector<std::vector<GraphicsResult>> run_graphics_batches(Backend, const std::vector<std::vector<GraphicsJob>>& batches);
 
 // SPIRV-Tools validation for the Vulkan 1.1 environment. Empty when valid, else the messages.
 std::string validate_spirv(const std::vector<uint32_t>& spirv);

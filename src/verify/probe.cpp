@@ -42,6 +42,20 @@ void main() {
 }
 )";
 
+// WebGL2 (GLSL ES 3.00): no fma and no precise, so the fma column is left at 0 (has_fma false).
+constexpr const char* kEs300StageProbeShader = R"(#version 300 es
+precision highp float;
+in vec4 abd;
+out vec4 r;
+void main() {
+  float a = abd.x, b = abd.y, d = abd.z;
+  float s = a + b;
+  float bb = s - a;
+  float e = (a - (s - bb)) + (b - bb);
+  r = vec4(s, e, 0.0, d * 0.5);
+}
+)";
+
 // Per pair: a = 1 + k·2^-12, b = a shifted (TwoSum and TwoProd errors all non-zero), FLT_MIN.
 std::vector<float> probe_inputs() {
   std::vector<float> in(4 * kPairs);
@@ -72,22 +86,32 @@ void judge(const std::vector<float>& in, const std::vector<float>& out, Probe* p
 
 }  // namespace
 
-Probe probe_stage(runner::Backend backend, runner::GraphicsStage stage) {
-  Probe probe;
-  probe.stage = stage == runner::GraphicsStage::Vertex ? "vert" : "frag";
+runner::GraphicsJob stage_probe_job(runner::Backend backend, runner::GraphicsStage stage) {
   const std::vector<float> in = probe_inputs();
   runner::GraphicsJob job;
   job.stage = stage;
-  job.glsl = kStageProbeShader;
+  job.glsl = backend == runner::Backend::WebGl2 ? kEs300StageProbeShader : kStageProbeShader;
   job.count = kPairs;
   job.inputs["abd"].assign(in.begin(), in.end());
-  const runner::GraphicsResult r = runner::run_graphics(backend, job);
+  return job;
+}
+
+Probe probe_stage(runner::Backend backend, runner::GraphicsStage stage) {
+  return judge_stage_probe(backend, stage, runner::run_graphics(backend, stage_probe_job(backend, stage)));
+}
+
+Probe judge_stage_probe(runner::Backend backend, runner::GraphicsStage stage, const runner::GraphicsResult& r) {
+  Probe probe;
+  probe.stage = stage == runner::GraphicsStage::Vertex ? "vert" : "frag";
+  probe.has_fma = backend != runner::Backend::WebGl2;
+  const std::vector<float> in = probe_inputs();
   if (!r.ok) {
     probe.error = r.error;
     return probe;
   }
   const std::vector<double>& got = r.outputs.at("r");
   judge(in, std::vector<float>(got.begin(), got.end()), &probe);
+  probe.fma_fused &= probe.has_fma;
   return probe;
 }
 
@@ -114,7 +138,7 @@ std::string describe(const Probe& p) {
   if (!p.error.empty()) return "probe failed: " + p.error;
   return std::string("stage ") + p.stage + ": unprotected TwoSum " +
          (p.two_sum_survives ? "survives" : "DELETED (error term folded to 0)") + "; fma " +
-         (p.fma_fused ? "fused" : "NOT fused") + "; fp32 denormals " + (p.denormals_flushed ? "FLUSHED" : "kept");
+         (!p.has_fma ? "absent (GLSL ES 3.00)" : p.fma_fused ? "fused" : "NOT fused") + "; fp32 denormals " + (p.denormals_flushed ? "FLUSHED" : "kept");
 }
 
 }  // namespace doublet::verify

@@ -7,7 +7,9 @@
 namespace doublet::verify {
 namespace {
 
-std::string backend_id(runner::Backend b) { return b == runner::Backend::Vulkan ? "vulkan" : "gles"; }
+std::string backend_id(runner::Backend b) {
+  return b == runner::Backend::Vulkan ? "vulkan" : b == runner::Backend::Gles ? "gles" : "webgl2";
+}
 
 std::string fmt(const char* f, double x) {
   char buf[64];

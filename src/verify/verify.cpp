@@ -92,6 +92,25 @@ std::string as_native_450(std::string_view source, const Options& o, std::string
   return (has_version ? s.substr(0, version_at) : std::string()) + header + expanded;
 }
 
+// WebGL2 compiles GLSL ES 1.00 and 3.00 (and the webgl2 target's text, ES 3.00 with WebGL's rules).
+bool runs_on_webgl2(Target t) { return t == Target::Es100 || t == Target::Es300 || t == Target::Webgl2; }
+
+bool has_backend(const VerifyOptions& o, runner::Backend b) {
+  return std::find(o.backends.begin(), o.backends.end(), b) != o.backends.end();
+}
+
+// WebGL2 asked for where it cannot run: an input error when it is the only backend, else a note
+// and the other backends run. Empty when WebGL2 can run (or was not asked for).
+std::string webgl2_skip_reason(const VerifyOptions& o) {
+  if (!has_backend(o, runner::Backend::WebGl2)) return {};
+  if (*o.lower.stage == Stage::Compute)
+    return "WebGL2 has no compute shaders: verify a compute shader with --backend webgpu (a WGSL target), vulkan or gles";
+  if (!runs_on_webgl2(o.lower.target))
+    return "WebGL2 runs GLSL ES 1.00/3.00: use --target es300 (or es100) with --backend webgl2, not " +
+           std::string(to_string(o.lower.target));
+  return {};
+}
+
 std::string diagnostics_text(const Result& r) {
   std::string s;
   for (const Diagnostic& d : r.diagnostics) s += format_diagnostic(d) + "\n";
@@ -142,6 +161,10 @@ void run_compute_stage(const std::string& native_glsl, const Result& lowered, co
       report->notes.push_back("GLES backend skipped: target " + report->target + " is desktop GLSL");
       continue;
     }
+    if (backend == runner::Backend::WebGl2) {
+      report->notes.push_back("WebGL2 backend skipped: " + webgl2_skip_reason(options));
+      continue;
+    }
     run.probe = probe_compute(backend);
     if (!native_ok) {
       run.error = "native fp64 run failed: " + native.back().error;
@@ -169,10 +192,16 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
   harness.generate(options.seed);
   report->notes = harness.notes();
   report->inputs_beyond_float_range = harness.inputs_beyond_float_range();
-  if (t == Target::Es100 || t == Target::Es300)
+  const bool storage_capture = std::any_of(options.backends.begin(), options.backends.end(),
+                                           [](runner::Backend b) { return b != runner::Backend::WebGl2; });
+  if ((t == Target::Es100 || t == Target::Es300 || t == Target::Webgl2) && storage_capture)
     report->notes.push_back(report->target + " text runs as #version 310 es (the capture's storage buffers need 3.10; "
                             "in/out, attribute/varying, gl_FragColor/gl_FragData and texture2D/textureCube are "
                             "rewritten, the rest of the text is unchanged)");
+  if (has_backend(options, runner::Backend::WebGl2) && runs_on_webgl2(t))
+    report->notes.push_back("WebGL2: the lowered text runs as #version 300 es in headless Chromium (in/out as plain "
+                            "globals, inputs read bit-exactly from an RGBA32UI texture, outputs returned as their bits "
+                            "through " + std::string(stage == runner::GraphicsStage::Vertex ? "transform feedback" : "RGBA32UI colour attachments") + ")");
   if (t == Target::Glsl330)
     report->notes.push_back("glsl330 text runs as #version 450 (the capture's storage buffers need 4.30)");
   report->inputs = harness.describe_inputs();
@@ -189,11 +218,19 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
       report->notes.push_back("GLES backend skipped: target " + report->target + " is desktop GLSL");
       continue;
     }
-    run.probe = probe_stage(backend, stage);
+    if (backend == runner::Backend::WebGl2 && !runs_on_webgl2(t)) {
+      report->notes.push_back("WebGL2 backend skipped: " + webgl2_skip_reason(options));
+      continue;
+    }
+    // The probe and the lowered draws in one call: on WebGL2 that is one browser start.
+    std::vector<std::vector<runner::GraphicsJob>> batches{{stage_probe_job(backend, stage)}};
+    if (native_ok) batches.push_back(lowered_jobs);
+    const std::vector<std::vector<runner::GraphicsResult>> results = runner::run_graphics_batches(backend, batches);
+    run.probe = judge_stage_probe(backend, stage, results[0].back());
     if (!native_ok) {
       run.error = "native fp64 run failed: " + native.back().error;
     } else {
-      const std::vector<runner::GraphicsResult> got = runner::run_graphics_batch(backend, lowered_jobs);
+      const std::vector<runner::GraphicsResult>& got = results[1];
       run.driver = got.back().device;
       if (got.size() != lowered_jobs.size() || !got.back().ok) run.error = "lowered run failed: " + got.back().error;
       else run.outputs = harness.compare(native, got, options.min_bits);
@@ -218,6 +255,11 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   }
   if (options.samples == 0) {
     report.input_error = "--samples must be at least 1";
+    return report;
+  }
+
+  if (std::string why = webgl2_skip_reason(options); !why.empty() && options.backends.size() == 1) {
+    report.input_error = why;
     return report;
   }
 

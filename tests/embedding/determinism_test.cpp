@@ -45,7 +45,7 @@ std::vector<Case> corpus() {
       auto stage = doublet::stage_from_path(entry.path().string());
       if (!entry.is_regular_file() || !stage) continue;
       for (doublet::Target t : {doublet::Target::Es100, doublet::Target::Es300, doublet::Target::Es310,
-                                doublet::Target::Glsl330, doublet::Target::Glsl450}) {
+                                doublet::Target::Glsl330, doublet::Target::Glsl450, doublet::Target::Webgl2}) {
         Case c;
         c.name = entry.path().lexically_relative(root).string() + " -> " + std::string(doublet::to_string(t));
         c.source = read(entry.path());

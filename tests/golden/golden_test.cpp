@@ -2,7 +2,7 @@
 //
 //   cases/<name>.<vert|frag|comp>          input; an optional first line
 //                                          `// targets: es100 es300 ...` picks the
-//                                          targets (default: es300 es310 es320 glsl450).
+//                                          targets (default: es300 es310 es320 glsl450 webgl2).
 //                                          That line is removed before lowering: GLSL ES
 //                                          allows nothing, not even a comment, before
 //                                          #version (diagnostic lines shift by one).
@@ -53,7 +53,7 @@ fs::path golden_dir() {
 const fs::path kGoldenDir = golden_dir();
 const fs::path kCasesDir = kGoldenDir / "cases";
 const fs::path kExpectedDir = kGoldenDir / "expected";
-const std::vector<std::string> kDefaultTargets = {"es300", "es310", "es320", "glsl450"};
+const std::vector<std::string> kDefaultTargets = {"es300", "es310", "es320", "glsl450", "webgl2"};
 
 // The harness's own view of each target: deliberately not taken from the
 // library, so that validation does not trust the code under test.
@@ -69,6 +69,7 @@ const std::map<std::string, TargetInfo> kTargets = {
     {"es320", {doublet::Target::Es320, 320, true}},
     {"glsl330", {doublet::Target::Glsl330, 330, false}},
     {"glsl450", {doublet::Target::Glsl450, 450, false}},
+    {"webgl2", {doublet::Target::Webgl2, 300, true}},  // GLSL ES 3.00 text
 };
 
 struct StageInfo {

@@ -38,7 +38,8 @@ std::string reserved_identifiers(const std::string& glsl) {
 }
 
 constexpr doublet::Target kAllTargets[] = {doublet::Target::Es100, doublet::Target::Es300, doublet::Target::Es310,
-                                           doublet::Target::Es320, doublet::Target::Glsl330, doublet::Target::Glsl450};
+                                           doublet::Target::Es320, doublet::Target::Glsl330, doublet::Target::Glsl450,
+                                           doublet::Target::Webgl2};
 
 TEST(GeneratedNames, NamesEndingInUnderscoreNeverMakeDoubleUnderscores) {
   const char* src = R"(#version 100

@@ -1,4 +1,4 @@
-// targets: es100 es300 glsl330
+// targets: es100 es300 glsl330 webgl2
 #version 450
 // Every fp64 built-in that GLSL ES 1.00 can host (frexp, ldexp, isnan, isinf, packDouble2x32 and
 // unpackDouble2x32 need integer bit operations and are diagnosed there).

@@ -1,4 +1,4 @@
-// targets: es300 es310 es320 glsl330 glsl450
+// targets: es300 es310 es320 glsl330 glsl450 webgl2
 #version 300 es
 precision highp float;
 // Conversions between double and float/int/uint/bool, vector sizes,

@@ -1,4 +1,4 @@
-// targets: es100 es300 glsl330
+// targets: es100 es300 glsl330 webgl2
 #version 100
 precision highp float;
 // ES 1.00 input: varying, gl_FragColor; a double uniform and a texture lookup.

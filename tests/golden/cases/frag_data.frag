@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 glsl330 glsl450
+// targets: es100 es300 es310 glsl330 glsl450 webgl2
 #version 110
 // gl_FragData with constant indices: ES 1.00 keeps it, ES 3.00+ and core profiles have none, so
 // the printer declares one output per slot (df_frag_data_k at location k).

@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // Global initialisers that are not constant expressions (issue 12): they read a double uniform,
 // call a user function taking a double, and feed each other. They become assignments at the top

@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // The fragment side of io_blocks.vert: another instance name, the same block names, so the
 // flattened varyings (VertexData_world_hi, ...) match the vertex shader's.

@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // In/out interface blocks with double members (issue 12). Targets without I/O blocks (es100,
 // es300, es310) flatten them into plain varyings named BLOCK_MEMBER (the manifest names the

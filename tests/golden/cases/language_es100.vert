@@ -1,4 +1,4 @@
-// targets: es100 es300 glsl330
+// targets: es100 es300 glsl330 webgl2
 #version 450
 // The fp64 language on ES 1.00's terms: structs with double members (nested) as locals,
 // parameters and uniforms; double arrays indexed by constants and loop indices; if/for with

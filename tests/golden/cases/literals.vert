@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 300 es
 // Double literals are split exactly at compile time: lo is not zero.
 in vec3 offset;

@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // Local 'const' declarations whose initialisers are not constant expressions (GLSL 4.20+), used
 // as call arguments, and a const parameter (issue 12): lowered as ordinary locals.

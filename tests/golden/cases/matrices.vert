@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // Square double matrices: uniforms split into hi/lo mat uniforms, matrix x vector, vector x
 // matrix, matrix x matrix, matrix +- scalar, component-wise ops, indexing m[i] and m[i][j]

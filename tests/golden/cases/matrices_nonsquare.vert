@@ -1,4 +1,4 @@
-// targets: es300 es310 es320 glsl330 glsl450
+// targets: es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // Non-square double matrices outside compute (they need ES 3.00: ES 1.00 has square ones only).
 uniform dmat3x2 project;

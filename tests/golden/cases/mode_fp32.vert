@@ -1,4 +1,4 @@
-// targets: es300 glsl450
+// targets: es300 glsl450 webgl2
 // options: --mode fp32
 #version 300 es
 // Mode fp32: every double is demoted to float: interfaces become plain float variables

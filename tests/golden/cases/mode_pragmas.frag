@@ -1,4 +1,4 @@
-// targets: es300 glsl450
+// targets: es300 glsl450 webgl2
 #version 300 es
 precision highp float;
 // '#pragma doublet mode(MODE)' sets the mode of the next declaration: a global's storage, a

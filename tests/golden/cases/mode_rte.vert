@@ -1,4 +1,4 @@
-// targets: es100 es300 es320 glsl450
+// targets: es100 es300 es320 glsl450 webgl2
 // options: --mode rte
 #version 300 es
 // Mode rte: positions stay hi/lo; the difference of two of them is the exact float-float

@@ -1,4 +1,4 @@
-// targets: es300 glsl450
+// targets: es300 glsl450 webgl2
 #version 300 es
 // optimize_df: an operand whose lo word is known to be zero (a float widened to double, a double
 // constant that is exactly a float) takes the mixed rules: df_mul_f2 (DWTimesFP2), df_add_f

@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // The user's own 'precise' on a double and on a float (issue 12): kept on es320 and glsl450,
 // dropped (with one warning) on targets that have no 'precise' qualifier.

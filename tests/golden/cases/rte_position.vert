@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 300 es
 // Relative-to-eye: subtract two dvec3s, then narrow to float.
 in dvec3 position;

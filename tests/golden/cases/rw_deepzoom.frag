@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 100
 // Real-world style (issue 12): a deep-zoom Mandelbrot fragment shader written for WebGL 1 with
 // doubles: loose uniforms, a palette texture, global state initialised from uniforms, a helper

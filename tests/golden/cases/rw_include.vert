@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 300 es
 // Real-world style (issue 12): engine-style shared headers (#include with include guards, one
 // header including another), a global initialised from a double uniform in a header, and a

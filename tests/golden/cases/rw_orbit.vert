@@ -1,4 +1,4 @@
-// targets: es100 es300 es310 es320 glsl330 glsl450
+// targets: es100 es300 es310 es320 glsl330 glsl450 webgl2
 #version 330 core
 // Real-world style (issue 12): satellites on Kepler orbits, as a space-visualisation app writes it.
 // A struct uniform with doubles, a Newton solver with inout parameters, global constants and

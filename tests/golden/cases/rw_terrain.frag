@@ -1,4 +1,4 @@
-// targets: es300 es310 es320 glsl330 glsl450
+// targets: es300 es310 es320 glsl330 glsl450 webgl2
 #version 450 core
 // The fragment side of rw_terrain.vert: the matching input block under another instance name, a
 // lighting uniform block, textures, a global initialiser from a double uniform, local consts.

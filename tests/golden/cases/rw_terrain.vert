@@ -1,4 +1,4 @@
-// targets: es300 es310 es320 glsl330 glsl450
+// targets: es300 es310 es320 glsl330 glsl450 webgl2
 #version 450 core
 // Real-world style (issue 12): a planet-scale terrain vertex shader as engines write it. Camera in
 // a std140 uniform block with doubles, a height map read in the vertex stage, global state set

@@ -1,4 +1,4 @@
-// targets: es300 es310 es320 glsl330 glsl450
+// targets: es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // A struct constructor of constants (glslang folds it into one constant) and a
 // constant array of structs with double members: each member must stay a value.

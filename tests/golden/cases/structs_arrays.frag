@@ -1,4 +1,4 @@
-// targets: es300 es310 es320 glsl330 glsl450
+// targets: es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // Structs with double members (nested), arrays of doubles (constant and dynamic indexing),
 // const double arrays, double function overloads, flat double varyings, discard.

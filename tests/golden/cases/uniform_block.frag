@@ -1,4 +1,4 @@
-// targets: es300 es310 es320 glsl330 glsl450
+// targets: es300 es310 es320 glsl330 glsl450 webgl2
 #version 450
 // A uniform block with double members (std140, new offsets in the manifest) in a fragment
 // shader, with a flat double varying (full precision; a fragment double input must be flat).

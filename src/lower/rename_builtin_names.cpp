@@ -1,0 +1,87 @@
+// rename_functions_named_like_builtins: on GLSL ES targets, a user function whose name is a
+// built-in function's (`double exp(double)`, `float mix(float)`) is renamed, with every call of it.
+//
+// Why: desktop GLSL lets a shader overload built-in names, GLSL ES does not (The OpenGL ES
+// Shading Language 3.00.6, section 6.1: "built-in functions cannot be redefined or overloaded";
+// ES 1.00 section 6.1 likewise). A desktop shader lowered for ES kept such a name and the
+// re-validation failed ("function name is redeclaration of existing name"): an internal error.
+// Which names are built-ins of the target and stage is asked of glslang, in one parse of a
+// probe that declares every user function's name, rather than kept in a table here.
+#include <map>
+#include <set>
+#include <string>
+
+#include "emit/validate.hpp"
+#include "ir/walk.hpp"
+#include "lower/lower.hpp"
+
+namespace doublet::passes {
+namespace {
+
+Stage stage_of(const ir::Module& m) {
+  switch (m.stage) {
+    case ir::StageKind::Vertex: return Stage::Vertex;
+    case ir::StageKind::Fragment: return Stage::Fragment;
+    case ir::StageKind::Compute: return Stage::Compute;
+  }
+  return Stage::Vertex;
+}
+
+// The names in `names` that are built-in functions of `target` for `stage`: glslang reports a
+// prototype of one as "'NAME' : function name is redeclaration of existing name" and stops at the
+// first, so the probe is parsed again without it until it passes (one parse per built-in name found,
+// plus one; there are about 200 built-in names, so this is bounded whatever the shader).
+std::set<std::string> builtin_function_names(std::set<std::string> names, Target target, Stage stage) {
+  const std::string header = "#version " + std::to_string(target_version(target)) +
+                             (target == Target::Es100 ? "" : " es") + "\nprecision highp float;\n";
+  const std::string marker = "' : function name is redeclaration of existing name";
+  std::set<std::string> builtins;
+  while (!names.empty()) {
+    std::string probe = header;
+    for (const auto& name : names) probe += "void " + name + "(int doublet_probe, int doublet_probe2, int doublet_probe3);\n";
+    if (stage == Stage::Compute) probe += "layout(local_size_x = 1) in;\n";
+    probe += "void main() {}\n";
+    const std::string log = emit::validate(probe, stage, target);
+    const size_t at = log.find(marker);
+    if (at == std::string::npos) break;
+    const size_t open = log.rfind('\'', at - 1);
+    const std::string name = open == std::string::npos ? "" : log.substr(open + 1, at - open - 1);
+    if (!names.erase(name)) break;  // not one of ours: stop rather than loop
+    builtins.insert(name);
+  }
+  return builtins;
+}
+
+}  // namespace
+
+bool rename_functions_named_like_builtins(ir::Module& module, Context& ctx) {
+  if (!target_is_es(ctx.options.target)) return true;
+  std::set<std::string> user_functions, taken;
+  for (const auto& f : module.functions)
+    if (f->name != "main") user_functions.insert(f->name);
+  if (user_functions.empty()) return true;
+  const std::set<std::string> builtins = builtin_function_names(user_functions, ctx.options.target, stage_of(module));
+  if (builtins.empty()) return true;
+  for (const auto& f : module.functions) taken.insert(f->name);
+  for (const auto& g : module.globals) taken.insert(g->name);
+  for (const auto& t : module.structs) taken.insert(t.name);
+  std::map<std::string, std::string> new_name;
+  for (const auto& name : builtins) {
+    std::string candidate = name + "_user";
+    for (int n = 2; taken.count(candidate); ++n) candidate = name + "_user" + std::to_string(n);
+    taken.insert(candidate);
+    new_name[name] = candidate;
+  }
+  for (auto& f : module.functions)
+    if (auto it = new_name.find(f->name); it != new_name.end()) f->name = it->second;
+  const ir::ExprVisitor rename_calls = [&](const ir::ExprPtr& e) {
+    if (e->kind != ir::Expr::Kind::Call) return;
+    if (auto it = new_name.find(e->name); it != new_name.end()) e->name = it->second;
+  };
+  for (const auto& f : module.functions) ir::visit(f->body, rename_calls);
+  for (const auto& init : module.global_inits)
+    if (init) ir::visit(init, rename_calls);
+  return true;
+}
+
+}  // namespace doublet::passes

@@ -1,0 +1,485 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+uniform float time_hi;
+uniform float time_lo;
+
+// doublet float-float runtime: 23 functions from rules/*.glsl, guard: uniform df_guard
+struct df_double { float hi; float lo; };
+struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard;  // never set: GL zero-fills it at link
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
+df_double df_split(float a) {
+  float g = ((a * 4097.0) - df_guard);
+  float d = ((a - g) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  float p = ((a * b) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  float s = ((a + b) - df_guard);
+  float z = ((s - a) - df_guard);
+  float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  float az = (abs(z.hi));
+  if (az > 0.0 && az <= 3.4028234663852886e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_double df_mul(df_double a, df_double b) {
+  df_double c = df_two_prod(a.hi, b.hi);
+  float tl = (a.hi * b.lo);
+  float th = (a.lo * b.hi);
+  float cl2 = (th + tl);
+  float cl3 = (c.lo + cl2);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_norm_scale: (s, 1/s), powers of two that bring the largest component of hi into
+// [2^-36, 2^60] (as hypot does): s = 2^-90 when some |hi_i| > 2^60, 2^90 when every |hi_i| < 2^-36,
+// else 1. Then the squares of the scaled vector neither overflow (4 * 2^120 < 2^128) nor lose
+// their error terms to underflow (the largest square is >= 2^-72, its low words >= ~2^-120),
+// and scaling is exact. Values in [2^-36, 2^60] take s = 1: bit for bit the unscaled result.
+// +-Inf scales to +-Inf; NaN fails both tests and is not scaled.
+// Algorithm: two threshold tests on abs(hi), selection of power-of-two constants
+// Source: IEEE 754-2008 section 9.2 (hypot: scaling to avoid spurious overflow and underflow); Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, section 5 (scaled norms)
+// Bound: exact
+// Flops: 4 (W = 4: one abs per component; plus 2 vector comparisons and 4 selects)
+vec2 df_norm_scale(vec2 h) {
+  vec2 ah = (abs(h));
+  bool big = any(greaterThan(ah, vec2(1.152921504606846976e18)));
+  bool small = all(lessThan(ah, vec2(1.4551915228366851806640625e-11)));
+  float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
+  float s = (small ? 1.237940039285380274899124224e27 : down);
+  float up = (big ? 1.237940039285380274899124224e27 : 1.0);
+  float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  return vec2(s, back);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_dvec2 df_scale_pow2(df_dvec2 a, float s) {
+  vec2 h = (a.hi * s);
+  vec2 l = (a.lo * s);
+  return df_dvec2(h, l);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_double df_scale_pow2(df_double a, float s) {
+  float h = (a.hi * s);
+  float l = (a.lo * s);
+  return df_double(h, l);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// (width 2: the width-1 df_two_prod applied to each component)
+df_dvec2 df_two_prod(vec2 a, vec2 b) {
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
+  vec2 s = ((a + b) - df_guard);
+  vec2 z = ((s - a) - df_guard);
+  vec2 e = (b - z);
+  return df_dvec2(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 c = df_two_prod(a.hi, b.hi);
+  vec2 tl = (a.hi * b.lo);
+  vec2 th = (a.lo * b.hi);
+  vec2 cl2 = (th + tl);
+  vec2 cl3 = (c.lo + cl2);
+  df_dvec2 z = df_fast_two_sum(c.hi, cl3);
+  df_dvec2 r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  float s = ((a + b) - df_guard);
+  float bb = ((s - a) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_dot: a.x*b.x + a.y*b.y.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 10u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 79
+df_double df_dot(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_add(x, y);
+  return z;
+}
+
+// df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN
+// (IEEE 754-2008 section 5.4.1; GLSL leaves a < 0 undefined, the drivers give NaN).
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
+// Bound: 25/8 u^2
+// Flops: 31
+// Steps (LLMPR Algorithm 8, our no-FMA form):
+//   sh   = RN(sqrt(ah))
+//   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
+//   r0   = RN(ah - p)                exact: ah/2 <= p <= 2ah (Sterbenz)
+//   rho1 = RN(r0 - e)                == RN(ah - sh^2), the value fma(-sh, sh, ah) returns
+//   rho2 = RN(al + rho1)
+//   sl   = RN(rho2 / (2 sh))
+//   (zh,zl) = Fast2Sum(sh, sl)
+// sh is guarded too: Mesa rewrites sqrt(x)*sqrt(x) to |x|, which would zero the residual.
+// So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
+// correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
+// few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
+// not proved). Special values end in df_finish(z, sh): a = +-0 gives sl = 0/0 = NaN and so
+// (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
+// Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
+df_double df_sqrt(df_double a) {
+  float sh = ((sqrt(a.hi)) - df_guard);
+  df_double sq = df_two_prod(sh, sh);
+  float r0 = (a.hi - sq.hi);
+  float rho1 = (r0 - sq.lo);
+  float rho2 = (a.lo + rho1);
+  float sh2 = (sh * 2.0);
+  float sl = (rho2 / sh2);
+  df_double z = df_fast_two_sum(sh, sl);
+  df_double r = df_finish(z, sh);
+  return r;
+}
+
+// df_length: sqrt(dot(a, a)), W = 2..4, on a scaled by df_norm_scale and scaled back, so any
+// vector whose length is within float range gets it (the squares alone would overflow above
+// |a| ~ 1.8e19 and underflow below ~1e-19). No cancellation in dot(a, a), so its error is
+// relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
+// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order). A length beyond float range is
+// (+Inf, 0) (df_finish); one below it tapers into float's subnormals as the scaled-back words
+// round.
+// Algorithm: df_norm_scale, df_dot(a, a), SQRTDWtoDW (LLMPR Algorithm 8), scaled back, df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 9.625u^2
+// Flops: 225 (W = 4; 119 for W = 2, 172 for W = 3)
+// Range: every vector (scaled); exact scaling, so the bound holds for lengths in [2^-100, FLT_MAX].
+df_double df_length(df_dvec2 a) {
+  vec2 k = (df_norm_scale(a.hi));
+  df_dvec2 b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  df_double z = df_scale_pow2(n, k.y);
+  df_double r = df_finish(z, z.hi);
+  return r;
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 30
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+df_double df_mul_f(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  float cl2 = (a.lo * b);
+  df_double t = df_fast_two_sum(c.hi, cl2);
+  float tl2 = (t.lo + c.lo);
+  df_double z = df_fast_two_sum(t.hi, tl2);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 39
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
+df_double df_div(df_double a, df_double b) {
+  float th = ((a.hi / b.hi) - df_guard);
+  df_double r = df_mul_f(b, th);
+  float pih = (a.hi - r.hi);
+  float dl = (a.lo - r.lo);
+  float d = (pih + dl);
+  float tl = (d / b.hi);
+  df_double z = df_fast_two_sum(th, tl);
+  df_double q = df_finish(z, th);
+  return q;
+}
+
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_double df_neg(df_double a) {
+  float h = (-a.hi);
+  float l = (-a.lo);
+  return df_double(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec2 df_two_sum(vec2 a, vec2 b) {
+  vec2 s = ((a + b) - df_guard);
+  vec2 bb = ((s - a) - df_guard);
+  vec2 ab = (s - bb);
+  vec2 da = (a - ab);
+  vec2 db = (b - bb);
+  vec2 e = (da + db);
+  return df_dvec2(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 s = df_two_sum(a.hi, b.hi);
+  df_dvec2 t = df_two_sum(a.lo, b.lo);
+  vec2 c = (s.lo + t.hi);
+  df_dvec2 v = df_fast_two_sum(s.hi, c);
+  vec2 w = (t.lo + v.lo);
+  df_dvec2 z = df_fast_two_sum(v.hi, w);
+  df_dvec2 r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
+// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
+// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 2
+vec2 df_to_float(df_dvec2 a) {
+  vec2 f = ((a.hi + a.lo) - df_guard);
+  df_dvec2 r = df_finish(df_dvec2(f, vec2(0.0)), a.hi);
+  return r.hi;
+}
+
+df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
+  return df_dvec2(vec2(a0.hi, a1.hi), vec2(a0.lo, a1.lo));
+}
+
+df_dvec2 df_splat_dvec2(df_double s) {
+  return df_dvec2(vec2(s.hi), vec2(s.lo));
+}
+
+in vec2 uv_hi;
+in vec2 uv_lo;
+df_dvec2 uv;
+df_double time;
+out vec2 v_uv;
+df_dvec2 accumulated;
+
+df_double scaled(df_double x, df_double s);
+void step2(inout df_dvec2 p, out df_double speed, df_double dt);
+
+df_double scaled(df_double x, df_double s)
+{
+  return df_mul(x, s);
+}
+
+void step2(inout df_dvec2 p, out df_double speed, df_double dt)
+{
+  speed = df_div(df_length(p), dt);
+  p = df_add(p, df_make_dvec2_1_1(dt, df_neg(dt)));
+}
+
+void main()
+{
+  uv = df_dvec2(uv_hi, uv_lo);
+  time = df_double(time_hi, time_lo);
+  df_double speed;
+  df_dvec2 p = uv;
+  step2(p, speed, time);
+  accumulated = df_mul(p, df_splat_dvec2(scaled(speed, df_double(0.5, 0.0))));
+  v_uv = df_to_float(accumulated);
+  gl_Position = vec4(df_to_float(p), 0.0, 1.0);
+}

@@ -1,0 +1,469 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+uniform vec2 center_hi;
+uniform vec2 center_lo;
+uniform float scale_hi;
+uniform float scale_lo;
+uniform vec2 resolution;
+
+// doublet float-float runtime: 23 functions from rules/*.glsl, guard: uniform df_guard
+struct df_double { float hi; float lo; };
+struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard;  // never set: GL zero-fills it at link
+
+// df_from_float: the exact double-word (f, 0).
+// Algorithm: hi = f, lo = 0
+// Source: JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0
+df_double df_from_float(float f) {
+  return df_double(f, float(0.0));
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
+df_double df_split(float a) {
+  float g = ((a * 4097.0) - df_guard);
+  float d = ((a - g) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+df_double df_two_prod(float a, float b) {
+  float p = ((a * b) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
+  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  float s = ((a + b) - df_guard);
+  float z = ((s - a) - df_guard);
+  float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  float az = (abs(z.hi));
+  if (az > 0.0 && az <= 3.4028234663852886e38) {
+    return z;
+  }
+  return df_double(f, float(0.0));
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 30
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+df_double df_mul_f(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  float cl2 = (a.lo * b);
+  df_double t = df_fast_two_sum(c.hi, cl2);
+  float tl2 = (t.lo + c.lo);
+  df_double z = df_fast_two_sum(t.hi, tl2);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 39
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
+df_double df_div(df_double a, df_double b) {
+  float th = ((a.hi / b.hi) - df_guard);
+  df_double r = df_mul_f(b, th);
+  float pih = (a.hi - r.hi);
+  float dl = (a.lo - r.lo);
+  float d = (pih + dl);
+  float tl = (d / b.hi);
+  df_double z = df_fast_two_sum(th, tl);
+  df_double q = df_finish(z, th);
+  return q;
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_double df_mul(df_double a, df_double b) {
+  df_double c = df_two_prod(a.hi, b.hi);
+  float tl = (a.hi * b.lo);
+  float th = (a.lo * b.hi);
+  float cl2 = (th + tl);
+  float cl3 = (c.lo + cl2);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_double df_neg(df_double a) {
+  float h = (-a.hi);
+  float l = (-a.lo);
+  return df_double(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  float s = ((a + b) - df_guard);
+  float bb = ((s - a) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 23
+df_double df_sub(df_double a, df_double b) {
+  df_double nb = df_neg(b);
+  df_double z = df_add(a, nb);
+  return z;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec2 df_two_sum(vec2 a, vec2 b) {
+  vec2 s = ((a + b) - df_guard);
+  vec2 bb = ((s - a) - df_guard);
+  vec2 ab = (s - bb);
+  vec2 da = (a - ab);
+  vec2 db = (b - bb);
+  vec2 e = (da + db);
+  return df_dvec2(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
+  vec2 s = ((a + b) - df_guard);
+  vec2 z = ((s - a) - df_guard);
+  vec2 e = (b - z);
+  return df_dvec2(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 s = df_two_sum(a.hi, b.hi);
+  df_dvec2 t = df_two_sum(a.lo, b.lo);
+  vec2 c = (s.lo + t.hi);
+  df_dvec2 v = df_fast_two_sum(s.hi, c);
+  vec2 w = (t.lo + v.lo);
+  df_dvec2 z = df_fast_two_sum(v.hi, w);
+  df_dvec2 r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// (width 2: the width-1 df_two_prod applied to each component)
+df_dvec2 df_two_prod(vec2 a, vec2 b) {
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 c = df_two_prod(a.hi, b.hi);
+  vec2 tl = (a.hi * b.lo);
+  vec2 th = (a.lo * b.hi);
+  vec2 cl2 = (th + tl);
+  vec2 cl3 = (c.lo + cl2);
+  df_dvec2 z = df_fast_two_sum(c.hi, cl3);
+  df_dvec2 r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_dot: a.x*b.x + a.y*b.y.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 10u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 79
+df_double df_dot(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_add(x, y);
+  return z;
+}
+
+// df_gt: a > b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_gt(df_double a, df_double b) {
+  return a.hi > b.hi || (a.hi == b.hi && a.lo > b.lo);
+}
+
+// df_mul_f2: a * b with b a plain float (the lo word of the double operand known to be zero).
+// Cheaper than df_mul (29) and more accurate (3u^2 against 7u^2).
+// Algorithm: DWTimesFP2 (JMP Algorithm 8) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, section 4
+// Bound: 3u^2
+// Flops: 27
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3);
+//        df_finish(z, ch).
+// Range and special values: as df_mul (the same TwoProd, the same df_finish).
+df_dvec2 df_mul_f2(df_dvec2 a, vec2 b) {
+  df_dvec2 c = df_two_prod(a.hi, b);
+  vec2 cl2 = (a.lo * b);
+  vec2 cl3 = (c.lo + cl2);
+  df_dvec2 z = df_fast_two_sum(c.hi, cl3);
+  df_dvec2 r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
+// power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
+// double-word number. Replaces df_mul (29 flops) and df_div by a power of two.
+// Algorithm: exact scaling of both words by a power of two, then df_finish
+// Source: HFPA (2018), section 2.2 (multiplication by a power of the radix is exact); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 3
+// Range: exact while lo*p stays normal (|lo*p| >= 2^-126) and hi*p does not overflow; an
+// overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
+df_double df_mul_pow2(df_double a, float p) {
+  float h = (a.hi * p);
+  float l = (a.lo * p);
+  df_double r = df_finish(df_double(h, l), h);
+  return r;
+}
+
+// df_sqr: a * a. Dekker's mul12 with both operands equal needs one Veltkamp split instead of
+// two and its two cross products are equal (one product, doubled exactly), and DWTimesDW1's two
+// terms ah*al and al*ah are equal too. Every rounding is the one df_mul(a, a) performs, so the
+// result is bit-identical to df_mul(a, a) (wherever a*a is finite) with 10 fewer operations.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with a = b, Dekker's TwoProd specialised to a square, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2); Dekker 1971
+// Bound: 7u^2
+// Flops: 19
+// Steps: p = RN(ah*ah); (sh,sl) = split(ah); t1 = RN(sh*sh - p); t2 = RN(t1 + 2*(sh*sl));
+//        e = RN(t2 + sl*sl) (exact: the partial sums of mul12); c = RN(ah*al);
+//        cl3 = RN(e + 2c); (zh,zl) = Fast2Sum(p, cl3); df_finish(z, p).
+// Range and special values: as df_mul. The split is not scaled: whenever a*a is finite,
+// |a| < 1.9e19 is far below the split's limit (8.3e34); when it overflows, p is Inf and
+// df_finish returns (Inf, 0) as df_mul does.
+df_double df_sqr(df_double a) {
+  float p = ((a.hi * a.hi) - df_guard);
+  df_double s = df_split(a.hi);
+  float hh = (s.hi * s.hi);
+  float hl = (s.hi * s.lo);
+  float hl2 = (hl + hl);
+  float ll = (s.lo * s.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl2);
+  float e = (t2 + ll);
+  float c = (a.hi * a.lo);
+  float c2 = (c + c);
+  float cl3 = (e + c2);
+  df_double z = df_fast_two_sum(p, cl3);
+  df_double r = df_finish(z, p);
+  return r;
+}
+
+df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
+  return df_dvec2(vec2(a0.hi, a1.hi), vec2(a0.lo, a1.lo));
+}
+
+df_dvec2 df_splat_dvec2(df_double s) {
+  return df_dvec2(vec2(s.hi), vec2(s.lo));
+}
+
+df_dvec2 center;
+df_double scale;
+uniform sampler2D palette;
+in vec2 v_uv;
+df_double pixel_size;
+int escaped_at = 0;
+layout(location = 0) out highp vec4 df_frag_color;
+
+bool iterate(inout df_dvec2 z, df_dvec2 c);
+
+bool iterate(inout df_dvec2 z, df_dvec2 c)
+{
+  z = df_add(df_make_dvec2_1_1(df_sub(df_sqr(df_double(z.hi.x, z.lo.x)), df_sqr(df_double(z.hi.y, z.lo.y))), df_mul(df_mul_pow2(df_double(z.hi.x, z.lo.x), 2.0), df_double(z.hi.y, z.lo.y))), c);
+  return df_gt(df_dot(z, z), df_double(4.0, 0.0));
+}
+
+void main()
+{
+  center = df_dvec2(center_hi, center_lo);
+  scale = df_double(scale_hi, scale_lo);
+  pixel_size = df_div(scale, df_from_float(resolution.y));
+  df_dvec2 c = df_add(center, df_mul_f2(df_splat_dvec2(pixel_size), gl_FragCoord.xy - 0.5 * resolution));
+  df_dvec2 z = df_dvec2(vec2(0.0), vec2(0.0));
+  for (int n = 0; n < 256; n++)
+  {
+    if (iterate(z, c))
+    {
+      escaped_at = n;
+      break;
+    }
+  }
+  df_frag_color = texture(palette, vec2(float(escaped_at) / 256.0, 0.5)) * float(v_uv.x >= 0.0);
+}
