@@ -187,13 +187,13 @@ uvec2 ex_sig(uvec2 a) {
   return uvec2(a.x, hi);
 }
 
-// ex_exp: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exp - 1075)).
+// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
 // Algorithm: exponent field, subnormals and zero counted as field 1
 // Source: IEEE 754-2019, 3.4
 // Bound: exact
 // Flops: 0
 // @min-es 300
-int ex_exp(uvec2 a) {
+int ex_exponent(uvec2 a) {
   return max(int((a.y >> 20) & 0x7FFu), 1);
 }
 
@@ -212,7 +212,7 @@ uvec2 ex_add_bits(uvec2 a, uvec2 b) {
     return infA ? a : b;
   }
   uvec2 ma = ex_sig(a), mb = ex_sig(b);
-  int xa = ex_exp(a), xb = ex_exp(b);
+  int xa = ex_exponent(a), xb = ex_exponent(b);
   if ((ma.x | ma.y | mb.x | mb.y) == 0u) return uvec2(0u, (sa && sb) ? 0x80000000u : 0u);
   if (xb > xa || (xb == xa && ex_lt64(ma, mb))) {
     uvec2 tm = ma; ma = mb; mb = tm;
@@ -248,16 +248,16 @@ uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
   return ex_add_bits(a, ex_neg_bits(b));
 }
 
-// ex_normalize: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
+// ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
 // Algorithm: subnormals shifted left by their leading zeros, exponent lowered by the same count
 // Source: IEEE 754-2019, 3.4
 // Bound: exact
 // Flops: 0
 // @min-es 300
-uvec2 ex_normalize(uvec2 a, out int x) {
+uvec2 ex_normalize_sig(uvec2 a, out int x) {
   uvec2 m = ex_sig(a);
   int shift = ex_clz64(m) - 11;
-  x = ex_exp(a) - shift;
+  x = ex_exponent(a) - shift;
   return ex_shl64(m, shift);
 }
 
@@ -278,7 +278,7 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   }
   if (zeroA || zeroB) return uvec2(0u, signWord);
   int xa, xb;
-  uvec2 ma = ex_normalize(a, xa), mb = ex_normalize(b, xb);
+  uvec2 ma = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
   uvec2 p00 = ex_mul32(ma.x, mb.x), p01 = ex_mul32(ma.x, mb.y);
   uvec2 p10 = ex_mul32(ma.y, mb.x), p11 = ex_mul32(ma.y, mb.y);
   uvec2 mid = ex_add64(ex_add64(uvec2(p00.y, 0u), uvec2(p01.x, 0u)), uvec2(p10.x, 0u));
@@ -307,7 +307,7 @@ uvec2 ex_div_bits(uvec2 a, uvec2 b) {
   if (infA || zeroB) return uvec2(0u, signWord | 0x7FF00000u);
   if (infB || zeroA) return uvec2(0u, signWord);
   int xa, xb;
-  uvec2 rem = ex_normalize(a, xa), mb = ex_normalize(b, xb);
+  uvec2 rem = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
   int e = xa - xb + 1022;
   if (ex_lt64(rem, mb)) {
     rem = ex_shl64(rem, 1);
@@ -340,7 +340,7 @@ uvec2 ex_sqrt_bits(uvec2 a) {
   if (a.y >= 0x80000000u) return uvec2(0u, 0xFFF80000u);
   if (absA == 0x7FF00000u) return a;
   int x;
-  uvec2 m = ex_normalize(a, x);
+  uvec2 m = ex_normalize_sig(a, x);
   int e2 = x - 1075;
   if ((e2 & 1) != 0) {
     m = ex_shl64(m, 1);
