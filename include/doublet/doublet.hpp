@@ -39,7 +39,10 @@ enum class GuardKind { Auto, Precise, Uniform, None /* unprotected: tests only *
 //            the decoded floats (rules/int.glsl): no optimizer guard needed; ES 3.00+, whole
 //            shader only;
 //  Native:   doubles kept as they are (desktop targets with fp64; the reference).
-enum class Mode { Fp32, Rte, Df64Fast, Df64, Native, Df64Int };
+//  Exact:    IEEE binary64 bit patterns in two uint words (high, low), every operation in integer
+//            arithmetic, bit-identical to native fp64 (rules/exact.glsl; ES 3.00+, desktop; whole
+//            shader only).
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Native, Df64Int, Exact };
 
 enum class Severity { Error, Warning, Note };
 

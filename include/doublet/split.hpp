@@ -5,9 +5,12 @@
 // pair carries about 48 bits. Values outside float range have no float-float
 // representation: split_checked() reports them instead of silently producing
 // Inf or 0. Header-only, no dependencies; loops are written to vectorise.
+// exact_words()/exact_join(): the uint words of mode exact (bit-exact, the whole double range).
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -79,6 +82,24 @@ inline void split_interleaved(std::span<const double> x, std::size_t components,
 
 inline void join(std::span<const float> hi, std::span<const float> lo, std::span<double> x) {
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = join(hi[i], lo[i]);
+}
+
+// Mode exact (--mode exact): a double travels as the two 32-bit words of its IEEE binary64 bit
+// pattern, every value representable (subnormals, ±0, ±Inf, NaN): X_hi gets the high word (sign,
+// exponent, top 20 significand bits), X_lo the low word. In a shader, unpackDouble2x32(x) is
+// uvec2(low, high); a block member is the struct {uint hi; uint lo;}: high word first.
+struct ExactWords {
+  std::uint32_t hi = 0;
+  std::uint32_t lo = 0;
+};
+
+inline ExactWords exact_words(double x) {
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  return {static_cast<std::uint32_t>(bits >> 32), static_cast<std::uint32_t>(bits)};
+}
+
+inline double exact_join(ExactWords w) {
+  return std::bit_cast<double>((std::uint64_t{w.hi} << 32) | w.lo);
 }
 
 }  // namespace doublet

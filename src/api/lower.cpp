@@ -61,14 +61,15 @@ bool choose_guard(const Options& o, GuardChoice& out, std::vector<Diagnostic>& d
 
 // The df_* struct for every width the lowered code names, where the emitted
 // rules did not already define it.
-std::string missing_struct_types(const std::vector<int>& widths, const std::string& runtime) {
+// Mode exact: the words are uint (hi = the binary64 pattern's high word, lo = its low word).
+std::string missing_struct_types(const std::vector<int>& widths, const std::string& runtime, bool exact) {
   std::string out;
   std::vector<int> sorted = widths;
   std::sort(sorted.begin(), sorted.end());
   for (int w : sorted) {
     std::string name = passes::df_type_name(w);
     if (runtime.find("struct " + name) != std::string::npos) continue;
-    std::string f = w == 1 ? "float" : "vec" + std::to_string(w);
+    std::string f = w == 1 ? (exact ? "uint" : "float") : (exact ? "uvec" : "vec") + std::to_string(w);
     out += "struct " + name + " {\n  " + f + " hi;\n  " + f + " lo;\n};\n";
   }
   return out;
@@ -187,6 +188,19 @@ Result lower_unchecked(std::string_view source, const Options& options) {
                          std::string(to_string(options.target)) + " has no double type)"});
     return result;
   }
+  const bool exact = options.mode == Mode::Exact;
+  if (exact && options.target == Target::Es100) {
+    diags.push_back({options.file_name, 0, 0, Severity::Error,
+                     "--mode exact needs 32-bit integers (uint and bit operations), which GLSL ES 1.00 lacks: use "
+                     "--target es300 or later"});
+    return result;
+  }
+  if (exact && !options.mode_for.empty()) {
+    diags.push_back({options.file_name, 0, 0, Severity::Error,
+                     "--mode exact applies to the whole shader: it cannot be combined with --mode-for " +
+                         options.mode_for.front().first + "=" + std::string(to_string(options.mode_for.front().second))});
+    return result;
+  }
   if (native && !options.mode_for.empty()) {
     diags.push_back({options.file_name, 0, 0, Severity::Error,
                      "--mode native applies to the whole shader: it cannot be combined with --mode-for " +
@@ -210,6 +224,12 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   std::vector<frontend::ModePragma> pragmas = frontend::scan_mode_pragmas(source, options.file_name, diags);
   if (std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }))
     return result;
+  if (exact && !pragmas.empty()) {
+    diags.push_back({options.file_name, pragmas.front().line, pragmas.front().column, Severity::Error,
+                     "'#pragma doublet mode(" + std::string(to_string(pragmas.front().mode)) +
+                         ")' cannot be combined with --mode exact, which applies to the whole shader"});
+    return result;
+  }
   if (native)
     for (const auto& p : pragmas)
       diags.push_back({options.file_name, p.line, p.column, Severity::Warning,
@@ -233,7 +253,8 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   next_phase("lower");
   if (!native && !passes::lower_doubles(module, ctx)) return result;
   next_phase("optimize");
-  if (options.optimize && !passes::optimize_df(module, ctx)) return result;
+  // optimize_df rewrites float-float rule calls; exact mode has none.
+  if (options.optimize && !exact && !passes::optimize_df(module, ctx)) return result;
   next_phase("interfaces");
   if (!passes::move_global_initialisers(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
@@ -244,15 +265,26 @@ Result lower_unchecked(std::string_view source, const Options& options) {
 
   emit::PrintOptions print_options;
   print_options.target = options.target;
-  print_options.extensions = guard.extensions;
+  if (!exact) print_options.extensions = guard.extensions;  // exact: no guard, no extension for it
   result.manifest.guard.kind = "none";
   if (!ctx.rules_used.empty() || !ctx.widths_used.empty()) {
     rules::EmitRequest request;
     request.used = ctx.rules_used;
-    request.guard = guard.style;
+    request.guard = exact ? rules::GuardStyle::None : guard.style;  // integer arithmetic needs no guard
+    request.exact_words = exact;
     request.guard_uniform = options.guard_uniform_name;
     request.es_version = target_is_es(options.target) ? target_version(options.target) : 320;
     request.integer_eft = integer_eft;
+    if (exact)  // an operation rules/exact.glsl does not have yet: said where the shader first uses it
+      for (const auto& ref : ctx.rules_used)
+        if (!rules::RuleLibrary::builtin().has(ref)) {
+          auto use = ctx.rule_first_use.find(ref.name);
+          ir::Loc at = use != ctx.rule_first_use.end() ? use->second : ir::Loc{};
+          diags.push_back({options.file_name, at.line, at.column, Severity::Error,
+                           "this double operation (" + ref.name.substr(3) + ", width " + std::to_string(ref.width) +
+                               ") is not implemented by --mode exact yet; use --mode df64 for it"});
+          return result;
+        }
     rules::EmitResult emitted = rules::RuleLibrary::builtin().emit(request);
     if (!emitted.ok) {
       // A rule the target lacks: point at the first expression that needs it.
@@ -263,10 +295,10 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     }
     std::string helpers;
     for (const auto& name : ctx.helper_order) helpers += "\n" + ctx.helpers[name];
-    print_options.runtime = missing_struct_types(ctx.widths_used, emitted.text) +
+    print_options.runtime = missing_struct_types(ctx.widths_used, emitted.text, exact) +
                             matrix_struct_types(ctx.matrices_used) + emitted.text + helpers;
     if (options.target == Target::Webgl2) print_options.runtime = emit::spell_float_max_for_webgl(print_options.runtime);
-    if (!ctx.rules_used.empty()) {
+    if (!ctx.rules_used.empty() && !exact) {
       if (guard.style == rules::GuardStyle::Precise) result.manifest.guard.kind = "precise";
       if (guard.style == rules::GuardStyle::Uniform) {
         print_options.guard_uniform = options.guard_uniform_name;

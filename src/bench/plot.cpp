@@ -40,6 +40,7 @@ uint32_t colour(Mode m) {
     case Mode::Df64: return 0xff2222ddu;      // red
     case Mode::Df64Int: return 0xff222288u;   // dark red
     case Mode::Native: return 0xff22aa22u;    // green
+    case Mode::Exact: return 0xff666666u;     // grey
   }
   return 0xff000000u;
 }

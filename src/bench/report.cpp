@@ -23,7 +23,7 @@ std::string measured_bits(const Measurement& r) {
 }
 
 std::string flops(const Kernel* k, Mode m) {
-  if (!k || m == Mode::Rte || m == Mode::Df64Fast || m == Mode::Df64Int) return "—";  // no single documented count
+  if (!k || m == Mode::Rte || m == Mode::Df64Fast || m == Mode::Df64Int || m == Mode::Exact) return "—";  // no single documented count
   return std::to_string(m == Mode::Df64 ? k->rule_flops : k->fp32_flops);
 }
 
@@ -32,7 +32,7 @@ std::string emitted(const Kernel* k, const Measurement& r) {
   if (!k || r.emitted_flops_per_step < 0) return "—";
   const double doc = r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops;
   char buf[64];
-  if (r.mode == Mode::Rte || r.mode == Mode::Df64Fast || r.mode == Mode::Df64Int) {
+  if (r.mode == Mode::Rte || r.mode == Mode::Df64Fast || r.mode == Mode::Df64Int || r.mode == Mode::Exact) {
     std::snprintf(buf, sizeof buf, "%.4g", r.emitted_flops_per_step);
     return buf;
   }
@@ -113,7 +113,7 @@ std::string format_json(const BenchReport& report) {
     row["spirv_instructions"] = r.size.spirv_instructions;
     row["glsl_lines"] = r.size.glsl_lines;
     if (const Kernel* k = o.shader_path.empty() ? find_kernel(r.op) : nullptr) {
-      row["flops_per_step"] = r.mode == Mode::Rte || r.mode == Mode::Df64Fast || r.mode == Mode::Df64Int
+      row["flops_per_step"] = r.mode == Mode::Rte || r.mode == Mode::Df64Fast || r.mode == Mode::Df64Int || r.mode == Mode::Exact
                                   ? nlohmann::json(nullptr)
                                   : nlohmann::json(r.mode == Mode::Df64 ? k->rule_flops : k->fp32_flops);
       row["emitted_flops_per_step"] =

@@ -15,6 +15,7 @@ const char* mode_name(Mode m) {
     case Mode::Df64: return "df64";
     case Mode::Df64Int: return "df64-int";
     case Mode::Native: return "native";
+    case Mode::Exact: return "exact";
   }
   return "?";
 }
@@ -27,6 +28,7 @@ const std::vector<Mode>& all_bench_modes() {
 std::optional<Mode> parse_mode(const std::string& s) {
   for (Mode m : all_bench_modes())
     if (s == mode_name(m)) return m;
+  if (s == mode_name(Mode::Exact)) return Mode::Exact;
   return std::nullopt;
 }
 
@@ -63,6 +65,7 @@ Variant make_variant(Mode mode, runner::Backend backend, const std::string& sour
            : mode == Mode::Rte    ? doublet::Mode::Rte
            : mode == Mode::Df64Fast ? doublet::Mode::Df64Fast
            : mode == Mode::Df64Int  ? doublet::Mode::Df64Int
+           : mode == Mode::Exact  ? doublet::Mode::Exact
                                   : doublet::Mode::Df64;
   Result r = lower(source, o);
   if (r.ok) {

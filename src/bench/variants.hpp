@@ -15,8 +15,9 @@
 
 namespace doublet::bench {
 
-enum class Mode { Fp32, Rte, Df64Fast, Df64, Df64Int, Native };
-const std::vector<Mode>& all_bench_modes();  // in that order
+// Exact (--mode exact, IEEE binary64 in integer arithmetic) runs only when named: --modes ...,exact.
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Df64Int, Native, Exact };
+const std::vector<Mode>& all_bench_modes();  // in that order, Exact excepted
 const char* mode_name(Mode);
 std::optional<Mode> parse_mode(const std::string&);
 

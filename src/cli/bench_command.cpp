@@ -102,7 +102,7 @@ int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string
     o.modes.clear();
     for (const std::string& m : split_commas(a.modes)) {
       const std::optional<bench::Mode> mode = bench::parse_mode(m);
-      if (!mode) return usage_error(cmd, "unknown mode '" + m + "' (fp32, rte, df64-fast, df64, native)");
+      if (!mode) return usage_error(cmd, "unknown mode '" + m + "' (fp32, rte, df64-fast, df64, native, exact)");
       o.modes.push_back(*mode);
     }
   }
@@ -160,7 +160,7 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("SHADER", args->shader, "a #version 450 compute shader with doubles (default: per-op kernels)");
   cmd->add_option("-I", args->include_dirs, "include directory for SHADER's #include \"...\"");
   cmd->add_option("--ops", args->ops, "all, or a comma list of add,sub,mul,div,sqrt,dot3,length3,mat4");
-  cmd->add_option("--modes", args->modes, "all, or a comma list of fp32,rte,df64-fast,df64,df64-int,native (the compiler's --mode)");
+  cmd->add_option("--modes", args->modes, "all, or a comma list of fp32,rte,df64-fast,df64,df64-int,native,exact (the compiler's --mode; all = every mode but exact)");
   cmd->add_option("--backend", args->backend, "vulkan|gles|both")->check(CLI::IsMember({"vulkan", "gles", "both"}));
   cmd->add_option("--target", args->target, "df64 lowering target: es310 (uniform guard), es320 (precise), glsl450");
   cmd->add_option("--elements", args->elements, "invocations per dispatch (default 16384)");

@@ -149,6 +149,9 @@ int run_verify(const VerifyArgs& a) {
   }
   o.lower.include_dirs = a.include_dirs;
   if (std::string e = apply_mode_args(a.mode, a.mode_for, o.lower); !e.empty()) return input_error(e);
+  if (o.lower.mode == Mode::Exact)  // its interfaces are uint words, which verify's harness does not feed yet
+    return input_error("--mode exact is not supported by doublet verify yet (tests/exact checks it bit for bit "
+                       "against native fp64; docs/modes.md)");
   o.samples = a.samples;
   o.seed = a.seed;
   o.min_bits = a.min_bits;

@@ -148,9 +148,9 @@ class ModeApplier {
                                   spelled + " is not followed by a declaration; it has no effect"});
       return;
     }
-    if (p.mode == Mode::Native) {
-      error_at(p.line, p.column, "mode native applies to the whole shader only (--mode native), not to one "
-                                 "declaration");
+    if (p.mode == Mode::Native || p.mode == Mode::Exact) {
+      error_at(p.line, p.column, "mode " + std::string(to_string(p.mode)) + " applies to the whole shader only (--mode " +
+                                     std::string(to_string(p.mode)) + "), not to one declaration");
       return;
     }
     if (p.mode == Mode::Df64Int) {
@@ -165,8 +165,9 @@ class ModeApplier {
   }
 
   void apply_name(const std::string& name, Mode mode) {
-    if (mode == Mode::Native) {
-      error_at(0, 0, "--mode-for " + name + "=native: mode native applies to the whole shader only (--mode native)");
+    if (mode == Mode::Native || mode == Mode::Exact) {
+      const std::string m(to_string(mode));
+      error_at(0, 0, "--mode-for " + name + "=" + m + ": mode " + m + " applies to the whole shader only (--mode " + m + ")");
       return;
     }
     if (mode == Mode::Df64Int) {

@@ -3,6 +3,7 @@
 // hi = float(x), lo = float(x - hi) at compile time.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <set>
 
@@ -62,6 +63,7 @@ using ir::ExprPtr;
 using Kind = ir::Expr::Kind;
 
 std::string float_type_name(int width) { return width == 1 ? "float" : "vec" + std::to_string(width); }
+std::string uint_type_name(int width) { return width == 1 ? "uint" : "uvec" + std::to_string(width); }
 
 using ir::is_pure;
 
@@ -104,9 +106,25 @@ class DoubleLowering {
   }
 
  private:
+  // ---- representation --------------------------------------------------------
+  // Mode exact keeps the df_* structs and their hi/lo members, but the members are uint words of
+  // the binary64 bit pattern and every rule df_X is rules/exact.glsl's ex_X: the lowering itself
+  // (swizzles, components, splats, interfaces) is the same for both representations.
+  bool exact() const { return ctx_.options.mode == Mode::Exact; }
+  std::string runtime_name(const std::string& name) const {
+    return exact() && name.rfind("df_", 0) == 0 ? "ex_" + name.substr(3) : name;
+  }
+  std::string word_type_name(int width) const { return exact() ? uint_type_name(width) : float_type_name(width); }
+
   // ---- types ---------------------------------------------------------------
   ir::Type lower_type(const ir::Type& t, ir::Loc loc) {
     if (t.base != ir::Base::Double) return t;
+    if (t.is_matrix() && exact()) {
+      if (reported_.insert("exact:" + ir::type_name(t)).second)
+        ctx_.error(loc, ir::type_name(t) + " is not supported by --mode exact yet: exact mode lowers double and "
+                        "dvec2-4; use --mode df64 for double matrices");
+      return t;
+    }
     if (t.is_matrix()) {
       if (t.cols != t.vec && ctx_.options.target == Target::Es100 && reported_.insert(ir::type_name(t)).second)
         ctx_.error(loc, ir::type_name(t) + " is not available on es100: GLSL ES 1.00 has only square matrices; use "
@@ -154,7 +172,8 @@ class DoubleLowering {
   }
 
   // ---- helpers ---------------------------------------------------------------
-  ExprPtr rule(const std::string& name, int width, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
+  ExprPtr rule(const std::string& df_name, int width, ir::Type type, std::vector<ExprPtr> args, ir::Loc loc) {
+    const std::string name = runtime_name(df_name);
     if (width < 1 || width > 4)  // an operand that was never lowered; said here, where the position is known
       ctx_.error(loc, "doublet could not lower the operands of this double operation (" + name +
                           "); please report this with the input");
@@ -167,7 +186,7 @@ class DoubleLowering {
     if (width == 1) return scalar;
     std::string name = "df_splat_" + df_type_name(width).substr(3);
     ctx_.add_helper(name, df_type_name(width) + " " + name + "(df_double s) {\n  return " + df_type_name(width) + "(" +
-                              float_type_name(width) + "(s.hi), " + float_type_name(width) + "(s.lo));\n}\n");
+                              word_type_name(width) + "(s.hi), " + word_type_name(width) + "(s.lo));\n}\n");
     return ir::make_node(Kind::Call, name, df_type(width), {scalar}, scalar->loc);
   }
 
@@ -176,10 +195,9 @@ class DoubleLowering {
     int width = static_cast<int>(letters.size());
     int src = df_width(base->type);
     if (is_pure(base)) {
-      auto hi = member(member(base, "hi", ir::scalar_type(ir::Base::Float, src)), letters,
-                       ir::scalar_type(ir::Base::Float, width));
-      auto lo = member(member(base, "lo", ir::scalar_type(ir::Base::Float, src)), letters,
-                       ir::scalar_type(ir::Base::Float, width));
+      const ir::Base word = exact() ? ir::Base::Uint : ir::Base::Float;
+      auto hi = member(member(base, "hi", ir::scalar_type(word, src)), letters, ir::scalar_type(word, width));
+      auto lo = member(member(base, "lo", ir::scalar_type(word, src)), letters, ir::scalar_type(word, width));
       return ir::make_node(Kind::Construct, "", df_type(width), {hi, lo}, loc);
     }
     std::string name = "df_swizzle_" + df_type_name(src).substr(3) + "_" + letters;
@@ -291,10 +309,19 @@ class DoubleLowering {
     int width = is_matrix ? matrix::cols(elem_type) * matrix::rows(elem_type) : df_width(elem_type);
     auto element = [&](size_t start) {
       ir::Scalar hi, lo;
-      hi.base = lo.base = ir::Base::Float;
+      hi.base = lo.base = exact() ? ir::Base::Uint : ir::Base::Float;
       std::vector<ir::Scalar> his, los;
       for (int i = 0; i < width; ++i) {
         double x = e->values[start + static_cast<size_t>(i)].d;
+        if (exact()) {  // the binary64 pattern's words: every double is representable
+          uint64_t pattern;
+          std::memcpy(&pattern, &x, sizeof pattern);
+          hi.i = static_cast<long long>(pattern >> 32);
+          lo.i = static_cast<long long>(pattern & 0xFFFFFFFFu);
+          his.push_back(hi);
+          los.push_back(lo);
+          continue;
+        }
         FloatPair pair;
         check_range(x, split_checked(x, pair), e->loc);
         hi.d = pair.hi;
@@ -303,7 +330,7 @@ class DoubleLowering {
         los.push_back(lo);
       }
       ir::Type word_type = is_matrix ? float_matrix(matrix::cols(elem_type), matrix::rows(elem_type))
-                                     : ir::scalar_type(ir::Base::Float, width);
+                                     : ir::scalar_type(exact() ? ir::Base::Uint : ir::Base::Float, width);
       auto h = Expr::make(Kind::Const, word_type, e->loc);
       h->values = his;
       auto l = Expr::make(Kind::Const, word_type, e->loc);
@@ -474,11 +501,13 @@ class DoubleLowering {
     int width = df_width(target->type);
     bool pre = e->op[0] == e->op[1];
     bool inc = e->op.find("++") != std::string::npos;
-    std::string type = df_type_name(width), f = float_type_name(width);
+    std::string type = df_type_name(width), f = word_type_name(width);
     std::string name = std::string("df_") + (pre ? "pre_" : "post_") + (inc ? "increment" : "decrement") + "_" + type.substr(3);
-    ctx_.use_rule(inc ? "df_add" : "df_sub", width);
-    std::string one = width == 1 ? type + "(1.0, 0.0)" : type + "(" + f + "(1.0), " + f + "(0.0))";
-    std::string update = "  x = " + std::string(inc ? "df_add" : "df_sub") + "(x, " + one + ");\n";
+    const std::string op = runtime_name(inc ? "df_add" : "df_sub");
+    ctx_.use_rule(op, width);
+    const std::string one_hi = exact() ? "0x3FF00000u" : "1.0", zero = exact() ? "0u" : "0.0";  // 1.0 = 0x3FF00000 00000000
+    std::string one = width == 1 ? type + "(" + one_hi + ", " + zero + ")" : type + "(" + f + "(" + one_hi + "), " + f + "(" + zero + "))";
+    std::string update = "  x = " + op + "(x, " + one + ");\n";
     ctx_.add_helper(name, type + " " + name + "(inout " + type + " x) {\n" +
                               (pre ? update + "  return x;\n" : "  " + type + " old = x;\n" + update + "  return old;\n") +
                               "}\n");
@@ -678,7 +707,7 @@ class DoubleLowering {
         lo += (taken ? ", " : "") + p + ".lo" + suffix;
       }
     }
-    std::string f = float_type_name(width);
+    std::string f = word_type_name(width);
     ctx_.add_helper(name, df_type_name(width) + " " + name + "(" + params + ") {\n  return " + df_type_name(width) + "(" +
                               f + "(" + hi + "), " + f + "(" + lo + "));\n}\n");
     return ir::make_node(Kind::Call, name, df_type(width), parts, loc);

@@ -163,8 +163,13 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         for (int half = 0; half < 2; ++half) {
           auto part = std::make_shared<ir::Var>(*v);
           part->name = ir::join_identifier(v->name, half == 0 ? ctx.options.hi_suffix : ctx.options.lo_suffix);
-          part->type = v->declared_type.with_base(ir::Base::Float);
+          // Mode exact: X_hi/X_lo hold the high/low uint words of the binary64 pattern.
+          part->type = v->declared_type.with_base(ctx.options.mode == Mode::Exact ? ir::Base::Uint : ir::Base::Float);
           part->declared_type = part->type;
+          // Integer varyings must be flat (GLSL); a fragment shader's double input is flat already.
+          const bool varying = (v->storage == ir::Storage::Out && module.stage == ir::StageKind::Vertex) ||
+                               (v->storage == ir::Storage::In && module.stage == ir::StageKind::Fragment);
+          if (ctx.options.mode == Mode::Exact && varying) part->interp = ir::Interp::Flat;
           if (part->name.find("__") != std::string::npos) {
             // GLSL reserves every name containing "__" and GLSL ES compilers reject them.
             if (half == 0 && v->name.find("__") != std::string::npos)

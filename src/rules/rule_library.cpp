@@ -107,6 +107,7 @@ struct Subst {
   int width = 1;
   GuardStyle guard = GuardStyle::None;
   std::string guard_uniform = "df_guard";
+  bool exact_words = false;  // EmitRequest::exact_words: uint words in the df_* structs
 };
 
 // Replaces the placeholders of docs/rules-format.md. Returns false (and sets *error) on an
@@ -276,7 +277,7 @@ struct RuleLibrary::Impl {
       return l;
     };
     if (c.ret_type == "$DF") {
-      const std::string v = vec_type("float", "vec", width);
+      const std::string v = s.exact_words ? vec_type("uint", "uvec", width) : vec_type("float", "vec", width);
       out += "  return " + ret_w + "(" + v + "(" + list(".hi") + "), " + v + "(" + list(".lo") + "));\n";
     } else {
       out += "  return " + ret_w + "(" + list("") + ");\n";
@@ -687,6 +688,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     Subst s;
     s.guard = request.guard;
     s.guard_uniform = request.guard_uniform;
+    s.exact_words = request.exact_words;
     std::vector<std::string> functions;
     std::set<int> struct_widths;
     for (const auto& r : order) {
@@ -702,14 +704,19 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     }
     std::string out;
     if (!order.empty()) {
-      out += "// doublet float-float runtime: " + std::to_string(order.size()) + " functions from rules/*.glsl, guard: ";
-      out += request.guard == GuardStyle::Precise   ? "precise"
-             : request.guard == GuardStyle::Uniform ? "uniform " + request.guard_uniform
-                                                    : "none (unprotected)";
-      if (request.integer_eft) out += ", error-free transformations: integer (df64-int)";
+      if (request.exact_words) {
+        out += "// doublet exact binary64 runtime (mode exact): " + std::to_string(order.size()) +
+               " functions from rules/exact.glsl, integer arithmetic (no optimizer guard needed)";
+      } else {
+        out += "// doublet float-float runtime: " + std::to_string(order.size()) + " functions from rules/*.glsl, guard: ";
+        out += request.guard == GuardStyle::Precise   ? "precise"
+               : request.guard == GuardStyle::Uniform ? "uniform " + request.guard_uniform
+                                                      : "none (unprotected)";
+        if (request.integer_eft) out += ", error-free transformations: integer (df64-int)";
+      }
       out += "\n";
       for (int w : struct_widths) {
-        const std::string f = vec_type("float", "vec", w);
+        const std::string f = request.exact_words ? vec_type("uint", "uvec", w) : vec_type("float", "vec", w);
         out += "struct " + df_type(w) + " { " + f + " hi; " + f + " lo; };\n";
       }
       if (request.guard == GuardStyle::Uniform)

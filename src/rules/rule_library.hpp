@@ -43,6 +43,8 @@ struct EmitRequest {
   int es_version = 300;             // 100/300/310/320; desktop targets pass 320
   bool integer_eft = false;         // df64-int: the "@variant int" chunks (rules/int.glsl) replace
                                     // the same-named float EFTs
+  // Mode exact: the df_* structs hold uint words (binary64 high and low words), not floats.
+  bool exact_words = false;
 };
 
 struct EmitResult {

@@ -35,4 +35,26 @@ TEST(BenchVariants, NativeIsVulkanOnly) {
   EXPECT_EQ(make_variant(Mode::Native, doublet::runner::Backend::Vulkan, src, doublet::Target::Es320, "add").glsl, src);
 }
 
+// --modes exact: the scalar kernels lower to the integer runtime; the others (dot, length, matrices)
+// are refused with the lowering's diagnostic in the note, never an empty shader without a reason.
+TEST(BenchVariants, ExactLowersScalarKernelsAndNamesWhatItRefuses) {
+  EXPECT_EQ(parse_mode("exact"), Mode::Exact);
+  EXPECT_STREQ(mode_name(Mode::Exact), "exact");
+  for (const Kernel& k : kernels()) {
+    const Variant v = make_variant(Mode::Exact, doublet::runner::Backend::Gles, kernel_source(k, 16),
+                                   doublet::Target::Es320, k.op);
+    const bool scalar = k.op == "add" || k.op == "sub" || k.op == "mul" || k.op == "div" || k.op == "sqrt";
+    if (scalar) {
+      ASSERT_FALSE(v.glsl.empty()) << k.op << ": " << v.note;
+      EXPECT_FALSE(names_double_type(v.glsl)) << k.op;
+      EXPECT_NE(v.glsl.find("ex_" + k.op + "_bits("), std::string::npos) << k.op;
+    } else {
+      EXPECT_TRUE(v.glsl.empty()) << k.op;
+      EXPECT_TRUE(v.note.find("not implemented by --mode exact yet") != std::string::npos ||
+                  v.note.find("is not supported by --mode exact yet") != std::string::npos)
+          << k.op << ": " << v.note;
+    }
+  }
+}
+
 }  // namespace

@@ -67,7 +67,8 @@ inline std::vector<EmittedFunction> split_functions(const std::string& text) {
 }
 
 // A GLSL expression of `type` (float/int/uint/bool vectors or df_* structs).
-inline std::string sample_value(const std::string& type) {
+// exact_words: mode exact's df_* structs hold uint words (1.5 = 0x3FF80000 00000000).
+inline std::string sample_value(const std::string& type, bool exact_words = false) {
   auto width = [&](const std::string& prefix) { return type.substr(prefix.size()); };
   if (type == "float") return "1.5";
   if (type == "int") return "7";
@@ -77,9 +78,10 @@ inline std::string sample_value(const std::string& type) {
   if (type.rfind("ivec", 0) == 0) return type + "(7)";
   if (type.rfind("uvec", 0) == 0) return type + "(7u)";
   if (type.rfind("bvec", 0) == 0) return type + "(true)";
-  if (type == "df_double") return "df_double(1.5, 0.0)";
+  if (type == "df_double") return exact_words ? "df_double(0x3FF80000u, 0u)" : "df_double(1.5, 0.0)";
   if (type.rfind("df_dvec", 0) == 0) {
     const std::string v = "vec" + width("df_dvec");
+    if (exact_words) return type + "(u" + v + "(0x3FF80000u), u" + v + "(0u))";
     return type + "(" + v + "(1.5), " + v + "(0.0))";
   }
   return "<unknown type " + type + ">";

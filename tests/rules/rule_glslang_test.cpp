@@ -53,7 +53,7 @@ bool glslang_parses(const std::string& source, const Target& t, std::string* log
 }
 
 std::string caller_shader(const Target& t, GuardStyle g, const std::string& rules,
-                          const test::EmittedFunction& f) {
+                          const test::EmittedFunction& f, bool exact_words) {
   std::ostringstream s;
   s << t.version_line << "\n";
   if (g == GuardStyle::Precise) s << precise_extension(t);
@@ -65,7 +65,7 @@ std::string caller_shader(const Target& t, GuardStyle g, const std::string& rule
   s << "  " << f.ret << " r = " << f.name << "(";
   for (size_t i = 0; i < f.params.size(); ++i)
     s << (i ? ", " : "")
-      << (f.params[i].first.rfind("out ", 0) == 0 ? "out" + std::to_string(i) : test::sample_value(f.params[i].first));
+      << (f.params[i].first.rfind("out ", 0) == 0 ? "out" + std::to_string(i) : test::sample_value(f.params[i].first, exact_words));
   s << ");\n  gl_Position = vec4(0.0);\n}\n";
   return s.str();
 }
@@ -91,6 +91,7 @@ TEST_P(RuleCompiles, EveryRuleAndWidth) {
     req.used = {ref};
     req.guard = g;
     req.es_version = t.es_version;
+    req.exact_words = ref.name.rfind("ex_", 0) == 0;  // rules/exact.glsl: uint words
     EmitResult r = lib.emit(req);
     if (min_es(ref.name) > 100) {
       if (t.es_version < min_es(ref.name)) {
@@ -103,7 +104,7 @@ TEST_P(RuleCompiles, EveryRuleAndWidth) {
     ASSERT_TRUE(r.ok) << r.error;
     auto fns = test::split_functions(r.text);
     ASSERT_FALSE(fns.empty());
-    const std::string source = caller_shader(t, g, r.text, fns.back());
+    const std::string source = caller_shader(t, g, r.text, fns.back(), req.exact_words);
     std::string log;
     EXPECT_TRUE(glslang_parses(source, t, &log)) << log << "\n" << source;
     ++compiled;
@@ -161,7 +162,7 @@ TEST(RuleCompilesNegative, PreciseNeedsExtensionOnEs310) {
   EmitResult r = RuleLibrary::builtin().emit(req);
   ASSERT_TRUE(r.ok);
   auto fns = test::split_functions(r.text);
-  std::string source = caller_shader(t, GuardStyle::None, r.text, fns.back());
+  std::string source = caller_shader(t, GuardStyle::None, r.text, fns.back(), false);
   std::string log;
   EXPECT_FALSE(glslang_parses(source, t, &log)) << source;
 }

@@ -1,0 +1,1042 @@
+// rules/exact.glsl -- IEEE 754 binary64 in 32-bit integer arithmetic (mode `exact`).
+//
+// A double is a uvec2 holding its bit pattern: .x = low word (significand bits 0-31), .y = high
+// word (sign bit 31, exponent bits 20-30, significand bits 32-51), the order of GLSL's
+// unpackDouble2x32. Every operation is correctly rounded to nearest-even, with binary64's
+// exponent range, subnormals, signed zeros, infinities and NaN. A NaN result is quiet; an
+// invalid operation gives the x86 default NaN 0xFFF8000000000000.
+//
+// Sources:
+//   [IEEE] IEEE Std 754-2019, sections 4.3.1 (roundTiesToEven), 5.4, 6 (infinity, NaN, signed zero).
+//   [HAU]  J. R. Hauser, Berkeley SoftFloat Release 3e (2018), the round-and-pack scheme with a
+//          jamming right shift (a sticky bit ORed into the lowest bit); read, not copied.
+//   [MESA] Mesa src/compiler/glsl/float64.glsl (2018, soft-fp64 on uvec2): the uvec2 word order; read, not copied.
+//   [ERN]  M. D. Ercegovac, T. Lang, Digital Arithmetic, Morgan Kaufmann 2004, ch. 5-6: restoring
+//          division and digit-by-digit square root with the remainder as sticky bit.
+
+// ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
+// Algorithm: word sums with the carry of the low word (a.x + b.x < a.x)
+// Source: two's-complement multiword addition (Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm A)
+// Bound: exact
+// Flops: 0 (4 integer operations)
+// @min-es 300
+uvec2 ex_add64(uvec2 a, uvec2 b) {
+  uint lo = a.x + b.x;
+  return uvec2(lo, a.y + b.y + (lo < a.x ? 1u : 0u));
+}
+
+// ex_sub64: 64-bit difference, modulo 2^64.
+// Algorithm: word differences with the borrow of the low word (a.x < b.x)
+// Source: two's-complement multiword subtraction (Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm S)
+// Bound: exact
+// Flops: 0 (4 integer operations)
+// @min-es 300
+uvec2 ex_sub64(uvec2 a, uvec2 b) {
+  return uvec2(a.x - b.x, a.y - b.y - (a.x < b.x ? 1u : 0u));
+}
+
+// ex_lt64: unsigned a < b on 64-bit words.
+// Algorithm: compare high words, then low words
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword comparison)
+// Bound: exact
+// Flops: 0 (3 integer comparisons)
+// @min-es 300
+bool ex_lt64(uvec2 a, uvec2 b) {
+  return a.y < b.y || (a.y == b.y && a.x < b.x);
+}
+
+// ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: split by case).
+// Algorithm: word shift by case n == 0, n < 32, n >= 32
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
+// Bound: exact
+// Flops: 0 (up to 6 integer operations)
+// @min-es 300
+uvec2 ex_shl64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 32) return uvec2(0u, a.x << uint(n - 32));
+  return uvec2(a.x << uint(n), (a.y << uint(n)) | (a.x >> uint(32 - n)));
+}
+
+// ex_shr_jam64: a >> n for n >= 0, the shifted-out bits ORed into bit 0 (the sticky bit).
+// Algorithm: word shift by case; any nonzero bit shifted out sets bit 0 ("jamming")
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (shiftRightJam64 semantics)
+// Bound: exact
+// Flops: 0 (up to 10 integer operations)
+// @min-es 300
+uvec2 ex_shr_jam64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 64) return uvec2((a.x | a.y) != 0u ? 1u : 0u, 0u);
+  uvec2 r;
+  uint lost;
+  if (n >= 32) {
+    r = uvec2(n == 32 ? a.y : a.y >> uint(n - 32), 0u);
+    lost = a.x | (n == 32 ? 0u : a.y << uint(64 - n));
+  } else {
+    r = uvec2((a.x >> uint(n)) | (a.y << uint(32 - n)), a.y >> uint(n));
+    lost = a.x << uint(32 - n);
+  }
+  r.x |= lost != 0u ? 1u : 0u;
+  return r;
+}
+
+// ex_clz32: count of leading zero bits of a 32-bit word (32 for 0); ES 3.00 has no findMSB.
+// Algorithm: binary search over 16, 8, 4, 2, 1 bit halves
+// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3 (nlz, binary search)
+// Bound: exact
+// Flops: 0 (about 16 integer operations)
+// @min-es 300
+int ex_clz32(uint x) {
+  if (x == 0u) return 32;
+  int n = 0;
+  if ((x & 0xFFFF0000u) == 0u) { n += 16; x <<= 16; }
+  if ((x & 0xFF000000u) == 0u) { n += 8; x <<= 8; }
+  if ((x & 0xF0000000u) == 0u) { n += 4; x <<= 4; }
+  if ((x & 0xC0000000u) == 0u) { n += 2; x <<= 2; }
+  if ((x & 0x80000000u) == 0u) { n += 1; }
+  return n;
+}
+
+// ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
+// Algorithm: ex_clz32 of the high word, else 32 + ex_clz32 of the low word
+// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3
+// Bound: exact
+// Flops: 0
+// @min-es 300
+int ex_clz64(uvec2 a) {
+  return a.y != 0u ? ex_clz32(a.y) : 32 + ex_clz32(a.x);
+}
+
+// ex_mul32: full 64-bit product of two 32-bit words from four 16x16-bit products (ES 3.00 has no umulExtended).
+// Algorithm: schoolbook multiplication in 16-bit limbs, carries of the middle sum propagated
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
+// Bound: exact
+// Flops: 0 (4 integer multiplications, about 14 other integer operations)
+// @min-es 300
+uvec2 ex_mul32(uint a, uint b) {
+  uint al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+  uint ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+  uint mid = lh + hl;
+  uint midCarry = mid < lh ? 0x10000u : 0u;
+  uint lo = ll + (mid << 16);
+  uint hi = hh + (mid >> 16) + midCarry + (lo < ll ? 1u : 0u);
+  return uvec2(lo, hi);
+}
+
+// ex_round_pack: the binary64 nearest (ties to even) to sig * 2^(e - 1084), sign s. sig < 2^63; if e > 0 its top bit must be bit 62.
+// Algorithm: e < 0: jamming shift to e = 0 (subnormal); keep 53 bits, 10 round bits; add half, clear the last bit on an exact tie; the significand's carry runs into the exponent field (up to infinity)
+// Source: IEEE 754-2019, 4.3.1; Hauser, Berkeley SoftFloat 3e, 2018 (roundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (about 30 integer operations)
+// @min-es 300
+uvec2 ex_round_pack(bool s, int e, uvec2 sig) {
+  uint signWord = s ? 0x80000000u : 0u;
+  if (e > 0x7FD) return uvec2(0u, signWord | 0x7FF00000u);
+  if (e < 0) {
+    sig = ex_shr_jam64(sig, -e);
+    e = 0;
+  }
+  uint roundBits = sig.x & 0x3FFu;
+  sig = ex_add64(sig, uvec2(0x200u, 0u));
+  sig = uvec2((sig.x >> 10) | (sig.y << 22), sig.y >> 10);
+  if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;
+  return ex_add64(uvec2(0u, signWord | (uint(e) << 20)), sig);
+}
+
+// ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
+// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+// @min-es 300
+uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
+  int z = ex_clz64(sig);
+  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
+  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
+}
+
+// ex_is_nan: true when the bit pattern is a NaN.
+// Algorithm: exponent field all ones and a nonzero significand
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+// @min-es 300
+bool ex_is_nan(uvec2 a) {
+  return (a.y & 0x7FFFFFFFu) > 0x7FF00000u || ((a.y & 0x7FFFFFFFu) == 0x7FF00000u && a.x != 0u);
+}
+
+// ex_pick_nan: the NaN result of an operation with a NaN operand: a if it is a NaN, else b, made quiet.
+// Algorithm: set the quiet bit (significand bit 51) of a if it is a NaN, else of b. Native fp64 on lavapipe (LLVM, x86 SSE) returns the first source operand's NaN, and LLVM passes a commutative operation's operands swapped: ex_add_bits and ex_mul_bits call ex_pick_nan(b, a), ex_sub_bits and ex_div_bits ex_pick_nan(a, b) (measured by tests/exact)
+// Source: IEEE 754-2019, 6.2.3 (NaN propagation); Intel SDM vol. 1, 2016, 4.8.3.5 (first source)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_pick_nan(uvec2 a, uvec2 b) {
+  uvec2 n = ex_is_nan(a) ? a : b;
+  return uvec2(n.x, n.y | 0x00080000u);
+}
+
+// ex_sig: the 53-bit integer significand (implicit bit set for normal numbers), as (lo, hi).
+// Algorithm: low 52 bits of the pattern, bit 52 set when the exponent field is nonzero
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_sig(uvec2 a) {
+  uint hi = a.y & 0x000FFFFFu;
+  if ((a.y & 0x7FF00000u) != 0u) hi |= 0x00100000u;
+  return uvec2(a.x, hi);
+}
+
+// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
+// Algorithm: exponent field, subnormals and zero counted as field 1
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+// @min-es 300
+int ex_exponent(uvec2 a) {
+  return max(int((a.y >> 20) & 0x7FFu), 1);
+}
+
+// ex_add_bits: a + b in binary64, correctly rounded (ties to even).
+// Algorithm: order by magnitude; significands << 10; the smaller jam-shifted by the exponent difference; add or subtract; normalize and round once. Exact cancellation gives +0; (-0) + (-0) = -0
+// Source: IEEE 754-2019, 5.4.1, 6.3; Hauser, Berkeley SoftFloat 3e, 2018 (addMagsF64/subMagsF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (about 60 integer operations)
+// @min-es 300
+uvec2 ex_add_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
+  bool sa = a.y >= 0x80000000u, sb = b.y >= 0x80000000u;
+  bool infA = (a.y & 0x7FFFFFFFu) == 0x7FF00000u, infB = (b.y & 0x7FFFFFFFu) == 0x7FF00000u;
+  if (infA || infB) {
+    if (infA && infB && sa != sb) return uvec2(0u, 0xFFF80000u);
+    return infA ? a : b;
+  }
+  uvec2 ma = ex_sig(a), mb = ex_sig(b);
+  int xa = ex_exponent(a), xb = ex_exponent(b);
+  if ((ma.x | ma.y | mb.x | mb.y) == 0u) return uvec2(0u, (sa && sb) ? 0x80000000u : 0u);
+  if (xb > xa || (xb == xa && ex_lt64(ma, mb))) {
+    uvec2 tm = ma; ma = mb; mb = tm;
+    int tx = xa; xa = xb; xb = tx;
+    bool ts = sa; sa = sb; sb = ts;
+  }
+  uvec2 big = ex_shl64(ma, 10);
+  uvec2 small = ex_shr_jam64(ex_shl64(mb, 10), xa - xb);
+  if (sa == sb) return ex_norm_round_pack(sa, xa - 1, ex_add64(big, small));
+  uvec2 d = ex_sub64(big, small);
+  if ((d.x | d.y) == 0u) return uvec2(0u, 0u);
+  return ex_norm_round_pack(sa, xa - 1, d);
+}
+
+// ex_neg_bits: -a (flips the sign bit, NaN included, as GLSL's negation of a double does).
+// Algorithm: sign bit flip
+// Source: IEEE 754-2019, 5.5.1 (negate)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_neg_bits(uvec2 a) {
+  return uvec2(a.x, a.y ^ 0x80000000u);
+}
+
+// ex_sub_bits: a - b = a + (-b), correctly rounded.
+// Algorithm: NaN operands as ex_pick_nan(a, b); otherwise ex_add with the sign of b flipped
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+// @min-es 300
+uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
+  return ex_add_bits(a, ex_neg_bits(b));
+}
+
+// ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
+// Algorithm: subnormals shifted left by their leading zeros, exponent lowered by the same count
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_normalize_sig(uvec2 a, out int x) {
+  uvec2 m = ex_sig(a);
+  int shift = ex_clz64(m) - 11;
+  x = ex_exponent(a) - shift;
+  return ex_shl64(m, shift);
+}
+
+// ex_mul_bits: a * b in binary64, correctly rounded (ties to even).
+// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, rounded once
+// Source: IEEE 754-2019, 5.4.1, 7.2 (0 * Inf invalid); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (16 integer multiplications, about 80 other integer operations)
+// @min-es 300
+uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
+  uint signWord = (a.y ^ b.y) & 0x80000000u;
+  uint absA = a.y & 0x7FFFFFFFu, absB = b.y & 0x7FFFFFFFu;
+  bool zeroA = (absA | a.x) == 0u, zeroB = (absB | b.x) == 0u;
+  if (absA == 0x7FF00000u || absB == 0x7FF00000u) {
+    if (zeroA || zeroB) return uvec2(0u, 0xFFF80000u);
+    return uvec2(0u, signWord | 0x7FF00000u);
+  }
+  if (zeroA || zeroB) return uvec2(0u, signWord);
+  int xa, xb;
+  uvec2 ma = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
+  uvec2 p00 = ex_mul32(ma.x, mb.x), p01 = ex_mul32(ma.x, mb.y);
+  uvec2 p10 = ex_mul32(ma.y, mb.x), p11 = ex_mul32(ma.y, mb.y);
+  uvec2 mid = ex_add64(ex_add64(uvec2(p00.y, 0u), uvec2(p01.x, 0u)), uvec2(p10.x, 0u));
+  uvec2 top = ex_add64(ex_add64(uvec2(p01.y, 0u), uvec2(p10.y, 0u)), uvec2(mid.y, 0u));
+  uint w1 = mid.x;
+  uint w2 = top.x + p11.x;
+  uint w3 = p11.y + top.y + (w2 < p11.x ? 1u : 0u);
+  uvec2 sig = uvec2((w1 >> 10) | (w2 << 22), (w2 >> 10) | (w3 << 22));
+  if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;
+  return ex_norm_round_pack(signWord != 0u, xa + xb - 1024, sig);
+}
+
+// ex_div_bits: a / b in binary64, correctly rounded (ties to even).
+// Algorithm: restoring binary long division of the normalized significands, 55 quotient bits, the remainder as sticky bit; rounded once
+// Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (restoring division)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (55 iterations of about 12 integer operations)
+// @min-es 300
+uvec2 ex_div_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
+  uint signWord = (a.y ^ b.y) & 0x80000000u;
+  uint absA = a.y & 0x7FFFFFFFu, absB = b.y & 0x7FFFFFFFu;
+  bool zeroA = (absA | a.x) == 0u, zeroB = (absB | b.x) == 0u;
+  bool infA = absA == 0x7FF00000u, infB = absB == 0x7FF00000u;
+  if ((infA && infB) || (zeroA && zeroB)) return uvec2(0u, 0xFFF80000u);
+  if (infA || zeroB) return uvec2(0u, signWord | 0x7FF00000u);
+  if (infB || zeroA) return uvec2(0u, signWord);
+  int xa, xb;
+  uvec2 rem = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
+  int e = xa - xb + 1022;
+  if (ex_lt64(rem, mb)) {
+    rem = ex_shl64(rem, 1);
+    e -= 1;
+  }
+  uvec2 q = uvec2(0u);
+  for (int i = 0; i < 55; ++i) {
+    q = ex_shl64(q, 1);
+    if (!ex_lt64(rem, mb)) {
+      rem = ex_sub64(rem, mb);
+      q.x |= 1u;
+    }
+    rem = ex_shl64(rem, 1);
+  }
+  q = ex_shl64(q, 8);
+  if ((rem.x | rem.y) != 0u) q.x |= 1u;
+  return ex_round_pack(signWord != 0u, e, q);
+}
+
+// ex_sqrt_bits: sqrt(a) in binary64, correctly rounded; sqrt(-0) = -0, sqrt(x < 0) = NaN.
+// Algorithm: digit-by-digit binary square root of the significand (exponent made even) scaled by 2^56, 55 root bits, the remainder as sticky bit; rounded once
+// Source: IEEE 754-2019, 5.4.1, 7.2; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 6 (digit recurrence square root)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (55 iterations of about 16 integer operations)
+// @min-es 300
+uvec2 ex_sqrt_bits(uvec2 a) {
+  if (ex_is_nan(a)) return ex_pick_nan(a, a);
+  uint absA = a.y & 0x7FFFFFFFu;
+  if ((absA | a.x) == 0u) return a;
+  if (a.y >= 0x80000000u) return uvec2(0u, 0xFFF80000u);
+  if (absA == 0x7FF00000u) return a;
+  int x;
+  uvec2 m = ex_normalize_sig(a, x);
+  int e2 = x - 1075;
+  if ((e2 & 1) != 0) {
+    m = ex_shl64(m, 1);
+    e2 -= 1;
+  }
+  uvec2 pending = ex_shl64(m, 10);
+  uvec2 root = uvec2(0u), rem = uvec2(0u);
+  for (int i = 0; i < 55; ++i) {
+    rem = ex_shl64(rem, 2);
+    rem.x |= pending.y >> 30;
+    pending = ex_shl64(pending, 2);
+    uvec2 trial = ex_shl64(root, 2);
+    trial.x |= 1u;
+    root = ex_shl64(root, 1);
+    if (!ex_lt64(rem, trial)) {
+      rem = ex_sub64(rem, trial);
+      root.x |= 1u;
+    }
+  }
+  root = ex_shl64(root, 8);
+  if ((rem.x | rem.y) != 0u) root.x |= 1u;
+  return ex_round_pack(false, 1048 + e2 / 2, root);
+}
+
+// ex_shr64: a >> n for 0 <= n < 64 (bits shifted out are dropped: truncation).
+// Algorithm: word shift by case n == 0, n < 32, n >= 32
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_shr64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 32) return uvec2(a.y >> uint(n - 32), 0u);
+  return uvec2((a.x >> uint(n)) | (a.y << uint(32 - n)), a.y >> uint(n));
+}
+
+// ex_lt_bits: a < b on binary64 patterns: false with a NaN; -0 == +0.
+// Algorithm: sign-magnitude order: opposite signs: a negative and not both zero; equal signs: magnitudes compared as 64-bit integers (reversed for negatives)
+// Source: IEEE 754-2019, 5.11 (comparison predicates)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+bool ex_lt_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return false;
+  bool sa = a.y >= 0x80000000u, sb = b.y >= 0x80000000u;
+  if (sa != sb) return sa && ((a.y | b.y) & 0x7FFFFFFFu | a.x | b.x) != 0u;
+  return sa ? ex_lt64(b, a) : ex_lt64(a, b);
+}
+
+// ex_eq_bits: a == b on binary64 patterns: false with a NaN; -0 == +0.
+// Algorithm: equal patterns, or both zero; never with a NaN
+// Source: IEEE 754-2019, 5.11 (comparison predicates)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+bool ex_eq_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return false;
+  return a == b || ((a.y | b.y) & 0x7FFFFFFFu | a.x | b.x) == 0u;
+}
+
+// ex_from_float_bits: the binary64 pattern of a float (exact; a float subnormal becomes a normal double; a NaN stays NaN, made quiet).
+// Algorithm: re-bias the exponent (127 -> 1023), subnormals normalized with ex_clz32, significand moved up 29 bits
+// Source: IEEE 754-2019, 5.4.2 (formatOf conversions); 3.4 (binary32, binary64 encodings)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_from_float_bits(float f) {
+  uint u = floatBitsToUint(f);
+  uint signWord = u & 0x80000000u;
+  int e = int((u >> 23) & 0xFFu);
+  uint m = u & 0x7FFFFFu;
+  if (e == 0xFF) {
+    if (m != 0u) m |= 0x400000u;
+    return uvec2(m << 29, signWord | 0x7FF00000u | (m >> 3));
+  }
+  if (e == 0) {
+    if (m == 0u) return uvec2(0u, signWord);
+    int shift = ex_clz32(m) - 8;
+    m = (m << uint(shift)) & 0x7FFFFFu;
+    e = 1 - shift;
+  }
+  return uvec2(m << 29, signWord | (uint(e - 127 + 1023) << 20) | (m >> 3));
+}
+
+// ex_to_float_bits: the float nearest (ties to even) to a binary64 pattern, as float bits; overflow gives Inf, tiny values float subnormals or zero.
+// Algorithm: significand cut to 31 bits with a sticky bit, exponent re-biased (1023 -> 127); round-and-pack with 7 round bits (jamming shift into the float subnormal range)
+// Source: IEEE 754-2019, 5.4.2, 4.3.1; Hauser, Berkeley SoftFloat 3e, 2018 (roundPackToF32 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+// @min-es 300
+uint ex_to_float_bits(uvec2 a) {
+  uint signWord = a.y & 0x80000000u;
+  int field = int((a.y >> 20) & 0x7FFu);
+  uint fracHi = a.y & 0xFFFFFu;
+  if (field == 0x7FF) {
+    if ((fracHi | a.x) == 0u) return signWord | 0x7F800000u;
+    return signWord | 0x7FC00000u | (fracHi << 3) | (a.x >> 29);
+  }
+  if (field == 0) return signWord;
+  uint sig = 0x40000000u | (fracHi << 10) | (a.x >> 22);
+  if ((a.x & 0x3FFFFFu) != 0u) sig |= 1u;
+  int e = field - 1023 + 127 - 1;
+  if (e > 0xFD) return signWord | 0x7F800000u;
+  if (e < 0) {
+    int n = -e;
+    sig = n >= 31 ? 1u : (sig >> uint(n)) | ((sig << uint(32 - n)) != 0u ? 1u : 0u);
+    e = 0;
+  }
+  uint roundBits = sig & 0x7Fu;
+  sig = (sig + 0x40u) >> 7;
+  if (roundBits == 0x40u) sig &= 0xFFFFFFFEu;
+  return signWord + (uint(e) << 23) + sig;
+}
+
+// ex_from_uint_bits: the binary64 pattern of a uint (exact: 32 bits fit in 53).
+// Algorithm: the integer as a 64-bit significand, normalized and packed (no rounding happens)
+// Source: IEEE 754-2019, 5.4.1 (convertFromInt)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_from_uint_bits(bool negative, uint m) {
+  if (m == 0u) return uvec2(0u);
+  return ex_norm_round_pack(negative, 1084, uvec2(m, 0u));
+}
+
+// ex_trunc_magnitude: the integer part of |a| as a 64-bit integer, for |a| < 2^63 (0 for |a| < 1).
+// Algorithm: the 53-bit significand shifted by the exponent (right: bits dropped, truncation; left up to 10 bits)
+// Source: IEEE 754-2019, 5.8 (convertToIntegerTowardZero)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_trunc_magnitude(uvec2 a) {
+  int field = int((a.y >> 20) & 0x7FFu);
+  if (field < 1023) return uvec2(0u);
+  uvec2 m = ex_sig(a);
+  return field <= 1075 ? ex_shr64(m, 1075 - field) : ex_shl64(m, min(field - 1075, 10));
+}
+
+// ex_round_integral_bits: a rounded to an integral binary64 value: mode 0 toward zero (trunc), 1 toward -Inf (floor), 2 toward +Inf (ceil), 3 to nearest even.
+// Algorithm: clear the fraction bits of the pattern; add one unit of the integer part's last place (a carry into the exponent is right) when the mode says so; |a| < 1 handled apart; NaN made quiet
+// Source: IEEE 754-2019, 5.3.1 (roundToIntegral*)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_round_integral_bits(uvec2 a, int mode) {
+  if (ex_is_nan(a)) return ex_pick_nan(a, a);
+  int field = int((a.y >> 20) & 0x7FFu);
+  if (field >= 1075) return a;
+  bool negative = a.y >= 0x80000000u;
+  uint signWord = a.y & 0x80000000u;
+  bool zero = ((a.y & 0x7FFFFFFFu) | a.x) == 0u;
+  if (field < 1023) {
+    bool up = (mode == 1 && negative && !zero) || (mode == 2 && !negative && !zero) ||
+              (mode == 3 && field == 1022 && ((a.y & 0xFFFFFu) | a.x) != 0u);
+    return uvec2(0u, signWord | (up ? 0x3FF00000u : 0u));
+  }
+  int n = 1075 - field;
+  uvec2 unit = ex_shl64(uvec2(1u, 0u), n);
+  uvec2 mask = ex_sub64(unit, uvec2(1u, 0u));
+  uvec2 frac = uvec2(a.x & mask.x, a.y & mask.y);
+  uvec2 t = uvec2(a.x & ~mask.x, a.y & ~mask.y);
+  if ((frac.x | frac.y) == 0u) return a;
+  bool up = (mode == 1 && negative) || (mode == 2 && !negative);
+  if (mode == 3) {
+    uvec2 halfUnit = ex_shr64(unit, 1);
+    up = ex_lt64(halfUnit, frac) || (frac == halfUnit && (ex_shr64(t, n).x & 1u) != 0u);
+  }
+  return up ? ex_add64(t, unit) : t;
+}
+
+// ex_bits: the binary64 pattern of a mode-exact double as uvec2(low word, high word), the order of unpackDouble2x32.
+// Algorithm: member reorder
+// Source: GLSL 4.60 specification, 2017, 8.4 (unpackDouble2x32 word order)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+uvec2 ex_bits(df_double a) {
+  return uvec2(a.lo, a.hi);
+}
+
+// ex_from_bits: the mode-exact double of a binary64 pattern uvec2(low word, high word).
+// Algorithm: member reorder
+// Source: GLSL 4.60 specification, 2017, 8.4 (packDouble2x32 word order)
+// Bound: exact
+// Flops: 0
+// @min-es 300
+df_double ex_from_bits(uvec2 w) {
+  return df_double(w.y, w.x);
+}
+
+// ex_add: a + b (mode exact), correctly rounded.
+// Algorithm: ex_add_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_add($DF a, $DF b) {
+  return ex_from_bits(ex_add_bits(ex_bits(a), ex_bits(b)));
+}
+
+// ex_sub: a - b (mode exact), correctly rounded.
+// Algorithm: ex_sub_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_sub($DF a, $DF b) {
+  return ex_from_bits(ex_sub_bits(ex_bits(a), ex_bits(b)));
+}
+
+// ex_mul: a * b (mode exact), correctly rounded.
+// Algorithm: ex_mul_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_mul($DF a, $DF b) {
+  return ex_from_bits(ex_mul_bits(ex_bits(a), ex_bits(b)));
+}
+
+// ex_div: a / b (mode exact), correctly rounded.
+// Algorithm: ex_div_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_div($DF a, $DF b) {
+  return ex_from_bits(ex_div_bits(ex_bits(a), ex_bits(b)));
+}
+
+// ex_sqrt: sqrt(a) (mode exact), correctly rounded.
+// Algorithm: ex_sqrt_bits on the pattern
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_sqrt($DF a) {
+  return ex_from_bits(ex_sqrt_bits(ex_bits(a)));
+}
+
+// ex_neg: -a (mode exact): the sign bit flipped.
+// Algorithm: sign bit flip of the high word
+// Source: IEEE 754-2019, 5.5.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @min-es 300
+$DF ex_neg($DF a) {
+  return $DF(a.hi ^ $U(0x80000000u), a.lo);
+}
+
+// ex_abs: abs(a) (mode exact): the sign bit cleared.
+// Algorithm: sign bit cleared in the high word
+// Source: IEEE 754-2019, 5.5.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @min-es 300
+$DF ex_abs($DF a) {
+  return $DF(a.hi & $U(0x7FFFFFFFu), a.lo);
+}
+
+// ex_from_float: double(f) (mode exact), exact.
+// Algorithm: ex_from_float_bits
+// Source: IEEE 754-2019, 5.4.2
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_from_float($F f) {
+  return ex_from_bits(ex_from_float_bits(f));
+}
+
+// ex_to_float: float(a) (mode exact), rounded to nearest even.
+// Algorithm: ex_to_float_bits
+// Source: IEEE 754-2019, 5.4.2
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$F ex_to_float($DF a) {
+  return uintBitsToFloat(ex_to_float_bits(ex_bits(a)));
+}
+
+// ex_from_int: double(i) (mode exact), exact.
+// Algorithm: sign and magnitude (0u - uint(i) for negatives, -2^31 included), ex_from_uint_bits
+// Source: IEEE 754-2019, 5.4.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_from_int($I i) {
+  return ex_from_bits(ex_from_uint_bits(i < 0, i < 0 ? 0u - uint(i) : uint(i)));
+}
+
+// ex_from_uint: double(u) (mode exact), exact.
+// Algorithm: ex_from_uint_bits
+// Source: IEEE 754-2019, 5.4.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_from_uint($U u) {
+  return ex_from_bits(ex_from_uint_bits(false, u));
+}
+
+// ex_to_int: int(a) (mode exact): truncated toward zero; undefined outside the int range (GLSL).
+// Algorithm: ex_trunc_magnitude, then the sign
+// Source: IEEE 754-2019, 5.8; GLSL ES 3.20, 2019, 5.4.1 (conversion truncates)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$I ex_to_int($DF a) {
+  uvec2 w = ex_bits(a);
+  uint m = ex_trunc_magnitude(w).x;
+  return w.y >= 0x80000000u ? -int(m) : int(m);
+}
+
+// ex_to_uint: uint(a) (mode exact): truncated toward zero; undefined outside the uint range (GLSL).
+// Algorithm: ex_trunc_magnitude
+// Source: IEEE 754-2019, 5.8; GLSL ES 3.20, 2019, 5.4.1 (conversion truncates)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$U ex_to_uint($DF a) {
+  return ex_trunc_magnitude(ex_bits(a)).x;
+}
+
+// ex_from_bool: double(b) (mode exact): 1.0 or 0.0.
+// Algorithm: select of the patterns of 1.0 and 0.0
+// Source: GLSL ES 3.20, 2019, 5.4.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_from_bool($B b) {
+  if (b) return df_double(0x3FF00000u, 0u);  // no struct ternary: WebGL 2.0 forbids it
+  return df_double(0u, 0u);
+}
+
+// ex_to_bool: bool(a) (mode exact): a != 0.0 (true for NaN).
+// Algorithm: not ex_eq_bits(a, 0)
+// Source: GLSL ES 3.20, 2019, 5.4.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_to_bool($DF a) {
+  return !ex_eq_bits(ex_bits(a), uvec2(0u));
+}
+
+// ex_lt: a < b (mode exact).
+// Algorithm: ex_lt_bits
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_lt($DF a, $DF b) {
+  return ex_lt_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_le: a <= b (mode exact).
+// Algorithm: ex_lt_bits or ex_eq_bits
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_le($DF a, $DF b) {
+  return ex_lt_bits(ex_bits(a), ex_bits(b)) || ex_eq_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_gt: a > b (mode exact).
+// Algorithm: ex_lt_bits(b, a)
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_gt($DF a, $DF b) {
+  return ex_lt_bits(ex_bits(b), ex_bits(a));
+}
+
+// ex_ge: a >= b (mode exact).
+// Algorithm: ex_lt_bits(b, a) or ex_eq_bits
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_ge($DF a, $DF b) {
+  return ex_lt_bits(ex_bits(b), ex_bits(a)) || ex_eq_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_equal_components: equal(a, b) per component (mode exact).
+// Algorithm: ex_eq_bits per component
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_equal_components($DF a, $DF b) {
+  return ex_eq_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_not_equal_components: notEqual(a, b) per component (mode exact): true with a NaN.
+// Algorithm: not ex_eq_bits per component
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_not_equal_components($DF a, $DF b) {
+  return !ex_eq_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_less_than: lessThan(a, b) (mode exact).
+// Algorithm: ex_lt_bits per component
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_less_than($DF a, $DF b) {
+  return ex_lt_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_less_than_equal: lessThanEqual(a, b) (mode exact).
+// Algorithm: ex_lt_bits or ex_eq_bits per component
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_less_than_equal($DF a, $DF b) {
+  return ex_lt_bits(ex_bits(a), ex_bits(b)) || ex_eq_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_greater_than: greaterThan(a, b) (mode exact).
+// Algorithm: ex_lt_bits(b, a) per component
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_greater_than($DF a, $DF b) {
+  return ex_lt_bits(ex_bits(b), ex_bits(a));
+}
+
+// ex_greater_than_equal: greaterThanEqual(a, b) (mode exact).
+// Algorithm: ex_lt_bits(b, a) or ex_eq_bits per component
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_greater_than_equal($DF a, $DF b) {
+  return ex_lt_bits(ex_bits(b), ex_bits(a)) || ex_eq_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_trunc: trunc(a) (mode exact).
+// Algorithm: ex_round_integral_bits toward zero
+// Source: IEEE 754-2019, 5.3.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_trunc($DF a) {
+  return ex_from_bits(ex_round_integral_bits(ex_bits(a), 0));
+}
+
+// ex_floor: floor(a) (mode exact).
+// Algorithm: ex_round_integral_bits toward -Inf
+// Source: IEEE 754-2019, 5.3.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_floor($DF a) {
+  return ex_from_bits(ex_round_integral_bits(ex_bits(a), 1));
+}
+
+// ex_ceil: ceil(a) (mode exact).
+// Algorithm: ex_round_integral_bits toward +Inf
+// Source: IEEE 754-2019, 5.3.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_ceil($DF a) {
+  return ex_from_bits(ex_round_integral_bits(ex_bits(a), 2));
+}
+
+// ex_round_even: roundEven(a) (mode exact).
+// Algorithm: ex_round_integral_bits to nearest even
+// Source: IEEE 754-2019, 5.3.1
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_round_even($DF a) {
+  return ex_from_bits(ex_round_integral_bits(ex_bits(a), 3));
+}
+
+// ex_round: round(a) (mode exact): halves to even, as native fp64 on Mesa (GLSL leaves the direction to the implementation).
+// Algorithm: ex_round_integral_bits to nearest even
+// Source: IEEE 754-2019, 5.3.1; GLSL ES 3.20, 2019, 8.3 (round)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_round($DF a) {
+  return ex_from_bits(ex_round_integral_bits(ex_bits(a), 3));
+}
+
+// ex_fract: fract(a) = a - floor(a) (mode exact), as GLSL defines it.
+// Algorithm: ex_sub(a, ex_floor(a)): one rounding
+// Source: GLSL ES 3.20, 2019, 8.3 (fract); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_fract($DF a) {
+  return ex_sub(a, ex_floor(a));
+}
+
+// ex_mod: mod(a, b) = a - b * floor(a / b) (mode exact), as GLSL defines it, each step rounded.
+// Algorithm: ex_div, ex_floor, ex_mul, ex_sub
+// Source: GLSL ES 3.20, 2019, 8.3 (mod); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_mod($DF a, $DF b) {
+  return ex_sub(a, ex_mul(b, ex_floor(ex_div(a, b))));
+}
+
+// ex_min: min(a, b) (mode exact): the other operand when one is NaN (IEEE minNum, as native fp64 on lavapipe gives; GLSL leaves it undefined), else a < b ? a : b.
+// Algorithm: ex_lt_bits and select
+// Source: GLSL ES 3.20, 2019, 8.3 (min); IEEE 754-2008, 5.3.1 (minNum)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_min($DF a, $DF b) {
+  if (ex_is_nan(ex_bits(a))) return b;
+  if (ex_is_nan(ex_bits(b))) return a;
+  if (ex_lt_bits(ex_bits(a), ex_bits(b))) return a;
+  return b;
+}
+
+// ex_max: max(a, b) (mode exact): the other operand when one is NaN (IEEE maxNum, as native fp64 on lavapipe gives), else a > b ? a : b.
+// Algorithm: ex_lt_bits and select
+// Source: GLSL ES 3.20, 2019, 8.3 (max); IEEE 754-2008, 5.3.1 (maxNum)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_max($DF a, $DF b) {
+  if (ex_is_nan(ex_bits(a))) return b;
+  if (ex_is_nan(ex_bits(b))) return a;
+  if (ex_lt_bits(ex_bits(b), ex_bits(a))) return a;
+  return b;
+}
+
+// ex_clamp: clamp(x, lo, hi) = min(max(x, lo), hi) (mode exact).
+// Algorithm: ex_max then ex_min
+// Source: GLSL ES 3.20, 2019, 8.3 (clamp)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_clamp($DF x, $DF lo, $DF hi) {
+  return ex_min(ex_max(x, lo), hi);
+}
+
+// ex_sign: sign(a) (mode exact): 1.0, -1.0, else +0 (for -0 and NaN too, as native fp64 on lavapipe gives).
+// Algorithm: two ex_lt_bits against 0
+// Source: GLSL ES 3.20, 2019, 8.3 (sign)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_sign($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_lt_bits(uvec2(0u), w)) return df_double(0x3FF00000u, 0u);
+  if (ex_lt_bits(w, uvec2(0u))) return df_double(0xBFF00000u, 0u);
+  return df_double(0u, 0u);
+}
+
+// ex_isnan: isnan(a) (mode exact).
+// Algorithm: ex_is_nan
+// Source: IEEE 754-2019, 5.7.2
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_isnan($DF a) {
+  return ex_is_nan(ex_bits(a));
+}
+
+// ex_isinf: isinf(a) (mode exact).
+// Algorithm: exponent all ones, significand zero
+// Source: IEEE 754-2019, 5.7.2
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$B ex_isinf($DF a) {
+  return (a.hi & 0x7FFFFFFFu) == 0x7FF00000u && a.lo == 0u;
+}
+
+// ex_equal: a == b (mode exact): every component equal; false with a NaN.
+// Algorithm: ex_eq_bits
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_equal(df_double a, df_double b) {
+  return ex_eq_bits(ex_bits(a), ex_bits(b));
+}
+
+// ex_equal: a == b (mode exact): every component equal; false with a NaN.
+// Algorithm: all(ex_equal_components)
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 2 3 4
+// @min-es 300
+bool ex_equal($DF a, $DF b) {
+  return all(ex_equal_components(a, b));
+}
+
+// ex_not_equal: a != b (mode exact): some component differs; true with a NaN.
+// Algorithm: not ex_equal
+// Source: IEEE 754-2019, 5.11
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @min-es 300
+bool ex_not_equal($DF a, $DF b) {
+  return !ex_equal(a, b);
+}
+
+// ex_pack_double2x32: packDouble2x32(v) (mode exact): v is already the pattern (v.x low word, v.y high word).
+// Algorithm: ex_from_bits
+// Source: GLSL 4.60 specification, 2017, 8.4 (packDouble2x32)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+df_double ex_pack_double2x32(uvec2 v) {
+  return ex_from_bits(v);
+}
+
+// ex_unpack_double2x32: unpackDouble2x32(a) (mode exact): the pattern as uvec2(low word, high word).
+// Algorithm: ex_bits
+// Source: GLSL 4.60 specification, 2017, 8.4 (unpackDouble2x32)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_unpack_double2x32(df_double a) {
+  return ex_bits(a);
+}
