@@ -85,10 +85,18 @@ Result lower_wgsl(std::string_view source, const Options& options) {
                              "--mode native keeps the doubles, and WGSL has no f64: use --mode df64 (the default)"});
     return r;
   }
+  if (options.mode == Mode::Exact) {
+    Result r;
+    r.diagnostics.push_back({options.file_name, 0, 0, Severity::Error,
+                             "--mode exact is not available for target wgsl yet (its runtime's ternaries on calls "
+                             "have no WGSL form): use a GLSL ES 3.00+ target, or --mode df64-int on wgsl"});
+    return r;
+  }
   Options glsl_options = options;
   glsl_options.target = Target::Es310;
   glsl_options.allow_gpu_shader5 = false;
-  if (glsl_options.guard == GuardKind::Auto) glsl_options.guard = GuardKind::Uniform;
+  // df64-int needs no guard (its error terms are integer arithmetic): es310's Auto gives it none.
+  if (glsl_options.guard == GuardKind::Auto && options.mode != Mode::Df64Int) glsl_options.guard = GuardKind::Uniform;
   Result result = lower(source, glsl_options);
   result.manifest.target = "wgsl";
   if (!result.ok) return result;

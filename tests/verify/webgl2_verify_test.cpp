@@ -122,6 +122,18 @@ TEST_P(WebGl2Verify, DropGuardFailsInChromium) {
     EXPECT_LT(measured.at(op), 30) << op << " kept its bits without the guard\n" << r.out;
 }
 
+// df64-int with the guard removed (it has none to begin with) keeps every bit the guarded df64
+// keeps, where df64 without the guard falls to float (DropGuardFailsInChromium): issue 14's
+// "df64-int holds >= 44 bits with the guard removed" in WebGL2.
+TEST_P(WebGl2Verify, Df64IntNeedsNoGuardInChromium) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  const CliRun r = verify(args(GetParam(), "webgl2", "drop-guard") + " --mode df64-int");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto measured = bits(r, GetParam(), "webgl2");
+  ASSERT_EQ(measured.size(), GetParam().outputs.size()) << r.out;
+  for (const auto& [op, b] : measured) EXPECT_GE(b, 44) << op << "\n" << r.out;
+}
+
 INSTANTIATE_TEST_SUITE_P(Stages, WebGl2Verify, ::testing::Values(kFragment, kVertex),
                          [](const auto& info) { return info.param.file == "ops.frag" ? "fragment" : "vertex"; });
 

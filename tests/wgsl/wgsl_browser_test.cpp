@@ -249,3 +249,22 @@ TEST(WgslBrowser, GuardRemovedLosesTheProductErrorTermHere) {
 }
 
 }  // namespace
+
+namespace {
+
+// df64-int on WebGPU with no guard at all (the uniform buffer holds no df_guard): its error terms
+// are integer arithmetic, which the folding that breaks GuardRemovedLosesTheProductErrorTermHere
+// cannot touch. Together with that test this is issue 14's "df64-int holds >= 44 bits with the
+// guard removed" on WebGPU.
+TEST(WgslBrowser, Df64IntKeepsAtLeast44BitsWithoutAGuard) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  std::string adapter;
+  auto bits = measured_bits(doublet::Mode::Df64Int, doublet::GuardKind::None, adapter);
+  ASSERT_EQ(bits.size(), static_cast<size_t>(kOps));
+  for (int op = 0; op < kOps; ++op) {
+    std::cout << "df64-int, no guard, " << kOpNames[op] << ": " << bits[op] << " bits\n";
+    EXPECT_GE(bits[op], 44) << kOpNames[op] << ", adapter " << adapter;
+  }
+}
+
+}  // namespace
