@@ -158,6 +158,7 @@ int run_verify(const VerifyArgs& a) {
   if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
   else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
   else if (a.backend == "webgl2") o.backends = {runner::Backend::WebGl2};
+  else if (a.backend == "webgpu") o.backends = {runner::Backend::WebGpu};
   else if (a.backend == "all") o.backends = {runner::Backend::Vulkan, runner::Backend::Gles, runner::Backend::WebGl2};
   const std::optional<verify::Sabotage> sabotage = verify::parse_sabotage(a.sabotage);
   o.sabotage = sabotage.value_or(verify::Sabotage::None);
@@ -224,9 +225,10 @@ Command add_verify_command(CLI::App& app) {
   cmd->add_option("--json", args->json, "write the report as JSON to this file ('-': stdout)");
   cmd->add_option("--min-bits", args->min_bits, "exit 1 when any output keeps fewer correct bits");
   cmd->add_option("--backend", args->backend,
-                  "vulkan|gles|webgl2|both|all: where the lowered shader runs (both = vulkan + gles, the default; "
-                  "all = vulkan + gles + webgl2; webgl2 = headless Chromium)")
-      ->check(CLI::IsMember({"vulkan", "gles", "webgl2", "both", "all"}));
+                  "vulkan|gles|webgl2|webgpu|both|all: where the lowered shader runs (both = vulkan + gles, the "
+                  "default; all = vulkan + gles + webgl2; webgl2 = headless Chromium's WebGL2 (vert/frag); webgpu "
+                  "= the WGSL lowering in headless Chromium's WebGPU (comp))")
+      ->check(CLI::IsMember({"vulkan", "gles", "webgl2", "webgpu", "both", "all"}));
   cmd->add_option("--sabotage", args->sabotage, "drop-lo|drop-guard: break the lowering on purpose")
       ->check(CLI::IsMember({"none", "drop-lo", "drop-guard"}));
   cmd->add_option("-D", args->defines, "NAME[=VALUE] preprocessor define");

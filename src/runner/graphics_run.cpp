@@ -95,6 +95,10 @@ std::vector<std::vector<GraphicsResult>> run_graphics_batches(Backend backend,
 std::vector<GraphicsResult> run_graphics_batch(Backend backend, const std::vector<GraphicsJob>& jobs) {
   if (backend == Backend::WebGl2) return detail::webgl2_run_graphics({jobs}).front();
   GraphicsResult failed;
+  if (backend == Backend::WebGpu) {
+    failed.error = "the WebGPU backend runs compute shaders only (WGSL)";
+    return {failed};
+  }
   if (jobs.empty()) {
     failed.error = "run_graphics_batch: no jobs";
     return {failed};

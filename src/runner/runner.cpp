@@ -5,7 +5,15 @@
 
 namespace doublet::runner {
 
-const char* backend_name(Backend b) { return b == Backend::Vulkan ? "Vulkan" : b == Backend::Gles ? "GLES" : "WebGL2"; }
+const char* backend_name(Backend b) {
+  switch (b) {
+    case Backend::Vulkan: return "Vulkan";
+    case Backend::Gles: return "GLES";
+    case Backend::WebGl2: return "WebGL2";
+    case Backend::WebGpu: return "WebGPU";
+  }
+  return "?";
+}
 
 ComputeResult run_compute(Backend backend, const ComputeJob& job) {
   return run_compute_batch(backend, {job}).back();
@@ -18,9 +26,10 @@ std::vector<ComputeResult> run_compute_batch(Backend backend, const std::vector<
     return {result};
   }
   if (backend == Backend::Gles) return detail::gles_run(jobs);
-  if (backend == Backend::WebGl2) {
+  if (backend == Backend::WebGl2 || backend == Backend::WebGpu) {
     ComputeResult result;
-    result.error = "WebGL2 has no compute shaders";
+    result.error = backend == Backend::WebGl2 ? "WebGL2 has no compute shaders"
+                                              : "WebGPU runs WGSL: use run_webgpu_compute (runner/webgpu.hpp)";
     return {result};
   }
   detail::SpirvProgram program;
@@ -50,7 +59,7 @@ ComputeResult run_spirv_compute(const std::vector<uint32_t>& spirv, const Comput
 }
 
 std::string backend_unavailable_reason(Backend backend) {
-  if (backend == Backend::WebGl2) return browser_unavailable_reason();
+  if (backend == Backend::WebGl2 || backend == Backend::WebGpu) return browser_unavailable_reason();
   return backend == Backend::Gles ? detail::gles_unavailable_reason() : detail::vulkan_unavailable_reason();
 }
 

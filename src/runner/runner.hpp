@@ -15,7 +15,9 @@
 
 namespace doublet::runner {
 
-enum class Backend { Vulkan, Gles, WebGl2 };
+// WebGpu: WGSL compute in headless Chromium's WebGPU (runner/webgpu.hpp, run_webgpu_compute); the
+// GLSL entry points below answer it with an error.
+enum class Backend { Vulkan, Gles, WebGl2, WebGpu };
 
 const char* backend_name(Backend);
 

@@ -8,7 +8,13 @@ namespace doublet::verify {
 namespace {
 
 std::string backend_id(runner::Backend b) {
-  return b == runner::Backend::Vulkan ? "vulkan" : b == runner::Backend::Gles ? "gles" : "webgl2";
+  switch (b) {
+    case runner::Backend::Vulkan: return "vulkan";
+    case runner::Backend::Gles: return "gles";
+    case runner::Backend::WebGl2: return "webgl2";
+    case runner::Backend::WebGpu: return "webgpu";
+  }
+  return "?";
 }
 
 std::string fmt(const char* f, double x) {

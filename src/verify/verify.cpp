@@ -8,6 +8,7 @@
 
 #include "frontend/text_scan.hpp"
 #include "verify/compute_harness.hpp"
+#include "verify/webgpu_jobs.hpp"
 #include "verify/graphics_harness.hpp"
 
 namespace doublet::verify {
@@ -136,8 +137,9 @@ bool VerifyReport::passed() const {
 namespace {
 
 // Compute: every sample a dispatch or an invocation (compute_harness.hpp).
-void run_compute_stage(const std::string& native_glsl, const Result& lowered, const VerifyOptions& options,
-                       VerifyReport* report) {
+// `wgsl`: the WGSL lowering for --backend webgpu (null when WebGPU was not asked for or cannot run).
+void run_compute_stage(const std::string& native_glsl, const Result& lowered, const Result* wgsl,
+                       const VerifyOptions& options, VerifyReport* report) {
   ComputeHarness harness;
   if (std::string e = harness.plan(native_glsl, lowered.output, lowered.manifest, options.spec, options.samples);
       !e.empty()) {
@@ -163,6 +165,35 @@ void run_compute_stage(const std::string& native_glsl, const Result& lowered, co
     }
     if (backend == runner::Backend::WebGl2) {
       report->notes.push_back("WebGL2 backend skipped: " + webgl2_skip_reason(options));
+      continue;
+    }
+    if (backend == runner::Backend::WebGpu) {
+      if (!wgsl) continue;  // the reason is already a note
+      // One browser page per dispatch (about a second each): a shader fed through uniforms or
+      // fixed-size arrays needs a dispatch per sample, which would take minutes.
+      constexpr size_t kMaxWebGpuDispatches = 32;
+      if (lowered_jobs.size() > kMaxWebGpuDispatches) {
+        const std::string why = "the WebGPU backend runs one browser page per dispatch and this shader needs " +
+                                std::to_string(lowered_jobs.size()) + " (one per sample: its inputs are uniforms or " +
+                                "fixed-size arrays); use --samples " + std::to_string(kMaxWebGpuDispatches) +
+                                " or fewer, or feed it through runtime-sized arrays";
+        if (options.backends.size() == 1) {
+          report->input_error = why;
+          return;
+        }
+        report->notes.push_back("WebGPU backend skipped: " + why);
+        continue;
+      }
+      run.probe.error = "not run on WebGPU (the driver probe is GLSL)";
+      if (!native_ok) {
+        run.error = "native fp64 run failed: " + native.back().error;
+      } else {
+        const std::vector<runner::ComputeResult> got = run_jobs_on_webgpu(wgsl->output, wgsl->manifest, lowered_jobs);
+        run.driver = got.back().device;
+        if (got.size() != lowered_jobs.size() || !got.back().ok) run.error = "lowered run failed: " + got.back().error;
+        else run.outputs = harness.compare(native, got, options.min_bits);
+      }
+      report->runs.push_back(std::move(run));
       continue;
     }
     run.probe = probe_compute(backend);
@@ -216,6 +247,11 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
     run.reference_driver = native.back().device;
     if (backend == runner::Backend::Gles && !target_is_es(t)) {
       report->notes.push_back("GLES backend skipped: target " + report->target + " is desktop GLSL");
+      continue;
+    }
+    if (backend == runner::Backend::WebGpu) {
+      report->notes.push_back("WebGPU backend skipped: it verifies compute shaders (WGSL); use --backend webgl2 for a "
+                              "vertex or fragment shader");
       continue;
     }
     if (backend == runner::Backend::WebGl2 && !runs_on_webgl2(t)) {
@@ -279,8 +315,34 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
     report.input_error = include_error;
     return report;
   }
+  // WebGPU runs the WGSL lowering of the same (sabotaged) source; the harness plans on `lowered`,
+  // the GLSL lowering the WGSL is printed from (same names and buffers).
+  std::optional<Result> wgsl;
+  if (has_backend(options, runner::Backend::WebGpu)) {
+    const bool alone = options.backends.size() == 1;
+    if (*options.lower.stage != Stage::Compute) {
+      if (alone) {
+        report.input_error = "the WebGPU backend verifies compute shaders (WGSL); use --backend webgl2 for a vertex "
+                             "or fragment shader";
+        return report;
+      }
+    } else {
+      Options wgsl_options = lower_options;
+      wgsl_options.target = Target::Wgsl;
+      wgsl = lower(lowered_source, wgsl_options);
+      if (!wgsl->ok) {
+        const std::string why = "the WGSL lowering failed:\n" + diagnostics_text(*wgsl);
+        if (alone) {
+          report.input_error = why;
+          return report;
+        }
+        report.notes.push_back("WebGPU backend skipped: " + why);
+        wgsl.reset();
+      }
+    }
+  }
   switch (*options.lower.stage) {
-    case Stage::Compute: run_compute_stage(native, lowered, options, &report); break;
+    case Stage::Compute: run_compute_stage(native, lowered, wgsl ? &*wgsl : nullptr, options, &report); break;
     case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;
     case Stage::Fragment: run_graphics_stage(runner::GraphicsStage::Fragment, native, lowered, options, &report); break;
   }

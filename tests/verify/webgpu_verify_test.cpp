@@ -1,0 +1,111 @@
+// `doublet verify --backend webgpu` as users run it: the WGSL lowering in headless Chromium's WebGPU,
+// the original in fp64 on lavapipe. add, sub, mul, div, sqrt and a three-stage expression must reach
+// 44 bits; drop-lo must fail everywhere and drop-guard for the products, quotients and roots the
+// browser folds (docs/web.md); df64-int needs no guard. A vertex shader is an input error.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "../runner/browser_test_util.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+  nlohmann::json report;
+};
+
+CliRun verify(const std::string& args) {
+  CliRun r;
+  const fs::path json = fs::temp_directory_path() / ("doublet-webgpu-verify-" + std::to_string(::getpid()) + ".json");
+  fs::remove(json);
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " verify " + args + " --json " + json.string() + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  char buf[4096];
+  while (size_t n = fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (std::ifstream in(json); in) r.report = nlohmann::json::parse(in, nullptr, false);
+  fs::remove(json);
+  return r;
+}
+
+const std::string kOps = std::string(DOUBLET_VERIFY_SHADERS) + "/webgpu/ops.comp";
+const std::map<std::string, std::string> kOutputs{{"add", "add_sub[].x"},  {"sub", "add_sub[].y"},
+                                                  {"mul", "mul_div[].x"},  {"div", "mul_div[].y"},
+                                                  {"sqrt", "sqrt_chain[].x"}, {"3 stages", "sqrt_chain[].y"}};
+
+std::string args(const std::string& extra) {
+  return kOps + " --spec " + kOps + ".json --min-bits 44 --backend webgpu " + extra;
+}
+
+std::map<std::string, double> bits(const CliRun& r) {
+  std::map<std::string, double> out;
+  if (!r.report.is_object()) return out;
+  for (const auto& run : r.report.at("runs"))
+    if (run.at("backend") == "webgpu")
+      for (const auto& [op, name] : kOutputs)
+        for (const auto& o : run.at("outputs"))
+          if (o.at("name") == name) out[op] = o.at("min_bits").get<double>();
+  return out;
+}
+
+TEST(WebGpuVerify, Keeps44BitsInChromium) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  const CliRun r = verify(args(""));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto& run = r.report.at("runs").at(0);
+  EXPECT_NE(run.at("driver").get<std::string>().find("WebGPU"), std::string::npos) << run.at("driver");
+  const auto measured = bits(r);
+  ASSERT_EQ(measured.size(), kOutputs.size()) << r.out;
+  for (const auto& [op, b] : measured) EXPECT_GE(b, 44) << op << "\n" << r.out;
+}
+
+TEST(WebGpuVerify, DropLoFailsInChromium) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  const CliRun r = verify(args("--sabotage drop-lo"));
+  ASSERT_EQ(r.exit_code, 1) << r.out;
+  const auto measured = bits(r);
+  ASSERT_EQ(measured.size(), kOutputs.size()) << r.out;
+  for (const auto& [op, b] : measured) EXPECT_LT(b, 30) << op << "\n" << r.out;
+}
+
+TEST(WebGpuVerify, DropGuardFailsAndDf64IntNeedsNoGuard) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  const CliRun unguarded = verify(args("--sabotage drop-guard"));
+  ASSERT_EQ(unguarded.exit_code, 1) << unguarded.out;
+  const auto folded = bits(unguarded);
+  ASSERT_EQ(folded.size(), kOutputs.size()) << unguarded.out;
+  for (const std::string op : {"mul", "div", "sqrt", "3 stages"}) EXPECT_LT(folded.at(op), 30) << op;
+  const CliRun integer = verify(args("--sabotage drop-guard --mode df64-int"));
+  ASSERT_EQ(integer.exit_code, 0) << integer.out;
+  const auto kept = bits(integer);
+  ASSERT_EQ(kept.size(), kOutputs.size()) << integer.out;
+  for (const auto& [op, b] : kept) EXPECT_GE(b, 44) << op << "\n" << integer.out;
+}
+
+TEST(WebGpuVerify, VertexShaderAndManyDispatchesAreInputErrors) {
+  const CliRun vertex = verify(std::string(DOUBLET_VERIFY_SHADERS) + "/pairs.vert --backend webgpu");
+  EXPECT_EQ(vertex.exit_code, 2) << vertex.out;
+  EXPECT_NE(vertex.out.find("verifies compute shaders"), std::string::npos) << vertex.out;
+  // uniform_pairs.comp takes its operands from uniforms: a dispatch per sample.
+  const std::string uniforms = std::string(DOUBLET_VERIFY_SHADERS) + "/uniform_pairs.comp";
+  const CliRun many = verify(uniforms + " --spec " + std::string(DOUBLET_VERIFY_SHADERS) +
+                             "/uniform_pairs.json --backend webgpu --samples 64");
+  EXPECT_EQ(many.exit_code, 2) << many.out;
+  EXPECT_NE(many.out.find("one browser page per dispatch"), std::string::npos) << many.out;
+}
+
+}  // namespace
