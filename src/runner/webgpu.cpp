@@ -66,6 +66,30 @@ std::string page_directory(const nlohmann::json& job, std::string& error) {
 
 }  // namespace
 
+// Runs `job` in a fresh page directory and fills `run`'s unavailable, log, error and adapter; the
+// page's result object, or an empty one (with run.error said) when the page failed or answered
+// something that is not a JSON object.
+template <class Run>
+nlohmann::json run_job_page(const nlohmann::json& job, Run& run) {
+  const std::string dir = page_directory(job, run.error);
+  if (dir.empty()) return nlohmann::json::object();
+  BrowserPageRun page = run_browser_page(dir);
+  fs::remove_all(dir);
+  run.unavailable = page.unavailable;
+  run.log = page.log;
+  if (!page.ok) {
+    run.error = page.error;
+    return nlohmann::json::object();
+  }
+  nlohmann::json result = nlohmann::json::parse(page.result_json, nullptr, /*allow_exceptions=*/false);
+  if (!result.is_object()) {
+    run.error = "the page's answer is not a JSON object: " + page.result_json.substr(0, 200);
+    return nlohmann::json::object();
+  }
+  if (result.contains("adapter") && result.at("adapter").is_string()) run.adapter = result.at("adapter").get<std::string>();
+  return result;
+}
+
 WebGpuRun run_webgpu_compute(const std::string& wgsl, const std::vector<WebGpuBuffer>& buffers,
                              std::array<int, 3> workgroups) {
   WebGpuRun run;
@@ -79,19 +103,15 @@ WebGpuRun run_webgpu_compute(const std::string& wgsl, const std::vector<WebGpuBu
                               {"kind", b.kind == WebGpuBuffer::Kind::Uniform ? "uniform"
                                        : b.kind == WebGpuBuffer::Kind::Storage ? "storage" : "read-only-storage"},
                               {"data", base64(b.bytes)}});
-  const std::string dir = page_directory(job, run.error);
-  if (dir.empty()) return run;
-  BrowserPageRun page = run_browser_page(dir);
-  fs::remove_all(dir);
-  run.unavailable = page.unavailable;
-  run.log = page.log;
-  if (!page.ok) {
-    run.error = page.error;
+  const nlohmann::json result = run_job_page(job, run);
+  if (!result.contains("buffers") || !result.at("buffers").is_array()) {
+    if (run.error.empty()) run.error = "the page's answer has no buffers";
     return run;
   }
-  auto result = nlohmann::json::parse(page.result_json);
-  run.adapter = result.value("adapter", "");
-  for (const auto& b : result.at("buffers")) run.buffers.push_back(unbase64(b.get<std::string>()));
+  for (const auto& b : result.at("buffers")) {
+    if (!b.is_string()) return (run.error = "the page returned a buffer that is not base64 text"), run;
+    run.buffers.push_back(unbase64(b.get<std::string>()));
+  }
   run.ok = true;
   return run;
 }
@@ -102,18 +122,11 @@ WgslValidationRun validate_wgsl_in_browser(const std::vector<WgslModule>& module
   job["kind"] = "validate";
   job["modules"] = nlohmann::json::array();
   for (const auto& m : modules) job["modules"].push_back({{"name", m.name}, {"stage", m.stage}, {"code", m.code}});
-  const std::string dir = page_directory(job, run.error);
-  if (dir.empty()) return run;
-  BrowserPageRun page = run_browser_page(dir);
-  fs::remove_all(dir);
-  run.unavailable = page.unavailable;
-  run.log = page.log;
-  if (!page.ok) {
-    run.error = page.error;
+  const nlohmann::json result = run_job_page(job, run);
+  if (!result.contains("results") || !result.at("results").is_array()) {
+    if (run.error.empty()) run.error = "the page's answer has no results";
     return run;
   }
-  auto result = nlohmann::json::parse(page.result_json);
-  run.adapter = result.value("adapter", "");
   for (const auto& r : result.at("results")) {
     WgslValidation v;
     v.name = r.at("name").get<std::string>();
