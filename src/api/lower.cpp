@@ -275,6 +275,8 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     request.guard_uniform = options.guard_uniform_name;
     request.es_version = target_is_es(options.target) ? target_version(options.target) : 320;
     request.integer_eft = integer_eft;
+    request.integer_functions = options.target == Target::Es310 || options.target == Target::Es320 ||
+                                options.target == Target::Glsl450;  // umulExtended, findMSB
     if (exact)  // an operation rules/exact.glsl does not have yet: said where the shader first uses it
       for (const auto& ref : ctx.rules_used)
         if (!rules::RuleLibrary::builtin().has(ref)) {
