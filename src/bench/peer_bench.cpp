@@ -94,8 +94,14 @@ PeerBits compare_with_native(const std::string& op, const std::string& variant, 
   for (size_t i = 0; i < native.size(); ++i) {
     if (got[i] == native[i]) continue;
     ++b.differing;
+    const uint64_t sign = 0x8000000000000000ull, magnitude = ~sign;
+    const bool subnormal = (native[i] & magnitude) != 0 && (native[i] & 0x7FF0000000000000ull) == 0;
     if (is_nan(got[i]) && is_nan(native[i])) ++b.nan_only;
-    else if (b.example.empty())
+    else if ((got[i] & magnitude) == 0 && subnormal) ++b.flushed;
+    else if ((got[i] & sign) == (native[i] & sign) && !is_nan(got[i]) && !is_nan(native[i]) &&
+             ((got[i] & magnitude) - (native[i] & magnitude) == 1 || (native[i] & magnitude) - (got[i] & magnitude) == 1))
+      ++b.one_ulp;
+    if (!(is_nan(got[i]) && is_nan(native[i])) && b.example.empty())
       b.example = hex64(ab[2 * i]) + (op == "sqrt" ? "" : ", " + hex64(ab[2 * i + 1])) + ": got " + hex64(got[i]) +
                   ", native " + hex64(native[i]);
   }
@@ -354,8 +360,8 @@ std::string format_peer_markdown(const PeerReport& r) {
   }
   out << "### bit identity with native fp64 (lavapipe), " << o.check_inputs
       << " inputs per op: specials, exponent grid, ties, cancellation, halfway subnormals, random\n\n"
-      << "| op | backend | exact: differing | mesa: differing | mesa: of which NaN vs NaN | mesa: first other difference (a, b: got, native) |\n"
-      << "|---|---|---|---|---|---|\n";
+      << "| op | backend | exact: differing | mesa: differing | mesa: NaN vs NaN | mesa: 1 ulp off | mesa: 0 for a subnormal | mesa: first non-NaN difference (a, b: got, native) |\n"
+      << "|---|---|---|---|---|---|---|---|\n";
   for (const std::string& op : o.ops)
     for (runner::Backend b : o.backends) {
       const PeerBits* e = nullptr;
@@ -365,6 +371,7 @@ std::string format_peer_markdown(const PeerReport& r) {
       auto count = [](const PeerBits* x) { return !x ? std::string("—") : x->ok ? std::to_string(x->differing) : "failed"; };
       out << "| " << op << " | " << (b == runner::Backend::Vulkan ? "vulkan" : "gles") << " | " << count(e) << " | "
           << count(m) << " | " << (m && m->ok ? std::to_string(m->nan_only) : "—") << " | "
+          << (m && m->ok ? std::to_string(m->one_ulp) : "—") << " | " << (m && m->ok ? std::to_string(m->flushed) : "—") << " | "
           << (m && !m->example.empty() ? m->example : "—") << " |\n";
     }
   std::vector<std::string> notes;

@@ -50,6 +50,8 @@ struct PeerBits {
   size_t inputs = 0;
   size_t differing = 0;     // results whose 64 bits differ from native's
   size_t nan_only = 0;      // of those, both NaN (payload or sign differs)
+  size_t one_ulp = 0;       // of those, finite and one unit in the last place apart
+  size_t flushed = 0;       // of those, zero where native gives a subnormal
   std::string example;      // the first differing non-NaN result: "a, b: got X, native Y" (hex)
 };
 
