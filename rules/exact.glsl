@@ -11,8 +11,10 @@
 //   [HAU]  J. R. Hauser, Berkeley SoftFloat Release 3e (2018), the round-and-pack scheme with a
 //          jamming right shift (a sticky bit ORed into the lowest bit); read, not copied.
 //   [MESA] Mesa src/compiler/glsl/float64.glsl (2018, soft-fp64 on uvec2): the uvec2 word order; read, not copied.
-//   [ERN]  M. D. Ercegovac, T. Lang, Digital Arithmetic, Morgan Kaufmann 2004, ch. 5-6: restoring
-//          division and digit-by-digit square root with the remainder as sticky bit.
+//   [ERN]  M. D. Ercegovac, T. Lang, Digital Arithmetic, Morgan Kaufmann 2004, ch. 5-6: division
+//          and square root by digit recurrence (high radix, digits selected by an estimate and
+//          corrected), the remainder as sticky bit. Here the digits are 13-14 bits, estimated
+//          with one float division and checked in integer arithmetic.
 
 // ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
 // Algorithm: word sums with the carry of the low word (a.x + b.x < a.x)
@@ -325,11 +327,36 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   return ex_round_pack(signWord != 0u, e, sig);
 }
 
+// ex_div_step: k more quotient bits of a long division by mb: (q, r) as (q.x, q.y, r.x, r.y), 0 <= r < 2mb, becomes (q * 2^k + d, r * 2^k - d * mb) with the digit d that leaves 0 <= r' < mb (k <= 14, mb < 2^53).
+// Algorithm: d = r * 2^k / mb estimated by one float division (off by at most one here); r' in 64-bit words modulo 2^64 (the true r' is small and signed); unit corrections until 0 <= r' < mb
+// Source: Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence: high radix, digit selection by an estimate, correction); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm D
+// Bound: exact
+// Flops: 8 (the digit estimate)
+// @min-es 300
+uvec4 ex_div_step(uvec4 qr, uvec2 mb, int k) {
+  uvec2 q = qr.xy, r = qr.zw;
+  float estimate = floor(ex_u64_to_float(r) * float(1u << uint(k)) / ex_u64_to_float(mb));
+  uint d = uint(estimate);
+  uvec2 dm = ex_mul32(d, mb.x);
+  dm.y += d * mb.y;
+  r = ex_sub64(ex_shl64(r, k), dm);
+  q = ex_add64(ex_shl64(q, k), uvec2(d, 0u));
+  while (r.y >= 0x80000000u) {
+    q = ex_sub64(q, uvec2(1u, 0u));
+    r = ex_add64(r, mb);
+  }
+  while (!ex_lt64(r, mb)) {
+    r = ex_sub64(r, mb);
+    q = ex_add64(q, uvec2(1u, 0u));
+  }
+  return uvec4(q, r);
+}
+
 // ex_div_bits: a / b in binary64, correctly rounded (ties to even).
-// Algorithm: restoring binary long division of the normalized significands, 55 quotient bits, the remainder as sticky bit; rounded once
-// Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (restoring division)
+// Algorithm: long division of the normalized significands, 55 quotient bits in four ex_div_step digits (13, 13, 14, 14 bits; float estimates checked in integers), the remainder as sticky bit; rounded once
+// Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence)
 // Bound: 0.5 ulp (correctly rounded)
-// Flops: 0 (55 iterations of about 12 integer operations)
+// Flops: 32 (estimates: 8 per ex_div_step)
 // @min-es 300
 uvec2 ex_div_bits(uvec2 a, uvec2 b) {
   if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
@@ -347,16 +374,13 @@ uvec2 ex_div_bits(uvec2 a, uvec2 b) {
     rem = ex_shl64(rem, 1);
     e -= 1;
   }
-  uvec2 q = uvec2(0u);
-  for (int i = 0; i < 55; ++i) {
-    q = ex_shl64(q, 1);
-    if (!ex_lt64(rem, mb)) {
-      rem = ex_sub64(rem, mb);
-      q.x |= 1u;
-    }
-    rem = ex_shl64(rem, 1);
-  }
-  q = ex_shl64(q, 8);
+  // rem in [mb, 2mb): q = floor(rem * 2^54 / mb) has 55 bits.
+  uvec4 qr = ex_div_step(uvec4(0u, 0u, rem), mb, 13);
+  qr = ex_div_step(qr, mb, 13);
+  qr = ex_div_step(qr, mb, 14);
+  qr = ex_div_step(qr, mb, 14);
+  uvec2 q = ex_shl64(qr.xy, 8);
+  rem = qr.zw;
   if ((rem.x | rem.y) != 0u) q.x |= 1u;
   return ex_round_pack(signWord != 0u, e, q);
 }
