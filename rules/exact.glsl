@@ -13,7 +13,7 @@
 //   [MESA] Mesa src/compiler/glsl/float64.glsl (2018, soft-fp64 on uvec2): the uvec2 word order; read, not copied.
 //   [ERN]  M. D. Ercegovac, T. Lang, Digital Arithmetic, Morgan Kaufmann 2004, ch. 5-6: division
 //          and square root by digit recurrence (high radix, digits selected by an estimate and
-//          corrected), the remainder as sticky bit. Here the digits are 13-14 bits, estimated
+//          corrected), the remainder as sticky bit. Here the digits are 14-18 bits, estimated
 //          with one float division and checked in integer arithmetic.
 
 // ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
@@ -327,7 +327,7 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   return ex_round_pack(signWord != 0u, e, sig);
 }
 
-// ex_div_step: k more quotient bits of a long division by mb: (q, r) as (q.x, q.y, r.x, r.y), 0 <= r < 2mb, becomes (q * 2^k + d, r * 2^k - d * mb) with the digit d that leaves 0 <= r' < mb (k <= 14, mb < 2^53).
+// ex_div_step: k more quotient bits of a long division by mb: (q, r) as (q.x, q.y, r.x, r.y), 0 <= r < 2mb, becomes (q * 2^k + d, r * 2^k - d * mb) with the digit d that leaves 0 <= r' < mb (k <= 18, mb < 2^53).
 // Algorithm: d = r * 2^k / mb estimated by one float division (off by at most one here); r' in 64-bit words modulo 2^64 (the true r' is small and signed); unit corrections until 0 <= r' < mb
 // Source: Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence: high radix, digit selection by an estimate, correction); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm D
 // Bound: exact
@@ -353,10 +353,10 @@ uvec4 ex_div_step(uvec4 qr, uvec2 mb, int k) {
 }
 
 // ex_div_bits: a / b in binary64, correctly rounded (ties to even).
-// Algorithm: long division of the normalized significands, 55 quotient bits in four ex_div_step digits (13, 13, 14, 14 bits; float estimates checked in integers), the remainder as sticky bit; rounded once
+// Algorithm: long division of the normalized significands, 55 quotient bits in three 18-bit ex_div_step digits (float estimates checked in integers), the remainder as sticky bit; rounded once
 // Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence)
 // Bound: 0.5 ulp (correctly rounded)
-// Flops: 32 (estimates: 8 per ex_div_step)
+// Flops: 24 (estimates: 8 per ex_div_step)
 // @min-es 300
 uvec2 ex_div_bits(uvec2 a, uvec2 b) {
   if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
@@ -375,10 +375,9 @@ uvec2 ex_div_bits(uvec2 a, uvec2 b) {
     e -= 1;
   }
   // rem in [mb, 2mb): q = floor(rem * 2^54 / mb) has 55 bits.
-  uvec4 qr = ex_div_step(uvec4(0u, 0u, rem), mb, 13);
-  qr = ex_div_step(qr, mb, 13);
-  qr = ex_div_step(qr, mb, 14);
-  qr = ex_div_step(qr, mb, 14);
+  uvec4 qr = ex_div_step(uvec4(0u, 0u, rem), mb, 18);
+  qr = ex_div_step(qr, mb, 18);
+  qr = ex_div_step(qr, mb, 18);
   uvec2 q = ex_shl64(qr.xy, 8);
   rem = qr.zw;
   if ((rem.x | rem.y) != 0u) q.x |= 1u;
