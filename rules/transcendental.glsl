@@ -265,9 +265,9 @@ $DF df_pow($DF x, $DF y) {
 // @min-es 300
 $DF df_trig_reduce($DF a, out int q) {
   $DF t = df_mul(a, $DF($F(0.636619747), $F(2.5682553e-08)));
-  $PRECISE $F k1 = $G(floor(t.hi + 0.5));
+  $PRECISE $F k1 = $G(roundEven(t.hi));
   $PRECISE $F f = $G(t.hi - k1);
-  $PRECISE $F k2 = $G(floor(f + t.lo + 0.5));
+  $PRECISE $F k2 = $G(roundEven(f + t.lo));
   $PRECISE $F n1 = $SAFE(-k1);
   $PRECISE $F n2 = $SAFE(-k2);
   $DF p11 = df_two_prod(n1, 1.57079637);
