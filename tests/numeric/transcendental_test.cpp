@@ -109,16 +109,26 @@ std::vector<Function> functions() {
                [](double, double, double r) { return rel(37, r); },
                {{"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -125, 127.9, false); }},
                 {"near-1", [](auto& g, double& x, double&) { x = 1 + log_uniform(g, -45, -1); }}}});
+  // pow inputs with |y log x| uniform in [lo, hi] (negative side capped at -70: normal results).
+  auto pow_bin = [](double lo, double hi) {
+    return [lo, hi](std::mt19937_64& g, double& x, double& y) {
+      x = log_uniform(g, -60, 60, false);
+      const bool negative = g() & 1;
+      const double z = negative ? -uniform(g, lo, std::min(hi, 70.0)) : uniform(g, lo, hi);
+      y = z / std::log(x);
+    };
+  };
   f.push_back({"pow", "pow(x, y)", nullptr, mpfr_pow, nullptr, ::pow,
                [](double x, double y, double r) { return rel(40 + 31 * std::fabs(y * std::log(x)), r); },
                {{"|y log x| < 1/2", [](auto& g, double& x, double& y) {
                    x = log_uniform(g, -20, 20, false);
                    y = uniform(g, -0.5, 0.5) / std::max(std::fabs(std::log(x)), 1e-300);
                  }},
-                {"|y log x| < 70", [](auto& g, double& x, double& y) {  // results in the normal range
-                   x = log_uniform(g, -60, 60, false);
-                   y = uniform(g, -70, 70) / std::max(std::fabs(std::log(x)), 1e-300);
-                 }}},
+                // |y log x| by bins (results in the normal range): the bits fall as it grows.
+                {"|y log x| 1/2-4", pow_bin(0.5, 4)},
+                {"|y log x| 4-16", pow_bin(4, 16)},
+                {"|y log x| 16-64", pow_bin(16, 64)},
+                {"|y log x| 64-88", pow_bin(64, 88)}},
                [](double x, double y, double) { return std::fabs(y * std::log(x)) <= 0.5; }});
   auto trig_bound = [](double c) {
     return [c](double x, double, double r) { return rel(c, r) + std::fabs(x) * 0x1p-96; };
