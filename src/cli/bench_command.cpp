@@ -224,7 +224,7 @@ Command add_bench_command(CLI::App& app) {
                                        "doublet bench --transcendentals" + std::string(a.peer_luma ? " --peer-luma" : "") +
                                            " --ops " + a.ops + " --backend " + a.backend + " --target " + a.target +
                                            " --elements " + std::to_string(a.elements) + " --steps " +
-                                           std::to_string(a.steps ? a.steps : 64) + " --warmup " +
+                                           std::to_string(a.steps ? a.steps : 256) + " --warmup " +
                                            std::to_string(a.warmup) + " --reps " + std::to_string(a.reps));
             if (a.handwritten)
               return run_bench_command(*cmd, a,
