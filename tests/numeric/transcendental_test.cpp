@@ -5,8 +5,9 @@
 // (log-uniform magnitudes) plus grids at its special points (multiples of pi/2, 1 for log, 0,
 // the overflow thresholds). Checks: every result within its documented bound
 // (docs/transcendentals.md), >= 44 correct bits in the normal range. Sabotages, each of which
-// must break the bounds: no optimizer guard, doubles demoted to float (drop lo), and each
-// argument reduction skipped by editing the lowered text.
+// must break the bounds: no optimizer guard, doubles demoted to float (drop lo), each argument
+// reduction skipped by editing the lowered text, and the old floor(v + 0.5) trigonometric
+// reduction put back (it breaks without `precise`: the Uniform guard's former gap).
 // DOUBLET_TRANSCENDENTAL_SAMPLES=N sets the random samples per function (default 8192).
 #include <gtest/gtest.h>
 #include <mpfr.h>
