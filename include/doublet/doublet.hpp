@@ -119,6 +119,9 @@ struct BlockMember {
   int hi_offset = -1;        // doubles: byte offset of hi (float/vecN/matCxR) inside one element
   int lo_offset = -1;        // doubles: byte offset of lo inside one element
   int matrix_stride = 0;     // matrices: bytes between columns (of hi and of lo)
+  // Mode exact: "binary64-words" when the member holds the doubles' IEEE binary64 patterns at
+  // the same offsets, size and strides as the original block (hi_offset/lo_offset are then -1).
+  std::string encoding;
 };
 
 // One original interface variable and what it became in the output.
@@ -130,6 +133,12 @@ struct InterfaceVariable {
   std::string lowered_type;  // type of each emitted variable, e.g. "vec3"
   std::vector<std::string> lowered_names;  // {"X_hi","X_lo"} when split, else {"X"}
   std::vector<int> locations;              // explicit locations of lowered_names, if any
+  // Mode exact: "binary64-words" — each double is the two 32-bit words of its IEEE binary64
+  // pattern, low word first (packDouble2x32's order): the lowered variables' words, in the order of
+  // lowered_names, are the little-endian bytes of the original value. lowered_types then gives
+  // each lowered variable's type (dvec3 p -> p_xy: uvec4, p_z: uvec2). Empty otherwise.
+  std::string encoding;
+  std::vector<std::string> lowered_types;
   // A member of an in/out block flattened into a plain variable (targets without I/O blocks:
   // es100, es300, es310): the block's name; `name` is then BLOCK_MEMBER.
   std::string block;
