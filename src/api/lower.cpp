@@ -257,6 +257,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   if (options.optimize && !exact && !passes::optimize_df(module, ctx)) return result;
   next_phase("interfaces");
   if (!passes::move_global_initialisers(module, ctx)) return result;
+  if (exact && !passes::exact_block_words(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
   if (!passes::rename_functions_named_like_builtins(module, ctx)) return result;
   if (!passes::select_structs(module, ctx)) return result;
@@ -309,6 +310,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
       }
     }
   }
+  print_options.after_structs = ctx.struct_helpers;
   emit::PrintResult printed = emit::print(module, print_options, options.file_name);
   diags.insert(diags.end(), printed.diagnostics.begin(), printed.diagnostics.end());
   if (std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }))

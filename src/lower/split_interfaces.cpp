@@ -267,7 +267,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         splits.push_back(s);
       }
     }
-    if (interface && v->type.base == ir::Base::Block && holds_doubles(v->type)) {
+    if (interface && v->type.base == ir::Base::Block && (holds_doubles(v->type) || ctx.exact_block_members.count(v.get()))) {
       InterfaceVariable entry;
       entry.name = v->name.rfind("anon@", 0) == 0 ? v->type.name : v->name;
       entry.storage = storage_name(v->storage, module.stage, es100);
@@ -277,7 +277,12 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       entry.lowered_names = {entry.name};
       if (v->storage == ir::Storage::Uniform || v->storage == ir::Storage::Buffer) {  // in/out blocks have no layout
         entry.layout = v->layout.packing;
-        entry.members = block_layout(v->type, v->layout.packing);
+        if (auto words = ctx.exact_block_members.find(v.get()); words != ctx.exact_block_members.end()) {
+          entry.members = words->second;  // mode exact: the original offsets, words in place of doubles
+          entry.encoding = exact_io::kEncoding;
+        } else {
+          entry.members = block_layout(v->type, v->layout.packing);
+        }
       }
       manifest.variables.push_back(entry);
     }
