@@ -9,8 +9,9 @@
 // fill the difference, so every member keeps its original offset and every struct its size (the
 // pass checks both). In/out blocks (desktop targets) get the same word types, flat, without pads.
 // Reads of a double member load its words into the df_* value the shader computes with
-// (ex_load_*), writes store them (ex_store_*, returning the value); a member passed to an
-// out/inout parameter goes through a temporary loaded before and stored after the statement.
+// (ex_load_*), writes assign its words (ex_words_*; a split dvec3/dvec4 through ex_store_*'s two
+// out parameters); a member passed to an out/inout parameter goes through a temporary loaded
+// before and stored after the statement.
 // Runs after lower_doubles; the df_* values inside the shader are unchanged.
 #include <algorithm>
 #include <map>
@@ -329,6 +330,9 @@ class BlockWords {
   };
 
   Place place_of(const FieldPlan& fp, const ExprPtr& base, const ir::VarPtr& anonymous_member, ir::Loc loc) {
+    if (fp.kind == FieldPlan::Split && base && ir::has_side_effects(base))  // both parts name the base
+      ctx_.error(loc, "a dvec3/dvec4 block member reached through an expression with side effects (a call, ++, an "
+                      "assignment) cannot be lowered by --mode exact: use a temporary index");
     Place p;
     p.type = fp.original;
     p.doubles = fp.kind != FieldPlan::Same;
@@ -426,78 +430,85 @@ class BlockWords {
   }
 
   // ---- load and store helpers ---------------------------------------------------------------
+  // ex_load_T(words) -> value; ex_words_T(value) -> words (a plain assignment stores them: Mesa's
+  // GLES compiler refuses a struct of a writeonly buffer as an out argument); ex_store_T(out
+  // NAME_xy, out NAME_z, value) -> value for a split dvec3/dvec4, whose two members one
+  // assignment cannot write.
+  enum class Access { Load, Words, StoreSplit };
+
   void helper(const std::string& name, const std::string& text) {
     if (helpers_.emplace(name, text).second) helper_order_.push_back(name);
   }
 
   static std::string df_suffix(const ir::Type& t) { return ir::type_name(t).substr(3); }  // "double", "dvec3"
 
-  // ex_load_T / ex_store_T for a df width or a twin struct; returns the helper's name.
-  std::string accessor(const Place& p, bool store, ir::Loc loc) {
-    if (is_df(p.type)) {
-      const int w = df_width(p.type);
-      const std::string df = ir::type_name(p.type), name = std::string(store ? "ex_store_" : "ex_load_") + df_suffix(p.type);
-      const std::string lo = w == 1 ? "v.lo" : "v.lo.", hi = w == 1 ? "v.hi" : "v.hi.";
-      auto pack = [&](int first, int count) {  // uvecN(lo0, hi0, lo1, hi1) of components first..
-        std::string s = count == 1 ? "uvec2(" : "uvec4(";
-        for (int c = first; c < first + count; ++c)
-          s += std::string(c > first ? ", " : "") + lo + (w == 1 ? "" : std::string(1, "xyzw"[c])) + ", " + hi +
-               (w == 1 ? "" : std::string(1, "xyzw"[c]));
-        return s + ")";
-      };
-      std::string text;
-      if (w <= 2) {
-        const std::string word = w == 1 ? "uvec2" : "uvec4";
-        text = store ? df + " " + name + "(out " + word + " w, " + df + " v) {\n  w = " + pack(0, w) + ";\n  return v;\n}\n"
-                     : df + " " + name + "(" + word + " w) {\n  return " + df +
-                           (w == 1 ? "(w.y, w.x);\n}\n" : "(w.yw, w.xz);\n}\n");
-        helper(name, text);
-        return name;
-      }
-      const std::string rest = w == 3 ? "uvec2" : "uvec4", rest_name = w == 3 ? "z" : "zw";
-      const std::string words = "ex_dvec" + std::to_string(w) + "_words";
-      if (store) {
-        text = df + " " + name + "(out uvec4 xy, out " + rest + " " + rest_name + ", " + df + " v) {\n  xy = " +
-               pack(0, 2) + ";\n  " + rest_name + " = " + pack(2, w - 2) + ";\n  return v;\n}\n" + df + " " + name +
-               "(out " + words + " w, " + df + " v) {\n  return " + name + "(w.xy, w." + rest_name + ", v);\n}\n";
-      } else {
-        const std::string high = w == 3 ? "uvec3(xy.yw, z.y)" : "uvec4(xy.yw, zw.yw)";
-        const std::string low = w == 3 ? "uvec3(xy.xz, z.x)" : "uvec4(xy.xz, zw.xz)";
-        text = df + " " + name + "(uvec4 xy, " + rest + " " + rest_name + ") {\n  return " + df + "(" + high + ", " + low +
-               ");\n}\n" + df + " " + name + "(" + words + " w) {\n  return " + name + "(w.xy, w." + rest_name + ");\n}\n";
-      }
-      word_struct(w);
-      helper(name, text);
-      return name;
+  // uvec2(v.lo, v.hi) or uvec4(v.lo.x, v.hi.x, v.lo.y, v.hi.y) for components first.. of `v`.
+  static std::string pack_words(int width, int first, int count) {
+    std::string s = count == 1 ? "uvec2(" : "uvec4(";
+    for (int c = first; c < first + count; ++c) {
+      const std::string at = width == 1 ? "" : std::string(".") + "xyzw"[c];
+      s += std::string(c > first ? ", " : "") + "v.lo" + at + ", v.hi" + at;
     }
-    if (!p.fields) {
-      ctx_.error(loc, std::string(store ? "writing" : "reading") + " a whole array of doubles in a block is not "
-                      "supported by --mode exact: access its elements");
-      return "";
-    }
-    return struct_accessor(p.parts[0]->type, store, loc);
+    return s + ")";
   }
 
-  // S ex_load_S(S_words w) / S ex_store_S(out S_words w, S v), member by member.
-  std::string struct_accessor(const ir::Type& twin_type, bool store, ir::Loc loc) {
+  // The helper for a df width; returns its name.
+  std::string df_accessor(const ir::Type& type, Access access) {
+    const int w = df_width(type);
+    const std::string df = ir::type_name(type), suffix = df_suffix(type);
+    const std::string words = w == 1 ? "uvec2" : w == 2 ? "uvec4" : "ex_dvec" + std::to_string(w) + "_words";
+    const std::string rest = w == 3 ? "uvec2" : "uvec4", rest_name = w == 3 ? "z" : "zw";
+    if (w > 2) word_struct(w);
+    std::string name, text;
+    switch (access) {
+      case Access::Load:
+        name = "ex_load_" + suffix;
+        if (w <= 2) {
+          text = df + " " + name + "(" + words + " w) {\n  return " + df + (w == 1 ? "(w.y, w.x);\n}\n" : "(w.yw, w.xz);\n}\n");
+        } else {
+          const std::string high = w == 3 ? "uvec3(xy.yw, z.y)" : "uvec4(xy.yw, zw.yw)";
+          const std::string low = w == 3 ? "uvec3(xy.xz, z.x)" : "uvec4(xy.xz, zw.xz)";
+          text = df + " " + name + "(uvec4 xy, " + rest + " " + rest_name + ") {\n  return " + df + "(" + high + ", " + low +
+                 ");\n}\n" + df + " " + name + "(" + words + " w) {\n  return " + name + "(w.xy, w." + rest_name + ");\n}\n";
+        }
+        break;
+      case Access::Words:
+        name = "ex_words_" + suffix;
+        text = words + " " + name + "(" + df + " v) {\n  return " +
+               (w <= 2 ? pack_words(w, 0, w) : words + "(" + pack_words(w, 0, 2) + ", " + pack_words(w, 2, w - 2) + ")") +
+               ";\n}\n";
+        break;
+      case Access::StoreSplit:
+        name = "ex_store_" + suffix;
+        text = df + " " + name + "(out uvec4 xy, out " + rest + " " + rest_name + ", " + df + " v) {\n  xy = " +
+               pack_words(w, 0, 2) + ";\n  " + rest_name + " = " + pack_words(w, 2, w - 2) + ";\n  return v;\n}\n";
+        break;
+    }
+    helper(name, text);
+    return name;
+  }
+
+  std::string accessor(const Place& p, Access access, ir::Loc loc) {
+    if (is_df(p.type)) return df_accessor(p.type, access);
+    if (!p.fields) {
+      ctx_.error(loc, std::string(access == Access::Load ? "reading" : "writing") + " a whole array of doubles in a "
+                      "block is not supported by --mode exact: access its elements");
+      return "";
+    }
+    return struct_accessor(p.parts[0]->type, access == Access::Load, loc);
+  }
+
+  // S ex_load_S_words(S_words w) / S_words ex_words_S_words(S v), member by member.
+  std::string struct_accessor(const ir::Type& twin_type, bool load, ir::Loc loc) {
     const ir::Type& s = original_of_twin_.at(twin_type.name);
     const TypePlan& plan = *plan_of_type_.at(twin_type.name);
-    const std::string name = std::string(store ? "ex_store_" : "ex_load_") + twin_type.name;
+    const std::string name = std::string(load ? "ex_load_" : "ex_words_") + twin_type.name;
     if (helpers_.count(name)) return name;
     std::vector<std::string> loads, stores;
     for (const ir::Field& f : *s.fields) {
       const FieldPlan& fp = plan.fields.at(f.name);
       ir::Type element = f.type;
       element.array_dims.clear();
-      Place p;
-      p.type = element;
-      p.doubles = fp.kind != FieldPlan::Same;
-      if (fp.kind == FieldPlan::Twin) {
-        ir::Type we = fp.word;
-        we.array_dims.clear();
-        p.fields = plan_of_type_.at(we.name);
-        p.parts = {Expr::make(Kind::Sym, we)};
-      }
       if (f.type.array_dims.size() > 1 || (f.type.is_array() && f.type.array_dims[0] <= 0)) {
         ctx_.error(loc, "member '" + f.name + "' of struct " + s.name + ": multi-dimensional or unsized arrays of "
                         "doubles in a block are not supported by --mode exact");
@@ -507,20 +518,29 @@ class BlockWords {
       std::vector<std::string> element_loads;
       for (int i = 0; i < count; ++i) {
         const std::string at = f.type.is_array() ? "[" + std::to_string(i) + "]" : "";
+        const std::string word = "w." + f.name + at, value = "v." + f.name + at;
         if (fp.kind == FieldPlan::Same) {
-          element_loads.push_back("w." + f.name + at);
-          stores.push_back("w." + f.name + at + " = v." + f.name + at + ";");
-          continue;
+          element_loads.push_back(word);
+          stores.push_back(word + " = " + value + ";");
+        } else if (fp.kind == FieldPlan::Split) {
+          const std::string parts = "w." + fp.names[0] + ", w." + fp.names[1];
+          element_loads.push_back(df_accessor(element, Access::Load) + "(" + parts + ")");
+          stores.push_back(df_accessor(element, Access::StoreSplit) + "(" + parts + ", " + value + ");");
+        } else if (fp.kind == FieldPlan::Words) {
+          element_loads.push_back(df_accessor(element, Access::Load) + "(" + word + ")");
+          stores.push_back(word + " = " + df_accessor(element, Access::Words) + "(" + value + ");");
+        } else {  // a nested twin
+          ir::Type we = fp.word;
+          we.array_dims.clear();
+          element_loads.push_back(struct_accessor(we, true, loc) + "(" + word + ")");
+          stores.push_back(word + " = " + struct_accessor(we, false, loc) + "(" + value + ");");
         }
-        const std::string words = fp.kind == FieldPlan::Split ? "w." + fp.names[0] + ", w." + fp.names[1] : "w." + f.name + at;
-        element_loads.push_back(accessor(p, false, loc) + "(" + words + ")");
-        stores.push_back(accessor(p, true, loc) + "(" + words + ", v." + f.name + at + ");");
       }
       if (!f.type.is_array()) {
         loads.push_back(element_loads[0]);
         continue;
       }
-      std::string array = spelled_lowered(element) + "[" + std::to_string(count) + "](";
+      std::string array = ir::type_name(element) + "[" + std::to_string(count) + "](";
       for (size_t i = 0; i < element_loads.size(); ++i) array += (i ? ", " : "") + element_loads[i];
       loads.push_back(array + ")");
     }
@@ -528,10 +548,10 @@ class BlockWords {
       if (f.name.rfind("ex_pad", 0) == 0)
         stores.push_back("w." + f.name + " = " + (f.type.vec == 1 ? "0u" : ir::type_name(f.type) + "(0u)") + ";");
     std::string text;
-    if (store) {
-      text = s.name + " " + name + "(out " + twin_type.name + " w, " + s.name + " v) {\n";
+    if (!load) {
+      text = twin_type.name + " " + name + "(" + s.name + " v) {\n  " + twin_type.name + " w;\n";
       for (const auto& line : stores) text += "  " + line + "\n";
-      text += "  return v;\n}\n";
+      text += "  return w;\n}\n";
     } else {
       text = s.name + " " + name + "(" + twin_type.name + " w) {\n  return " + s.name + "(";
       for (size_t i = 0; i < loads.size(); ++i) text += (i ? ", " : "") + loads[i];
@@ -541,18 +561,42 @@ class BlockWords {
     return name;
   }
 
-  static std::string spelled_lowered(const ir::Type& t) { return ir::type_name(t); }
-
   ExprPtr load(const Place& p, ir::Loc loc) {
-    const std::string name = accessor(p, false, loc);
-    return ir::make_node(Kind::Call, name, p.type, p.parts, loc);
+    return ir::make_node(Kind::Call, accessor(p, Access::Load, loc), p.type, p.parts, loc);
   }
 
-  ExprPtr store(const Place& p, const ExprPtr& value, ir::Loc loc) {
-    const std::string name = accessor(p, true, loc);
-    std::vector<ExprPtr> args = p.parts;
-    args.push_back(value);
-    return ir::make_node(Kind::Call, name, p.type, std::move(args), loc);
+  static ExprPtr assignment(const ExprPtr& lhs, const ExprPtr& rhs, ir::Loc loc) {
+    auto e = Expr::make(Kind::Binary, lhs->type, loc);
+    e->op = "=";
+    e->args = {lhs, rhs};
+    return e;
+  }
+
+  // The place's words assigned `value`; an expression of the value's type when `used`.
+  ExprPtr store(const Place& p, const ExprPtr& value, ir::Loc loc, bool used = true) {
+    if (p.parts.size() == 2) {
+      // (t = value, X_xy = ex_words_dvec3_xy(t), X_z = ex_words_dvec3_z(t), t): one evaluation of
+      // the value, two plain assignments (an out argument would be read first by Mesa's GLES).
+      auto t = std::make_shared<ir::Var>();
+      t->name = "ex_member" + std::to_string(temporaries_++);
+      t->type = t->declared_type = p.type;
+      pending_.push_back({t, p, loc, true});
+      auto comma = Expr::make(Kind::Comma, p.type, loc);
+      comma->args.push_back(assignment(sym(t), value, loc));
+      const int w = df_width(p.type);
+      for (size_t k = 0; k < 2; ++k) {
+        const std::string name = "ex_words_" + df_suffix(p.type) + (k == 0 ? "_xy" : w == 3 ? "_z" : "_zw");
+        helper(name, ir::type_name(p.parts[k]->type) + " " + name + "(" + ir::type_name(p.type) + " v) {\n  return " +
+                         pack_words(w, 2 * static_cast<int>(k), k == 0 ? 2 : w - 2) + ";\n}\n");
+        comma->args.push_back(assignment(p.parts[k], ir::make_node(Kind::Call, name, p.parts[k]->type, {sym(t)}, loc), loc));
+      }
+      if (used) comma->args.push_back(sym(t));
+      return comma;
+    }
+    const ir::Type word = p.parts[0]->type;
+    auto assign = assignment(p.parts[0], ir::make_node(Kind::Call, accessor(p, Access::Words, loc), word, {value}, loc), loc);
+    if (!used) return assign;
+    return ir::make_node(Kind::Call, accessor(p, Access::Load, loc), p.type, {assign}, loc);
   }
 
   // ---- expressions -----------------------------------------------------------------------
@@ -584,12 +628,13 @@ class BlockWords {
     return out;
   }
 
-  ExprPtr rw(const ExprPtr& e) {
+  // `used`: the expression's value is read (false for an expression statement or a loop step).
+  ExprPtr rw(const ExprPtr& e, bool used = true) {
     if (!e) return e;
     if (std::optional<Place> p = place(e)) return p->doubles ? load(*p, e->loc) : p->parts[0];
     if (e->kind == Kind::Binary && e->op == "=") {
       if (std::optional<Place> p = place(e->args[0])) {
-        if (p->doubles) return store(*p, rw(e->args[1]), e->loc);
+        if (p->doubles) return store(*p, rw(e->args[1]), e->loc, used);
         e->args[0] = p->parts[0];
         e->args[1] = rw(e->args[1]);
         return e;
@@ -615,7 +660,7 @@ class BlockWords {
           t->name = "ex_member" + std::to_string(temporaries_++);
           t->type = t->declared_type = p->type;
           t->storage = ir::Storage::Local;
-          pending_.push_back({t, *p, e->args[i]->loc});
+          pending_.push_back({t, *p, e->args[i]->loc, false});
           auto sym = Expr::make(Kind::Sym, p->type, e->args[i]->loc);
           sym->var = t;
           e->args[i] = sym;
@@ -632,6 +677,7 @@ class BlockWords {
     ir::VarPtr var;
     Place place;
     ir::Loc loc;
+    bool declare_only = false;  // a split store's value: declared before the statement, nothing after
   };
 
   void no_temporaries_here(ir::Loc loc) {
@@ -653,23 +699,31 @@ class BlockWords {
     const bool own = s->kind == ir::Stmt::Kind::Expr || s->kind == ir::Stmt::Kind::Decl || s->kind == ir::Stmt::Kind::Return;
     if (s->kind == ir::Stmt::Kind::Block) return statement_list(s);
     if (s->expr) {
-      s->expr = rw(s->expr);
+      s->expr = rw(s->expr, s->kind != ir::Stmt::Kind::Expr);
       if (!own) no_temporaries_here(s->expr->loc);
     }
-    for (const Temporary& t : pending_) {
+    const std::vector<Temporary> temporaries = std::move(pending_);
+    pending_.clear();
+    auto declare = [&](const Temporary& t) {
       auto decl = ir::Stmt::make(ir::Stmt::Kind::Decl, t.loc);
       decl->var = t.var;
-      decl->expr = load(t.place, t.loc);
       before.push_back(decl);
+      return decl;
+    };
+    for (const Temporary& t : temporaries) {
+      auto decl = declare(t);
+      if (t.declare_only) continue;
+      decl->expr = load(t.place, t.loc);
       Place again = t.place;  // the same place, as its own nodes
       for (auto& part : again.parts) part = ir::clone(part);
       auto write = ir::Stmt::make(ir::Stmt::Kind::Expr, t.loc);
-      write->expr = store(again, sym(t.var), t.loc);
+      write->expr = store(again, sym(t.var), t.loc, false);
       after.push_back(write);
     }
+    for (const Temporary& t : pending_) declare(t);  // the stores' own (split dvec3/dvec4 values)
     pending_.clear();
     if (s->step) {
-      s->step = rw(s->step);
+      s->step = rw(s->step, false);
       no_temporaries_here(s->step->loc);
     }
     for (size_t i = 0; i < s->body.size(); ++i) {

@@ -1,5 +1,5 @@
 // Mode exact's interface (docs/modes.md, "exact": interface): a host's raw doubles are the data.
-//  - Storage blocks (std430 and std140, anonymous and named, structs, arrays of dvec3/dvec4): the
+//  - Storage blocks (std430 and std140, anonymous and named, writeonly, structs, arrays of dvec3/dvec4): the
 //    same input bytes given to the original shader on native fp64 (lavapipe) and to the lowered
 //    one (lavapipe, Mesa GLES) must leave the same output bytes; the manifest's member offsets must
 //    be glslang's for the original. Sabotages: the words swapped in the load, a padding member
@@ -32,9 +32,11 @@ struct P { dvec3 pos; float w; double m; dvec4 q[2]; };
 layout(std430, binding = 0) buffer In { float f; dvec3 v3; double d[]; } inb;
 layout(std140, binding = 1) buffer Consts { float s; dvec4 v4; double k; dvec2 v2[2]; dvec3 v3s[2]; };
 layout(std430, binding = 2) buffer Ps { int n; P p[]; };
+layout(std430, binding = 3) writeonly buffer Outs { float of; dvec3 o3; double od[]; };
 void bump(inout double x) { x += 1.0; }
 void main() {
   uint i = gl_GlobalInvocationID.x;
+  od[i] = inb.d[i] - k;
   inb.d[i] = inb.d[i] * k + v4.y;
   bump(inb.d[i]);
   P q = p[i];
@@ -45,6 +47,7 @@ void main() {
   if (i == 0u) {
     inb.v3.y += v2[0].y;
     v4.w = k * s;
+    o3 = q.pos;
   }
 }
 )";
@@ -133,7 +136,7 @@ Lowered lower_blocks() {
   l.result = lower(kBlocks, o);
   if (!l.result.ok) return l;
   std::mt19937_64 rng(2026);
-  for (const char* name : {"inb", "Consts", "Ps"}) {
+  for (const char* name : {"inb", "Consts", "Ps", "Outs"}) {
     const InterfaceVariable* block = find_block(l.result.manifest, name);
     if (!block) return l;
     l.inputs.push_back(fill(*block, kInvocations, rng));
@@ -173,9 +176,9 @@ TEST(ExactInterface, BlocksReadAndWriteTheOriginalBytes) {
   std::string diagnostics;
   for (const Diagnostic& d : l.result.diagnostics) diagnostics += format_diagnostic(d) + "\n";
   ASSERT_TRUE(l.result.ok) << diagnostics;
-  ASSERT_EQ(l.inputs.size(), 3u);
+  ASSERT_EQ(l.inputs.size(), 4u);
   const auto native = run(Backend::Vulkan, kBlocks, l.inputs);
-  ASSERT_EQ(native.size(), 3u);
+  ASSERT_EQ(native.size(), 4u);
   EXPECT_NE(differing_bytes(native, l.inputs), 0u) << "the shader wrote nothing";
   for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
     const size_t differing = differing_bytes(run(backend, l.result.output, l.inputs), native);

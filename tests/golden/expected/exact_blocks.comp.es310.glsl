@@ -396,9 +396,8 @@ df_dvec4 ex_load_dvec4(ex_dvec4_words w) {
   return ex_load_dvec4(w.xy, w.zw);
 }
 
-df_double ex_store_double(out uvec2 w, df_double v) {
-  w = uvec2(v.lo, v.hi);
-  return v;
+uvec2 ex_words_double(df_double v) {
+  return uvec2(v.lo, v.hi);
 }
 
 df_dvec3 ex_load_dvec3(uvec4 xy, uvec2 z) {
@@ -413,33 +412,34 @@ df_dvec3 ex_store_dvec3(out uvec4 xy, out uvec2 z, df_dvec3 v) {
   z = uvec2(v.lo.z, v.hi.z);
   return v;
 }
-df_dvec3 ex_store_dvec3(out ex_dvec3_words w, df_dvec3 v) {
-  return ex_store_dvec3(w.xy, w.z, v);
-}
 
-df_dvec4 ex_store_dvec4(out uvec4 xy, out uvec4 zw, df_dvec4 v) {
-  xy = uvec4(v.lo.x, v.hi.x, v.lo.y, v.hi.y);
-  zw = uvec4(v.lo.z, v.hi.z, v.lo.w, v.hi.w);
-  return v;
-}
-df_dvec4 ex_store_dvec4(out ex_dvec4_words w, df_dvec4 v) {
-  return ex_store_dvec4(w.xy, w.zw, v);
+ex_dvec4_words ex_words_dvec4(df_dvec4 v) {
+  return ex_dvec4_words(uvec4(v.lo.x, v.hi.x, v.lo.y, v.hi.y), uvec4(v.lo.z, v.hi.z, v.lo.w, v.hi.w));
 }
 
 P ex_load_P_words(P_words w) {
   return P(ex_load_dvec3(w.pos_xy, w.pos_z), w.w, ex_load_double(w.m), df_dvec4[2](ex_load_dvec4(w.q[0]), ex_load_dvec4(w.q[1])));
 }
 
-P ex_store_P_words(out P_words w, P v) {
+P_words ex_words_P_words(P v) {
+  P_words w;
   ex_store_dvec3(w.pos_xy, w.pos_z, v.pos);
   w.w = v.w;
-  ex_store_double(w.m, v.m);
-  ex_store_dvec4(w.q[0], v.q[0]);
-  ex_store_dvec4(w.q[1], v.q[1]);
+  w.m = ex_words_double(v.m);
+  w.q[0] = ex_words_dvec4(v.q[0]);
+  w.q[1] = ex_words_dvec4(v.q[1]);
   w.ex_pad11 = 0u;
   w.ex_pad12 = uvec2(0u);
   w.ex_pad13 = uvec4(0u);
-  return v;
+  return w;
+}
+
+uvec4 ex_words_dvec4_xy(df_dvec4 v) {
+  return uvec4(v.lo.x, v.hi.x, v.lo.y, v.hi.y);
+}
+
+uvec4 ex_words_dvec4_zw(df_dvec4 v) {
+  return uvec4(v.lo.z, v.hi.z, v.lo.w, v.hi.w);
 }
 
 
@@ -483,20 +483,21 @@ void bump(inout df_double x)
 void main()
 {
   uint i = gl_GlobalInvocationID.x;
-  ex_store_double(inb.d[i], ex_add(ex_mul(ex_load_double(inb.d[i]), ex_load_double(k)), df_double(ex_load_dvec4(v4_xy, v4_zw).hi.y, ex_load_dvec4(v4_xy, v4_zw).lo.y)));
+  inb.d[i] = ex_words_double(ex_add(ex_mul(ex_load_double(inb.d[i]), ex_load_double(k)), df_double(ex_load_dvec4(v4_xy, v4_zw).hi.y, ex_load_dvec4(v4_xy, v4_zw).lo.y)));
   df_double ex_member0 = ex_load_double(inb.d[i]);
   bump(ex_member0);
-  ex_store_double(inb.d[i], ex_member0);
+  inb.d[i] = ex_words_double(ex_member0);
   P q = ex_load_P_words(p[i]);
   q.pos = ex_add(q.pos, ex_add(df_dvec3(q.q[1].hi.xyz, q.q[1].lo.xyz), ex_load_dvec3(v3s[i & 1u])));
-  ex_store_P_words(p[i], q);
+  p[i] = ex_words_P_words(q);
   df_dvec4 ex_member1 = ex_load_dvec4(p[i].q[0]);
   df_assign_component_dvec4(ex_member1, 3, ex_add(ex_from_int(n), q.m));
-  ex_store_dvec4(p[i].q[0], ex_member1);
+  p[i].q[0] = ex_words_dvec4(ex_member1);
   if (i == 0u)
   {
     df_dvec4 ex_member2 = ex_load_dvec4(v4_xy, v4_zw);
+    df_dvec4 ex_member3;
     df_assign_component_dvec4(ex_member2, 3, ex_mul(ex_load_double(k), ex_from_float(s)));
-    ex_store_dvec4(v4_xy, v4_zw, ex_member2);
+    ex_member3 = ex_member2, v4_xy = ex_words_dvec4_xy(ex_member3), v4_zw = ex_words_dvec4_zw(ex_member3);
   }
 }
