@@ -39,10 +39,13 @@ enum class GuardKind { Auto, Precise, Uniform, None /* unprotected: tests only *
 //            the decoded floats (rules/int.glsl): no optimizer guard needed; ES 3.00+, whole
 //            shader only;
 //  Native:   doubles kept as they are (desktop targets with fp64; the reference).
-//  Exact:    IEEE binary64 bit patterns in two uint words (high, low), every operation in integer
+//  Exact:    IEEE binary64 bit patterns in two uint words (low, high), every operation in integer
 //            arithmetic, bit-identical to native fp64 (rules/exact.glsl; ES 3.00+, desktop; whole
 //            shader only).
-enum class Mode { Fp32, Rte, Df64Fast, Df64, Native, Df64Int, Exact };
+//  RteExact: doubles stored as in Exact; arithmetic as in Rte (float), except the difference of two
+//            doubles: the exact real difference rounded once to float (rules/rte_exact.glsl; ES
+//            3.00+, desktop; whole shader only).
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Native, Df64Int, Exact, RteExact };
 
 enum class Severity { Error, Warning, Note };
 
@@ -190,7 +193,7 @@ Result lower(std::string_view source, const Options& options);
 std::string_view to_string(Target t);           // "es300"
 std::string_view to_string(Stage s);            // "vert"
 std::optional<Target> parse_target(std::string_view name);
-std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native", "df64-int"
+std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native", "df64-int", "exact", "rte-exact"
 std::optional<Mode> parse_mode(std::string_view name);
 std::optional<Stage> parse_stage(std::string_view name);  // "vert"|"frag"|"comp"
 // The lints Options::disabled_lints can name: "float-literal", "wasted-double", ...

@@ -41,6 +41,7 @@ constexpr std::pair<Mode, const char*> kModes[] = {
     {Mode::Fp32, "fp32"}, {Mode::Rte, "rte"}, {Mode::Df64Fast, "df64-fast"}, {Mode::Df64, "df64"}, {Mode::Native, "native"},
     {Mode::Df64Int, "df64-int"},
     {Mode::Exact, "exact"},
+    {Mode::RteExact, "rte-exact"},
 };
 }  // namespace
 

@@ -804,7 +804,7 @@ class BlockWords {
 }  // namespace
 
 bool exact_block_words(ir::Module& module, Context& context) {
-  if (context.options.mode != Mode::Exact) return true;
+  if (!binary64_words(context.options)) return true;
   BlockWords(module, context).run();
   return !context.failed;
 }

@@ -50,6 +50,10 @@ struct Context {
   void add_helper(const std::string& name, const std::string& definition);
 };
 
+// Modes exact and rte-exact store every double as its binary64 words (the df_* structs hold
+// uint words and the runtime is rules/exact.glsl).
+inline bool binary64_words(const Options& o) { return o.mode == Mode::Exact || o.mode == Mode::RteExact; }
+
 // Name of the float-float struct for a vector width: df_double, df_dvec2...
 std::string df_type_name(int width);
 ir::Type df_type(int width);

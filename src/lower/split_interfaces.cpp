@@ -218,10 +218,10 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
                                                              v->declared_type.array_dims.end(),
                                                              [](int d) { return d <= 0; })) {
         ctx.error(v->loc, "unsized arrays of doubles cannot be split into hi/lo interface variables");
-      } else if (ctx.options.mode == Mode::Exact && v->declared_type.is_matrix()) {
+      } else if (binary64_words(ctx.options) && v->declared_type.is_matrix()) {
         ctx.error(v->loc, "'" + v->name + "': double matrices cannot cross the interface in --mode exact yet; pass "
                           "the columns as dvecN variables");
-      } else if (ctx.options.mode == Mode::Exact) {
+      } else if (binary64_words(ctx.options)) {
         WordSplit s = split_into_words(v, module.stage, ctx, names, entry);
         for (const auto& part : s.parts) {
           globals.push_back(part);
