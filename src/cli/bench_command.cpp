@@ -14,6 +14,7 @@
 #include "bench/compiler.hpp"
 #include "bench/handwritten.hpp"
 #include "bench/plot.hpp"
+#include "bench/transcendental_bench.hpp"
 #include "bench/kernels.hpp"
 #include "bench/user_shader.hpp"
 #include "commands.hpp"
@@ -25,7 +26,7 @@ struct BenchArgs {
   std::vector<std::string> include_dirs;
   std::string shader, ops = "all", modes = "all", backend = "both", target = "es320", json, plot;
   int elements = 16384, steps = 0, warmup = 2, reps = 7;
-  bool handwritten = false, compiler = false;
+  bool handwritten = false, compiler = false, transcendentals = false, peer_luma = false;
   int lines = 5000;
   std::string scaling;  // --compiler: comma list of further sizes
   int mandelbrot_size = 128, mandelbrot_iterations = 1000;
@@ -85,8 +86,34 @@ int run_compiler_command(const CLI::App& cmd, const BenchArgs& a, const std::str
   return ok ? kExitOk : 3;
 }
 
+int run_transcendental_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  bench::TranscendentalOptions o;
+  if (a.ops != "all") o.functions = split_commas(a.ops);
+  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
+  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
+  const std::optional<Target> target = parse_target(a.target);
+  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
+    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  o.target = *target;
+  o.elements = a.elements;
+  if (a.steps) o.steps = a.steps;
+  o.warmup = a.warmup;
+  o.repetitions = a.reps;
+  o.peer_luma = a.peer_luma;
+  bench::TranscendentalReport report;
+  report.command = command_line;
+  std::string error;
+  if (!bench::run_transcendental_bench(o, &report, &error)) return usage_error(cmd, error);
+  std::cout << bench::format_transcendental_markdown(report) << std::flush;
+  for (const bench::TranscendentalRow& r : report.rows)
+    if (!r.ok && !r.not_applicable && !(r.variant == bench::TranscendentalVariant::Luma && report.luma_version.empty()))
+      return 3;  // a driver (or the lowering) failed
+  return kExitOk;
+}
+
 int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
   if (a.compiler) return run_compiler_command(cmd, a, command_line);
+  if (a.transcendentals) return run_transcendental_command(cmd, a, command_line);
   if (a.handwritten) return run_handwritten_command(cmd, a, command_line);
   bench::BenchOptions o;
   if (a.ops == "all") {
@@ -177,6 +204,11 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_flag("--handwritten", args->handwritten,
                 "compare with a hand-written float-float library on Mesa GLES (ops add,sub,mul,div,sqrt,mulf,mandelbrot; "
                 "docs/performance.md)");
+  cmd->add_flag("--transcendentals", args->transcendentals,
+                "exp,log,sin,cos,tan (--ops): fp32 built-ins, df64 rules and the same algorithms in native fp64, "
+                "time per call and bits (docs/transcendentals.md)");
+  cmd->add_flag("--peer-luma", args->peer_luma,
+                "--transcendentals: also luma.gl's fp64 module (npm @luma.gl/shadertools, tools/peers)");
   cmd->add_option("--mandelbrot-size", args->mandelbrot_size, "--handwritten: pixels per side (default 128)");
   cmd->add_option("--mandelbrot-iterations", args->mandelbrot_iterations, "--handwritten: iteration limit (default 1000)");
   return {cmd, [cmd, args] {
@@ -187,6 +219,13 @@ Command add_bench_command(CLI::App& app) {
                                        "doublet bench --compiler --lines " + std::to_string(a.lines) + " --reps " +
                                            std::to_string(a.reps) + " --target " + a.target +
                                            (a.scaling.empty() ? "" : " --scaling " + a.scaling));
+            if (a.transcendentals)
+              return run_bench_command(*cmd, a,
+                                       "doublet bench --transcendentals" + std::string(a.peer_luma ? " --peer-luma" : "") +
+                                           " --ops " + a.ops + " --backend " + a.backend + " --target " + a.target +
+                                           " --elements " + std::to_string(a.elements) + " --steps " +
+                                           std::to_string(a.steps ? a.steps : 256) + " --warmup " +
+                                           std::to_string(a.warmup) + " --reps " + std::to_string(a.reps));
             if (a.handwritten)
               return run_bench_command(*cmd, a,
                                        "doublet bench --handwritten --ops " + a.ops + " --elements " +

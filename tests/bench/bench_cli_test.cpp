@@ -137,6 +137,27 @@ TEST(BenchCli, PlotWritesAPng) {
   std::filesystem::remove(png);
 }
 
+TEST(BenchCli, TranscendentalsPrintEveryVariantWithRatiosAndBits) {
+  int status = 0;
+  const std::string out =
+      run_capture("--transcendentals --peer-luma --ops exp,sin --elements 64 --steps 8 --warmup 0 --reps 1", &status);
+  ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+  for (const char* row : {"| exp | vulkan | fp32 | ", "| exp | vulkan | df64 | ", "| exp | vulkan | native | ",
+                          "| exp | gles | fp32 | ", "| exp | gles | df64 | ", "| sin | gles | df64 | "})
+    EXPECT_NE(out.find(row), std::string::npos) << row << "\n" << out;
+  EXPECT_EQ(out.find("| exp | gles | native |"), std::string::npos) << out;  // GLES has no fp64: no row
+  // luma.gl runs where tools/peers is installed (CI), and says why not elsewhere.
+  EXPECT_TRUE(out.find("| exp | gles | luma.gl | ") != std::string::npos || out.find("luma.gl not run: ") != std::string::npos)
+      << out;
+  EXPECT_NE(out.find("time / native | time / luma.gl | bits"), std::string::npos) << out;
+  EXPECT_NE(out.find("`doublet bench --transcendentals --peer-luma --ops exp,sin"), std::string::npos) << out;
+}
+
+TEST(BenchCli, TranscendentalsUnknownFunctionIsAUsageError) {
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench --transcendentals --ops exp,atan > /dev/null 2>&1";
+  EXPECT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 1);
+}
+
 TEST(BenchCli, UnknownOpIsAUsageError) {
   const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench --ops nope > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());
