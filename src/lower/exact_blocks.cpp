@@ -121,7 +121,9 @@ class BlockWords {
   void run() {
     for (const auto& g : module_.globals)
       if (g->type.base == ir::Base::Block && holds_doubles(g->type)) plan_block(*g);
-    if (blocks_.empty() || ctx_.failed) return;
+    struct_uniforms();
+    if (ctx_.failed) return;
+    if (blocks_.empty()) return finish();
     for (size_t i = 0; i < module_.global_inits.size(); ++i) {
       if (!module_.global_inits[i]) continue;
       module_.global_inits[i] = rw(module_.global_inits[i]);
@@ -131,6 +133,10 @@ class BlockWords {
       function_ = f.get();
       statement_list(f->body);
     }
+    finish();
+  }
+
+  void finish() {
     for (auto& [var, plan] : members_) {  // anonymous blocks' member variables take their word types
       if (plan->kind == FieldPlan::Words || plan->kind == FieldPlan::Twin) var->type = plan->word;
     }
@@ -141,6 +147,70 @@ class BlockWords {
   }
 
  private:
+  // A loose uniform of a struct type holding doubles: `uniform S_words s` (the twin: its doubles as
+  // words, low word first, like every other interface double), loaded into the private `S s_value`
+  // at the start of main.
+  void struct_uniforms() {
+    auto main = std::find_if(module_.functions.begin(), module_.functions.end(),
+                             [](const ir::FunctionPtr& f) { return f->name == "main"; });
+    std::set<std::string> names;
+    for (const auto& g : module_.globals) names.insert(g->name);
+    std::vector<ir::StmtPtr> loads;
+    for (size_t i = 0; i < module_.globals.size(); ++i) {
+      const ir::VarPtr v = module_.globals[i];
+      ir::Type element = v->type;
+      element.array_dims.clear();
+      if (v->storage != ir::Storage::Uniform || v->block || element.base != ir::Base::Struct || is_df(element) ||
+          !element.fields || !holds_doubles(element))
+        continue;
+      if (v->type.array_dims.size() > 1 || (v->type.is_array() && v->type.array_dims[0] <= 0)) {
+        ctx_.error(v->loc, "'" + v->name + "': a multi-dimensional or unsized array of structs with doubles cannot be "
+                           "a uniform in --mode exact");
+        continue;
+      }
+      ir::Type words = twin(element, false, v->loc);
+      words.array_dims = v->type.array_dims;
+      auto u = std::make_shared<ir::Var>(*v);  // the interface keeps the name
+      u->type = words;
+      v->name = ir::join_identifier(v->name, "_value");
+      if (names.count(v->name))
+        ctx_.error(v->loc, "--mode exact needs the name '" + v->name + "' for the value of uniform '" + u->name +
+                               "', which the shader already uses; rename it");
+      v->storage = ir::Storage::Global;
+      v->layout = {};
+      module_.globals.insert(module_.globals.begin() + static_cast<std::ptrdiff_t>(i), u);
+      module_.global_inits.insert(module_.global_inits.begin() + static_cast<std::ptrdiff_t>(i), nullptr);
+      ++i;
+      ctx_.exact_struct_uniforms.insert(u.get());
+      ir::Type twin_element = words;
+      twin_element.array_dims.clear();
+      const std::string load = struct_accessor(twin_element, true, v->loc);
+      const int count = v->type.is_array() ? v->type.array_dims[0] : 1;
+      for (int k = 0; k < count; ++k) {
+        ExprPtr from = sym(u), to = sym(v);
+        if (v->type.is_array()) from = element_of(from, k), to = element_of(to, k);
+        auto stmt = ir::Stmt::make(ir::Stmt::Kind::Expr, v->loc);
+        stmt->expr = assignment(to, ir::make_node(Kind::Call, load, to->type, {from}, v->loc), v->loc);
+        loads.push_back(stmt);
+      }
+    }
+    if (loads.empty()) return;
+    if (main == module_.functions.end()) return ctx_.error({}, "the shader has no main function");
+    auto& body = (*main)->body->body;
+    body.insert(body.begin(), loads.begin(), loads.end());
+  }
+
+  static ExprPtr element_of(const ExprPtr& array, int k) {
+    auto c = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Int));
+    ir::Scalar s;
+    s.base = ir::Base::Int;
+    s.i = k;
+    c->values = {s};
+    auto e = Expr::make(Kind::Index, array->type.element());
+    e->args = {array, c};
+    return e;
+  }
+
   // ---- word types and layouts ------------------------------------------------------------
   // ex_dvec3_words / ex_dvec4_words: one element of an array of dvec3/dvec4 (32 bytes).
   ir::Type word_struct(int width) {

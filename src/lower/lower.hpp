@@ -40,6 +40,7 @@ struct Context {
   // load/store helpers over user struct types (printed after those types).
   std::map<const ir::Var*, std::vector<BlockMember>> exact_block_members;
   std::string struct_helpers;
+  std::set<const ir::Var*> exact_struct_uniforms;  // loose uniforms of a STRUCT_words twin type
 
   void error(ir::Loc loc, const std::string& message);
   void warning(ir::Loc loc, const std::string& message);

@@ -199,7 +199,20 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       if (auto it = ctx.flattened_blocks.find(v.get()); it != ctx.flattened_blocks.end()) entry.block = it->second;
       entry.storage = storage_name(v->storage, module.stage, es100);
       entry.type = ir::type_name(v->declared_type) + ir::array_suffix(v->declared_type);
-      if (v->storage == ir::Storage::Uniform && !v->declared_type.is_double() && v->type.base == ir::Base::Struct &&
+      if (ctx.exact_struct_uniforms.count(v.get())) {
+        // Mode exact: a struct uniform's twin (exact_blocks.cpp): every double member a uvec2/uvec4
+        // word leaf, "s.m", "s.v_xy", "s.q[1].zw"; padding members are not listed.
+        entry.split = true;
+        entry.encoding = exact_io::kEncoding;
+        entry.lowered_type = ir::type_name(v->type) + ir::array_suffix(v->type);
+        std::vector<std::string> leaves;
+        uniform_leaves(v->type, v->name, leaves);
+        for (const std::string& leaf : leaves) {
+          if (leaf.find("ex_pad") != std::string::npos) continue;
+          entry.lowered_names.push_back(leaf);
+        }
+        manifest.variables.push_back(entry);
+      } else if (v->storage == ir::Storage::Uniform && !v->declared_type.is_double() && v->type.base == ir::Base::Struct &&
           holds_doubles(v->type)) {
         // A struct uniform keeps its name; its double members are df_* structs, so the host sets
         // "s.member.hi" and "s.member.lo": list those leaf names.

@@ -357,6 +357,48 @@ TEST(ExactInterface, UniformWordsKeepTheHostBytes) {
   EXPECT_TRUE(pack::uniform_words(*manifest->find("u"), {1.0}).empty()) << "size mismatch";
 }
 
+// A loose uniform of a struct type: its twin Light_words, each double member a word leaf the host
+// sets from the manifest ("light.pos_xy", "light.pos_z", "light.k").
+TEST(ExactInterface, StructUniformLeavesAreWords) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  REQUIRE_BACKEND(Backend::Gles);
+  const char* source = "#version 450\nstruct Light { dvec3 pos; float w; double k; };\nuniform Light light;\n"
+                       "flat out dvec3 r;\nvoid main() { r = light.pos * light.k; gl_Position = vec4(light.w); }\n";
+  Options o;
+  o.stage = Stage::Vertex;
+  o.target = Target::Es300;
+  o.mode = Mode::Exact;
+  const Result lowered = lower(source, o);
+  ASSERT_TRUE(lowered.ok);
+  const InterfaceVariable* light = find_block(lowered.manifest, "light");
+  ASSERT_NE(light, nullptr);
+  EXPECT_EQ(light->encoding, "binary64-words");
+  EXPECT_EQ(light->lowered_names, (std::vector<std::string>{"light.pos_xy", "light.pos_z", "light.w", "light.k"}));
+  const double pos[3] = {0x1.8p1000, -0x1p-1070, 3.25}, k = -0x1.123456789abcdp-40;
+  GraphicsJob job;
+  job.glsl = lowered.output;
+  job.count = 1;
+  std::vector<double>& xy = job.uniforms["light.pos_xy"];
+  std::vector<double>& z = job.uniforms["light.pos_z"];
+  std::vector<double>& kw = job.uniforms["light.k"];
+  for (int c = 0; c < 3; ++c) {
+    const ExactWords w = exact_words(pos[c]);
+    (c < 2 ? xy : z).insert((c < 2 ? xy : z).end(), {double(w.lo), double(w.hi)});
+  }
+  kw = {double(exact_words(k).lo), double(exact_words(k).hi)};
+  for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
+    const GraphicsResult got = run_graphics(backend, job);
+    ASSERT_TRUE(got.ok) << backend_name(backend) << ": " << got.error;
+    const std::vector<double>& r_xy = got.outputs.at("r_xy");
+    const std::vector<double>& r_z = got.outputs.at("r_z");
+    for (int c = 0; c < 3; ++c) {
+      const double* w = c < 2 ? &r_xy[2 * size_t(c)] : &r_z[0];
+      volatile double want = pos[c] * k;
+      EXPECT_EQ(exact_join({uint32_t(w[0]), uint32_t(w[1])}), double(want)) << backend_name(backend) << " r." << c;
+    }
+  }
+}
+
 // What the exact interface refuses, with a position and no internal error.
 TEST(ExactInterface, NameCollisionsAreDiagnosed) {
   Options o;
