@@ -104,20 +104,13 @@ uvec2 ex_shr_jam64(uvec2 a, int n) {
   return r;
 }
 
-// ex_clz32: count of leading zero bits of a 32-bit word (32 for 0); ES 3.00 has no findMSB.
-// Algorithm: binary search over 16, 8, 4, 2, 1 bit halves
-// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3 (nlz, binary search)
+// ex_clz32: ex_clz32 by findMSB, where the target has GLSL's integer functions.
+// Algorithm: 31 - findMSB(x); findMSB(0) is -1, so 0 gives 32
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (findMSB)
 // Bound: exact
-// Flops: 0 (about 16 integer operations)
+// Flops: 0 (2 integer operations)
 int ex_clz32(uint x) {
-  if (x == 0u) return 32;
-  int n = 0;
-  if ((x & 0xFFFF0000u) == 0u) { n += 16; x <<= 16; }
-  if ((x & 0xFF000000u) == 0u) { n += 8; x <<= 8; }
-  if ((x & 0xF0000000u) == 0u) { n += 4; x <<= 4; }
-  if ((x & 0xC0000000u) == 0u) { n += 2; x <<= 2; }
-  if ((x & 0x80000000u) == 0u) { n += 1; }
-  return n;
+  return 31 - findMSB(x);
 }
 
 // ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
@@ -226,34 +219,34 @@ df_double ex_add(df_double a, df_double b) {
 }
 
 // ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
-// Algorithm: subnormals shifted left by their leading zeros, exponent lowered by the same count
+// Algorithm: a normal number's significand as it is; subnormals shifted left by their leading zeros, exponent lowered by the same count
 // Source: IEEE 754-2019, 3.4
 // Bound: exact
 // Flops: 0
 uvec2 ex_normalize_sig(uvec2 a, out int x) {
   uvec2 m = ex_sig(a);
+  if ((a.y & 0x7FF00000u) != 0u) {
+    x = int((a.y >> 20) & 0x7FFu);
+    return m;
+  }
   int shift = ex_clz64(m) - 11;
-  x = ex_exponent(a) - shift;
+  x = 1 - shift;
   return ex_shl64(m, shift);
 }
 
-// ex_mul32: full 64-bit product of two 32-bit words from four 16x16-bit products (ES 3.00 has no umulExtended).
-// Algorithm: schoolbook multiplication in 16-bit limbs, carries of the middle sum propagated
-// Source: Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
+// ex_mul32: ex_mul32 by umulExtended, where the target has GLSL's integer functions (Mesa's soft-fp64 multiplies this way too).
+// Algorithm: umulExtended: the 64-bit product's high and low words in one built-in
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (umulExtended)
 // Bound: exact
-// Flops: 0 (4 integer multiplications, about 14 other integer operations)
+// Flops: 0 (1 integer multiplication)
 uvec2 ex_mul32(uint a, uint b) {
-  uint al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-  uint ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-  uint mid = lh + hl;
-  uint midCarry = mid < lh ? 0x10000u : 0u;
-  uint lo = ll + (mid << 16);
-  uint hi = hh + (mid >> 16) + midCarry + (lo < ll ? 1u : 0u);
+  uint hi, lo;
+  umulExtended(a, b, hi, lo);
   return uvec2(lo, hi);
 }
 
 // ex_mul_bits: a * b in binary64, correctly rounded (ties to even).
-// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, rounded once
+// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, a one-bit jamming normalization, rounded once
 // Source: IEEE 754-2019, 5.4.1, 7.2 (0 * Inf invalid); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (16 integer multiplications, about 80 other integer operations)
@@ -278,7 +271,13 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   uint w3 = p11.y + top.y + (w2 < p11.x ? 1u : 0u);
   uvec2 sig = uvec2((w1 >> 10) | (w2 << 22), (w2 >> 10) | (w3 << 22));
   if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;
-  return ex_norm_round_pack(signWord != 0u, xa + xb - 1024, sig);
+  // The product of two significands in [2^52, 2^53) leaves sig's top bit at 63 or 62.
+  int e = xa + xb - 1024;
+  if (sig.y >= 0x80000000u) {
+    sig = uvec2((sig.x >> 1) | (sig.y << 31) | (sig.x & 1u), sig.y >> 1);
+    e += 1;
+  }
+  return ex_round_pack(signWord != 0u, e, sig);
 }
 
 // ex_mul: a * b (mode exact), correctly rounded.

@@ -78,15 +78,6 @@ int ex_clz64(uvec2 a) {
   return a.y != 0u ? ex_clz32(a.y) : 32 + ex_clz32(a.x);
 }
 
-// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
-// Algorithm: exponent field, subnormals and zero counted as field 1
-// Source: IEEE 754-2019, 3.4
-// Bound: exact
-// Flops: 0
-int ex_exponent(uvec2 a) {
-  return max(int((a.y >> 20) & 0x7FFu), 1);
-}
-
 // ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: split by case).
 // Algorithm: word shift by case n == 0, n < 32, n >= 32
 // Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
@@ -99,14 +90,18 @@ uvec2 ex_shl64(uvec2 a, int n) {
 }
 
 // ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
-// Algorithm: subnormals shifted left by their leading zeros, exponent lowered by the same count
+// Algorithm: a normal number's significand as it is; subnormals shifted left by their leading zeros, exponent lowered by the same count
 // Source: IEEE 754-2019, 3.4
 // Bound: exact
 // Flops: 0
 uvec2 ex_normalize_sig(uvec2 a, out int x) {
   uvec2 m = ex_sig(a);
+  if ((a.y & 0x7FF00000u) != 0u) {
+    x = int((a.y >> 20) & 0x7FFu);
+    return m;
+  }
   int shift = ex_clz64(m) - 11;
-  x = ex_exponent(a) - shift;
+  x = 1 - shift;
   return ex_shl64(m, shift);
 }
 
@@ -175,19 +170,8 @@ uvec2 ex_round_pack(bool s, int e, uvec2 sig) {
   return ex_add64(uvec2(0u, signWord | (uint(e) << 20)), sig);
 }
 
-// ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
-// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
-// Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
-// Bound: 0.5 ulp (correctly rounded)
-// Flops: 0
-uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
-  int z = ex_clz64(sig);
-  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
-  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
-}
-
 // ex_mul_bits: a * b in binary64, correctly rounded (ties to even).
-// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, rounded once
+// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, a one-bit jamming normalization, rounded once
 // Source: IEEE 754-2019, 5.4.1, 7.2 (0 * Inf invalid); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (16 integer multiplications, about 80 other integer operations)
@@ -212,7 +196,13 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   uint w3 = p11.y + top.y + (w2 < p11.x ? 1u : 0u);
   uvec2 sig = uvec2((w1 >> 10) | (w2 << 22), (w2 >> 10) | (w3 << 22));
   if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;
-  return ex_norm_round_pack(signWord != 0u, xa + xb - 1024, sig);
+  // The product of two significands in [2^52, 2^53) leaves sig's top bit at 63 or 62.
+  int e = xa + xb - 1024;
+  if (sig.y >= 0x80000000u) {
+    sig = uvec2((sig.x >> 1) | (sig.y << 31) | (sig.x & 1u), sig.y >> 1);
+    e += 1;
+  }
+  return ex_round_pack(signWord != 0u, e, sig);
 }
 
 // ex_bits: the binary64 pattern of a mode-exact double as uvec2(low word, high word), the order of unpackDouble2x32.
@@ -246,6 +236,15 @@ df_dvec3 ex_mul(df_dvec3 a, df_dvec3 b) {
   return df_dvec3(uvec3(r0.hi, r1.hi, r2.hi), uvec3(r0.lo, r1.lo, r2.lo));
 }
 
+// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
+// Algorithm: exponent field, subnormals and zero counted as field 1
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+int ex_exponent(uvec2 a) {
+  return max(int((a.y >> 20) & 0x7FFu), 1);
+}
+
 // ex_lt64: unsigned a < b on 64-bit words.
 // Algorithm: compare high words, then low words
 // Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword comparison)
@@ -253,6 +252,17 @@ df_dvec3 ex_mul(df_dvec3 a, df_dvec3 b) {
 // Flops: 0 (3 integer comparisons)
 bool ex_lt64(uvec2 a, uvec2 b) {
   return a.y < b.y || (a.y == b.y && a.x < b.x);
+}
+
+// ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
+// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
+  int z = ex_clz64(sig);
+  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
+  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
 }
 
 // ex_sub64: 64-bit difference, modulo 2^64.

@@ -53,20 +53,13 @@ uvec2 ex_sig(uvec2 a) {
   return uvec2(a.x, hi);
 }
 
-// ex_clz32: count of leading zero bits of a 32-bit word (32 for 0); ES 3.00 has no findMSB.
-// Algorithm: binary search over 16, 8, 4, 2, 1 bit halves
-// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3 (nlz, binary search)
+// ex_clz32: ex_clz32 by findMSB, where the target has GLSL's integer functions.
+// Algorithm: 31 - findMSB(x); findMSB(0) is -1, so 0 gives 32
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (findMSB)
 // Bound: exact
-// Flops: 0 (about 16 integer operations)
+// Flops: 0 (2 integer operations)
 int ex_clz32(uint x) {
-  if (x == 0u) return 32;
-  int n = 0;
-  if ((x & 0xFFFF0000u) == 0u) { n += 16; x <<= 16; }
-  if ((x & 0xFF000000u) == 0u) { n += 8; x <<= 8; }
-  if ((x & 0xF0000000u) == 0u) { n += 4; x <<= 4; }
-  if ((x & 0xC0000000u) == 0u) { n += 2; x <<= 2; }
-  if ((x & 0x80000000u) == 0u) { n += 1; }
-  return n;
+  return 31 - findMSB(x);
 }
 
 // ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
@@ -76,15 +69,6 @@ int ex_clz32(uint x) {
 // Flops: 0
 int ex_clz64(uvec2 a) {
   return a.y != 0u ? ex_clz32(a.y) : 32 + ex_clz32(a.x);
-}
-
-// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
-// Algorithm: exponent field, subnormals and zero counted as field 1
-// Source: IEEE 754-2019, 3.4
-// Bound: exact
-// Flops: 0
-int ex_exponent(uvec2 a) {
-  return max(int((a.y >> 20) & 0x7FFu), 1);
 }
 
 // ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: split by case).
@@ -99,29 +83,29 @@ uvec2 ex_shl64(uvec2 a, int n) {
 }
 
 // ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
-// Algorithm: subnormals shifted left by their leading zeros, exponent lowered by the same count
+// Algorithm: a normal number's significand as it is; subnormals shifted left by their leading zeros, exponent lowered by the same count
 // Source: IEEE 754-2019, 3.4
 // Bound: exact
 // Flops: 0
 uvec2 ex_normalize_sig(uvec2 a, out int x) {
   uvec2 m = ex_sig(a);
+  if ((a.y & 0x7FF00000u) != 0u) {
+    x = int((a.y >> 20) & 0x7FFu);
+    return m;
+  }
   int shift = ex_clz64(m) - 11;
-  x = ex_exponent(a) - shift;
+  x = 1 - shift;
   return ex_shl64(m, shift);
 }
 
-// ex_mul32: full 64-bit product of two 32-bit words from four 16x16-bit products (ES 3.00 has no umulExtended).
-// Algorithm: schoolbook multiplication in 16-bit limbs, carries of the middle sum propagated
-// Source: Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
+// ex_mul32: ex_mul32 by umulExtended, where the target has GLSL's integer functions (Mesa's soft-fp64 multiplies this way too).
+// Algorithm: umulExtended: the 64-bit product's high and low words in one built-in
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (umulExtended)
 // Bound: exact
-// Flops: 0 (4 integer multiplications, about 14 other integer operations)
+// Flops: 0 (1 integer multiplication)
 uvec2 ex_mul32(uint a, uint b) {
-  uint al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
-  uint ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
-  uint mid = lh + hl;
-  uint midCarry = mid < lh ? 0x10000u : 0u;
-  uint lo = ll + (mid << 16);
-  uint hi = hh + (mid >> 16) + midCarry + (lo < ll ? 1u : 0u);
+  uint hi, lo;
+  umulExtended(a, b, hi, lo);
   return uvec2(lo, hi);
 }
 
@@ -175,19 +159,8 @@ uvec2 ex_round_pack(bool s, int e, uvec2 sig) {
   return ex_add64(uvec2(0u, signWord | (uint(e) << 20)), sig);
 }
 
-// ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
-// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
-// Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
-// Bound: 0.5 ulp (correctly rounded)
-// Flops: 0
-uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
-  int z = ex_clz64(sig);
-  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
-  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
-}
-
 // ex_mul_bits: a * b in binary64, correctly rounded (ties to even).
-// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, rounded once
+// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, a one-bit jamming normalization, rounded once
 // Source: IEEE 754-2019, 5.4.1, 7.2 (0 * Inf invalid); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (16 integer multiplications, about 80 other integer operations)
@@ -212,7 +185,13 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   uint w3 = p11.y + top.y + (w2 < p11.x ? 1u : 0u);
   uvec2 sig = uvec2((w1 >> 10) | (w2 << 22), (w2 >> 10) | (w3 << 22));
   if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;
-  return ex_norm_round_pack(signWord != 0u, xa + xb - 1024, sig);
+  // The product of two significands in [2^52, 2^53) leaves sig's top bit at 63 or 62.
+  int e = xa + xb - 1024;
+  if (sig.y >= 0x80000000u) {
+    sig = uvec2((sig.x >> 1) | (sig.y << 31) | (sig.x & 1u), sig.y >> 1);
+    e += 1;
+  }
+  return ex_round_pack(signWord != 0u, e, sig);
 }
 
 // ex_bits: the binary64 pattern of a mode-exact double as uvec2(low word, high word), the order of unpackDouble2x32.
@@ -246,6 +225,15 @@ df_dvec3 ex_mul(df_dvec3 a, df_dvec3 b) {
   return df_dvec3(uvec3(r0.hi, r1.hi, r2.hi), uvec3(r0.lo, r1.lo, r2.lo));
 }
 
+// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
+// Algorithm: exponent field, subnormals and zero counted as field 1
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+int ex_exponent(uvec2 a) {
+  return max(int((a.y >> 20) & 0x7FFu), 1);
+}
+
 // ex_lt64: unsigned a < b on 64-bit words.
 // Algorithm: compare high words, then low words
 // Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword comparison)
@@ -253,6 +241,17 @@ df_dvec3 ex_mul(df_dvec3 a, df_dvec3 b) {
 // Flops: 0 (3 integer comparisons)
 bool ex_lt64(uvec2 a, uvec2 b) {
   return a.y < b.y || (a.y == b.y && a.x < b.x);
+}
+
+// ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
+// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
+  int z = ex_clz64(sig);
+  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
+  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
 }
 
 // ex_sub64: 64-bit difference, modulo 2^64.

@@ -66,20 +66,13 @@ uvec2 ex_add64(uvec2 a, uvec2 b) {
   return uvec2(lo, a.y + b.y + (lo < a.x ? 1u : 0u));
 }
 
-// ex_clz32: count of leading zero bits of a 32-bit word (32 for 0); ES 3.00 has no findMSB.
-// Algorithm: binary search over 16, 8, 4, 2, 1 bit halves
-// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3 (nlz, binary search)
+// ex_clz32: ex_clz32 by findMSB, where the target has GLSL's integer functions.
+// Algorithm: 31 - findMSB(x); findMSB(0) is -1, so 0 gives 32
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (findMSB)
 // Bound: exact
-// Flops: 0 (about 16 integer operations)
+// Flops: 0 (2 integer operations)
 int ex_clz32(uint x) {
-  if (x == 0u) return 32;
-  int n = 0;
-  if ((x & 0xFFFF0000u) == 0u) { n += 16; x <<= 16; }
-  if ((x & 0xFF000000u) == 0u) { n += 8; x <<= 8; }
-  if ((x & 0xF0000000u) == 0u) { n += 4; x <<= 4; }
-  if ((x & 0xC0000000u) == 0u) { n += 2; x <<= 2; }
-  if ((x & 0x80000000u) == 0u) { n += 1; }
-  return n;
+  return 31 - findMSB(x);
 }
 
 // ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
