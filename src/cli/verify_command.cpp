@@ -101,7 +101,16 @@ int apply_scene_and_plan(const VerifyArgs& a, verify::VerifyOptions* o, plan::Sc
     verify::InputSpec& in = o->spec.inputs[name];
     for (const plan::Interval& c : range.components) in.component_ranges.emplace_back(c.lo, c.hi);
   }
-  for (const plan::Relation& r : scene->relations) o->spec.relations.push_back({r.a, r.b, r.abs_max});
+  for (const plan::Relation& r : scene->relations) {
+    // Samples are drawn for inputs; a relation on a value the shader computes cannot steer them.
+    for (const std::string& side : {r.a, r.b})
+      if (plan::is_computed_value(side))
+        return (std::cerr << format_diagnostic(plan::scene_diagnostic(*scene, r.path + "/difference",
+                                  "verify cannot sample a relation on '" + side +
+                                      "', a value the shader computes: only relations between inputs")) << "\n",
+                kExitInput);
+    o->spec.relations.push_back({r.a, r.b, r.abs_max});
+  }
   for (const auto& [name, req] : scene->outputs) o->spec.outputs[name].max_abs_error = req.abs_error;
   return kExitOk;
 }
