@@ -129,6 +129,37 @@ Vec3 reference_up(const Point& p) {
   return r;
 }
 
+namespace {
+
+View view_around(const Point& c, int points, std::mt19937_64& rng) {
+  View v;
+  const Vec3 centre = ecef_long_double(c);
+  for (size_t i = 0; i < 3; ++i) v.eye[i] = centre[i] + uniform(rng, -5, 5);
+  // Points a few metres around the centre (in angle: metres / radius, more in longitude where
+  // the parallels shrink), kept when every axis is within the relation's 10 m of the eye.
+  const double dlat = 6 / 6.4e6, dlon = 6 / (6.4e6 * std::max(std::cos(c.lat), 1e-3));
+  while (static_cast<int>(v.points.size()) < points) {
+    Point p{std::clamp(c.lat + uniform(rng, -dlat, dlat), -kPi / 2, kPi / 2),
+            std::clamp(c.lon + uniform(rng, -dlon, dlon), -kPi, kPi),
+            std::clamp(c.h + uniform(rng, -6, 6), -500.0, 9000.0)};
+    const Vec3 e = ecef_long_double(p);
+    bool near = true;
+    for (size_t i = 0; i < 3; ++i) near &= std::fabs(e[i] - v.eye[i]) <= kRelation - 0.01;
+    if (!near) continue;
+    v.points.push_back(p);
+    v.rel.push_back(reference_rel(p, v.eye));
+    v.up.push_back(reference_up(p));
+  }
+  return v;
+}
+
+}  // namespace
+
+View make_view(const Point& centre, int points, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  return view_around(centre, points, rng);
+}
+
 std::vector<View> make_globe_views(int views, int points, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::vector<View> out;
@@ -136,32 +167,14 @@ std::vector<View> make_globe_views(int views, int points, uint64_t seed) {
     // Centres: the first few at the edges of the scene's ranges, the rest uniform over it.
     Point c{uniform(rng, -kPi / 2, kPi / 2), uniform(rng, -kPi, kPi), uniform(rng, -500, 9000)};
     switch (k) {
-      case 0: c = {kPi / 2, 0.3, 9000}; break;               // north pole, highest
-      case 1: c = {-kPi / 2, -2.0, -500}; break;             // south pole, lowest
-      case 2: c = {0.0, kPi, 0}; break;                      // equator on the antimeridian
+      case 0: c = {kPi / 2, 0.3, 9000}; break;    // north pole, highest
+      case 1: c = {-kPi / 2, -2.0, -500}; break;  // south pole, lowest
+      case 2: c = {0.0, kPi, 0}; break;           // equator on the antimeridian
       case 3: c = {0.7, -kPi, 4000}; break;
-      case 4: c = {1e-9, 1e-9, 0}; break;                    // where cos is 1 and sin tiny
+      case 4: c = {1e-9, 1e-9, 0}; break;         // where cos is 1 and sin tiny
       default: break;
     }
-    View v;
-    const Vec3 centre = ecef_long_double(c);
-    for (int i = 0; i < 3; ++i) v.eye[static_cast<size_t>(i)] = centre[static_cast<size_t>(i)] + uniform(rng, -5, 5);
-    // Points a few metres around the centre (in angle: metres / radius, more in longitude where
-    // the parallels shrink), kept when every axis is within the relation's 10 m of the eye.
-    const double dlat = 6 / 6.4e6, dlon = 6 / (6.4e6 * std::max(std::cos(c.lat), 1e-3));
-    while (static_cast<int>(v.points.size()) < points) {
-      Point p{std::clamp(c.lat + uniform(rng, -dlat, dlat), -kPi / 2, kPi / 2),
-              std::clamp(c.lon + uniform(rng, -dlon, dlon), -kPi, kPi),
-              std::clamp(c.h + uniform(rng, -6, 6), -500.0, 9000.0)};
-      const Vec3 e = ecef_long_double(p);
-      bool near = true;
-      for (int i = 0; i < 3; ++i) near &= std::fabs(e[static_cast<size_t>(i)] - v.eye[static_cast<size_t>(i)]) <= kRelation - 0.01;
-      if (!near) continue;
-      v.points.push_back(p);
-      v.rel.push_back(reference_rel(p, v.eye));
-      v.up.push_back(reference_up(p));
-    }
-    out.push_back(std::move(v));
+    out.push_back(view_around(c, points, rng));
   }
   return out;
 }

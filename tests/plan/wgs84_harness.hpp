@@ -29,6 +29,9 @@ struct View {
   std::vector<Vec3> rel, up;
 };
 
+// A camera a few metres from `centre` and `points` points around it.
+View make_view(const Point& centre, int points, uint64_t seed);
+
 // `views` cameras anywhere on the globe (the poles, the antimeridian and both height extremes
 // among them), `points` points each.
 std::vector<View> make_globe_views(int views, int points, uint64_t seed);
