@@ -113,8 +113,10 @@ double transcendental_slope(const std::string& f, int arity, size_t i, Interval 
     return r_min > 0 ? 1 / r_min : kInf;
   }
   if (f == "atan") return 1 / (1 + a.mig() * a.mig());
-  if (f == "exp" || f == "sinh" || f == "cosh") return f == "sinh" ? cosh_range(a).hi : f == "cosh" ? std::sinh(a.mag()) : r.hi;
+  if (f == "exp") return r.hi;                    // e^x, largest at the top
   if (f == "exp2") return std::log(2.0) * r.hi;
+  if (f == "sinh") return cosh_range(a).hi;       // cosh
+  if (f == "cosh") return std::sinh(a.mag());     // |sinh|
   if (f == "log") return a.mig() > 0 ? 1 / a.mig() : kInf;
   if (f == "log2") return a.mig() > 0 ? 1 / (a.mig() * std::log(2.0)) : kInf;
   if (f == "tanh") return 1 / (std::cosh(a.mig()) * std::cosh(a.mig()));

@@ -4,6 +4,7 @@
 // not. Downgrading any step the plan kept in df64, or removing the optimizer guard, breaks it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "cli_run.hpp"
@@ -52,6 +53,18 @@ wgs84::Errors measure(Backend backend, const doublet::Options& options) {
   std::printf("  %zu points: v_rel max %.3g m, v_up max %.3g, not finite %d; worst %s\n", e.samples, e.rel_max,
               e.up_max, e.not_finite, e.worst.c_str());
   return e;
+}
+
+// The reference itself, at points whose ECEF coordinates are published: the equator on the prime
+// meridian is (a, 0, 0); the pole is at the semi-minor axis b = 6356752.314245 m (NIMA TR8350.2).
+TEST(Wgs84Reference, KnownPoints) {
+  const wgs84::Vec3 equator = wgs84::reference_rel({0, 0, 0}, {0, 0, 0});
+  EXPECT_EQ(equator[0], 6378137.0);
+  EXPECT_EQ(equator[1], 0.0);
+  EXPECT_EQ(equator[2], 0.0);
+  const wgs84::Vec3 pole = wgs84::reference_rel({1.5707963267948966, 0, 100}, {0, 0, 6356752.0});
+  EXPECT_NEAR(pole[2], 100 + 0.314245, 1e-6);
+  EXPECT_LT(std::fabs(pole[0]), 1e-9);  // cos of the double nearest pi/2 is 6e-17
 }
 
 TEST(Wgs84Plan, ChoosesDf64ForTheGeodesyAndFloatForTheRest) {
