@@ -61,6 +61,7 @@ struct Variant {
   std::string name;
   doublet::Mode mode = doublet::Mode::Df64;
   bool planned = false;
+  std::vector<std::pair<std::string, doublet::Mode>> extra;  // --mode-for entries after the plan's
 };
 
 // The compute pass over `view`'s points: buffers filled from the manifest's layout (float-float
@@ -157,6 +158,7 @@ int main(int argc, char** argv) {
   }
   const std::vector<Variant> variants{{"fp32", doublet::Mode::Fp32},
                                       {"plan", doublet::Mode::Df64, true},
+                                      {"plan + main=rte", doublet::Mode::Df64, true, {{"main", doublet::Mode::Rte}}},
                                       {"df64", doublet::Mode::Df64},
                                       {"exact", doublet::Mode::Exact}};
   const std::vector<wgs84::View> views = wgs84::make_globe_views(64, 64, 20261124);
@@ -179,6 +181,7 @@ int main(int argc, char** argv) {
       plans += "wgs84_ecef.vert: " + text;
       if (!plan_options("wgs84_ecef.comp", "wgs84_compute.scene.json", &comp, &text)) return std::printf("%s\n", text.c_str()), 3;
       plans += "wgs84_ecef.comp: " + text;
+      for (const auto& e : v.extra) vert.mode_for.push_back(e), comp.mode_for.push_back(e);
     }
     const doublet::Result lv = wgs84::lower_example("wgs84_ecef.vert", vert);
     const doublet::Result lc = wgs84::lower_example("wgs84_ecef.comp", comp);
@@ -210,6 +213,6 @@ int main(int argc, char** argv) {
     std::printf("%s\n", row.c_str());
     std::fflush(stdout);
   }
-  std::printf("\nplans:\n%s", plans.c_str());
+  std::printf("\nplans (printed once per planned row):\n%s", plans.c_str());
   return 0;
 }
