@@ -26,7 +26,7 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-// a, e^2 = f (2 - f) with f = 1/298.257223563 (NIMA TR8350.2), at the precision of `x`.
+// a and e^2 = f (2 - f), f = 1/298.257223563 (NIMA TR8350.2), to 200 bits.
 struct Ellipsoid {
   mpfr_t a, e2;
   Ellipsoid() {
