@@ -365,6 +365,19 @@ uvec2 ex_sqrt_bits(uvec2 a) {
   return ex_round_pack(false, 1048 + e2 / 2, root);
 }
 
+// ex_fma_bits: fma(a, b, c) as native fp64 on lavapipe computes it: a * b rounded to binary64, then + c rounded (two roundings, not IEEE fusedMultiplyAdd).
+// Algorithm: p = ex_mul_bits(a, b), then ex_add_bits(p, c); with NaN operands native passes on the first NaN of a, b (then p, c) in operand order, not swapped as for a * b (measured by tests/exact/exact_fma_test.cpp)
+// Source: GLSL 4.60 specification, 2017, 8.3 (fma: "may" be a single operation; precision of a*b+c otherwise); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (two roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_fma_bits(uvec2 a, uvec2 b, uvec2 c) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
+  uvec2 p = ex_mul_bits(a, b);
+  if (ex_is_nan(p)) return p;
+  return ex_add_bits(p, c);
+}
+
 // ex_shr64: a >> n for 0 <= n < 64 (bits shifted out are dropped: truncation).
 // Algorithm: word shift by case n == 0, n < 32, n >= 32
 // Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
@@ -589,6 +602,18 @@ $DF ex_div($DF a, $DF b) {
 // @min-es 300
 $DF ex_sqrt($DF a) {
   return ex_from_bits(ex_sqrt_bits(ex_bits(a)));
+}
+
+// ex_fma: fma(a, b, c) (mode exact): as native fp64 on lavapipe, a * b rounded, then + c rounded.
+// Algorithm: ex_fma_bits on the patterns
+// Source: GLSL 4.60 specification, 2017, 8.3 (fma); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (two roundings)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_fma($DF a, $DF b, $DF c) {
+  return ex_from_bits(ex_fma_bits(ex_bits(a), ex_bits(b), ex_bits(c)));
 }
 
 // ex_neg: -a (mode exact): the sign bit flipped.
