@@ -1065,3 +1065,406 @@ df_double ex_pack_double2x32(uvec2 v) {
 uvec2 ex_unpack_double2x32(df_double a) {
   return ex_bits(a);
 }
+
+// ex_to_ff: the float-float pair nearest a binary64 pattern: hi = float(a), lo = float(a - hi); (float(a), 0) when hi is not finite (|a| > FLT_MAX, Inf, NaN).
+// Algorithm: two roundings to float (ex_to_float_bits); a - hi is exact in binary64. hi + lo keeps 48 of a's 53 bits; ex_ff_residual gives the rest
+// Source: Dekker, Numer. Math. 18, 1971 (double-word representation); IEEE 754-2019, 5.4.2
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+ff_double ex_to_ff(uvec2 a) {
+  uint h = ex_to_float_bits(a);
+  if ((h & 0x7F800000u) == 0x7F800000u) return ff_double(uintBitsToFloat(h), 0.0);
+  uvec2 rest = ex_sub_bits(a, ex_from_float_bits(uintBitsToFloat(h)));
+  return ff_double(uintBitsToFloat(h), uintBitsToFloat(ex_to_float_bits(rest)));
+}
+
+// ex_ff_residual: a - (f.hi + f.lo), the part of a binary64 its float-float pair f = ex_to_ff(a) lost, rounded to float (0 when f is not finite).
+// Algorithm: two exact binary64 subtractions (a - hi, then the rounding error of lo), rounded once to float
+// Source: IEEE 754-2019, 5.4.1; Boldo, Daumas, ARITH-16, 2003 (the error of a rounding is representable)
+// Bound: 0.5 ulp (correctly rounded, of the residual)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+float ex_ff_residual(uvec2 a, ff_double f) {
+  if ((floatBitsToUint(f.hi) & 0x7F800000u) == 0x7F800000u) return 0.0;
+  uvec2 rest = ex_sub_bits(ex_sub_bits(a, ex_from_float_bits(f.hi)), ex_from_float_bits(f.lo));
+  return uintBitsToFloat(ex_to_float_bits(rest));
+}
+
+// ex_from_ff: the binary64 nearest f.hi + f.lo (one rounding); a non-finite hi, or lo = 0 (which keeps the sign of a zero hi), gives float(hi) exactly.
+// Algorithm: both words widened exactly (ex_from_float_bits), then ex_add_bits
+// Source: IEEE 754-2019, 5.4.1, 5.4.2
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_from_ff(ff_double f) {
+  uvec2 h = ex_from_float_bits(f.hi);
+  if ((floatBitsToUint(f.hi) & 0x7F800000u) == 0x7F800000u || f.lo == 0.0) return h;
+  return ex_add_bits(h, ex_from_float_bits(f.lo));
+}
+
+// ex_ff_corrected: y + c for a float correction c (the first-order term f'(x) * residual), skipped when c is 0 or not finite or y is not finite.
+// Algorithm: DWPlusFP (df_add_f) when it applies, then ex_from_ff: one rounding to binary64
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2 (DWPlusFP, 2u^2)
+// Bound: 2u^2 + 0.5 ulp of binary64
+// Flops: 11 (df_add_f)
+// @min-es 300
+// @uses df_add_f:1
+uvec2 ex_ff_corrected(ff_double y, float c) {
+  bool finite = (floatBitsToUint(y.hi) & 0x7F800000u) != 0x7F800000u && (floatBitsToUint(c) & 0x7F800000u) != 0x7F800000u;
+  if (!finite || c == 0.0) return ex_from_ff(y);
+  return ex_from_ff(df_add_f(y, c));
+}
+
+// ex_exp: exp(a) (mode exact, doublet extension) through float-float: df_exp of the float-float pair of a, plus y * residual, rounded once.
+// Algorithm: ex_to_ff; df_exp (rules/transcendental.glsl); first-order correction exp(x + d) = y (1 + d); ex_ff_corrected
+// Source: Cody, Waite, 1980 (df_exp); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_exp's bound (10u^2) + 2u^2 + 2^-53, for -70.7 <= a <= 88.72 (float's range: above, +Inf; below, lo turns subnormal, then 0)
+// Flops: 570 (df_exp, df_add_f; integer conversions besides)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_exp:1
+$DF ex_exp($DF a) {
+  uvec2 w = ex_bits(a);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_exp(x);
+  return ex_from_bits(ex_ff_corrected(y, y.hi * ex_ff_residual(w, x)));
+}
+
+// ex_exp2: exp2(a) (mode exact, doublet extension) through float-float, with the first-order correction y ln2 * residual.
+// Algorithm: ex_to_ff; df_exp2; exp2(x + d) = y (1 + d ln2); ex_ff_corrected
+// Source: Cody, Waite, 1980 (df_exp2); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_exp2's bound (12u^2) + 2u^2 + 2^-53, for -102 <= a < 128 (float's range)
+// Flops: 560 (df_exp2, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_exp2:1
+$DF ex_exp2($DF a) {
+  uvec2 w = ex_bits(a);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_exp2(x);
+  return ex_from_bits(ex_ff_corrected(y, y.hi * (ex_ff_residual(w, x) * 0.693147182)));
+}
+
+// ex_log_scaled: a positive finite a outside [2^-90, 2^90] written m * 2^e, m in [1, 2) (subnormals normalized first); elsewhere m = a, e = 0.
+// Algorithm: exponent field replaced by the bias (1023), the unbiased exponent returned in e
+// Source: IEEE 754-2019, 5.3.3 (logB, scaleB)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_log_scaled(uvec2 a, out int e) {
+  e = 0;
+  int field = int((a.y >> 20) & 0x7FFu);
+  if (a.y >= 0x80000000u || field >= 0x7FF || (a.x | (a.y & 0x7FFFFFFFu)) == 0u || (field >= 933 && field <= 1113)) return a;
+  int x;
+  uvec2 m = ex_normalize_sig(a, x);
+  e = x - 1023;
+  return uvec2(m.x, (m.y & 0x000FFFFFu) | 0x3FF00000u);
+}
+
+// ex_log: log(a) (mode exact, doublet extension) through float-float, every positive finite binary64 (outside [2^-90, 2^90] as log m + e ln2), with the first-order correction residual / x.
+// Algorithm: ex_log_scaled; ex_to_ff; df_log; + residual / m.hi; + e * ln2 (a float-float ln2, DWTimesFP, DWPlusDW); ex_from_ff
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_log); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_log's bound (28u^2) + 2u^2 + 2^-53 for every positive finite a; log(0) = -Inf, log(a < 0) = NaN, log(+Inf) = +Inf
+// Flops: 510 (df_log, df_add_f; df_mul_f and df_add beyond [2^-90, 2^90])
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_log:1 df_add_f:1 df_mul_f:1 df_add:1
+$DF ex_log($DF a) {
+  int e;
+  uvec2 w = ex_log_scaled(ex_bits(a), e);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_log(x);
+  float d = ex_ff_residual(w, x);
+  if (d != 0.0 && x.hi != 0.0) y = df_add_f(y, d / x.hi);
+  if (e != 0) y = df_add(y, df_mul_f(ff_double(0.693147182, -1.90465421e-09), float(e)));
+  return ex_from_bits(ex_from_ff(y));
+}
+
+// ex_log2: log2(a) (mode exact, doublet extension) through float-float, every positive finite binary64 (outside [2^-90, 2^90] as log2 m + e), with the first-order correction residual / (x ln2).
+// Algorithm: ex_log_scaled; ex_to_ff; df_log2; + residual / (m.hi ln2); + e (exact float); ex_from_ff
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_log2); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_log2's bound (37u^2) + 2u^2 + 2^-53 for every positive finite a
+// Flops: 520 (df_log2, df_add_f twice)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_log2:1 df_add_f:1
+$DF ex_log2($DF a) {
+  int e;
+  uvec2 w = ex_log_scaled(ex_bits(a), e);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_log2(x);
+  float d = ex_ff_residual(w, x);
+  if (d != 0.0 && x.hi != 0.0) y = df_add_f(y, d / x.hi * 1.44269502);
+  if (e != 0) y = df_add_f(y, float(e));
+  return ex_from_bits(ex_from_ff(y));
+}
+
+// ex_pow: pow(a, b) (mode exact, doublet extension) through float-float, with the first-order corrections p (b/a da + log(a) db).
+// Algorithm: ex_to_ff of both; df_pow; ex_ff_corrected with the float partial derivatives
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_pow = exp(y log x)); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_pow's bound (40u^2 + 31u^2 |b log a|) + 2u^2 + 2^-53, for a, b and the result inside float's range
+// Flops: 1040 (df_pow, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_pow:1
+$DF ex_pow($DF a, $DF b) {
+  uvec2 wa = ex_bits(a), wb = ex_bits(b);
+  ff_double x = ex_to_ff(wa), y = ex_to_ff(wb);
+  ff_double p = df_pow(x, y);
+  float dx = ex_ff_residual(wa, x), dy = ex_ff_residual(wb, y);
+  float c = 0.0;
+  if (dx != 0.0 && x.hi != 0.0) c += y.hi * (dx / x.hi);
+  if (dy != 0.0 && x.hi > 0.0) c += log(x.hi) * dy;
+  return ex_from_bits(ex_ff_corrected(p, p.hi * c));
+}
+
+// ex_below_2m28: |a| < 2^-28 (zeros and subnormals included): there sin, tan, asin, atan, sinh and tanh of a round to a itself (a(1 +- a^2/3) is within half an ulp), which the float-float path could not give below float's range.
+// Algorithm: high word of |a| against that of 2^-28
+// Source: Muller, Elementary Functions, 3rd ed., 2016, section 10.1 (f(x) = x for tiny x); IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_below_2m28(uvec2 a) {
+  return (a.y & 0x7FFFFFFFu) < 0x3E300000u;
+}
+
+// ex_trig_reduce: the binary64 a reduced by pi/2: a = r + k pi/2, |r| <= pi/4 about, r as float-float: df_trig_reduce on a's float-float pair, then the residual (the part of a the pair lost, at most 5 bits, exact in float) added to r.
+// Algorithm: ex_to_ff; df_trig_reduce (Cody-Waite, four-word pi/2); r + residual (DWPlusFP)
+// Source: Cody, Waite, 1980; Muller, Elementary Functions, 3rd ed., 2016, section 11.2; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_trig_reduce's bound (6u^2 * abs(r) + abs(a) * 2^-96 absolute) + 2u^2 * abs(r)
+// Flops: 280 (df_trig_reduce, df_add_f)
+// Range: |a| < 2^40; without `precise` (mode exact has no guard) Mesa costs bits beyond 2^20 (docs/modes.md).
+// @min-es 300
+// @uses df_trig_reduce:1 df_add_f:1
+ff_double ex_trig_reduce(uvec2 a, out int k) {
+  ff_double x = ex_to_ff(a);
+  ff_double r = df_trig_reduce(x, k);
+  float d = ex_ff_residual(a, x);
+  if (d != 0.0) r = df_add_f(r, d);
+  return r;
+}
+
+// ex_trig_outside: true when sin, cos and tan of a are NaN here (a NaN a passed on, quiet; else the default NaN): |a| >= 2^40, Inf or NaN (float-float's reduction ends at 2^40).
+// Algorithm: high word of |a| against that of 2^40
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_trig_outside(uvec2 a) {
+  return (a.y & 0x7FFFFFFFu) >= 0x42700000u;
+}
+
+// ex_sin: sin(a) (mode exact, doublet extension) through float-float: a reduced by pi/2 (ex_trig_reduce, the residual included), the quadrant's kernel, one rounding. sin(+-0) = +-0; |a| >= 2^40: NaN.
+// Algorithm: ex_trig_reduce; df_sin_quadrant at quadrant k; ex_from_ff
+// Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
+// Bound: df_sin's bound (20u^2 relative plus abs(a) * 2^-96 absolute) + 2u^2 + 2^-53
+// Flops: 600 (on the path taken)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_sin_quadrant:1
+$DF ex_sin($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_trig_outside(w)) return ex_from_bits(ex_is_nan(w) ? ex_pick_nan(w, w) : uvec2(0u, 0xFFF80000u));
+  if (ex_below_2m28(w)) return a;
+  int k;
+  ff_double r = ex_trig_reduce(w, k);
+  return ex_from_bits(ex_from_ff(df_sin_quadrant(r, k)));
+}
+
+// ex_cos: cos(a) (mode exact, doublet extension) = sin(a + pi/2) through float-float. |a| >= 2^40: NaN.
+// Algorithm: ex_trig_reduce; df_sin_quadrant at quadrant k + 1; ex_from_ff
+// Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
+// Bound: df_cos's bound (20u^2 relative plus abs(a) * 2^-96 absolute) + 2u^2 + 2^-53
+// Flops: 600 (on the path taken)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_sin_quadrant:1
+$DF ex_cos($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_trig_outside(w)) return ex_from_bits(ex_is_nan(w) ? ex_pick_nan(w, w) : uvec2(0u, 0xFFF80000u));
+  int k;
+  ff_double r = ex_trig_reduce(w, k);
+  return ex_from_bits(ex_from_ff(df_sin_quadrant(r, (k + 1) & 3)));
+}
+
+// ex_tan: tan(a) (mode exact, doublet extension) = sin / cos of the reduced argument through float-float (the residual included before the kernels, so no first-order step near the poles). tan(+-0) = +-0; |a| >= 2^40: NaN.
+// Algorithm: ex_trig_reduce; df_sin_quadrant at k and k + 1 (sin r / cos r, or -cos r / sin r); DWDivDW2; ex_from_ff
+// Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 40u^2 (relative) plus abs(a) * 2^-96 absolute times (1 + tan(a)^2), + 2u^2 + 2^-53 (df_tan's bound: the same kernels and division)
+// Flops: 960 (on the path taken)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_sin_quadrant:1 df_div:1
+$DF ex_tan($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_trig_outside(w)) return ex_from_bits(ex_is_nan(w) ? ex_pick_nan(w, w) : uvec2(0u, 0xFFF80000u));
+  if (ex_below_2m28(w)) return a;
+  int k;
+  ff_double r = ex_trig_reduce(w, k);
+  ff_double t = df_div(df_sin_quadrant(r, k), df_sin_quadrant(r, (k + 1) & 3));
+  return ex_from_bits(ex_from_ff(t));
+}
+
+// ex_asin_slope: 1 / sqrt(1 - x^2) in float from the float-float x (|x| <= 1), 0 where it is not finite: the derivative asin' for the first-order correction.
+// Algorithm: (1 - hi - lo)(1 + hi + lo) in float (1 - hi exact by Sterbenz), inversesqrt
+// Source: Sterbenz, Floating-Point Computation, 1974 (exact subtraction)
+// Bound: float accuracy (a few 2^-24 relative): it scales a correction below 2^-48 of the result, so its error stays below u^2 of the result
+// Flops: 7
+// @min-es 300
+float ex_asin_slope(ff_double x) {
+  float s = ((1.0 - abs(x.hi)) - sign(x.hi) * x.lo) * ((1.0 + abs(x.hi)) + sign(x.hi) * x.lo);
+  if (!(s > 0.0)) return 0.0;
+  return inversesqrt(s);
+}
+
+// ex_asin: asin(a) (mode exact, doublet extension) through float-float, with the first-order correction residual / sqrt(1 - x^2).
+// Algorithm: ex_to_ff; df_asin; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_asin = atan(x, sqrt((1-x)(1+x)))); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_asin's bound (75u^2) + 2u^2 + 2^-53, |a| <= 1
+// Flops: 470 (df_asin, df_add_f, ex_asin_slope)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_asin:1
+$DF ex_asin($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_below_2m28(w)) return a;
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_asin(x);
+  return ex_from_bits(ex_ff_corrected(y, ex_asin_slope(x) * ex_ff_residual(w, x)));
+}
+
+// ex_acos: acos(a) (mode exact, doublet extension) through float-float, with the first-order correction -residual / sqrt(1 - x^2).
+// Algorithm: ex_to_ff; df_acos; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_acos); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_acos's bound (75u^2) + 2u^2 + 2^-53, |a| <= 1
+// Flops: 470 (df_acos, df_add_f, ex_asin_slope)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_acos:1
+$DF ex_acos($DF a) {
+  uvec2 w = ex_bits(a);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_acos(x);
+  return ex_from_bits(ex_ff_corrected(y, -ex_asin_slope(x) * ex_ff_residual(w, x)));
+}
+
+// ex_atan: atan(a) (mode exact, doublet extension) through float-float, with the first-order correction residual / (1 + x^2).
+// Algorithm: ex_to_ff; df_atan; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_atan); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_atan's bound (70u^2) + 2u^2 + 2^-53; |a| > FLT_MAX gives +-pi/2 rounded
+// Flops: 635 (df_atan, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_atan:1
+$DF ex_atan($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_below_2m28(w)) return a;
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_atan(x);
+  return ex_from_bits(ex_ff_corrected(y, ex_ff_residual(w, x) / (1.0 + x.hi * x.hi)));
+}
+
+// ex_atan2_scaled: y and x scaled by one power of two so that the larger exponent is about 0, when it is outside 2^+-30 (atan2 is invariant to it), so that the smaller one keeps float-float's full precision; finite operands only, otherwise unchanged.
+// Algorithm: ex_mul_bits by 2^(1023 - max exponent field): exact unless the smaller operand becomes subnormal (then one rounding; ex_atan2 has already answered a ratio below 2^-28 by a division, so the loss is far below the result's ulp)
+// Source: IEEE 754-2019, 5.3.3 (scaleB); C99 Annex F.9.1.4 (atan2)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+void ex_atan2_scaled(inout uvec2 y, inout uvec2 x) {
+  int fy = int((y.y >> 20) & 0x7FFu), fx = int((x.y >> 20) & 0x7FFu);
+  int e = max(fy, fx);
+  if (e == 0x7FF || (e >= 993 && e <= 1053)) return;
+  uvec2 scale = uvec2(0u, uint(2046 - e) << 20);
+  y = ex_mul_bits(y, scale);
+  x = ex_mul_bits(x, scale);
+}
+
+// ex_atan2: atan(a, b) = the angle of (b, a) (mode exact, doublet extension) through float-float, every finite a, b (both scaled by a power of two into float's range; a / b rounded once when b > 0 and |a / b| < 2^-28), with the first-order correction (b da - a db) / (a^2 + b^2) (in float, scaled by the larger magnitude).
+// Algorithm: ex_div_bits for a tiny positive-x ratio (atan t rounds to t); else ex_atan2_scaled, ex_to_ff of both, df_atan2, ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_atan2); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_atan2's bound (70u^2) + 2u^2 + 2^-53
+// Flops: 650 (df_atan2, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_atan2:1
+$DF ex_atan2($DF a, $DF b) {
+  uvec2 wy = ex_bits(a), wx = ex_bits(b);
+  int fy = max(int((wy.y >> 20) & 0x7FFu), 1), fx = int((wx.y >> 20) & 0x7FFu);
+  if (wx.y < 0x80000000u && fx >= 1 && fx < 0x7FF && fy + 29 < fx) return ex_from_bits(ex_div_bits(wy, wx));
+  ex_atan2_scaled(wy, wx);
+  ff_double y = ex_to_ff(wy), x = ex_to_ff(wx);
+  ff_double t = df_atan2(y, x);
+  float dy = ex_ff_residual(wy, y), dx = ex_ff_residual(wx, x);
+  float m = max(abs(x.hi), abs(y.hi));
+  float c = 0.0;
+  if ((dx != 0.0 || dy != 0.0) && m > 0.0) {
+    float xs = x.hi / m, ys = y.hi / m;
+    c = (xs * dy - ys * dx) / (m * (xs * xs + ys * ys));
+  }
+  return ex_from_bits(ex_ff_corrected(t, c));
+}
+
+// ex_sinh: sinh(a) (mode exact, doublet extension) through float-float, with the first-order correction cosh(a) * residual, cosh = sqrt(1 + y^2).
+// Algorithm: ex_to_ff; df_sinh; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_sinh); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_sinh's bound (50u^2) + 2u^2 + 2^-53, |a| <= 88.72 (beyond: +-Inf, float's range)
+// Flops: 600 (df_sinh, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_sinh:1
+$DF ex_sinh($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_below_2m28(w)) return a;
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_sinh(x);
+  float slope = abs(y.hi) > 1e18 ? abs(y.hi) : sqrt(1.0 + y.hi * y.hi);
+  return ex_from_bits(ex_ff_corrected(y, slope * ex_ff_residual(w, x)));
+}
+
+// ex_cosh: cosh(a) (mode exact, doublet extension) through float-float, with the first-order correction sinh(a) * residual, |sinh| = sqrt(y^2 - 1).
+// Algorithm: ex_to_ff; df_cosh; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_cosh); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_cosh's bound (20u^2) + 2u^2 + 2^-53, |a| <= 88.72 (beyond: +Inf, float's range)
+// Flops: 580 (df_cosh, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_cosh:1
+$DF ex_cosh($DF a) {
+  uvec2 w = ex_bits(a);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_cosh(x);
+  float slope = abs(y.hi) > 1e18 ? y.hi : sqrt(max(y.hi * y.hi - 1.0, 0.0));
+  return ex_from_bits(ex_ff_corrected(y, sign(x.hi) * slope * ex_ff_residual(w, x)));
+}
+
+// ex_tanh: tanh(a) (mode exact, doublet extension) through float-float, with the first-order correction (1 - y^2) * residual.
+// Algorithm: ex_to_ff; df_tanh; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_tanh); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_tanh's bound (50u^2) + 2u^2 + 2^-53; every a (+-1 beyond |a| > 22)
+// Flops: 600 (df_tanh, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_tanh:1
+$DF ex_tanh($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_below_2m28(w)) return a;
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_tanh(x);
+  return ex_from_bits(ex_ff_corrected(y, (1.0 - y.hi * y.hi) * ex_ff_residual(w, x)));
+}

@@ -43,7 +43,9 @@ struct EmitRequest {
   int es_version = 300;             // 100/300/310/320; desktop targets pass 320
   bool integer_eft = false;         // df64-int: the "@variant int" chunks (rules/int.glsl) replace
                                     // the same-named float EFTs
-  // Mode exact: the df_* structs hold uint words (binary64 high and low words), not floats.
+  // Mode exact: the df_* structs hold uint words (binary64 high and low words), not floats. A
+  // float-float rule that an exact rule calls (the transcendental bridges) is emitted with its
+  // types renamed ff_double/ff_dvecN (float words) and with the integer EFTs (as integer_eft).
   bool exact_words = false;
 };
 
