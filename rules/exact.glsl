@@ -462,6 +462,19 @@ uvec2 ex_sqrt_bits(uvec2 a) {
   return ex_round_pack(false, 1048 + e2 / 2, root);
 }
 
+// ex_fma_bits: fma(a, b, c) as native fp64 on lavapipe computes it: a * b rounded to binary64, then + c rounded (two roundings, not IEEE fusedMultiplyAdd).
+// Algorithm: p = ex_mul_bits(a, b), then ex_add_bits(p, c); with NaN operands native passes on the first NaN of a, b (then p, c) in operand order, not swapped as for a * b (measured by tests/exact/exact_fma_test.cpp)
+// Source: GLSL 4.60 specification, 2017, 8.3 (fma: "may" be a single operation; precision of a*b+c otherwise); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (two roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_fma_bits(uvec2 a, uvec2 b, uvec2 c) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
+  uvec2 p = ex_mul_bits(a, b);
+  if (ex_is_nan(p)) return p;
+  return ex_add_bits(p, c);
+}
+
 // ex_shr64: a >> n for 0 <= n < 64 (bits shifted out are dropped: truncation).
 // Algorithm: word shift by case n == 0, n < 32, n >= 32
 // Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
@@ -686,6 +699,18 @@ $DF ex_div($DF a, $DF b) {
 // @min-es 300
 $DF ex_sqrt($DF a) {
   return ex_from_bits(ex_sqrt_bits(ex_bits(a)));
+}
+
+// ex_fma: fma(a, b, c) (mode exact): as native fp64 on lavapipe, a * b rounded, then + c rounded.
+// Algorithm: ex_fma_bits on the patterns
+// Source: GLSL 4.60 specification, 2017, 8.3 (fma); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (two roundings)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_fma($DF a, $DF b, $DF c) {
+  return ex_from_bits(ex_fma_bits(ex_bits(a), ex_bits(b), ex_bits(c)));
 }
 
 // ex_neg: -a (mode exact): the sign bit flipped.
@@ -1136,4 +1161,835 @@ df_double ex_pack_double2x32(uvec2 v) {
 // @min-es 300
 uvec2 ex_unpack_double2x32(df_double a) {
   return ex_bits(a);
+}
+
+// ex_to_ff: the float-float pair nearest a binary64 pattern: hi = float(a), lo = float(a - hi); (float(a), 0) when hi is not finite (|a| > FLT_MAX, Inf, NaN).
+// Algorithm: two roundings to float (ex_to_float_bits); a - hi is exact in binary64. hi + lo keeps 48 of a's 53 bits; ex_ff_residual gives the rest
+// Source: Dekker, Numer. Math. 18, 1971 (double-word representation); IEEE 754-2019, 5.4.2
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+ff_double ex_to_ff(uvec2 a) {
+  uint h = ex_to_float_bits(a);
+  if ((h & 0x7F800000u) == 0x7F800000u) return ff_double(uintBitsToFloat(h), 0.0);
+  uvec2 rest = ex_sub_bits(a, ex_from_float_bits(uintBitsToFloat(h)));
+  return ff_double(uintBitsToFloat(h), uintBitsToFloat(ex_to_float_bits(rest)));
+}
+
+// ex_ff_residual: a - (f.hi + f.lo), the part of a binary64 its float-float pair f = ex_to_ff(a) lost, rounded to float (0 when f is not finite).
+// Algorithm: two exact binary64 subtractions (a - hi, then the rounding error of lo), rounded once to float
+// Source: IEEE 754-2019, 5.4.1; Boldo, Daumas, ARITH-16, 2003 (the error of a rounding is representable)
+// Bound: 0.5 ulp (correctly rounded, of the residual)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+float ex_ff_residual(uvec2 a, ff_double f) {
+  if ((floatBitsToUint(f.hi) & 0x7F800000u) == 0x7F800000u) return 0.0;
+  uvec2 rest = ex_sub_bits(ex_sub_bits(a, ex_from_float_bits(f.hi)), ex_from_float_bits(f.lo));
+  return uintBitsToFloat(ex_to_float_bits(rest));
+}
+
+// ex_from_ff: the binary64 nearest f.hi + f.lo (one rounding); a non-finite hi, or lo = 0 (which keeps the sign of a zero hi), gives float(hi) exactly.
+// Algorithm: both words widened exactly (ex_from_float_bits), then ex_add_bits
+// Source: IEEE 754-2019, 5.4.1, 5.4.2
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_from_ff(ff_double f) {
+  uvec2 h = ex_from_float_bits(f.hi);
+  if ((floatBitsToUint(f.hi) & 0x7F800000u) == 0x7F800000u || f.lo == 0.0) return h;
+  return ex_add_bits(h, ex_from_float_bits(f.lo));
+}
+
+// ex_ff_corrected: y + c for a float correction c (the first-order term f'(x) * residual), skipped when c is 0 or not finite or y is not finite.
+// Algorithm: DWPlusFP (df_add_f) when it applies, then ex_from_ff: one rounding to binary64
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2 (DWPlusFP, 2u^2)
+// Bound: 2u^2 + 0.5 ulp of binary64
+// Flops: 11 (df_add_f)
+// @min-es 300
+// @uses df_add_f:1
+uvec2 ex_ff_corrected(ff_double y, float c) {
+  bool finite = (floatBitsToUint(y.hi) & 0x7F800000u) != 0x7F800000u && (floatBitsToUint(c) & 0x7F800000u) != 0x7F800000u;
+  if (!finite || c == 0.0) return ex_from_ff(y);
+  return ex_from_ff(df_add_f(y, c));
+}
+
+// ex_exp: exp(a) (mode exact, doublet extension) through float-float: df_exp of the float-float pair of a, plus y * residual, rounded once.
+// Algorithm: ex_to_ff; df_exp (rules/transcendental.glsl); first-order correction exp(x + d) = y (1 + d); ex_ff_corrected
+// Source: Cody, Waite, 1980 (df_exp); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_exp's bound (10u^2) + 2u^2 + 2^-53, for -70.7 <= a <= 88.72 (float's range: above, +Inf; below, lo turns subnormal, then 0)
+// Flops: 570 (df_exp, df_add_f; integer conversions besides)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_exp:1
+$DF ex_exp($DF a) {
+  uvec2 w = ex_bits(a);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_exp(x);
+  return ex_from_bits(ex_ff_corrected(y, y.hi * ex_ff_residual(w, x)));
+}
+
+// ex_exp2: exp2(a) (mode exact, doublet extension) through float-float, with the first-order correction y ln2 * residual.
+// Algorithm: ex_to_ff; df_exp2; exp2(x + d) = y (1 + d ln2); ex_ff_corrected
+// Source: Cody, Waite, 1980 (df_exp2); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_exp2's bound (12u^2) + 2u^2 + 2^-53, for -102 <= a < 128 (float's range)
+// Flops: 560 (df_exp2, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_exp2:1
+$DF ex_exp2($DF a) {
+  uvec2 w = ex_bits(a);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_exp2(x);
+  return ex_from_bits(ex_ff_corrected(y, y.hi * (ex_ff_residual(w, x) * 0.693147182)));
+}
+
+// ex_log_scaled: a positive finite a outside [2^-90, 2^90] written m * 2^e, m in [1, 2) (subnormals normalized first); elsewhere m = a, e = 0.
+// Algorithm: exponent field replaced by the bias (1023), the unbiased exponent returned in e
+// Source: IEEE 754-2019, 5.3.3 (logB, scaleB)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_log_scaled(uvec2 a, out int e) {
+  e = 0;
+  int field = int((a.y >> 20) & 0x7FFu);
+  if (a.y >= 0x80000000u || field >= 0x7FF || (a.x | (a.y & 0x7FFFFFFFu)) == 0u || (field >= 933 && field <= 1113)) return a;
+  int x;
+  uvec2 m = ex_normalize_sig(a, x);
+  e = x - 1023;
+  return uvec2(m.x, (m.y & 0x000FFFFFu) | 0x3FF00000u);
+}
+
+// ex_log: log(a) (mode exact, doublet extension) through float-float, every positive finite binary64 (outside [2^-90, 2^90] as log m + e ln2), with the first-order correction residual / x.
+// Algorithm: ex_log_scaled; ex_to_ff; df_log; + residual / m.hi; + e * ln2 (a float-float ln2, DWTimesFP, DWPlusDW); ex_from_ff
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_log); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_log's bound (28u^2) + 2u^2 + 2^-53 for every positive finite a; log(0) = -Inf, log(a < 0) = NaN, log(+Inf) = +Inf
+// Flops: 510 (df_log, df_add_f; df_mul_f and df_add beyond [2^-90, 2^90])
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_log:1 df_add_f:1 df_mul_f:1 df_add:1
+$DF ex_log($DF a) {
+  int e;
+  uvec2 w = ex_log_scaled(ex_bits(a), e);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_log(x);
+  float d = ex_ff_residual(w, x);
+  if (d != 0.0 && x.hi != 0.0) y = df_add_f(y, d / x.hi);
+  if (e != 0) y = df_add(y, df_mul_f(ff_double(0.693147182, -1.90465421e-09), float(e)));
+  return ex_from_bits(ex_from_ff(y));
+}
+
+// ex_log2: log2(a) (mode exact, doublet extension) through float-float, every positive finite binary64 (outside [2^-90, 2^90] as log2 m + e), with the first-order correction residual / (x ln2).
+// Algorithm: ex_log_scaled; ex_to_ff; df_log2; + residual / (m.hi ln2); + e (exact float); ex_from_ff
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_log2); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_log2's bound (37u^2) + 2u^2 + 2^-53 for every positive finite a
+// Flops: 520 (df_log2, df_add_f twice)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_log2:1 df_add_f:1
+$DF ex_log2($DF a) {
+  int e;
+  uvec2 w = ex_log_scaled(ex_bits(a), e);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_log2(x);
+  float d = ex_ff_residual(w, x);
+  if (d != 0.0 && x.hi != 0.0) y = df_add_f(y, d / x.hi * 1.44269502);
+  if (e != 0) y = df_add_f(y, float(e));
+  return ex_from_bits(ex_from_ff(y));
+}
+
+// ex_pow: pow(a, b) (mode exact, doublet extension) through float-float, with the first-order corrections p (b/a da + log(a) db).
+// Algorithm: ex_to_ff of both; df_pow; ex_ff_corrected with the float partial derivatives
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_pow = exp(y log x)); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_pow's bound (40u^2 + 31u^2 |b log a|) + 2u^2 + 2^-53, for a, b and the result inside float's range
+// Flops: 1040 (df_pow, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_pow:1
+$DF ex_pow($DF a, $DF b) {
+  uvec2 wa = ex_bits(a), wb = ex_bits(b);
+  ff_double x = ex_to_ff(wa), y = ex_to_ff(wb);
+  ff_double p = df_pow(x, y);
+  float dx = ex_ff_residual(wa, x), dy = ex_ff_residual(wb, y);
+  float c = 0.0;
+  if (dx != 0.0 && x.hi != 0.0) c += y.hi * (dx / x.hi);
+  if (dy != 0.0 && x.hi > 0.0) c += log(x.hi) * dy;
+  return ex_from_bits(ex_ff_corrected(p, p.hi * c));
+}
+
+// ex_below_2m28: |a| < 2^-28 (zeros and subnormals included): there sin, tan, asin, atan, sinh and tanh of a round to a itself (a(1 +- a^2/3) is within half an ulp), which the float-float path could not give below float's range.
+// Algorithm: high word of |a| against that of 2^-28
+// Source: Muller, Elementary Functions, 3rd ed., 2016, section 10.1 (f(x) = x for tiny x); IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_below_2m28(uvec2 a) {
+  return (a.y & 0x7FFFFFFFu) < 0x3E300000u;
+}
+
+// ex_trig_reduce: the binary64 a reduced by pi/2: a = r + k pi/2, |r| <= pi/4 about, r as float-float: df_trig_reduce on a's float-float pair, then the residual (the part of a the pair lost, at most 5 bits, exact in float) added to r.
+// Algorithm: ex_to_ff; df_trig_reduce (Cody-Waite, four-word pi/2); r + residual (DWPlusFP)
+// Source: Cody, Waite, 1980; Muller, Elementary Functions, 3rd ed., 2016, section 11.2; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_trig_reduce's bound (6u^2 * abs(r) + abs(a) * 2^-96 absolute) + 2u^2 * abs(r)
+// Flops: 280 (df_trig_reduce, df_add_f)
+// Range: |a| < 2^40; without `precise` (mode exact has no guard) Mesa costs bits beyond 2^20 (docs/modes.md).
+// @min-es 300
+// @uses df_trig_reduce:1 df_add_f:1
+ff_double ex_trig_reduce(uvec2 a, out int k) {
+  ff_double x = ex_to_ff(a);
+  ff_double r = df_trig_reduce(x, k);
+  float d = ex_ff_residual(a, x);
+  if (d != 0.0) r = df_add_f(r, d);
+  return r;
+}
+
+// ex_trig_outside: true when sin, cos and tan of a are NaN here (a NaN a passed on, quiet; else the default NaN): |a| >= 2^40, Inf or NaN (float-float's reduction ends at 2^40).
+// Algorithm: high word of |a| against that of 2^40
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+bool ex_trig_outside(uvec2 a) {
+  return (a.y & 0x7FFFFFFFu) >= 0x42700000u;
+}
+
+// ex_sin: sin(a) (mode exact, doublet extension) through float-float: a reduced by pi/2 (ex_trig_reduce, the residual included), the quadrant's kernel, one rounding. sin(+-0) = +-0; |a| >= 2^40: NaN.
+// Algorithm: ex_trig_reduce; df_sin_quadrant at quadrant k; ex_from_ff
+// Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
+// Bound: df_sin's bound (20u^2 relative plus abs(a) * 2^-96 absolute) + 2u^2 + 2^-53
+// Flops: 600 (on the path taken)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_sin_quadrant:1
+$DF ex_sin($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_trig_outside(w)) return ex_from_bits(ex_is_nan(w) ? ex_pick_nan(w, w) : uvec2(0u, 0xFFF80000u));
+  if (ex_below_2m28(w)) return a;
+  int k;
+  ff_double r = ex_trig_reduce(w, k);
+  return ex_from_bits(ex_from_ff(df_sin_quadrant(r, k)));
+}
+
+// ex_cos: cos(a) (mode exact, doublet extension) = sin(a + pi/2) through float-float. |a| >= 2^40: NaN.
+// Algorithm: ex_trig_reduce; df_sin_quadrant at quadrant k + 1; ex_from_ff
+// Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
+// Bound: df_cos's bound (20u^2 relative plus abs(a) * 2^-96 absolute) + 2u^2 + 2^-53
+// Flops: 600 (on the path taken)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_sin_quadrant:1
+$DF ex_cos($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_trig_outside(w)) return ex_from_bits(ex_is_nan(w) ? ex_pick_nan(w, w) : uvec2(0u, 0xFFF80000u));
+  int k;
+  ff_double r = ex_trig_reduce(w, k);
+  return ex_from_bits(ex_from_ff(df_sin_quadrant(r, (k + 1) & 3)));
+}
+
+// ex_tan: tan(a) (mode exact, doublet extension) = sin / cos of the reduced argument through float-float (the residual included before the kernels, so no first-order step near the poles). tan(+-0) = +-0; |a| >= 2^40: NaN.
+// Algorithm: ex_trig_reduce; df_sin_quadrant at k and k + 1 (sin r / cos r, or -cos r / sin r); DWDivDW2; ex_from_ff
+// Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: 40u^2 (relative) plus abs(a) * 2^-96 absolute times (1 + tan(a)^2), + 2u^2 + 2^-53 (df_tan's bound: the same kernels and division)
+// Flops: 960 (on the path taken)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_sin_quadrant:1 df_div:1
+$DF ex_tan($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_trig_outside(w)) return ex_from_bits(ex_is_nan(w) ? ex_pick_nan(w, w) : uvec2(0u, 0xFFF80000u));
+  if (ex_below_2m28(w)) return a;
+  int k;
+  ff_double r = ex_trig_reduce(w, k);
+  ff_double t = df_div(df_sin_quadrant(r, k), df_sin_quadrant(r, (k + 1) & 3));
+  return ex_from_bits(ex_from_ff(t));
+}
+
+// ex_asin_slope: 1 / sqrt(1 - x^2) in float from the float-float x (|x| <= 1), 0 where it is not finite: the derivative asin' for the first-order correction.
+// Algorithm: (1 - hi - lo)(1 + hi + lo) in float (1 - hi exact by Sterbenz), inversesqrt
+// Source: Sterbenz, Floating-Point Computation, 1974 (exact subtraction)
+// Bound: float accuracy (a few 2^-24 relative): it scales a correction below 2^-48 of the result, so its error stays below u^2 of the result
+// Flops: 7
+// @min-es 300
+float ex_asin_slope(ff_double x) {
+  float s = ((1.0 - abs(x.hi)) - sign(x.hi) * x.lo) * ((1.0 + abs(x.hi)) + sign(x.hi) * x.lo);
+  if (!(s > 0.0)) return 0.0;
+  return inversesqrt(s);
+}
+
+// ex_asin: asin(a) (mode exact, doublet extension) through float-float, with the first-order correction residual / sqrt(1 - x^2).
+// Algorithm: ex_to_ff; df_asin; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_asin = atan(x, sqrt((1-x)(1+x)))); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_asin's bound (75u^2) + 2u^2 + 2^-53, |a| <= 1
+// Flops: 470 (df_asin, df_add_f, ex_asin_slope)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_asin:1
+$DF ex_asin($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_below_2m28(w)) return a;
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_asin(x);
+  return ex_from_bits(ex_ff_corrected(y, ex_asin_slope(x) * ex_ff_residual(w, x)));
+}
+
+// ex_acos: acos(a) (mode exact, doublet extension) through float-float, with the first-order correction -residual / sqrt(1 - x^2).
+// Algorithm: ex_to_ff; df_acos; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_acos); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_acos's bound (75u^2) + 2u^2 + 2^-53, |a| <= 1
+// Flops: 470 (df_acos, df_add_f, ex_asin_slope)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_acos:1
+$DF ex_acos($DF a) {
+  uvec2 w = ex_bits(a);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_acos(x);
+  return ex_from_bits(ex_ff_corrected(y, -ex_asin_slope(x) * ex_ff_residual(w, x)));
+}
+
+// ex_atan: atan(a) (mode exact, doublet extension) through float-float, with the first-order correction residual / (1 + x^2).
+// Algorithm: ex_to_ff; df_atan; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_atan); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_atan's bound (70u^2) + 2u^2 + 2^-53; |a| > FLT_MAX gives +-pi/2 rounded
+// Flops: 635 (df_atan, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_atan:1
+$DF ex_atan($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_below_2m28(w)) return a;
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_atan(x);
+  return ex_from_bits(ex_ff_corrected(y, ex_ff_residual(w, x) / (1.0 + x.hi * x.hi)));
+}
+
+// ex_atan2_scale: the power of two that brings the larger exponent of y and x to about 0 when it is outside 2^+-30 (atan2 is invariant to scaling both), so that the smaller one keeps float-float's full precision; 1 otherwise (and for Inf and NaN).
+// Algorithm: 2^(1023 - max exponent field) as a pattern; multiplying by it is exact unless the smaller operand becomes subnormal (then one rounding; ex_atan2 has already answered a ratio below 2^-28 by a division, so the loss is far below the result's ulp)
+// Source: IEEE 754-2019, 5.3.3 (scaleB); C99 Annex F.9.1.4 (atan2)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_atan2_scale(uvec2 y, uvec2 x) {
+  int e = max(int((y.y >> 20) & 0x7FFu), int((x.y >> 20) & 0x7FFu));
+  if (e == 0x7FF || (e >= 993 && e <= 1053)) return uvec2(0u, 0x3FF00000u);
+  return uvec2(0u, uint(2046 - e) << 20);
+}
+
+// ex_atan2: atan(a, b) = the angle of (b, a) (mode exact, doublet extension) through float-float, every finite a, b (both scaled by a power of two into float's range; a / b rounded once when b > 0 and |a / b| < 2^-28), with the first-order correction (b da - a db) / (a^2 + b^2) (in float, scaled by the larger magnitude).
+// Algorithm: ex_div_bits for a tiny positive-x ratio (atan t rounds to t); else both scaled by ex_atan2_scale, ex_to_ff of both, df_atan2, ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_atan2); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_atan2's bound (70u^2) + 2u^2 + 2^-53
+// Flops: 650 (df_atan2, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_atan2:1
+$DF ex_atan2($DF a, $DF b) {
+  uvec2 wy = ex_bits(a), wx = ex_bits(b);
+  int fy = max(int((wy.y >> 20) & 0x7FFu), 1), fx = int((wx.y >> 20) & 0x7FFu);
+  if (wx.y < 0x80000000u && fx >= 1 && fx < 0x7FF && fy + 29 < fx) return ex_from_bits(ex_div_bits(wy, wx));
+  uvec2 scale = ex_atan2_scale(wy, wx);
+  wy = ex_mul_bits(wy, scale);
+  wx = ex_mul_bits(wx, scale);
+  ff_double y = ex_to_ff(wy), x = ex_to_ff(wx);
+  ff_double t = df_atan2(y, x);
+  float dy = ex_ff_residual(wy, y), dx = ex_ff_residual(wx, x);
+  float m = max(abs(x.hi), abs(y.hi));
+  float c = 0.0;
+  if ((dx != 0.0 || dy != 0.0) && m > 0.0) {
+    float xs = x.hi / m, ys = y.hi / m;
+    c = (xs * dy - ys * dx) / (m * (xs * xs + ys * ys));
+  }
+  return ex_from_bits(ex_ff_corrected(t, c));
+}
+
+// ex_sinh: sinh(a) (mode exact, doublet extension) through float-float, with the first-order correction cosh(a) * residual, cosh = sqrt(1 + y^2).
+// Algorithm: ex_to_ff; df_sinh; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_sinh); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_sinh's bound (50u^2) + 2u^2 + 2^-53, |a| <= 88.72 (beyond: +-Inf, float's range)
+// Flops: 600 (df_sinh, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_sinh:1
+$DF ex_sinh($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_below_2m28(w)) return a;
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_sinh(x);
+  float slope = abs(y.hi) > 1e18 ? abs(y.hi) : sqrt(1.0 + y.hi * y.hi);
+  return ex_from_bits(ex_ff_corrected(y, slope * ex_ff_residual(w, x)));
+}
+
+// ex_cosh: cosh(a) (mode exact, doublet extension) through float-float, with the first-order correction sinh(a) * residual, |sinh| = sqrt(y^2 - 1).
+// Algorithm: ex_to_ff; df_cosh; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_cosh); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_cosh's bound (20u^2) + 2u^2 + 2^-53, |a| <= 88.72 (beyond: +Inf, float's range)
+// Flops: 580 (df_cosh, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_cosh:1
+$DF ex_cosh($DF a) {
+  uvec2 w = ex_bits(a);
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_cosh(x);
+  float slope = abs(y.hi) > 1e18 ? y.hi : sqrt(max(y.hi * y.hi - 1.0, 0.0));
+  return ex_from_bits(ex_ff_corrected(y, sign(x.hi) * slope * ex_ff_residual(w, x)));
+}
+
+// ex_tanh: tanh(a) (mode exact, doublet extension) through float-float, with the first-order correction (1 - y^2) * residual.
+// Algorithm: ex_to_ff; df_tanh; ex_ff_corrected
+// Source: Muller, Elementary Functions, 3rd ed., 2016 (df_tanh); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
+// Bound: df_tanh's bound (50u^2) + 2u^2 + 2^-53; every a (+-1 beyond |a| > 22)
+// Flops: 600 (df_tanh, df_add_f)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+// @uses df_tanh:1
+$DF ex_tanh($DF a) {
+  uvec2 w = ex_bits(a);
+  if (ex_below_2m28(w)) return a;
+  ff_double x = ex_to_ff(w);
+  ff_double y = df_tanh(x);
+  return ex_from_bits(ex_ff_corrected(y, (1.0 - y.hi * y.hi) * ex_ff_residual(w, x)));
+}
+
+// ex_mul_first: a * b with a's NaN passed on first, as native's built-in sequences (dot, cross, smoothstep...) order their products (measured by tests/exact/exact_builtins_test.cpp).
+// Algorithm: ex_mul_bits(b, a): multiplication is commutative in value; only the NaN choice changes
+// Source: IEEE 754-2019, 5.4.1, 6.2.3
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_mul_first(uvec2 a, uvec2 b) {
+  return ex_mul_bits(b, a);
+}
+
+// ex_add_first: a + b with a's NaN passed on first (the order of native's dot-product chains).
+// Algorithm: ex_add_bits(b, a): addition is commutative in value, signed zeros included; only the NaN choice changes
+// Source: IEEE 754-2019, 5.4.1, 6.2.3, 6.3
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_add_first(uvec2 a, uvec2 b) {
+  return ex_add_bits(b, a);
+}
+
+// ex_sub_last: a - b with b's NaN passed on first (the last subtraction of native's reflect and refract).
+// Algorithm: NaN operands: ex_pick_nan(b, a); else ex_sub_bits
+// Source: IEEE 754-2019, 5.4.1, 6.2.3
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_sub_last(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
+  return ex_sub_bits(a, b);
+}
+
+// ex_inversesqrt: inversesqrt(a) (mode exact) as native fp64 on lavapipe computes it: 1 / sqrt(a), two roundings.
+// Algorithm: ex_div_bits(1, ex_sqrt_bits(a))
+// Source: GLSL ES 3.20, 2019, 8.2 (inversesqrt); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (two roundings)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_inversesqrt($DF a) {
+  return ex_from_bits(ex_div_bits(uvec2(0u, 0x3FF00000u), ex_sqrt_bits(ex_bits(a))));
+}
+
+// ex_mix: mix(x, y, a) (mode exact) as native fp64 on lavapipe computes it: fma(y, a, x * (1 - a)), its fma rounding twice (ex_fma_bits).
+// Algorithm: ex_fma_bits(y, a, ex_mul_bits(x, ex_sub_bits(1, a))): x(1 - a) + ya, every step rounded
+// Source: GLSL ES 3.20, 2019, 8.3 (mix = x(1 - a) + ya); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (four roundings)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_mix($DF x, $DF y, $DF a) {
+  uvec2 wa = ex_bits(a);
+  uvec2 rest = ex_mul_bits(ex_bits(x), ex_sub_bits(uvec2(0u, 0x3FF00000u), wa));
+  return ex_from_bits(ex_fma_bits(ex_bits(y), wa, rest));
+}
+
+// ex_mix_bool: mix(x, y, a) with a boolean a (mode exact): y where a is true, else x.
+// Algorithm: selection per component
+// Source: GLSL ES 3.20, 2019, 8.3 (mix with a bool selector)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_mix_bool($DF x, $DF y, $B a) {
+  if (a) return y;
+  return x;
+}
+
+// ex_step: step(edge, x) (mode exact): 0 when x < edge, else 1 (1 with a NaN, as native's x < edge test gives).
+// Algorithm: ex_lt_bits(x, edge) and select
+// Source: GLSL ES 3.20, 2019, 8.3 (step)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_step($DF edge, $DF x) {
+  if (ex_lt_bits(ex_bits(x), ex_bits(edge))) return df_double(0u, 0u);
+  return df_double(0x3FF00000u, 0u);
+}
+
+// ex_smoothstep: smoothstep(e0, e1, x) (mode exact) as native fp64 on lavapipe computes it: t = clamp((x - e0) / (e1 - e0), 0, 1) (a NaN quotient gives 0), then t * (t * (3 - 2t)), every step rounded.
+// Algorithm: ex_sub_bits, ex_div_bits, min/max with the non-NaN operand (as ex_min/ex_max), ex_mul_first and ex_sub_bits in native's order
+// Source: GLSL ES 3.20, 2019, 8.3 (smoothstep); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (seven roundings)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_smoothstep($DF e0, $DF e1, $DF x) {
+  uvec2 w0 = ex_bits(e0);
+  uvec2 q = ex_div_bits(ex_sub_bits(ex_bits(x), w0), ex_sub_bits(ex_bits(e1), w0));
+  uvec2 one = uvec2(0u, 0x3FF00000u);
+  uvec2 t = q;
+  if (ex_is_nan(q) || ex_lt_bits(q, uvec2(0u))) t = uvec2(0u);
+  if (ex_lt_bits(one, t)) t = one;
+  uvec2 s = ex_sub_bits(uvec2(0u, 0x40080000u), ex_mul_first(uvec2(0u, 0x40000000u), t));
+  return ex_from_bits(ex_mul_first(t, ex_mul_first(t, s)));
+}
+
+// ex_pow2_field: 2^h built from its exponent field, for -1023 <= h <= 1023 (h = -1023 gives 0, not the subnormal 2^-1023: native's power of two has a normal exponent field only).
+// Algorithm: exponent field h + 1023, significand 0
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_pow2_field(int h) {
+  if (h + 1023 <= 0) return uvec2(0u);
+  return uvec2(0u, uint(h + 1023) << 20);
+}
+
+// ex_ldexp: ldexp(a, e) (mode exact) as native fp64 on lavapipe computes it: e clamped to [-2046, 2046], then a * 2^(e >> 1) * 2^(e - (e >> 1)), each product rounded (so a subnormal result can be rounded twice, and a factor 2^-1023 is 0).
+// Algorithm: clamp; two ex_mul_bits by powers of two built from exponent fields (ex_pow2_field)
+// Source: GLSL ES 3.20, 2019, 8.3 (ldexp: undefined when the result overflows); IEEE 754-2019, 5.3.3 (scaleB); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step (two roundings; exact unless the result is subnormal)
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @per-component
+// @min-es 300
+$DF ex_ldexp($DF a, $I e) {
+  int c = clamp(e, -2046, 2046);
+  int h = c >> 1;
+  return ex_from_bits(ex_mul_bits(ex_mul_bits(ex_bits(a), ex_pow2_field(h)), ex_pow2_field(c - h)));
+}
+
+// ex_frexp: frexp(a, e) (mode exact) as native fp64 on lavapipe computes it: the exponent field replaced by 1022 (significand bits kept, so a subnormal gives a significand below 0.5), e = field - 1022; +-0 gives (+-0, 0); Inf and NaN keep their bits with e = 1025.
+// Algorithm: exponent field arithmetic on the pattern
+// Source: GLSL ES 3.20, 2019, 8.3 (frexp: undefined for Inf and NaN); IEEE 754-2019, 5.3.3 (logB); measured by tests/exact/exact_builtins_test.cpp
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+df_double ex_frexp(df_double a, out int e) {
+  uint absHi = a.hi & 0x7FFFFFFFu;
+  if ((absHi | a.lo) == 0u) {
+    e = 0;
+    return a;
+  }
+  e = int(absHi >> 20) - 1022;
+  if (absHi >= 0x7FF00000u) return a;
+  return df_double((a.hi & 0x800FFFFFu) | 0x3FE00000u, a.lo);
+}
+
+// ex_frexp: frexp(a, e) on a vector (mode exact): ex_frexp per component.
+// Algorithm: ex_frexp per component
+// Source: GLSL ES 3.20, 2019, 8.3 (frexp)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 2 3 4
+// @min-es 300
+// @uses ex_frexp:1
+$DF ex_frexp($DF a, out $I e) {
+  $DF m = a;
+  for (int k = 0; k < $W; ++k) {
+    int ek;
+    df_double c = ex_frexp(df_double(a.hi[k], a.lo[k]), ek);
+    e[k] = ek;
+    m.hi[k] = c.hi;
+    m.lo[k] = c.lo;
+  }
+  return m;
+}
+
+// ex_modf_bits: the fraction of a with its integral part in i, as native fp64 on lavapipe computes them: t = trunc(|a|), f = |a| - t (0 for Inf), both negated when a < 0 (so -0 gives +0 and +0; a NaN gives itself quiet with the sign cleared).
+// Algorithm: ex_round_integral_bits toward zero on |a|, ex_sub_bits, sign by ex_lt_bits(a, 0)
+// Source: GLSL ES 3.20, 2019, 8.3 (modf); IEEE 754-2019, 5.3.1; measured by tests/exact/exact_builtins_test.cpp
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_modf_bits(uvec2 a, out uvec2 i) {
+  uvec2 m = uvec2(a.x, a.y & 0x7FFFFFFFu);
+  uvec2 t = ex_round_integral_bits(m, 0);
+  uvec2 f = (m.y == 0x7FF00000u && m.x == 0u) ? uvec2(0u) : ex_sub_bits(m, t);
+  bool negative = ex_lt_bits(a, uvec2(0u));
+  i = negative ? ex_neg_bits(t) : t;
+  return negative ? ex_neg_bits(f) : f;
+}
+
+// ex_modf: modf(a, i) (mode exact): ex_modf_bits per component.
+// Algorithm: ex_modf_bits
+// Source: GLSL ES 3.20, 2019, 8.3 (modf)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+df_double ex_modf(df_double a, out df_double i) {
+  uvec2 w;
+  uvec2 f = ex_modf_bits(ex_bits(a), w);
+  i = ex_from_bits(w);
+  return ex_from_bits(f);
+}
+
+// ex_modf: modf(a, i) on a vector (mode exact): ex_modf_bits per component.
+// Algorithm: ex_modf_bits per component
+// Source: GLSL ES 3.20, 2019, 8.3 (modf)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 2 3 4
+// @uses ex_modf_bits:1
+// @min-es 300
+$DF ex_modf($DF a, out $DF i) {
+  $DF f = a;
+  i = a;
+  for (int k = 0; k < $W; ++k) {
+    uvec2 w;
+    uvec2 r = ex_modf_bits(uvec2(a.lo[k], a.hi[k]), w);
+    f.hi[k] = r.y;
+    f.lo[k] = r.x;
+    i.hi[k] = w.y;
+    i.lo[k] = w.x;
+  }
+  return f;
+}
+
+// ex_dot: dot(a, b) of two doubles (mode exact): a * b.
+// Algorithm: ex_mul_first
+// Source: GLSL ES 3.20, 2019, 8.5 (dot)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+df_double ex_dot(df_double a, df_double b) {
+  return ex_from_bits(ex_mul_first(ex_bits(a), ex_bits(b)));
+}
+
+// ex_dot: dot(a, b) (mode exact) as native fp64 on lavapipe computes it: ((a.x b.x + a.y b.y) + a.z b.z) + a.w b.w, every product and sum rounded, each operation passing on its first operand's NaN.
+// Algorithm: left-to-right chain of ex_mul_first and ex_add_first
+// Source: GLSL ES 3.20, 2019, 8.5 (dot); IEEE 754-2019, 5.4.1; measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step (2W - 1 roundings)
+// Flops: 0 (integer arithmetic)
+// @widths 2 3 4
+// @uses ex_mul_first:1 ex_add_first:1 ex_from_bits:1
+// @min-es 300
+df_double ex_dot($DF a, $DF b) {
+  uvec2 s = ex_mul_first(uvec2(a.lo.x, a.hi.x), uvec2(b.lo.x, b.hi.x));
+  for (int k = 1; k < $W; ++k) s = ex_add_first(s, ex_mul_first(uvec2(a.lo[k], a.hi[k]), uvec2(b.lo[k], b.hi[k])));
+  return ex_from_bits(s);
+}
+
+// ex_length: length(a) of a double (mode exact) as native fp64 on lavapipe computes it: sqrt(a * a) (so it overflows to Inf for |a| > 2^512 and is 0 for |a| < 2^-538, as native).
+// Algorithm: ex_sqrt_bits(ex_mul_bits(a, a))
+// Source: GLSL ES 3.20, 2019, 8.5 (length); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step (two roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+df_double ex_length(df_double a) {
+  uvec2 w = ex_bits(a);
+  return ex_from_bits(ex_sqrt_bits(ex_mul_bits(w, w)));
+}
+
+// ex_length: length(a) (mode exact) as native fp64 on lavapipe computes it: sqrt(dot(a, a)), no scaling.
+// Algorithm: ex_sqrt_bits of ex_dot
+// Source: GLSL ES 3.20, 2019, 8.5 (length)
+// Bound: 0.5 ulp per step (2W roundings)
+// Flops: 0 (integer arithmetic)
+// @widths 2 3 4
+// @uses ex_sqrt_bits:1 ex_bits:1 ex_from_bits:1
+// @min-es 300
+df_double ex_length($DF a) {
+  return ex_from_bits(ex_sqrt_bits(ex_bits(ex_dot(a, a))));
+}
+
+// ex_distance: distance(a, b) = length(a - b) (mode exact), as native.
+// Algorithm: ex_sub then ex_length
+// Source: GLSL ES 3.20, 2019, 8.5 (distance)
+// Bound: 0.5 ulp per step
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @min-es 300
+df_double ex_distance($DF a, $DF b) {
+  return ex_length(ex_sub(a, b));
+}
+
+// ex_normalize: normalize(a) of a double (mode exact) as native fp64 on lavapipe computes it: a / sqrt(a * a) (NaN for 0, 0 for |a| > 2^512).
+// Algorithm: ex_div_bits(a, ex_length)
+// Source: GLSL ES 3.20, 2019, 8.5 (normalize); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step (three roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+df_double ex_normalize(df_double a) {
+  return ex_from_bits(ex_div_bits(ex_bits(a), ex_bits(ex_length(a))));
+}
+
+// ex_normalize: normalize(a) (mode exact) as native fp64 on lavapipe computes it: each component divided by length(a).
+// Algorithm: ex_length, then ex_div_bits per component
+// Source: GLSL ES 3.20, 2019, 8.5 (normalize); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step (2W + 1 roundings)
+// Flops: 0 (integer arithmetic)
+// @widths 2 3 4
+// @uses ex_bits:1 ex_div_bits:1
+// @min-es 300
+$DF ex_normalize($DF a) {
+  uvec2 len = ex_bits(ex_length(a));
+  $DF r = a;
+  for (int k = 0; k < $W; ++k) {
+    uvec2 q = ex_div_bits(uvec2(a.lo[k], a.hi[k]), len);
+    r.hi[k] = q.y;
+    r.lo[k] = q.x;
+  }
+  return r;
+}
+
+// ex_cross_component: p * q - r * s, the products and the difference rounded, each passing on its first operand's NaN (one component of native's cross).
+// Algorithm: ex_sub_bits(ex_mul_first(p, q), ex_mul_first(r, s))
+// Source: GLSL ES 3.20, 2019, 8.5 (cross); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step (three roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_cross_component(uvec2 p, uvec2 q, uvec2 r, uvec2 s) {
+  return ex_sub_bits(ex_mul_first(p, q), ex_mul_first(r, s));
+}
+
+// ex_cross: cross(a, b) (mode exact) as native: (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x), every step rounded.
+// Algorithm: ex_cross_component per component
+// Source: GLSL ES 3.20, 2019, 8.5 (cross)
+// Bound: 0.5 ulp per step (three roundings per component)
+// Flops: 0 (integer arithmetic)
+// @widths 3
+// @uses ex_cross_component:1
+// @min-es 300
+df_dvec3 ex_cross(df_dvec3 a, df_dvec3 b) {
+  uvec2 ax = uvec2(a.lo.x, a.hi.x), ay = uvec2(a.lo.y, a.hi.y), az = uvec2(a.lo.z, a.hi.z);
+  uvec2 bx = uvec2(b.lo.x, b.hi.x), by = uvec2(b.lo.y, b.hi.y), bz = uvec2(b.lo.z, b.hi.z);
+  uvec2 x = ex_cross_component(ay, bz, az, by);
+  uvec2 y = ex_cross_component(az, bx, ax, bz);
+  uvec2 z = ex_cross_component(ax, by, ay, bx);
+  return df_dvec3(uvec3(x.y, y.y, z.y), uvec3(x.x, y.x, z.x));
+}
+
+// ex_faceforward: faceforward(n, i, nref) (mode exact): n if dot(nref, i) < 0, else -n (a NaN dot gives -n).
+// Algorithm: ex_dot, ex_lt_bits against 0, ex_neg
+// Source: GLSL ES 3.20, 2019, 8.5 (faceforward)
+// Bound: exact
+// Flops: 0 (integer arithmetic)
+// @widths 1 2 3 4
+// @uses ex_bits:1 ex_lt_bits:1
+// @min-es 300
+$DF ex_faceforward($DF n, $DF i, $DF nref) {
+  if (ex_lt_bits(ex_bits(ex_dot(nref, i)), uvec2(0u))) return n;
+  return ex_neg(n);
+}
+
+// ex_reflect: reflect(i, n) of doubles (mode exact) as native fp64 on lavapipe computes it: i - ((2 i) n) n (Mesa reassociates the constant of i - 2 (n i) n for scalars, so 2 i can overflow), every step rounded; the last subtraction passes on the product's NaN first.
+// Algorithm: ex_mul_first three times, ex_sub_last
+// Source: GLSL ES 3.20, 2019, 8.5 (reflect); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step (four roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+df_double ex_reflect(df_double i, df_double n) {
+  uvec2 wi = ex_bits(i), wn = ex_bits(n);
+  uvec2 t = ex_mul_first(ex_mul_first(ex_mul_first(uvec2(0u, 0x40000000u), wi), wn), wn);
+  return ex_from_bits(ex_sub_last(wi, t));
+}
+
+// ex_reflect: reflect(i, n) (mode exact) as native fp64 on lavapipe computes it: i - (2 dot(i, n)) n per component, every step rounded; the last subtraction passes on the product's NaN first.
+// Algorithm: ex_dot(i, n), ex_mul_first by 2, then ex_sub_last(i_k, t n_k) per component
+// Source: GLSL ES 3.20, 2019, 8.5 (reflect); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step
+// Flops: 0 (integer arithmetic)
+// @widths 2 3 4
+// @uses ex_mul_first:1 ex_bits:1 ex_sub_last:1
+// @min-es 300
+$DF ex_reflect($DF i, $DF n) {
+  uvec2 t = ex_mul_first(uvec2(0u, 0x40000000u), ex_bits(ex_dot(i, n)));
+  $DF r = i;
+  for (int k = 0; k < $W; ++k) {
+    uvec2 c = ex_sub_last(uvec2(i.lo[k], i.hi[k]), ex_mul_first(t, uvec2(n.lo[k], n.hi[k])));
+    r.hi[k] = c.y;
+    r.lo[k] = c.x;
+  }
+  return r;
+}
+
+// ex_refract_k: 1 - eta (eta (1 - d d)) for d = dot(i, n), every step rounded (native's order), the radicand of refract.
+// Algorithm: ex_mul_first, ex_sub_bits
+// Source: GLSL ES 3.20, 2019, 8.5 (refract); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step (five roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_refract_k(uvec2 d, uvec2 eta) {
+  uvec2 one = uvec2(0u, 0x3FF00000u);
+  uvec2 inner = ex_sub_bits(one, ex_mul_first(d, d));
+  return ex_sub_bits(one, ex_mul_first(eta, ex_mul_first(eta, inner)));
+}
+
+// ex_refract_component: eta i - (eta d + sqrt(k)) n for one component, every step rounded (native's order; the last subtraction passes on the product's NaN first).
+// Algorithm: ex_mul_first, ex_add_first, ex_sqrt_bits, ex_sub_last
+// Source: GLSL ES 3.20, 2019, 8.5 (refract)
+// Bound: 0.5 ulp per step
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_refract_component(uvec2 i, uvec2 n, uvec2 eta, uvec2 d, uvec2 k) {
+  uvec2 s = ex_add_first(ex_mul_first(eta, d), ex_sqrt_bits(k));
+  return ex_sub_last(ex_mul_first(eta, i), ex_mul_first(s, n));
+}
+
+// ex_refract: refract(i, n, eta) of doubles (mode exact) as native: k = 1 - eta (eta (1 - d d)), d = i n; 0 if k < 0, else eta i - (eta d + sqrt(k)) n.
+// Algorithm: ex_dot, ex_refract_k, ex_refract_component
+// Source: GLSL ES 3.20, 2019, 8.5 (refract)
+// Bound: 0.5 ulp per step
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+df_double ex_refract(df_double i, df_double n, df_double eta) {
+  uvec2 d = ex_bits(ex_dot(i, n)), e = ex_bits(eta);
+  uvec2 k = ex_refract_k(d, e);
+  if (ex_lt_bits(k, uvec2(0u))) return df_double(0u, 0u);
+  return ex_from_bits(ex_refract_component(ex_bits(i), ex_bits(n), e, d, k));
+}
+
+// ex_refract: refract(i, n, eta) (mode exact) as native: k = 1 - eta (eta (1 - d d)), d = dot(i, n); 0 if k < 0, else eta i - (eta d + sqrt(k)) n per component, every step rounded.
+// Algorithm: ex_dot, ex_refract_k, ex_refract_component per component
+// Source: GLSL ES 3.20, 2019, 8.5 (refract); measured by tests/exact/exact_builtins_test.cpp
+// Bound: 0.5 ulp per step
+// Flops: 0 (integer arithmetic)
+// @widths 2 3 4
+// @uses ex_bits:1 ex_dot:1,W ex_refract_k:1 ex_lt_bits:1 ex_refract_component:1
+// @min-es 300
+$DF ex_refract($DF i, $DF n, df_double eta) {
+  uvec2 d = ex_bits(ex_dot(i, n)), e = ex_bits(eta);
+  uvec2 k = ex_refract_k(d, e);
+  $DF r = $DF($U(0u), $U(0u));
+  if (ex_lt_bits(k, uvec2(0u))) return r;
+  for (int c = 0; c < $W; ++c) {
+    uvec2 v = ex_refract_component(uvec2(i.lo[c], i.hi[c]), uvec2(n.lo[c], n.hi[c]), e, d, k);
+    r.hi[c] = v.y;
+    r.lo[c] = v.x;
+  }
+  return r;
 }

@@ -648,9 +648,10 @@ class DoubleLowering {
     for (const auto& a : args)
       if (is_df(a->type)) width = std::max(width, df_width(a->type));
     if (n == "mix" && args[2]->type.base == ir::Base::Bool) rule_name = "df_mix_bool";
-    if (n == "normalize" && width == 1) rule_name = "df_sign";
+    // normalize(x) = x / |x| is sign(x) for float-float; mode exact repeats native's x / sqrt(x * x).
+    if (n == "normalize" && width == 1 && !exact()) rule_name = "df_sign";
     if (n == "atan" && args.size() == 2) rule_name = "df_atan2";
-    if (n == "frexp" && width > 1) {
+    if (n == "frexp" && width > 1 && !exact()) {  // rules/exact.glsl has ex_frexp on vectors
       ctx_.error(e->loc, "frexp on double vectors is not supported yet; call it per component");
       return e;
     }

@@ -43,6 +43,10 @@ struct Chunk {
   std::map<std::string, std::string> fields;  // Algorithm, Source, Bound, Flops
 };
 
+// Modes exact and rte-exact: the rules of these files work on binary64 words (df_* structs of uints);
+// any other rule they call (a transcendental bridge's callee) keeps float words, as ff_* types.
+bool holds_binary64_words(const Chunk& c) { return c.file == "exact.glsl" || c.file == "rte_exact.glsl"; }
+
 std::string trim(std::string_view s) {
   size_t b = 0, e = s.size();
   while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
@@ -102,6 +106,30 @@ std::string es_name(int es) {
 std::string df_type(int w) { return w == 1 ? "df_double" : "df_dvec" + std::to_string(w); }
 std::string vec_type(const char* scalar, const char* vec, int w) {
   return w == 1 ? std::string(scalar) : std::string(vec) + std::to_string(w);
+}
+
+// Mode exact's name for the float-float types: there df_double holds binary64 words, and the
+// float-float rules that rules/exact.glsl bridges to (the transcendentals) keep their float pairs
+// under this name.
+std::string ff_type(int w) { return w == 1 ? "ff_double" : "ff_dvec" + std::to_string(w); }
+
+// `text` with every identifier df_double/df_dvecN renamed to ff_double/ff_dvecN.
+std::string rename_to_ff_types(std::string_view text) {
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    if (is_ident_start(text[i]) && (i == 0 || !is_ident_char(text[i - 1]))) {
+      size_t j = i;
+      while (j < text.size() && is_ident_char(text[j])) ++j;
+      std::string id(text.substr(i, j - i));
+      for (int w = 1; w <= 4; ++w)
+        if (id == df_type(w)) id = ff_type(w);
+      out += id;
+      i = j;
+      continue;
+    }
+    out += text[i++];
+  }
+  return out;
 }
 
 struct Subst {
@@ -648,6 +676,9 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return result;
       }
     }
+    // Mode exact has no optimizer guard: the float-float rules its bridges call (rules/exact.glsl,
+    // transcendentals) take the integer error-free transformations of df64-int, which need none.
+    const bool integer_eft = request.integer_eft || request.exact_words;
     // Post-order DFS: callees before callers, each instance once.
     std::vector<RuleRef> order;
     std::map<std::pair<std::string, int>, int> state;
@@ -661,9 +692,9 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return false;
       }
       state[key] = 1;
-      const Chunk* c = im.find(r.name, r.width, request.integer_eft, request.integer_functions);
+      const Chunk* c = im.find(r.name, r.width, integer_eft, request.integer_functions);
       std::vector<RuleRef> ds;
-      if (!c || !im.deps(*c, r.width, ds, &error, request.integer_eft, request.integer_functions)) {
+      if (!c || !im.deps(*c, r.width, ds, &error, integer_eft, request.integer_functions)) {
         if (error.empty()) error = "rule " + r.name + " has no width " + std::to_string(r.width);
         return false;
       }
@@ -681,7 +712,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return result;
       }
     for (const auto& r : order) {
-      const Chunk* c = im.find(r.name, r.width, request.integer_eft, request.integer_functions);
+      const Chunk* c = im.find(r.name, r.width, integer_eft, request.integer_functions);
       if (c->min_es > request.es_version) {
         std::string msg = r.name + " is not available on " + es_name(request.es_version) + " (it needs " +
                           es_name(c->min_es) + " or later)";
@@ -701,24 +732,37 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     s.guard_uniform = request.guard_uniform;
     s.exact_words = request.exact_words;
     std::vector<std::string> functions;
-    std::set<int> struct_widths;
+    std::set<int> struct_widths, ff_struct_widths;
     for (const auto& r : order) {
+      const Chunk& c = *im.find(r.name, r.width, integer_eft, request.integer_functions);
+      // Mode exact: a float-float rule (a bridge's callee) keeps float words, as ff_* types.
+      const bool float_float = request.exact_words && !holds_binary64_words(c);
+      Subst sc = s;
+      if (float_float) sc.exact_words = false;
       std::string text;
-      if (!im.instantiate(*im.find(r.name, r.width, request.integer_eft, request.integer_functions), r.width, s, text,
-                          &error)) {
+      if (!im.instantiate(c, r.width, sc, text, &error)) {
         result.error = error;
         return result;
       }
+      if (float_float) text = rename_to_ff_types(text);
       for (const auto& id : identifiers(text))
-        for (int w = 1; w <= kMaxWidth; ++w)
+        for (int w = 1; w <= kMaxWidth; ++w) {
           if (id == df_type(w)) struct_widths.insert(w);
+          if (id == ff_type(w)) ff_struct_widths.insert(w);
+        }
       functions.push_back(std::move(text));
     }
     std::string out;
     if (!order.empty()) {
       if (request.exact_words) {
-        out += "// doublet exact binary64 runtime (mode exact): " + std::to_string(order.size()) +
-               " functions from rules/exact.glsl, integer arithmetic (no optimizer guard needed)";
+        const size_t bridged = size_t(std::count_if(order.begin(), order.end(), [&](const RuleRef& r) {
+          return !holds_binary64_words(*im.find(r.name, r.width, integer_eft, request.integer_functions));
+        }));
+        out += "// doublet exact binary64 runtime (mode exact): " + std::to_string(order.size() - bridged) +
+               " functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)";
+        if (bridged)
+          out += "; " + std::to_string(bridged) + " float-float functions (on ff_* types) its transcendentals bridge to, with "
+                 "integer error-free transformations (df64-int)";
       } else {
         out += "// doublet float-float runtime: " + std::to_string(order.size()) + " functions from rules/*.glsl, guard: ";
         out += request.guard == GuardStyle::Precise   ? "precise"
@@ -730,6 +774,10 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
       for (int w : struct_widths) {
         const std::string f = request.exact_words ? vec_type("uint", "uvec", w) : vec_type("float", "vec", w);
         out += "struct " + df_type(w) + " { " + f + " hi; " + f + " lo; };\n";
+      }
+      for (int w : ff_struct_widths) {
+        const std::string f = vec_type("float", "vec", w);
+        out += "struct " + ff_type(w) + " { " + f + " hi; " + f + " lo; };\n";
       }
       if (request.guard == GuardStyle::Uniform)
         out += "uniform highp float " + request.guard_uniform + ";  // never set: GL zero-fills it at link\n";

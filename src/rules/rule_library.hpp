@@ -48,7 +48,9 @@ struct EmitRequest {
   // The target has GLSL's integer functions (umulExtended, findMSB, ...: ES 3.10+, GLSL 4.00+):
   // the "@variant integer-functions" chunks (rules/exact.glsl) replace the same-named ones.
   bool integer_functions = false;
-  // Mode exact: the df_* structs hold uint words (binary64 high and low words), not floats.
+  // Mode exact: the df_* structs hold uint words (binary64 high and low words), not floats. A
+  // float-float rule that an exact rule calls (the transcendental bridges) is emitted with its
+  // types renamed ff_double/ff_dvecN (float words) and with the integer EFTs (as integer_eft).
   bool exact_words = false;
 };
 

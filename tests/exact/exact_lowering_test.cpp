@@ -280,7 +280,7 @@ TEST(ExactLowering, RefusalsAreDiagnosed) {
   EXPECT_NE(first_error(named).find("applies to the whole shader only"), std::string::npos) << first_error(named);
 
   Result unsupported = lower_exact("#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer B { double x; };\n"
-                                   "void main() { x = smoothstep(0.0, 1.0, x); }\n");
+                                   "void main() { dvec2 v = dvec2(x); x = modf(x, v.y) + v.x; }\n");
   EXPECT_FALSE(unsupported.ok);
   EXPECT_NE(first_error(unsupported).find("<stdin>:4:"), std::string::npos) << first_error(unsupported);
   EXPECT_EQ(first_error(unsupported).find("internal error"), std::string::npos) << first_error(unsupported);

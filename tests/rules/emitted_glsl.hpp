@@ -79,6 +79,7 @@ inline std::string sample_value(const std::string& type, bool exact_words = fals
   if (type.rfind("uvec", 0) == 0) return type + "(7u)";
   if (type.rfind("bvec", 0) == 0) return type + "(true)";
   if (type == "df_double") return exact_words ? "df_double(0x3FF80000u, 0u)" : "df_double(1.5, 0.0)";
+  if (type == "ff_double") return "ff_double(1.5, 0.0)";  // mode exact's float-float pair (transcendental bridges)
   if (type.rfind("df_dvec", 0) == 0) {
     const std::string v = "vec" + width("df_dvec");
     if (exact_words) return type + "(u" + v + "(0x3FF80000u), u" + v + "(0u))";

@@ -10,7 +10,7 @@ struct df_dvec4 {
   uvec4 hi;
   uvec4 lo;
 };
-// doublet exact binary64 runtime (mode exact): 28 functions from rules/exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 28 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct df_double { uint hi; uint lo; };
 struct df_dvec3 { uvec3 hi; uvec3 lo; };
 

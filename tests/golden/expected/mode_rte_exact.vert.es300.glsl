@@ -2,7 +2,7 @@
 precision highp float;
 precision highp int;
 
-// doublet exact binary64 runtime (mode exact): 13 functions from rules/exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 13 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct df_double { uint hi; uint lo; };
 struct df_dvec3 { uvec3 hi; uvec3 lo; };
 
