@@ -123,6 +123,43 @@ TEST_P(Wgs84, WithoutTheGuardThePlanMissesThePromise) {
   EXPECT_GT(e.rel_max, kRelPromise);
 }
 
+// Mode exact (binary64 in integer arithmetic; its transcendentals bridge through float-float):
+// the whole shader, no plan.
+TEST_P(Wgs84, ExactKeepsOneMillimetre) {
+  doublet::Options o;
+  o.target = doublet::Target::Es300;
+  o.mode = doublet::Mode::Exact;
+  const wgs84::Errors e = measure(GetParam(), o);
+  ASSERT_EQ(e.error, "");
+  EXPECT_EQ(e.not_finite, 0);
+  EXPECT_LE(e.rel_max, kRelPromise) << e.worst;
+}
+
+// Sabotage: exact's transcendentals see the angles as float only — the binary64 -> float-float
+// bridge keeps the high word and drops the residual correction (mode exact's own sabotages,
+// tests/exact/exact_transcendental_test.cpp). Both edits must apply. One driver: compiling the
+// edited exact shader takes llvmpipe about 40 s.
+TEST(Wgs84Exact, WithoutItsBridgesLowPartsMissesThePromise) {
+  doublet::Options o;
+  o.target = doublet::Target::Es300;
+  o.mode = doublet::Mode::Exact;
+  doublet::Result lowered = wgs84::lower_example("wgs84_ecef.vert", o);
+  ASSERT_TRUE(lowered.ok);
+  const std::pair<std::string, std::string> edits[] = {
+      {"return ff_double(uintBitsToFloat(h), uintBitsToFloat(ex_to_float_bits(rest)));",
+       "return ff_double(uintBitsToFloat(h), 0.0);"},
+      {"  return uintBitsToFloat(ex_to_float_bits(rest));\n}", "  return 0.0;\n}"}};
+  for (const auto& [from, to] : edits) {
+    const size_t at = lowered.output.find(from);
+    ASSERT_NE(at, std::string::npos) << "the sabotage does not apply: " << from;
+    lowered.output.replace(at, from.size(), to);
+  }
+  const wgs84::Errors e = wgs84::measure_vertex(Backend::Gles, lowered.output, views());
+  ASSERT_EQ(e.error, "");
+  std::printf("  low word and residual dropped: v_rel max %.3g m\n", e.rel_max);
+  EXPECT_GT(e.rel_max, kRelPromise);
+}
+
 INSTANTIATE_TEST_SUITE_P(Drivers, Wgs84, ::testing::Values(Backend::Vulkan, Backend::Gles),
                          [](const auto& info) { return std::string(doublet::runner::backend_name(info.param)); });
 
