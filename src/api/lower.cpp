@@ -142,7 +142,8 @@ bool report_builtins_the_target_lacks(const std::string& log,
         message += " (a compatibility-profile built-in: doublet's desktop targets are core profiles); pass the value "
                    "as a uniform or an attribute instead";
       }
-      diags.push_back({options.file_name, use->second.loc.line, use->second.loc.column, Severity::Error, message});
+      diags.push_back({ir::file_of(use->second.loc, options.file_name), use->second.loc.line, use->second.loc.column,
+                      Severity::Error, message});
     }
   }
   return !reported.empty();

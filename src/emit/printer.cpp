@@ -66,7 +66,7 @@ class Printer {
 
  private:
   void error(ir::Loc loc, const std::string& msg) {
-    diags_.push_back({file_, loc.line, loc.column, Severity::Error, msg});
+    diags_.push_back({ir::file_of(loc, file_), loc.line, loc.column, Severity::Error, msg});
   }
 
   // ---- header --------------------------------------------------------------
@@ -252,7 +252,7 @@ class Printer {
     if (es_ ? version_ >= 320 || gpu_shader5 : version_ >= 400) return "precise ";
     if (!precise_dropped_) {
       precise_dropped_ = true;
-      diags_.push_back({file_, v.loc.line, v.loc.column, Severity::Warning,
+      diags_.push_back({ir::file_of(v.loc, file_), v.loc.line, v.loc.column, Severity::Warning,
                         "'precise' on '" + v.name + "' is dropped: target " + std::string(to_string(options_.target)) +
                             " has no 'precise' qualifier (ES 3.20, desktop 4.00+, or ES 3.10 with GL_EXT_gpu_shader5), "
                             "so the driver may reorder or fuse that float arithmetic; target es320 or glsl450 to keep it"});

@@ -113,7 +113,7 @@ bool place_declarations(ir::Module& module, const Options& options, std::vector<
   bool ok = true;
   auto reserved = [&](const std::string& name, ir::Loc loc) {
     if (name.rfind("df_", 0) != 0) return;
-    diagnostics.push_back({options.file_name, loc.line, loc.column, Severity::Error,
+    diagnostics.push_back({ir::file_of(loc, options.file_name), loc.line, loc.column, Severity::Error,
                            "identifier '" + name + "' uses the prefix 'df_', which doublet reserves for its "
                            "float-float runtime; rename it"});
     ok = false;

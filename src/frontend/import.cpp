@@ -24,7 +24,6 @@ std::string demangle(const TString& mangled) {
   return paren == std::string::npos ? s : s.substr(0, paren);
 }
 
-ir::Loc loc_of(const TSourceLoc& l) { return {l.line, l.column}; }
 
 // Where each name is declared at global scope in `text`: its first occurrence outside braces,
 // parentheses, comments and preprocessor lines, not followed by '(' (GLSL declares before use).
@@ -80,6 +79,18 @@ class Importer {
   bool run(TIntermediate& intermediate);
 
  private:
+  // A glslang place as doublet's, naming the #include'd file it is in (one shared name per file).
+  ir::Loc loc_of(const TSourceLoc& l) {
+    ir::Loc loc{l.line, l.column, nullptr};
+    if (l.name && !l.name->empty() && *l.name != "0" && l.name->c_str() != options_.file_name) {
+      auto& shared = file_names_[l.name->c_str()];
+      if (!shared) shared = std::make_shared<const std::string>(l.name->c_str());
+      loc.file = shared;
+    }
+    return loc;
+  }
+  std::unordered_map<std::string, std::shared_ptr<const std::string>> file_names_;
+
   // ---- diagnostics -------------------------------------------------------
   void error(const TSourceLoc& loc, const std::string& message) {
     std::string file = loc.name && !loc.name->empty() ? loc.name->c_str() : options_.file_name;

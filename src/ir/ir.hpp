@@ -13,7 +13,14 @@ namespace doublet::ir {
 struct Loc {
   int line = 0;
   int column = 0;
+  // The #include'd file the place is in (its resolved name); null: the main source.
+  std::shared_ptr<const std::string> file;
 };
+
+// The file a diagnostic at `loc` names: the included file, else the main source's name.
+inline const std::string& file_of(const Loc& loc, const std::string& main_file) {
+  return loc.file ? *loc.file : main_file;
+}
 
 enum class Base { Void, Bool, Int, Uint, Float, Double, Struct, Block, Opaque };
 

@@ -17,11 +17,11 @@
 namespace doublet::passes {
 
 void Context::error(ir::Loc loc, const std::string& message) {
-  diagnostics.push_back({options.file_name, loc.line, loc.column, Severity::Error, message});
+  diagnostics.push_back({ir::file_of(loc, options.file_name), loc.line, loc.column, Severity::Error, message});
   failed = true;
 }
 void Context::warning(ir::Loc loc, const std::string& message) {
-  diagnostics.push_back({options.file_name, loc.line, loc.column, Severity::Warning, message});
+  diagnostics.push_back({ir::file_of(loc, options.file_name), loc.line, loc.column, Severity::Warning, message});
 }
 void Context::use_rule(const std::string& name, int width) {
   rules::RuleRef ref{name, width};

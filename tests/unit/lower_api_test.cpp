@@ -238,3 +238,37 @@ TEST(ConstantRange, OutOfRangeConstantsAreDiagnosedAtTheirPlace) {
 }
 
 }  // namespace
+
+// A lowering error in an #include'd file names that file (and its line), not the main source:
+// before, ir::Loc carried no file and such errors read "main.comp:<the included file's line>".
+namespace {
+class OneFileIncluder : public doublet::Includer {
+ public:
+  std::optional<doublet::IncludeResult> include(std::string_view requested, std::string_view) override {
+    if (requested != "lib.glsl") return std::nullopt;
+    return doublet::IncludeResult{"lib.glsl", "// library\n\ndouble twice(double x) { return x * 2.0lf; }\n"
+                                              "dmat2 square(dmat2 m) { return m * m; }\n"};
+  }
+};
+}  // namespace
+
+TEST(LowerApi, ErrorsInAnIncludedFileNameThatFile) {
+  OneFileIncluder files;
+  doublet::Options o;
+  o.stage = doublet::Stage::Compute;
+  o.target = doublet::Target::Es310;
+  o.mode = doublet::Mode::Exact;  // refuses double matrices: an error placed in lib.glsl
+  o.file_name = "main.comp";
+  o.includer = &files;
+  const auto r = doublet::lower(
+      "#version 450\n#extension GL_GOOGLE_include_directive : require\nlayout(local_size_x = 1) in;\n"
+      "#include \"lib.glsl\"\nlayout(std430, binding = 0) buffer B { double v[]; };\n"
+      "void main() { v[0] = twice(v[1]); v[2] = square(dmat2(v[3]))[0][0]; }\n",
+      o);
+  ASSERT_FALSE(r.ok);
+  std::string first;
+  for (const auto& d : r.diagnostics)
+    if (d.severity == doublet::Severity::Error && first.empty()) first = doublet::format_diagnostic(d);
+  EXPECT_EQ(first.rfind("lib.glsl:4:", 0), 0u) << first;
+  EXPECT_NE(first.find("dmat2"), std::string::npos) << first;
+}
