@@ -1,4 +1,5 @@
 #include "bench/bench.hpp"
+#include "frontend/transcendentals.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -115,9 +116,36 @@ void run_native_reference(const BenchOptions& o, Workload* w, std::vector<std::s
 // A user shader's buffers (its uniforms below): every reflected block gets its fixed part plus `elements` records of
 // its largest runtime array (twice over, as lowered layouts may be larger), filled with floats in
 // [1, 2): finite as floats and, read as doubles, finite numbers in [2^-7, 2).
+// The shader with stub bodies for the transcendental extension's double overloads (exp(double),
+// sin(dvec3), ...), after its #version and #extension lines: glslang refuses such calls, and
+// reflection only needs the shader's interface, which the stubs leave as it is.
+std::string with_transcendental_stubs(const std::string& source) {
+  std::string stubs = frontend::transcendental_prototypes();
+  for (size_t at = 0; (at = stubs.find(" x);", at)) != std::string::npos;) stubs.replace(at, 4, " x) { return x; }");
+  for (size_t at = 0; (at = stubs.find(" b);", at)) != std::string::npos;) stubs.replace(at, 4, " b) { return a; }");
+  size_t insert_at = 0;
+  for (size_t line = 0; line < source.size();) {
+    const size_t eol = std::min(source.find('\n', line), source.size());
+    const std::string_view text = std::string_view(source).substr(line, eol - line);
+    const size_t first = text.find_first_not_of(" \t");
+    if (first != std::string_view::npos && (text.substr(first).rfind("#version", 0) == 0 ||
+                                             text.substr(first).rfind("#extension", 0) == 0))
+      insert_at = std::min(eol + 1, source.size());
+    line = eol + 1;
+  }
+  return source.substr(0, insert_at) + stubs + source.substr(insert_at);
+}
+
 bool shader_workload(const BenchOptions& o, Workload* w, std::string* error) {
   runner::ShaderInterface iface;
-  if (!runner::reflect_compute(o.shader_source, &iface, error)) return false;
+  if (!runner::reflect_compute(o.shader_source, &iface, error)) {
+    // Doubles' transcendentals are a doublet extension (docs/transcendentals.md): the shader is
+    // fine for every mode but native, whose row then says why it did not run.
+    if (!frontend::refuses_transcendental(*error)) return false;
+    std::string retry_error;
+    if (!runner::reflect_compute(with_transcendental_stubs(o.shader_source), &iface, &retry_error)) return false;
+    error->clear();
+  }
   size_t count = 0;
   for (const auto& b : iface.blocks) count = std::max<size_t>(count, static_cast<size_t>(std::max(b.binding, 0)) + 1);
   w->buffers.assign(count, {});
@@ -174,6 +202,11 @@ Measurement measure(const BenchOptions& o, const Workload& w, runner::Backend ba
   if (!r.device.empty()) report->devices[backend_key(backend)] = r.device;
   if (!r.ok) {
     m.note = r.error;
+    if (mode == Mode::Native && frontend::refuses_transcendental(r.error)) {
+      m.note = "GLSL's fp64 has no transcendental functions (exp, sin, ... on doubles are a doublet extension, "
+               "docs/transcendentals.md)";
+      m.not_applicable = true;
+    }
     return m;
   }
   report->clocks[backend_key(backend)] = r.clock;

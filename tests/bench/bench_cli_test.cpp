@@ -197,3 +197,36 @@ TEST(BenchCli, UnknownOpIsAUsageError) {
 }
 
 }  // namespace
+
+namespace {
+// A user shader calling the transcendental extension on doubles: every lowered mode runs (the
+// interface is reflected with stub bodies for the extension's overloads); native fp64 has no such
+// functions, so its row says why it did not run instead of the whole command failing.
+TEST(BenchCli, UserShaderWithTranscendentalsRunsAndNativeSaysWhy) {
+  const auto dir = std::filesystem::temp_directory_path() / ("bench_trans_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto shader = dir / "waves.comp";
+  const auto json_path = dir / "out.json";
+  {
+    std::ofstream(shader) << "#version 450\nlayout(local_size_x = 64) in;\n"
+                             "layout(std430, binding = 0) buffer Data { double v[]; };\nuniform double k;\n"
+                             "void main() { uint i = gl_GlobalInvocationID.x; v[i] = sin(k * v[i]) + exp(v[i]); }\n";
+  }
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench " + shader.string() +
+                          " --modes fp32,df64,native --backend vulkan --elements 256 --warmup 1 --reps 2 --json " +
+                          json_path.string() + " > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::ifstream in(json_path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(j["results"].size(), 3u);
+  for (const auto& r : j["results"]) {
+    if (r["mode"] == "native") {
+      EXPECT_FALSE(r["ok"].get<bool>());
+      EXPECT_NE(r["note"].get<std::string>().find("no transcendental functions"), std::string::npos) << r["note"];
+    } else {
+      EXPECT_TRUE(r["ok"].get<bool>()) << r["mode"] << ": " << r["note"];
+    }
+  }
+}
+}  // namespace
