@@ -72,22 +72,34 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
   return lo + (hi - lo) * (static_cast<double>(rng() >> 11) * 0x1p-53);
 }
 
-// The value a lowered input/uniform `lowered` (of scalar kind `scalar`) takes for the original
-// variable `name` with value x, or false when `lowered` is not one of its parts.
-bool part_value(const std::string& lowered, char scalar, const std::string& name, double x, double* out) {
+// Appends to `out` what a lowered input/uniform `lowered` (of scalar kind `scalar`) holds for the
+// original double variable `name` with components `x`, or returns false when `lowered` is not one
+// of its parts: fp32 `X` (floats; the runner rounds), float-float `X_hi`/`X_lo`, mode exact `X`
+// (double, dvec2) or `X_xy` + `X_z`/`X_zw` (dvec3/4) as binary64 words, low word first.
+bool append_parts(const std::string& lowered, char scalar, const std::string& name, std::initializer_list<double> x,
+                  std::vector<double>* out) {
+  const std::vector<double> all(x);
+  auto words = [&](size_t from, size_t to) {
+    for (size_t c = from; c < to && c < all.size(); ++c) {
+      const doublet::ExactWords w = doublet::exact_words(all[c]);
+      out->push_back(w.lo);
+      out->push_back(w.hi);
+    }
+    return true;
+  };
+  if (scalar == 'u') {
+    if (lowered == name) return words(0, all.size());
+    if (lowered == name + "_xy") return words(0, 2);
+    if (lowered == name + "_z" || lowered == name + "_zw") return words(2, all.size());
+    return false;
+  }
   if (lowered == name) {
-    *out = x;  // fp32: the runner rounds it to float
+    out->insert(out->end(), all.begin(), all.end());
     return true;
   }
   const bool hi = lowered == name + "_hi", lo = lowered == name + "_lo";
   if (!hi && !lo) return false;
-  if (scalar == 'u') {
-    const doublet::ExactWords w = doublet::exact_words(x);
-    *out = hi ? w.hi : w.lo;
-  } else {
-    const doublet::FloatPair f = doublet::split(x);
-    *out = hi ? f.hi : f.lo;
-  }
+  for (double v : all) out->push_back(hi ? doublet::split(v).hi : doublet::split(v).lo);
   return true;
 }
 
@@ -208,14 +220,8 @@ Errors measure_vertex(doublet::runner::Backend backend, const std::string& glsl,
     for (const r::StageVariable& in : iface.inputs) {
       std::vector<double>& values = job.inputs[in.name];
       for (const Point& p : v.points) {
-        double x = 0;
-        if (part_value(in.name, in.scalar, "lat_lon", p.lat, &x)) {
-          values.push_back(x);
-          part_value(in.name, in.scalar, "lat_lon", p.lon, &x);
-          values.push_back(x);
-        } else if (part_value(in.name, in.scalar, "height", p.h, &x)) {
-          values.push_back(x);
-        }
+        if (!append_parts(in.name, in.scalar, "lat_lon", {p.lat, p.lon}, &values))
+          append_parts(in.name, in.scalar, "height", {p.h}, &values);
       }
       if (values.size() != v.points.size() * static_cast<size_t>(in.components)) {
         out.error = "unexpected input '" + in.name + "' in the lowered shader";
@@ -224,10 +230,8 @@ Errors measure_vertex(doublet::runner::Backend backend, const std::string& glsl,
     }
     for (const auto& u : iface.uniforms) {
       if (u.name == "view_projection") job.uniforms[u.name] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-      for (size_t i = 0; i < 3; ++i) {
-        double x = 0;
-        if (part_value(u.name, u.scalar, "eye", v.eye[i], &x)) job.uniforms[u.name].push_back(x);
-      }
+      std::vector<double> eye;
+      if (append_parts(u.name, u.scalar, "eye", {v.eye[0], v.eye[1], v.eye[2]}, &eye)) job.uniforms[u.name] = eye;
     }
     jobs.push_back(std::move(job));
   }

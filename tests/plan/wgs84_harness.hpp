@@ -58,7 +58,7 @@ struct Errors {
 
 // Runs the lowered vertex shader `glsl` in the vertex stage (one draw per view) and compares.
 // Inputs and uniforms are filled by name from the stage's reflection: X_hi/X_lo float pairs
-// (float-float), X_hi/X_lo uint words (mode exact), or a plain float X (fp32).
+// (float-float), binary64 words X or X_xy + X_z (mode exact), or a plain float X (fp32).
 Errors measure_vertex(doublet::runner::Backend backend, const std::string& glsl, const std::vector<View>& views);
 
 }  // namespace wgs84

@@ -77,15 +77,11 @@ Timing time_compute(Backend backend, const doublet::Result& lowered, const wgs84
   const size_t n = view.points.size();
   doublet::runner::ComputeJob job;
   job.buffers.resize(4);
-  auto words_of = [&](double x) {  // what one double becomes in the buffer: (hi, lo)
+  auto words_of = [&](double x) {  // a float-float pair's bits: (hi, lo)
+    const doublet::FloatPair f = doublet::split(x);
     uint32_t hi, lo;
-    if (exact) {
-      hi = doublet::exact_words(x).hi, lo = doublet::exact_words(x).lo;
-    } else {
-      const doublet::FloatPair f = doublet::split(x);
-      std::memcpy(&hi, &f.hi, 4);
-      std::memcpy(&lo, &f.lo, 4);
-    }
+    std::memcpy(&hi, &f.hi, 4);
+    std::memcpy(&lo, &f.lo, 4);
     return std::pair<uint32_t, uint32_t>{hi, lo};
   };
   for (const auto& var : lowered.manifest.variables) {
@@ -96,9 +92,13 @@ Timing time_compute(Backend backend, const doublet::Result& lowered, const wgs84
       buf.assign(n * static_cast<size_t>(m.array_stride), 0);
       for (size_t i = 0; i < n; ++i) {
         const double values[2] = {b == 0 ? view.points[i].lat : view.points[i].h, view.points[i].lon};
+        uint8_t* e = buf.data() + i * static_cast<size_t>(m.array_stride);
         for (int c = 0; c < (b == 0 ? 2 : 1); ++c) {
+          if (exact) {  // binary64 words keep the host's layout: the doubles themselves
+            std::memcpy(e + m.offset + 8 * c, &values[c], 8);
+            continue;
+          }
           const auto [hi, lo] = words_of(values[c]);
-          uint8_t* e = buf.data() + i * static_cast<size_t>(m.array_stride);
           std::memcpy(e + m.hi_offset + 4 * c, &hi, 4);
           std::memcpy(e + m.lo_offset + 4 * c, &lo, 4);
         }
@@ -113,9 +113,11 @@ Timing time_compute(Backend backend, const doublet::Result& lowered, const wgs84
   job.buffers[3].assign(n * 16, 0);
   for (size_t i = 0; i < 3; ++i) {
     const double x = view.eye[i];
-    if (exact) {
-      job.uniforms["eye_hi"].push_back(doublet::exact_words(x).hi);
-      job.uniforms["eye_lo"].push_back(doublet::exact_words(x).lo);
+    if (exact) {  // dvec3 -> eye_xy (uvec4) + eye_z (uvec2), low word first
+      const doublet::ExactWords w = doublet::exact_words(x);
+      std::vector<double>& u = job.uniforms[i < 2 ? "eye_xy" : "eye_z"];
+      u.push_back(w.lo);
+      u.push_back(w.hi);
     } else if (lowered.manifest.mode == "fp32") {
       job.uniforms["eye"].push_back(x);
     } else {
