@@ -11,8 +11,10 @@
 //   [HAU]  J. R. Hauser, Berkeley SoftFloat Release 3e (2018), the round-and-pack scheme with a
 //          jamming right shift (a sticky bit ORed into the lowest bit); read, not copied.
 //   [MESA] Mesa src/compiler/glsl/float64.glsl (2018, soft-fp64 on uvec2): the uvec2 word order; read, not copied.
-//   [ERN]  M. D. Ercegovac, T. Lang, Digital Arithmetic, Morgan Kaufmann 2004, ch. 5-6: restoring
-//          division and digit-by-digit square root with the remainder as sticky bit.
+//   [ERN]  M. D. Ercegovac, T. Lang, Digital Arithmetic, Morgan Kaufmann 2004, ch. 5-6: division
+//          and square root by digit recurrence (high radix, digits selected by an estimate and
+//          corrected), the remainder as sticky bit. Here the digits are 14-18 bits, estimated
+//          with one float division and checked in integer arithmetic.
 //   [VTN]  Mesa 22.3 (2022) src/compiler/spirv/vtn_glsl450.c and vtn_alu.c: the operation order of
 //          native's determinant, inverse and matrix products (read as a fact source, not copied;
 //          the orders kept here are the ones tests/exact measured to give native's bits).
@@ -101,6 +103,17 @@ int ex_clz32(uint x) {
   return n;
 }
 
+// ex_clz32: ex_clz32 by findMSB, where the target has GLSL's integer functions.
+// Algorithm: 31 - findMSB(x); findMSB(0) is -1, so 0 gives 32
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (findMSB)
+// Bound: exact
+// Flops: 0 (2 integer operations)
+// @min-es 310
+// @variant integer-functions
+int ex_clz32(uint x) {
+  return 31 - findMSB(x);
+}
+
 // ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
 // Algorithm: ex_clz32 of the high word, else 32 + ex_clz32 of the low word
 // Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3
@@ -124,6 +137,19 @@ uvec2 ex_mul32(uint a, uint b) {
   uint midCarry = mid < lh ? 0x10000u : 0u;
   uint lo = ll + (mid << 16);
   uint hi = hh + (mid >> 16) + midCarry + (lo < ll ? 1u : 0u);
+  return uvec2(lo, hi);
+}
+
+// ex_mul32: ex_mul32 by umulExtended, where the target has GLSL's integer functions (Mesa's soft-fp64 multiplies this way too).
+// Algorithm: umulExtended: the 64-bit product's high and low words in one built-in
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (umulExtended)
+// Bound: exact
+// Flops: 0 (1 integer multiplication)
+// @min-es 310
+// @variant integer-functions
+uvec2 ex_mul32(uint a, uint b) {
+  uint hi, lo;
+  umulExtended(a, b, hi, lo);
   return uvec2(lo, hi);
 }
 
@@ -254,20 +280,24 @@ uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
 }
 
 // ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
-// Algorithm: subnormals shifted left by their leading zeros, exponent lowered by the same count
+// Algorithm: a normal number's significand as it is; subnormals shifted left by their leading zeros, exponent lowered by the same count
 // Source: IEEE 754-2019, 3.4
 // Bound: exact
 // Flops: 0
 // @min-es 300
 uvec2 ex_normalize_sig(uvec2 a, out int x) {
   uvec2 m = ex_sig(a);
+  if ((a.y & 0x7FF00000u) != 0u) {
+    x = int((a.y >> 20) & 0x7FFu);
+    return m;
+  }
   int shift = ex_clz64(m) - 11;
-  x = ex_exponent(a) - shift;
+  x = 1 - shift;
   return ex_shl64(m, shift);
 }
 
 // ex_mul_bits: a * b in binary64, correctly rounded (ties to even).
-// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, rounded once
+// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, a one-bit jamming normalization, rounded once
 // Source: IEEE 754-2019, 5.4.1, 7.2 (0 * Inf invalid); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (16 integer multiplications, about 80 other integer operations)
@@ -293,14 +323,45 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   uint w3 = p11.y + top.y + (w2 < p11.x ? 1u : 0u);
   uvec2 sig = uvec2((w1 >> 10) | (w2 << 22), (w2 >> 10) | (w3 << 22));
   if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;
-  return ex_norm_round_pack(signWord != 0u, xa + xb - 1024, sig);
+  // The product of two significands in [2^52, 2^53) leaves sig's top bit at 63 or 62.
+  int e = xa + xb - 1024;
+  if (sig.y >= 0x80000000u) {
+    sig = uvec2((sig.x >> 1) | (sig.y << 31) | (sig.x & 1u), sig.y >> 1);
+    e += 1;
+  }
+  return ex_round_pack(signWord != 0u, e, sig);
+}
+
+// ex_div_step: k more quotient bits of a long division by mb: (q, r) as (q.x, q.y, r.x, r.y), 0 <= r < 2mb, becomes (q * 2^k + d, r * 2^k - d * mb) with the digit d that leaves 0 <= r' < mb (k <= 18, mb < 2^53).
+// Algorithm: d = r * 2^k / mb estimated by one float division (off by at most one here); r' in 64-bit words modulo 2^64 (the true r' is small and signed); unit corrections until 0 <= r' < mb
+// Source: Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence: high radix, digit selection by an estimate, correction); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm D
+// Bound: exact
+// Flops: 8 (the digit estimate)
+// @min-es 300
+uvec4 ex_div_step(uvec4 qr, uvec2 mb, int k) {
+  uvec2 q = qr.xy, r = qr.zw;
+  float estimate = floor(ex_u64_to_float(r) * float(1u << uint(k)) / ex_u64_to_float(mb));
+  uint d = uint(estimate);
+  uvec2 dm = ex_mul32(d, mb.x);
+  dm.y += d * mb.y;
+  r = ex_sub64(ex_shl64(r, k), dm);
+  q = ex_add64(ex_shl64(q, k), uvec2(d, 0u));
+  while (r.y >= 0x80000000u) {
+    q = ex_sub64(q, uvec2(1u, 0u));
+    r = ex_add64(r, mb);
+  }
+  while (!ex_lt64(r, mb)) {
+    r = ex_sub64(r, mb);
+    q = ex_add64(q, uvec2(1u, 0u));
+  }
+  return uvec4(q, r);
 }
 
 // ex_div_bits: a / b in binary64, correctly rounded (ties to even).
-// Algorithm: restoring binary long division of the normalized significands, 55 quotient bits, the remainder as sticky bit; rounded once
-// Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (restoring division)
+// Algorithm: long division of the normalized significands, 55 quotient bits in three 18-bit ex_div_step digits (float estimates checked in integers), the remainder as sticky bit; rounded once
+// Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence)
 // Bound: 0.5 ulp (correctly rounded)
-// Flops: 0 (55 iterations of about 12 integer operations)
+// Flops: 24 (estimates: 8 per ex_div_step)
 // @min-es 300
 uvec2 ex_div_bits(uvec2 a, uvec2 b) {
   if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
@@ -318,25 +379,57 @@ uvec2 ex_div_bits(uvec2 a, uvec2 b) {
     rem = ex_shl64(rem, 1);
     e -= 1;
   }
-  uvec2 q = uvec2(0u);
-  for (int i = 0; i < 55; ++i) {
-    q = ex_shl64(q, 1);
-    if (!ex_lt64(rem, mb)) {
-      rem = ex_sub64(rem, mb);
-      q.x |= 1u;
-    }
-    rem = ex_shl64(rem, 1);
-  }
-  q = ex_shl64(q, 8);
+  // rem in [mb, 2mb): q = floor(rem * 2^54 / mb) has 55 bits.
+  uvec4 qr = ex_div_step(uvec4(0u, 0u, rem), mb, 18);
+  qr = ex_div_step(qr, mb, 18);
+  qr = ex_div_step(qr, mb, 18);
+  uvec2 q = ex_shl64(qr.xy, 8);
+  rem = qr.zw;
   if ((rem.x | rem.y) != 0u) q.x |= 1u;
   return ex_round_pack(signWord != 0u, e, q);
 }
 
+// ex_u64_to_float: a 64-bit (lo, hi) integer as a float, rounded (an estimate for ex_sqrt_bits).
+// Algorithm: float(hi) * 2^32 + float(lo)
+// Source: IEEE 754-2019, 5.4.1 (convertFromInt)
+// Bound: 0.5 ulp of float, twice (an estimate: relative error below 2^-23)
+// Flops: 2
+// @min-es 300
+float ex_u64_to_float(uvec2 a) {
+  return float(a.y) * 4294967296.0 + float(a.x);
+}
+
+// ex_root_step: 14 more bits of an integer square root: (q, r) as (q.x, q.y, r.x, r.y), q = floor(sqrt(n)) and r = n - q^2, becomes the root of n * 2^28 and its remainder (2^26 <= q < 2^41).
+// Algorithm: digit d = r * 2^14 / (2q) estimated by one float division (off by at most one here); r' = r * 2^28 - d * (2q * 2^14 + d) in 64-bit words modulo 2^64 (the true r' is small and signed); q' = q * 2^14 + d; then unit corrections until 0 <= r' <= 2q'
+// Source: Ercegovac, Lang, Digital Arithmetic, 2004, ch. 6 (square root by digit recurrence: partial remainder, digit selection by an estimate, correction); Knuth TAOCP vol. 2, 1997, 4.3.1
+// Bound: exact
+// Flops: 8 (the digit estimate)
+// @min-es 300
+uvec4 ex_root_step(uvec4 qr) {
+  uvec2 q = qr.xy, r = qr.zw;
+  float estimate = floor(ex_u64_to_float(r) * 8192.0 / ex_u64_to_float(q));
+  uint d = uint(min(estimate, 16383.0));
+  uvec2 t = ex_add64(ex_shl64(q, 15), uvec2(d, 0u));
+  uvec2 dt = ex_mul32(d, t.x);
+  dt.y += d * t.y;
+  r = ex_sub64(ex_shl64(r, 28), dt);
+  q = ex_add64(ex_shl64(q, 14), uvec2(d, 0u));
+  while (r.y >= 0x80000000u) {
+    q = ex_sub64(q, uvec2(1u, 0u));
+    r = ex_add64(r, ex_add64(ex_shl64(q, 1), uvec2(1u, 0u)));
+  }
+  while (ex_lt64(ex_shl64(q, 1), r)) {
+    r = ex_sub64(r, ex_add64(ex_shl64(q, 1), uvec2(1u, 0u)));
+    q = ex_add64(q, uvec2(1u, 0u));
+  }
+  return uvec4(q, r);
+}
+
 // ex_sqrt_bits: sqrt(a) in binary64, correctly rounded; sqrt(-0) = -0, sqrt(x < 0) = NaN.
-// Algorithm: digit-by-digit binary square root of the significand (exponent made even) scaled by 2^56, 55 root bits, the remainder as sticky bit; rounded once
-// Source: IEEE 754-2019, 5.4.1, 7.2; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 6 (digit recurrence square root)
+// Algorithm: the 55-bit integer root Q = floor(sqrt(m * 2^56)) of the significand m (exponent made even) and its exact remainder, the sticky bit: 27 bits from the float sqrt of m with one Newton correction and unit corrections against the exact remainder m - q^2, then two ex_root_step digits of 14 bits; rounded once. Float arithmetic only estimates; every accepted digit is checked in integers
+// Source: IEEE 754-2019, 5.4.1, 7.2; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 6 (digit recurrence square root with estimated digits)
 // Bound: 0.5 ulp (correctly rounded)
-// Flops: 0 (55 iterations of about 16 integer operations)
+// Flops: 26 (estimates: 10 here, 8 per ex_root_step)
 // @min-es 300
 uvec2 ex_sqrt_bits(uvec2 a) {
   if (ex_is_nan(a)) return ex_pick_nan(a, a);
@@ -351,21 +444,25 @@ uvec2 ex_sqrt_bits(uvec2 a) {
     m = ex_shl64(m, 1);
     e2 -= 1;
   }
-  uvec2 pending = ex_shl64(m, 10);
-  uvec2 root = uvec2(0u), rem = uvec2(0u);
-  for (int i = 0; i < 55; ++i) {
-    rem = ex_shl64(rem, 2);
-    rem.x |= pending.y >> 30;
-    pending = ex_shl64(pending, 2);
-    uvec2 trial = ex_shl64(root, 2);
-    trial.x |= 1u;
-    root = ex_shl64(root, 1);
-    if (!ex_lt64(rem, trial)) {
-      rem = ex_sub64(rem, trial);
-      root.x |= 1u;
-    }
+  // m in [2^52, 2^54): q = floor(sqrt(m)) has 27 bits, rem = m - q^2 <= 2q.
+  float mf = ex_u64_to_float(m);
+  uint q = uint(sqrt(mf));
+  uvec2 rem = ex_sub64(m, ex_mul32(q, q));
+  float rf = rem.y >= 0x80000000u ? -ex_u64_to_float(ex_sub64(uvec2(0u), rem)) : ex_u64_to_float(rem);
+  float correction = floor(rf / (2.0 * float(q)) + 0.5);
+  q = uint(int(q) + int(correction));
+  rem = ex_sub64(m, ex_mul32(q, q));
+  while (rem.y >= 0x80000000u) {
+    q -= 1u;
+    rem = ex_add64(rem, uvec2(2u * q + 1u, 0u));
   }
-  root = ex_shl64(root, 8);
+  while (ex_lt64(uvec2(2u * q, 0u), rem)) {
+    rem = ex_sub64(rem, uvec2(2u * q + 1u, 0u));
+    q += 1u;
+  }
+  uvec4 qr = ex_root_step(ex_root_step(uvec4(q, 0u, rem)));
+  uvec2 root = ex_shl64(qr.xy, 8);
+  rem = qr.zw;
   if ((rem.x | rem.y) != 0u) root.x |= 1u;
   return ex_round_pack(false, 1048 + e2 / 2, root);
 }

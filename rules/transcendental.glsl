@@ -57,7 +57,8 @@ $DF df_expm1_kernel($DF r) {
 // k L1 is exact for |k| <= 256; k L2 is an exact TwoProd), |r| <= 0.35; e^x = 2^k (1 + expm1(r)).
 // Special values (C99 F.9.3.1): exp(+Inf) = +Inf, exp(-Inf) = +0, exp(NaN) = NaN; x > 89 gives
 // +Inf, x < -104 gives +0. Results below 2^-102 (x < -70.7) lose bits as lo becomes subnormal
-// (df_ldexp), and vertex/fragment stages may flush them.
+// (df_ldexp), and vertex/fragment stages may flush them. floor(v + 0.5) is safe here (unlike in
+// df_trig_reduce): |v| < 151, so v + 0.5 is exact and any reassociation gives the same k.
 // Algorithm: Cody-Waite reduction by ln 2 (three words), df_expm1_kernel, df_ldexp
 // Source: Cody, Waite, Software Manual for the Elementary Functions, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 10u^2
@@ -255,19 +256,21 @@ $DF df_pow($DF x, $DF y) {
 // x - k P1 is exact (it keeps the bits of x.lo), then k1 P2 brings it down to |r| + |k| 2^-48,
 // so the later sums round relative to about |r|; the smallest terms (k2 P3, k P4) are float.
 // The quadrant is computed in float: k - 4 floor(k/4) is exact for every float integer.
+// k1 and k2 are roundEven, not floor(v + 0.5): without `precise` Mesa reassociates a second
+// "+ 0.5" into the first (t.hi - k1 + 0.5 becomes (t.hi + 0.5) - k1, and t.hi + 0.5 rounds to
+// t.hi above 2^23), k came out one short and the kernels ran outside |r| <= pi/4 (31 bits).
 // Algorithm: Cody-Waite reduction by pi/2 with a four-word constant, exact TwoProd products, two-word k
 // Source: Cody, Waite, 1980; Muller, Elementary Functions, 3rd ed., 2016, section 11.2
 // Bound: 6u^2 * abs(r) + abs(x) * 2^-96 (absolute)
-// Flops: 269
-// Range: |x| < 2^40 with the Precise guard; with the Uniform guard (no `precise`: ES 3.00/3.10, GL 3.30)
-// Mesa's optimizer costs bits for |x| > 2^20 (docs/transcendentals.md). Callers return NaN beyond 2^40.
+// Flops: 267
+// Range: |x| < 2^40 with either guard. Callers return NaN beyond 2^40.
 // @widths 1
 // @min-es 300
 $DF df_trig_reduce($DF a, out int q) {
   $DF t = df_mul(a, $DF($F(0.636619747), $F(2.5682553e-08)));
-  $PRECISE $F k1 = $G(floor(t.hi + 0.5));
+  $PRECISE $F k1 = $G(roundEven(t.hi));
   $PRECISE $F f = $G(t.hi - k1);
-  $PRECISE $F k2 = $G(floor(f + t.lo + 0.5));
+  $PRECISE $F k2 = $G(roundEven(f + t.lo));
   $PRECISE $F n1 = $SAFE(-k1);
   $PRECISE $F n2 = $SAFE(-k2);
   $DF p11 = df_two_prod(n1, 1.57079637);
@@ -372,7 +375,7 @@ $DF df_sin_quadrant($DF r, int q) {
 // Algorithm: df_trig_reduce (Cody-Waite, four-word pi/2), df_sin_quadrant
 // Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 20u^2 (relative) plus abs(x) * 2^-96 absolute
-// Flops: 590 (on the path taken)
+// Flops: 588 (on the path taken)
 // Range: |x| < 2^40.
 // @widths 1 2 3 4
 // @per-component
@@ -397,7 +400,7 @@ $DF df_sin($DF a) {
 // Algorithm: df_trig_reduce (Cody-Waite, four-word pi/2), df_sin_quadrant at quadrant q + 1
 // Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 20u^2 (relative) plus abs(x) * 2^-96 absolute
-// Flops: 590 (on the path taken)
+// Flops: 588 (on the path taken)
 // Range: |x| < 2^40.
 // @widths 1 2 3 4
 // @per-component
@@ -420,7 +423,7 @@ $DF df_cos($DF a) {
 // Algorithm: df_trig_reduce, df_sin_kernel and df_cos_kernel, DWDivDW2
 // Source: Cody, Waite, 1980; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 40u^2 (relative) plus abs(x) * 2^-96 absolute times (1 + tan(x)^2)
-// Flops: 943
+// Flops: 941
 // Range: |x| < 2^40.
 // @widths 1 2 3 4
 // @per-component

@@ -39,10 +39,13 @@ enum class GuardKind { Auto, Precise, Uniform, None /* unprotected: tests only *
 //            the decoded floats (rules/int.glsl): no optimizer guard needed; ES 3.00+, whole
 //            shader only;
 //  Native:   doubles kept as they are (desktop targets with fp64; the reference).
-//  Exact:    IEEE binary64 bit patterns in two uint words (high, low), every operation in integer
+//  Exact:    IEEE binary64 bit patterns in two uint words (low, high), every operation in integer
 //            arithmetic, bit-identical to native fp64 (rules/exact.glsl; ES 3.00+, desktop; whole
 //            shader only).
-enum class Mode { Fp32, Rte, Df64Fast, Df64, Native, Df64Int, Exact };
+//  RteExact: doubles stored as in Exact; arithmetic as in Rte (float), except the difference of two
+//            doubles: the exact real difference rounded once to float (rules/rte_exact.glsl; ES
+//            3.00+, desktop; whole shader only).
+enum class Mode { Fp32, Rte, Df64Fast, Df64, Native, Df64Int, Exact, RteExact };
 
 enum class Severity { Error, Warning, Note };
 
@@ -119,6 +122,9 @@ struct BlockMember {
   int hi_offset = -1;        // doubles: byte offset of hi (float/vecN/matCxR) inside one element
   int lo_offset = -1;        // doubles: byte offset of lo inside one element
   int matrix_stride = 0;     // matrices: bytes between columns (of hi and of lo)
+  // Mode exact: "binary64-words" when the member holds the doubles' IEEE binary64 patterns at
+  // the same offsets, size and strides as the original block (hi_offset/lo_offset are then -1).
+  std::string encoding;
 };
 
 // One original interface variable and what it became in the output.
@@ -130,6 +136,12 @@ struct InterfaceVariable {
   std::string lowered_type;  // type of each emitted variable, e.g. "vec3"
   std::vector<std::string> lowered_names;  // {"X_hi","X_lo"} when split, else {"X"}
   std::vector<int> locations;              // explicit locations of lowered_names, if any
+  // Mode exact: "binary64-words" — each double is the two 32-bit words of its IEEE binary64
+  // pattern, low word first (packDouble2x32's order): the lowered variables' words, in the order of
+  // lowered_names, are the little-endian bytes of the original value. lowered_types then gives
+  // each lowered variable's type (dvec3 p -> p_xy: uvec4, p_z: uvec2). Empty otherwise.
+  std::string encoding;
+  std::vector<std::string> lowered_types;
   // A member of an in/out block flattened into a plain variable (targets without I/O blocks:
   // es100, es300, es310): the block's name; `name` is then BLOCK_MEMBER.
   std::string block;
@@ -181,7 +193,7 @@ Result lower(std::string_view source, const Options& options);
 std::string_view to_string(Target t);           // "es300"
 std::string_view to_string(Stage s);            // "vert"
 std::optional<Target> parse_target(std::string_view name);
-std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native", "df64-int"
+std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native", "df64-int", "exact", "rte-exact"
 std::optional<Mode> parse_mode(std::string_view name);
 std::optional<Stage> parse_stage(std::string_view name);  // "vert"|"frag"|"comp"
 // The lints Options::disabled_lints can name: "float-literal", "wasted-double", ...

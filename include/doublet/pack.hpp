@@ -14,11 +14,20 @@
 //     glVertexAttribPointer(loc(s), s.components, GL_FLOAT, GL_FALSE,
 //                           layout.stride_floats * 4, (void*)(s.offset_floats * 4));
 //
+// Mode exact (`--mode exact`, manifest "encoding": "binary64-words"): a double is the two uint
+// words of its binary64 pattern, low word first, so the host's raw doubles are the data:
+//   for (auto& u : doublet::pack::uniform_words(*m->find("eye"), eye_xyz))   // dvec3 -> eye_xy, eye_z
+//     glUniform4uiv / glUniform2uiv (by u.components)(location(u.name), u.count, u.words.data());
+//   for (auto& a : doublet::pack::word_attributes(*m->find("position"), offsetof(Vertex, position)))
+//     glVertexAttribIPointer(loc(a), a.components, GL_UNSIGNED_INT, sizeof(Vertex), (void*)a.offset_bytes);
+// and a uniform/storage block takes the std140/std430 bytes of its doubles unchanged.
+//
 // Header-only, C++20, standard library only (the manifest parser is a small JSON reader).
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <span>
@@ -39,6 +48,8 @@ struct Variable {
   std::string lowered_type;  // e.g. "vec3"
   std::vector<std::string> lowered_names;
   std::vector<int> locations;  // explicit locations of lowered_names, when the shader has them
+  std::string encoding;        // "binary64-words" (mode exact), else empty
+  std::vector<std::string> lowered_types;  // mode exact: one per lowered name ("uvec4", "uvec2[3]")
 
   // Floats per lowered variable: 1 for float, N for vecN; 0 for other types.
   int components() const {
@@ -241,7 +252,14 @@ inline std::optional<Manifest> parse_manifest(std::string_view json, std::string
       for (const Json& n : names->items) v.lowered_names.push_back(n.string);
     if (const Json* locs = e.get("locations"); locs && locs->kind == Json::Kind::Array)
       for (const Json& n : locs->items) v.locations.push_back(static_cast<int>(n.number));
-    if (v.name.empty() || v.lowered_names.empty() || (v.split && v.lowered_names.size() != 2))
+    v.encoding = e.string_at("encoding");
+    if (const Json* types = e.get("lowered_types"); types && types->kind == Json::Kind::Array)
+      for (const Json& t : types->items) v.lowered_types.push_back(t.string);
+    const bool words = v.encoding == "binary64-words";
+    if (words && !v.lowered_types.empty() && v.lowered_types.size() != v.lowered_names.size())
+      return fail("manifest: variable '" + v.name + "' has " + std::to_string(v.lowered_types.size()) +
+                  " lowered_types for " + std::to_string(v.lowered_names.size()) + " lowered_names");
+    if (v.name.empty() || v.lowered_names.empty() || (v.split && !words && v.lowered_names.size() != 2))
       return fail("manifest: variable '" + v.name + "' lacks a name or lowered names");
     m.variables.push_back(std::move(v));
   }
@@ -371,6 +389,96 @@ inline bool pack_vertices(const VertexLayout& layout, std::span<const AttributeD
 inline bool pack_vertices(const VertexLayout& layout, std::initializer_list<AttributeData> data, std::vector<float>& out,
                           std::string* error = nullptr) {
   return pack_vertices(layout, std::span<const AttributeData>(data.begin(), data.size()), out, error);
+}
+
+// ---------------------------------------------------------------------------------------
+// Mode exact: binary64 words
+
+namespace detail {
+// Elements of an array type spelled "T[N]" (1 when not an array, 0 when unsized).
+inline std::size_t array_elements(std::string_view type) {
+  const std::size_t open = type.find('[');
+  if (open == std::string_view::npos) return 1;
+  std::size_t n = 0;
+  for (std::size_t i = open + 1; i < type.size() && type[i] >= '0' && type[i] <= '9'; ++i) n = n * 10 + (type[i] - '0');
+  return n;
+}
+// uints per element of "uvec2"/"uvec4" (arrays too); 0 otherwise.
+inline int uint_components(std::string_view type) {
+  if (type.starts_with("uvec2")) return 2;
+  if (type.starts_with("uvec4")) return 4;
+  return 0;
+}
+// doubles per element of "double"/"dvecN" (arrays too); 0 otherwise.
+inline int double_components(std::string_view type) {
+  if (type.starts_with("double")) return 1;
+  if (type.size() >= 5 && type.starts_with("dvec") && type[4] >= '2' && type[4] <= '4') return type[4] - '0';
+  return 0;
+}
+}  // namespace detail
+
+inline bool is_binary64_words(const Variable& v) { return v.encoding == "binary64-words"; }
+
+// The uints of one lowered uniform: glUniform{components}uiv(location(name), count, words.data()).
+struct UniformWords {
+  std::string name;
+  int components = 0;  // 2 or 4
+  int count = 0;       // array elements (1 for a plain variable)
+  std::vector<std::uint32_t> words;  // count × components
+};
+
+// The words of `uniform double/dvecN X[...]` lowered by mode exact, from its value as the host holds
+// it (elements × components doubles, element after element). For double and dvec2 the words are the
+// value's bytes as they are; dvec3/dvec4 split each element into X_xy (first two components) and
+// X_z/X_zw. Empty when `v` is not a mode-exact double uniform or the size does not match.
+inline std::vector<UniformWords> uniform_words(const Variable& v, std::span<const double> value) {
+  const int n = detail::double_components(v.type);
+  const std::size_t elements = detail::array_elements(v.type);
+  if (!is_binary64_words(v) || n == 0 || elements == 0 || value.size() != elements * static_cast<std::size_t>(n) ||
+      v.lowered_types.size() != v.lowered_names.size())
+    return {};
+  std::vector<UniformWords> out;
+  int first = 0;  // the first component each lowered variable holds
+  for (std::size_t part = 0; part < v.lowered_names.size(); ++part) {
+    UniformWords u{v.lowered_names[part], detail::uint_components(v.lowered_types[part]), static_cast<int>(elements), {}};
+    const int doubles = u.components / 2;
+    for (std::size_t e = 0; e < elements; ++e)
+      for (int c = first; c < first + doubles; ++c) {
+        const ExactWords w = exact_words(value[e * static_cast<std::size_t>(n) + static_cast<std::size_t>(c)]);
+        u.words.push_back(w.lo);
+        u.words.push_back(w.hi);
+      }
+    first += doubles;
+    out.push_back(std::move(u));
+  }
+  return out;
+}
+inline std::vector<UniformWords> uniform_words(const Variable& v, std::initializer_list<double> value) {
+  return uniform_words(v, std::span<const double>(value.begin(), value.size()));
+}
+
+// One lowered vertex attribute of a mode-exact double input, read straight from the host's doubles:
+// glVertexAttribIPointer(location, components, GL_UNSIGNED_INT, host stride, offset_bytes).
+struct WordAttribute {
+  std::string name;
+  int location = -1;       // from the manifest; -1: ask GL (glGetAttribLocation)
+  int components = 0;      // uints: 2 or 4
+  std::size_t offset_bytes = 0;
+};
+
+// The attributes of vertex input `v` (double/dvecN) whose doubles start `offset_bytes` into each
+// vertex of the host's buffer (offsetof(Vertex, position)); empty when `v` is not one.
+inline std::vector<WordAttribute> word_attributes(const Variable& v, std::size_t offset_bytes) {
+  if (!is_binary64_words(v) || (v.storage != "in" && v.storage != "attribute") ||
+      v.lowered_types.size() != v.lowered_names.size())
+    return {};
+  std::vector<WordAttribute> out;
+  for (std::size_t part = 0; part < v.lowered_names.size(); ++part) {
+    const int components = detail::uint_components(v.lowered_types[part]);
+    out.push_back({v.lowered_names[part], v.location(part), components, offset_bytes});
+    offset_bytes += static_cast<std::size_t>(components) * 4;
+  }
+  return out;
 }
 
 // ---------------------------------------------------------------------------------------

@@ -85,21 +85,38 @@ inline void join(std::span<const float> hi, std::span<const float> lo, std::span
 }
 
 // Mode exact (--mode exact): a double travels as the two 32-bit words of its IEEE binary64 bit
-// pattern, every value representable (subnormals, ±0, ±Inf, NaN): X_hi gets the high word (sign,
-// exponent, top 20 significand bits), X_lo the low word. In a shader, unpackDouble2x32(x) is
-// uvec2(low, high); a block member is the struct {uint hi; uint lo;}: high word first.
+// pattern, every value representable (subnormals, ±0, ±Inf, NaN), LOW word first: the order of a
+// shader's uvec2 (x = bits 0-31, y = bits 32-63: sign, exponent, top 20 significand bits), of
+// GLSL's packDouble2x32/unpackDouble2x32, and of a little-endian host's memory. So the raw bytes of
+// a host double array are already the words a lowered shader takes (`double X` -> `uvec2 X`,
+// `dvec2` -> `uvec4`; dvec3/dvec4 -> X_xy + X_z/X_zw; block members at their original offsets).
 struct ExactWords {
-  std::uint32_t hi = 0;
-  std::uint32_t lo = 0;
+  std::uint32_t lo = 0;  // uvec2.x
+  std::uint32_t hi = 0;  // uvec2.y
 };
+static_assert(sizeof(ExactWords) == sizeof(double));
 
 inline ExactWords exact_words(double x) {
   const auto bits = std::bit_cast<std::uint64_t>(x);
-  return {static_cast<std::uint32_t>(bits >> 32), static_cast<std::uint32_t>(bits)};
+  return {static_cast<std::uint32_t>(bits), static_cast<std::uint32_t>(bits >> 32)};
 }
 
 inline double exact_join(ExactWords w) {
   return std::bit_cast<double>((std::uint64_t{w.hi} << 32) | w.lo);
+}
+
+// Bulk: 2 words per double, low word first, into `words` (size 2 × x.size()): the uint data of
+// glUniform2uiv/glUniform4uiv or of a GL_UNSIGNED_INT vertex attribute, on any host byte order.
+inline void exact_words(std::span<const double> x, std::span<std::uint32_t> words) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const ExactWords w = exact_words(x[i]);
+    words[2 * i] = w.lo;
+    words[2 * i + 1] = w.hi;
+  }
+}
+
+inline void exact_join(std::span<const std::uint32_t> words, std::span<double> x) {
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = exact_join({words[2 * i], words[2 * i + 1]});
 }
 
 }  // namespace doublet

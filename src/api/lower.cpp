@@ -191,16 +191,17 @@ Result lower_unchecked(std::string_view source, const Options& options) {
                          std::string(to_string(options.target)) + " has no double type)"});
     return result;
   }
-  const bool exact = options.mode == Mode::Exact;
+  const bool exact = passes::binary64_words(options);  // exact, rte-exact: binary64 words
+  const std::string mode_name(to_string(options.mode));
   if (exact && options.target == Target::Es100) {
     diags.push_back({options.file_name, 0, 0, Severity::Error,
-                     "--mode exact needs 32-bit integers (uint and bit operations), which GLSL ES 1.00 lacks: use "
-                     "--target es300 or later"});
+                     "--mode " + mode_name + " needs 32-bit integers (uint and bit operations), which GLSL ES 1.00 "
+                     "lacks: use --target es300 or later"});
     return result;
   }
   if (exact && !options.mode_for.empty()) {
     diags.push_back({options.file_name, 0, 0, Severity::Error,
-                     "--mode exact applies to the whole shader: it cannot be combined with --mode-for " +
+                     "--mode " + mode_name + " applies to the whole shader: it cannot be combined with --mode-for " +
                          options.mode_for.front().first + "=" + std::string(to_string(options.mode_for.front().second))});
     return result;
   }
@@ -230,7 +231,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   if (exact && !pragmas.empty()) {
     diags.push_back({options.file_name, pragmas.front().line, pragmas.front().column, Severity::Error,
                      "'#pragma doublet mode(" + std::string(to_string(pragmas.front().mode)) +
-                         ")' cannot be combined with --mode exact, which applies to the whole shader"});
+                         ")' cannot be combined with --mode " + mode_name + ", which applies to the whole shader"});
     return result;
   }
   if (native)
@@ -260,6 +261,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
   if (options.optimize && !exact && !passes::optimize_df(module, ctx)) return result;
   next_phase("interfaces");
   if (!passes::move_global_initialisers(module, ctx)) return result;
+  if (exact && !passes::exact_block_words(module, ctx)) return result;
   if (!passes::split_interfaces(module, ctx, result.manifest)) return result;
   if (!passes::rename_functions_named_like_builtins(module, ctx)) return result;
   if (!passes::select_structs(module, ctx)) return result;
@@ -278,6 +280,8 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     request.guard_uniform = options.guard_uniform_name;
     request.es_version = target_is_es(options.target) ? target_version(options.target) : 320;
     request.integer_eft = integer_eft;
+    request.integer_functions = options.target == Target::Es310 || options.target == Target::Es320 ||
+                                options.target == Target::Glsl450;  // umulExtended, findMSB
     if (exact)  // an operation rules/exact.glsl does not have yet: said where the shader first uses it
       for (const auto& ref : ctx.rules_used)
         if (!rules::RuleLibrary::builtin().has(ref)) {
@@ -285,7 +289,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
           ir::Loc at = use != ctx.rule_first_use.end() ? use->second : ir::Loc{};
           diags.push_back({options.file_name, at.line, at.column, Severity::Error,
                            "this double operation (" + ref.name.substr(3) + ", width " + std::to_string(ref.width) +
-                               ") is not implemented by --mode exact yet; use --mode df64 for it"});
+                               ") is not implemented by --mode " + mode_name + " yet; use --mode df64 for it"});
           return result;
         }
     rules::EmitResult emitted = rules::RuleLibrary::builtin().emit(request);
@@ -312,6 +316,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
       }
     }
   }
+  print_options.after_structs = ctx.struct_helpers;
   emit::PrintResult printed = emit::print(module, print_options, options.file_name);
   diags.insert(diags.end(), printed.diagnostics.begin(), printed.diagnostics.end());
   if (std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; }))

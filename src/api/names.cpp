@@ -41,6 +41,7 @@ constexpr std::pair<Mode, const char*> kModes[] = {
     {Mode::Fp32, "fp32"}, {Mode::Rte, "rte"}, {Mode::Df64Fast, "df64-fast"}, {Mode::Df64, "df64"}, {Mode::Native, "native"},
     {Mode::Df64Int, "df64-int"},
     {Mode::Exact, "exact"},
+    {Mode::RteExact, "rte-exact"},
 };
 }  // namespace
 
@@ -105,6 +106,8 @@ std::string Manifest::to_json() const {
     e["split"] = v.split;
     e["lowered_type"] = v.lowered_type;
     e["lowered_names"] = v.lowered_names;
+    if (!v.lowered_types.empty()) e["lowered_types"] = v.lowered_types;
+    if (!v.encoding.empty()) e["encoding"] = v.encoding;
     if (!v.locations.empty()) e["locations"] = v.locations;
     if (!v.block.empty()) e["block"] = v.block;
     if (!v.layout.empty()) e["layout"] = v.layout;
@@ -125,6 +128,7 @@ std::string Manifest::to_json() const {
           jm["hi_offset"] = m.hi_offset;
           jm["lo_offset"] = m.lo_offset;
         }
+        if (!m.encoding.empty()) jm["encoding"] = m.encoding;
         e["members"].push_back(jm);
       }
     }

@@ -35,6 +35,7 @@ struct Workload {
   std::string source;  // "#version 450" with doubles
   std::vector<std::vector<uint8_t>> buffers;
   std::map<std::string, std::vector<double>> uniforms;
+  std::map<std::string, int> double_uniforms;  // name -> components: exact mode takes them as words
   uint32_t groups = 1;
   double ops_per_dispatch = 0;
   int steps = 1;            // kernels: chain length; shaders: 1 (one invocation is one "op")
@@ -51,11 +52,34 @@ std::vector<long double> hi_lo_values(const std::vector<uint8_t>& out) {
   return v;
 }
 
-runner::ComputeJob compute_job(const Workload& w, const std::string& glsl) {
+// Mode exact takes a double uniform X as binary64 words, low word first (docs/modes.md, exact's
+// interface): double -> uvec2 X, dvec2 -> uvec4 X, dvec3/dvec4 -> X_xy plus X_z/X_zw. The value
+// the other modes get (1 per component) is given here as 1.0's words.
+void set_exact_uniform_words(const std::string& name, int components,
+                             std::map<std::string, std::vector<double>>* uniforms) {
+  constexpr double kOneLow = 0, kOneHigh = 0x3FF00000;  // the bit pattern of 1.0
+  auto words = [](int n) {
+    std::vector<double> v;
+    for (int i = 0; i < n; ++i) v.insert(v.end(), {kOneLow, kOneHigh});
+    return v;
+  };
+  uniforms->erase(name + "_hi");
+  if (components <= 2) {
+    (*uniforms)[name] = words(components);
+    return;
+  }
+  uniforms->erase(name);
+  (*uniforms)[name + "_xy"] = words(2);
+  (*uniforms)[name + (components == 3 ? "_z" : "_zw")] = words(components - 2);
+}
+
+runner::ComputeJob compute_job(const Workload& w, const std::string& glsl, Mode mode = Mode::Df64) {
   runner::ComputeJob job;
   job.glsl = glsl;
   job.buffers = w.buffers;
   job.uniforms = w.uniforms;
+  if (mode == Mode::Exact)
+    for (const auto& [name, components] : w.double_uniforms) set_exact_uniform_words(name, components, &job.uniforms);
   job.groups_x = w.groups;
   return job;
 }
@@ -65,7 +89,7 @@ double measured_bits(const BenchOptions& o, const Workload& w, runner::Backend b
   if (w.native_values.empty()) return -1;
   const Variant v = make_variant(mode, backend, w.accuracy_source, o.target, w.name);
   if (v.glsl.empty()) return -1;
-  const runner::ComputeResult r = runner::run_compute(backend, compute_job(w, v.glsl));
+  const runner::ComputeResult r = runner::run_compute(backend, compute_job(w, v.glsl, mode));
   if (!r.ok) {
     *error = "accuracy run: " + r.error;
     return -1;
@@ -117,7 +141,10 @@ bool shader_workload(const BenchOptions& o, Workload* w, std::string* error) {
     if (u.components <= 0) continue;
     const std::vector<double> ones(static_cast<size_t>(u.components), 1.0);
     w->uniforms[u.name] = ones;
-    if (u.is_double) w->uniforms[u.name + "_hi"] = ones;
+    if (u.is_double) {
+      w->uniforms[u.name + "_hi"] = ones;
+      w->double_uniforms[u.name] = u.components;
+    }
   }
   const uint32_t local = std::max<uint32_t>(1, iface.local_size[0] * iface.local_size[1] * iface.local_size[2]);
   w->groups = std::max<uint32_t>(1, (static_cast<uint32_t>(o.elements) + local - 1) / local);
@@ -143,7 +170,7 @@ Measurement measure(const BenchOptions& o, const Workload& w, runner::Backend ba
     const Variant v16 = make_variant(mode, backend, w.source16, o.target, w.name);
     if (!v16.glsl.empty()) m.emitted_flops_per_step = float_ops_per_step(v.glsl, v16.glsl);
   }
-  const runner::TimedResult r = runner::run_compute_timed(backend, compute_job(w, v.glsl), o.warmup, o.repetitions);
+  const runner::TimedResult r = runner::run_compute_timed(backend, compute_job(w, v.glsl, mode), o.warmup, o.repetitions);
   if (!r.device.empty()) report->devices[backend_key(backend)] = r.device;
   if (!r.ok) {
     m.note = r.error;

@@ -14,7 +14,9 @@
 #include "bench/compiler.hpp"
 #include "bench/handwritten.hpp"
 #include "bench/plot.hpp"
+#include "bench/transcendental_bench.hpp"
 #include "bench/kernels.hpp"
+#include "bench/peer_bench.hpp"
 #include "bench/user_shader.hpp"
 #include "commands.hpp"
 
@@ -25,10 +27,12 @@ struct BenchArgs {
   std::vector<std::string> include_dirs;
   std::string shader, ops = "all", modes = "all", backend = "both", target = "es320", json, plot;
   int elements = 16384, steps = 0, warmup = 2, reps = 7;
-  bool handwritten = false, compiler = false;
+  bool handwritten = false, compiler = false, transcendentals = false, peer_luma = false;
   int lines = 5000;
   std::string scaling;  // --compiler: comma list of further sizes
   int mandelbrot_size = 128, mandelbrot_iterations = 1000;
+  std::string peer_mesa_fp64;  // Mesa's float64.glsl: exact vs Mesa's soft-fp64
+  int check_inputs = 1 << 16;
 };
 
 std::vector<std::string> split_commas(const std::string& s) {
@@ -64,6 +68,41 @@ int run_handwritten_command(const CLI::App& cmd, const BenchArgs& a, const std::
   return kExitOk;
 }
 
+int run_peer_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  bench::PeerOptions o;
+  o.peer_path = a.peer_mesa_fp64;
+  if (a.ops != "all") o.ops = split_commas(a.ops);
+  for (const std::string& op : o.ops)
+    if (std::find(bench::peer_ops().begin(), bench::peer_ops().end(), op) == bench::peer_ops().end())
+      return usage_error(cmd, "unknown op '" + op + "' for --peer-mesa-fp64 (add,sub,mul,div,sqrt)");
+  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
+  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
+  const std::optional<Target> target = parse_target(a.target);
+  if (!target || (*target != Target::Es310 && *target != Target::Es320))
+    return usage_error(cmd, "--target must be es310 or es320 with --peer-mesa-fp64 (both backends run it)");
+  if (a.elements < 1 || a.steps < 0 || a.reps < 1 || a.warmup < 0 || a.check_inputs < 1)
+    return usage_error(cmd, "--elements, --reps and --check-inputs must be at least 1, --steps and --warmup at least 0");
+  o.target = *target;
+  o.elements = a.elements;
+  if (a.steps) o.steps = a.steps;
+  o.warmup = a.warmup;
+  o.repetitions = a.reps;
+  o.check_inputs = a.check_inputs;
+  bench::PeerReport report;
+  report.command = command_line;
+  std::string error;
+  if (!bench::run_peer_bench(o, &report, &error)) {
+    std::cerr << "doublet bench: error: " << error << "\n";
+    return kExitInput;
+  }
+  std::cout << bench::format_peer_markdown(report) << std::flush;
+  for (const bench::PeerTiming& t : report.timings)
+    if (!t.ok && !t.not_applicable) return 3;
+  for (const bench::PeerBits& b : report.bits)
+    if (!b.ok) return 3;
+  return kExitOk;
+}
+
 int run_compiler_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
   bench::CompilerOptions o;
   o.lines = a.lines;
@@ -85,9 +124,36 @@ int run_compiler_command(const CLI::App& cmd, const BenchArgs& a, const std::str
   return ok ? kExitOk : 3;
 }
 
+int run_transcendental_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  bench::TranscendentalOptions o;
+  if (a.ops != "all") o.functions = split_commas(a.ops);
+  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
+  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
+  const std::optional<Target> target = parse_target(a.target);
+  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
+    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  o.target = *target;
+  o.elements = a.elements;
+  if (a.steps) o.steps = a.steps;
+  o.warmup = a.warmup;
+  o.repetitions = a.reps;
+  o.peer_luma = a.peer_luma;
+  bench::TranscendentalReport report;
+  report.command = command_line;
+  std::string error;
+  if (!bench::run_transcendental_bench(o, &report, &error)) return usage_error(cmd, error);
+  std::cout << bench::format_transcendental_markdown(report) << std::flush;
+  for (const bench::TranscendentalRow& r : report.rows)
+    if (!r.ok && !r.not_applicable && !(r.variant == bench::TranscendentalVariant::Luma && report.luma_version.empty()))
+      return 3;  // a driver (or the lowering) failed
+  return kExitOk;
+}
+
 int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
   if (a.compiler) return run_compiler_command(cmd, a, command_line);
+  if (a.transcendentals) return run_transcendental_command(cmd, a, command_line);
   if (a.handwritten) return run_handwritten_command(cmd, a, command_line);
+  if (!a.peer_mesa_fp64.empty()) return run_peer_command(cmd, a, command_line);
   bench::BenchOptions o;
   if (a.ops == "all") {
     for (const bench::Kernel& k : bench::kernels()) o.ops.push_back(k.op);
@@ -177,6 +243,15 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_flag("--handwritten", args->handwritten,
                 "compare with a hand-written float-float library on Mesa GLES (ops add,sub,mul,div,sqrt,mulf,mandelbrot; "
                 "docs/performance.md)");
+  cmd->add_option("--peer-mesa-fp64", args->peer_mesa_fp64,
+                  "mode exact against Mesa's soft-fp64 GLSL FILE (float64.glsl; scripts/fetch-mesa-fp64), native fp64 "
+                  "and fp32: time and bit identity per op (add,sub,mul,div,sqrt; docs/modes.md)");
+  cmd->add_option("--check-inputs", args->check_inputs, "--peer-mesa-fp64: inputs of the bit-identity check per op (default 65536)");
+  cmd->add_flag("--transcendentals", args->transcendentals,
+                "exp,log,sin,cos,tan (--ops): fp32 built-ins, df64 rules and the same algorithms in native fp64, "
+                "time per call and bits (docs/transcendentals.md)");
+  cmd->add_flag("--peer-luma", args->peer_luma,
+                "--transcendentals: also luma.gl's fp64 module (npm @luma.gl/shadertools, tools/peers)");
   cmd->add_option("--mandelbrot-size", args->mandelbrot_size, "--handwritten: pixels per side (default 128)");
   cmd->add_option("--mandelbrot-iterations", args->mandelbrot_iterations, "--handwritten: iteration limit (default 1000)");
   return {cmd, [cmd, args] {
@@ -187,6 +262,13 @@ Command add_bench_command(CLI::App& app) {
                                        "doublet bench --compiler --lines " + std::to_string(a.lines) + " --reps " +
                                            std::to_string(a.reps) + " --target " + a.target +
                                            (a.scaling.empty() ? "" : " --scaling " + a.scaling));
+            if (a.transcendentals)
+              return run_bench_command(*cmd, a,
+                                       "doublet bench --transcendentals" + std::string(a.peer_luma ? " --peer-luma" : "") +
+                                           " --ops " + a.ops + " --backend " + a.backend + " --target " + a.target +
+                                           " --elements " + std::to_string(a.elements) + " --steps " +
+                                           std::to_string(a.steps ? a.steps : 256) + " --warmup " +
+                                           std::to_string(a.warmup) + " --reps " + std::to_string(a.reps));
             if (a.handwritten)
               return run_bench_command(*cmd, a,
                                        "doublet bench --handwritten --ops " + a.ops + " --elements " +
@@ -194,6 +276,13 @@ Command add_bench_command(CLI::App& app) {
                                            " --warmup " + std::to_string(a.warmup) + " --reps " + std::to_string(a.reps) +
                                            " --mandelbrot-size " + std::to_string(a.mandelbrot_size) +
                                            " --mandelbrot-iterations " + std::to_string(a.mandelbrot_iterations));
+            if (!a.peer_mesa_fp64.empty())
+              return run_bench_command(*cmd, a,
+                                       "doublet bench --peer-mesa-fp64 " + a.peer_mesa_fp64 + " --ops " + a.ops +
+                                           " --backend " + a.backend + " --target " + a.target + " --elements " +
+                                           std::to_string(a.elements) + " --steps " + std::to_string(a.steps ? a.steps : 512) +
+                                           " --warmup " + std::to_string(a.warmup) + " --reps " + std::to_string(a.reps) +
+                                           " --check-inputs " + std::to_string(a.check_inputs));
             std::string line = "doublet bench" + (a.shader.empty() ? "" : " " + a.shader) + " --ops " + a.ops +
                                " --modes " + a.modes + " --backend " + a.backend + " --target " + a.target +
                                " --elements " + std::to_string(a.elements) +

@@ -335,9 +335,10 @@ Command add_lower_command(CLI::App& app) {
   cmd->add_option("--color", args->color, "Colour diagnostics: auto (terminal, no NO_COLOR), always, never")
       ->type_name("WHEN");
   cmd->add_option("--mode", args->mode,
-                  "Precision mode (docs/modes.md): fp32, rte, df64-fast, df64, df64-int, native or exact (default "
-                  "df64; df64-int needs ES 3.00+; native needs --target glsl450; exact: IEEE binary64 in integer "
-                  "arithmetic, ES 3.00+)")
+                  "Precision mode (docs/modes.md): fp32, rte, df64-fast, df64, df64-int, native, exact or rte-exact "
+                  "(default df64; df64-int needs ES 3.00+; native needs --target glsl450; exact: IEEE binary64 in "
+                  "integer arithmetic, ES 3.00+; rte-exact: binary64 storage, float arithmetic, a - b exact and "
+                  "rounded once to float, ES 3.00+)")
       ->type_name("MODE");
   cmd->add_option("--mode-for", args->mode_for,
                   "Mode of one global, function (all overloads) or FUNCTION.LOCAL, as '#pragma doublet "

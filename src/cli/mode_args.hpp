@@ -8,7 +8,7 @@
 
 namespace doublet::cli {
 
-inline constexpr const char* kModeNames = "fp32, rte, df64-fast, df64, df64-int, native or exact";
+inline constexpr const char* kModeNames = "fp32, rte, df64-fast, df64, df64-int, native, exact or rte-exact";
 
 // Fills options.mode / options.mode_for; returns the usage error, or "" when both parse.
 inline std::string apply_mode_args(const std::string& mode, const std::vector<std::string>& mode_for,

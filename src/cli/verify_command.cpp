@@ -101,7 +101,16 @@ int apply_scene_and_plan(const VerifyArgs& a, verify::VerifyOptions* o, plan::Sc
     verify::InputSpec& in = o->spec.inputs[name];
     for (const plan::Interval& c : range.components) in.component_ranges.emplace_back(c.lo, c.hi);
   }
-  for (const plan::Relation& r : scene->relations) o->spec.relations.push_back({r.a, r.b, r.abs_max});
+  for (const plan::Relation& r : scene->relations) {
+    // Samples are drawn for inputs; a relation on a value the shader computes cannot steer them.
+    for (const std::string& side : {r.a, r.b})
+      if (plan::is_computed_value(side))
+        return (std::cerr << format_diagnostic(plan::scene_diagnostic(*scene, r.path + "/difference",
+                                  "verify cannot sample a relation on '" + side +
+                                      "', a value the shader computes: only relations between inputs")) << "\n",
+                kExitInput);
+    o->spec.relations.push_back({r.a, r.b, r.abs_max});
+  }
   for (const auto& [name, req] : scene->outputs) o->spec.outputs[name].max_abs_error = req.abs_error;
   return kExitOk;
 }
@@ -149,9 +158,6 @@ int run_verify(const VerifyArgs& a) {
   }
   o.lower.include_dirs = a.include_dirs;
   if (std::string e = apply_mode_args(a.mode, a.mode_for, o.lower); !e.empty()) return input_error(e);
-  if (o.lower.mode == Mode::Exact)  // its interfaces are uint words, which verify's harness does not feed yet
-    return input_error("--mode exact is not supported by doublet verify yet (tests/exact checks it bit for bit "
-                       "against native fp64; docs/modes.md)");
   o.samples = a.samples;
   o.seed = a.seed;
   o.min_bits = a.min_bits;
@@ -191,7 +197,7 @@ int run_verify(const VerifyArgs& a) {
   if (!a.scene.empty()) (json_to_stdout ? std::cerr : std::cout) << scene_summary(report, scene);
   // With no threshold anywhere, PASS only says both versions ran: say so, so that a pipeline
   // does not take it for an accuracy check (docs/verify.md, exit codes).
-  const bool any_threshold = o.min_bits || !a.scene.empty() ||
+  const bool any_threshold = o.min_bits || !a.scene.empty() || o.lower.mode == Mode::Exact ||  // exact: identical bits
                              std::any_of(o.spec.outputs.begin(), o.spec.outputs.end(),
                                          [](const auto& out) { return out.second.min_bits.has_value(); });
   if (report.input_error.empty() && !any_threshold)
@@ -229,13 +235,16 @@ Command add_verify_command(CLI::App& app) {
                   "default; all = vulkan + gles + webgl2; webgl2 = headless Chromium's WebGL2 (vert/frag); webgpu "
                   "= the WGSL lowering in headless Chromium's WebGPU (comp))")
       ->check(CLI::IsMember({"vulkan", "gles", "webgl2", "webgpu", "both", "all"}));
-  cmd->add_option("--sabotage", args->sabotage, "drop-lo|drop-guard: break the lowering on purpose")
-      ->check(CLI::IsMember({"none", "drop-lo", "drop-guard"}));
+  cmd->add_option("--sabotage", args->sabotage,
+                  "drop-lo|drop-guard|ties-away: break the lowering on purpose (ties-away: mode exact rounds ties "
+                  "away from zero)")
+      ->check(CLI::IsMember({"none", "drop-lo", "drop-guard", "ties-away"}));
   cmd->add_option("-D", args->defines, "NAME[=VALUE] preprocessor define");
   cmd->add_option("-I", args->include_dirs, "include directory");
   cmd->add_option("--mode", args->mode, "precision mode of the lowering: fp32|rte|df64-fast|df64|df64-int (default df64)");
   cmd->add_option("--mode-for", args->mode_for, "NAME=MODE per global, function or FUNCTION.LOCAL (repeatable)");
-  cmd->footer("Exit status: 0 pass, 1 an output below its min bits, 2 input error, 3 driver failure.");
+  cmd->footer("Exit status: 0 pass, 1 an output below its min bits (--mode exact: any output whose bits differ), 2 input "
+              "error, 3 driver failure.");
   return Command{cmd, [args] { return run_verify(*args); }};
 }
 

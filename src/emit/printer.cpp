@@ -43,6 +43,7 @@ class Printer {
     header();
     for (const auto& t : module_.structs) struct_definition(t);
     if (!module_.structs.empty()) out_ << "\n";
+    if (!options_.after_structs.empty()) out_ << options_.after_structs << "\n";
     fragment_output_rename();
     for (size_t i = 0; i < module_.globals.size(); ++i) global(module_.globals[i], module_.global_inits[i]);
     if (frag_color_declared_) out_ << "layout(location = 0) out highp vec4 df_frag_color;\n";

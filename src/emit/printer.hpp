@@ -16,6 +16,7 @@ struct PrintOptions {
   Target target = Target::Es300;
   std::vector<std::string> extensions;  // #extension NAME : require
   std::string runtime;                  // float-float runtime text, printed before user types
+  std::string after_structs;            // helpers over user struct types, printed after them
   // The runtime's guard uniform, when it declares one. The user's loose numeric uniforms are then
   // printed before the runtime, so that the guard is never the first uniform: lavapipe, when it
   // specialises a shader on a uniform used in a branch, replaces a first-declared guard with a

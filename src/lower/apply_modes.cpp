@@ -43,7 +43,9 @@ Base arithmetic_base(Mode m) { return m == Mode::Fp32 || m == Mode::Rte ? Base::
 
 class ModeApplier {
  public:
-  ModeApplier(ir::Module& m, Context& c) : module_(m), ctx_(c), global_(c.options.mode) {}
+  // rte-exact's arithmetic is rte's (its storage, binary64 words, is lower_doubles' business).
+  ModeApplier(ir::Module& m, Context& c)
+      : module_(m), ctx_(c), global_(c.options.mode == Mode::RteExact ? Mode::Rte : c.options.mode) {}
 
   bool resolve(const std::vector<frontend::ModePragma>& pragmas) {
     index_declarations();
@@ -148,7 +150,7 @@ class ModeApplier {
                                   spelled + " is not followed by a declaration; it has no effect"});
       return;
     }
-    if (p.mode == Mode::Native || p.mode == Mode::Exact) {
+    if (p.mode == Mode::Native || p.mode == Mode::Exact || p.mode == Mode::RteExact) {
       error_at(p.line, p.column, "mode " + std::string(to_string(p.mode)) + " applies to the whole shader only (--mode " +
                                      std::string(to_string(p.mode)) + "), not to one declaration");
       return;
@@ -165,7 +167,7 @@ class ModeApplier {
   }
 
   void apply_name(const std::string& name, Mode mode) {
-    if (mode == Mode::Native || mode == Mode::Exact) {
+    if (mode == Mode::Native || mode == Mode::Exact || mode == Mode::RteExact) {
       const std::string m(to_string(mode));
       error_at(0, 0, "--mode-for " + name + "=" + m + ": mode " + m + " applies to the whole shader only (--mode " + m + ")");
       return;

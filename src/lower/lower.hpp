@@ -36,6 +36,11 @@ struct Context {
   bool fast_global_inits = false;
   // flatten_io_blocks: each variable made from an in/out block's member → the block's name.
   std::map<const ir::Var*, std::string> flattened_blocks;
+  // exact_block_words: each block's members as the manifest lists them, and the GLSL of the
+  // load/store helpers over user struct types (printed after those types).
+  std::map<const ir::Var*, std::vector<BlockMember>> exact_block_members;
+  std::string struct_helpers;
+  std::set<const ir::Var*> exact_struct_uniforms;  // loose uniforms of a STRUCT_words twin type
 
   void error(ir::Loc loc, const std::string& message);
   void warning(ir::Loc loc, const std::string& message);
@@ -45,6 +50,10 @@ struct Context {
   // Adds a generated helper once; `definition` is its full GLSL text.
   void add_helper(const std::string& name, const std::string& definition);
 };
+
+// Modes exact and rte-exact store every double as its binary64 words (the df_* structs hold
+// uint words and the runtime is rules/exact.glsl).
+inline bool binary64_words(const Options& o) { return o.mode == Mode::Exact || o.mode == Mode::RteExact; }
 
 // Name of the float-float struct for a vector width: df_double, df_dvec2...
 std::string df_type_name(int width);
@@ -58,6 +67,9 @@ bool flatten_io_blocks(ir::Module& module, Context& context);
 // Global initialisers that are not constant expressions become assignments at the top of main.
 bool move_global_initialisers(ir::Module& module, Context& context);
 bool split_interfaces(ir::Module& module, Context& context, Manifest& manifest);
+// Mode exact: uniform, storage and in/out blocks hold each double as its binary64 words (low word
+// first) at the original block's offsets; accesses load and store through helpers (exact_blocks.cpp).
+bool exact_block_words(ir::Module& module, Context& context);
 // GLSL ES forbids overloading built-in names: user functions named like one are renamed (NAME_user).
 bool rename_functions_named_like_builtins(ir::Module& module, Context& context);
 // webgl2: every ternary on a struct becomes a selection through a temporary (WebGL forbids them).

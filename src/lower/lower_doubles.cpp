@@ -123,7 +123,8 @@ class DoubleLowering {
   // Mode exact keeps the df_* structs and their hi/lo members, but the members are uint words of
   // the binary64 bit pattern and every rule df_X is rules/exact.glsl's ex_X: the lowering itself
   // (swizzles, components, splats, interfaces) is the same for both representations.
-  bool exact() const { return ctx_.options.mode == Mode::Exact; }
+  bool exact() const { return binary64_words(ctx_.options); }
+  bool rte_exact() const { return ctx_.options.mode == Mode::RteExact; }
   std::string runtime_name(const std::string& name) const {
     return exact() && name.rfind("df_", 0) == 0 ? "ex_" + name.substr(3) : name;
   }
@@ -270,6 +271,7 @@ class DoubleLowering {
       }
       return lower_step(e);
     }
+    if (ExprPtr d = rte_exact_difference(e)) return d;
     const bool was_double = e->type.base == ir::Base::Double;
     for (auto& a : e->args) a = lower(a);
     e->type = lower_type(e->type, e->loc);
@@ -300,6 +302,24 @@ class DoubleLowering {
         return e;
       default: return e;
     }
+  }
+
+  // rte-exact: float(a - b) of two doubles (what apply_modes makes of an rte difference) is one
+  // rule, the exact difference rounded once to float (rules/rte_exact.glsl); null otherwise.
+  ExprPtr rte_exact_difference(const ExprPtr& e) {
+    if (!rte_exact() || e->kind != Kind::Construct || e->type.base != ir::Base::Float || e->type.is_array() ||
+        e->type.is_matrix() || e->args.size() != 1)
+      return nullptr;
+    const ExprPtr& d = e->args[0];
+    if (d->kind != Kind::Binary || d->op != "-" || d->type.vec != e->type.vec || d->type.is_matrix() ||
+        !d->args[0]->type.is_double() || !d->args[1]->type.is_double() || d->args[0]->type.is_matrix() ||
+        d->args[1]->type.is_matrix())
+      return nullptr;
+    ExprPtr a = to_df(lower(d->args[0])), b = to_df(lower(d->args[1]));
+    const int width = std::max(df_width(a->type), df_width(b->type));
+    if (df_width(a->type) < width) a = splat(a, width);
+    if (df_width(b->type) < width) b = splat(b, width);
+    return rule("df_sub_to_float", width, ir::scalar_type(ir::Base::Float, width), {a, b}, e->loc);
   }
 
   // A double constant float-float cannot hold is diagnosed, never silently Inf or 0.

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "lower/block_layout.hpp"
+#include "lower/exact_interface.hpp"
 #include "lower/lower.hpp"
 
 namespace doublet::passes {
@@ -89,6 +90,14 @@ struct Split {
   ir::Storage storage;  // the original's storage class
 };
 
+// Mode exact: the word variables of one double interface variable (exact_interface.hpp).
+struct WordSplit {
+  ir::VarPtr original;
+  std::vector<ir::VarPtr> parts;
+  ir::Storage storage;
+  int width = 1;
+};
+
 void add_copy_out(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_out) {
   for (size_t i = 0; i < s->body.size(); ++i) {
     auto& child = s->body[i];
@@ -102,6 +111,61 @@ void add_copy_out(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_out
       add_copy_out(child, copy_out);
     }
   }
+}
+
+// Diagnoses a generated name that GLSL reserves ("__") or that the shader already uses.
+// `remedy` ends the message when renaming the generated name is up to an option.
+void check_generated_name(const ir::Var& v, const std::string& generated, bool first, Context& ctx,
+                          std::set<std::string>& names, const std::string& remedy = " or change --hi-suffix/--lo-suffix") {
+  if (generated.find("__") != std::string::npos) {
+    if (first && v.name.find("__") != std::string::npos)
+      ctx.error(v.loc, "'" + v.name + "' contains '__', which GLSL reserves, and so would its split names ('" +
+                           generated + "'); rename it");
+    else if (v.name.find("__") == std::string::npos)
+      ctx.error(v.loc, "splitting '" + v.name + "' makes '" + generated + "', which contains '__' (GLSL reserves it); "
+                       "choose a --hi-suffix/--lo-suffix without '__'");
+  } else if (names.count(generated)) {
+    ctx.error(v.loc, "splitting '" + v.name + "' needs the name '" + generated +
+                         "', which the shader already uses; rename it" + remedy);
+  }
+  names.insert(generated);
+}
+
+// Mode exact: `v` becomes its word variables (exact_interface.hpp); v stays as the private df_*
+// value, renamed NAME_value when the first word variable takes its name.
+WordSplit split_into_words(const ir::VarPtr& v, ir::StageKind stage, Context& ctx, std::set<std::string>& names,
+                           InterfaceVariable& entry) {
+  WordSplit s;
+  s.original = v;
+  s.storage = v->storage;
+  s.width = v->declared_type.vec;
+  const std::vector<std::string> suffixes = exact_io::part_suffixes(s.width);
+  const int elements = v->declared_type.is_array() ? v->declared_type.array_dims[0] : 1;
+  const bool varying = (v->storage == ir::Storage::Out && stage == ir::StageKind::Vertex) ||
+                       (v->storage == ir::Storage::In && stage == ir::StageKind::Fragment);
+  for (size_t k = 0; k < suffixes.size(); ++k) {
+    auto part = std::make_shared<ir::Var>(*v);
+    part->name = suffixes[k].empty() ? v->name : ir::join_identifier(v->name, suffixes[k]);
+    part->type = exact_io::part_type(s.width, static_cast<int>(k));
+    part->type.array_dims = v->declared_type.array_dims;
+    part->declared_type = part->type;
+    if (varying) part->interp = ir::Interp::Flat;  // integer varyings must be flat (GLSL)
+    // One location per element and part: a dvec3/dvec4's two parts fill the two locations it had.
+    if (v->layout.location >= 0) part->layout.location = v->layout.location + static_cast<int>(k) * elements;
+    if (!suffixes[k].empty()) check_generated_name(*v, part->name, k == 0, ctx, names, "");
+    entry.lowered_names.push_back(part->name);
+    entry.lowered_types.push_back(ir::type_name(part->type) + ir::array_suffix(part->type));
+    if (part->layout.location >= 0) entry.locations.push_back(part->layout.location);
+    s.parts.push_back(part);
+  }
+  if (suffixes[0].empty()) {
+    v->name = ir::join_identifier(v->name, "_value");
+    check_generated_name(*s.original, v->name, false, ctx, names, "");
+  }
+  entry.split = true;
+  entry.encoding = exact_io::kEncoding;
+  entry.lowered_type = ir::type_name(s.parts[0]->type) + ir::array_suffix(s.parts[0]->type);
+  return s;
 }
 
 }  // namespace
@@ -124,6 +188,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   std::vector<ir::VarPtr> globals;
   std::vector<ExprPtr> inits;
   std::vector<Split> splits;
+  std::vector<WordSplit> word_splits;
   for (size_t i = 0; i < module.globals.size(); ++i) {
     const ir::VarPtr& v = module.globals[i];
     bool interface = v->storage == ir::Storage::In || v->storage == ir::Storage::Out ||
@@ -134,7 +199,20 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       if (auto it = ctx.flattened_blocks.find(v.get()); it != ctx.flattened_blocks.end()) entry.block = it->second;
       entry.storage = storage_name(v->storage, module.stage, es100);
       entry.type = ir::type_name(v->declared_type) + ir::array_suffix(v->declared_type);
-      if (v->storage == ir::Storage::Uniform && !v->declared_type.is_double() && v->type.base == ir::Base::Struct &&
+      if (ctx.exact_struct_uniforms.count(v.get())) {
+        // Mode exact: a struct uniform's twin (exact_blocks.cpp): every double member a uvec2/uvec4
+        // word leaf, "s.m", "s.v_xy", "s.q[1].zw"; padding members are not listed.
+        entry.split = true;
+        entry.encoding = exact_io::kEncoding;
+        entry.lowered_type = ir::type_name(v->type) + ir::array_suffix(v->type);
+        std::vector<std::string> leaves;
+        uniform_leaves(v->type, v->name, leaves);
+        for (const std::string& leaf : leaves) {
+          if (leaf.find("ex_pad") != std::string::npos) continue;
+          entry.lowered_names.push_back(leaf);
+        }
+        manifest.variables.push_back(entry);
+      } else if (v->storage == ir::Storage::Uniform && !v->declared_type.is_double() && v->type.base == ir::Base::Struct &&
           holds_doubles(v->type)) {
         // A struct uniform keeps its name; its double members are df_* structs, so the host sets
         // "s.member.hi" and "s.member.lo": list those leaf names.
@@ -153,6 +231,21 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
                                                              v->declared_type.array_dims.end(),
                                                              [](int d) { return d <= 0; })) {
         ctx.error(v->loc, "unsized arrays of doubles cannot be split into hi/lo interface variables");
+      } else if (binary64_words(ctx.options) && v->declared_type.is_matrix()) {
+        ctx.error(v->loc, "'" + v->name + "': double matrices cannot cross the interface in --mode exact yet; pass "
+                          "the columns as dvecN variables");
+      } else if (binary64_words(ctx.options)) {
+        WordSplit s = split_into_words(v, module.stage, ctx, names, entry);
+        for (const auto& part : s.parts) {
+          globals.push_back(part);
+          inits.push_back(nullptr);
+        }
+        manifest.variables.push_back(entry);
+        v->storage = ir::Storage::Global;  // the private df_* value the shader body uses
+        v->layout = {};
+        v->interp = ir::Interp::Default;
+        v->invariant = false;
+        word_splits.push_back(s);
       } else {
         if (v->storage == ir::Storage::In && module.stage == ir::StageKind::Fragment && v->interp != ir::Interp::Flat)
           ctx.warning(v->loc, "'" + v->name + "' is a smooth double varying: hi and lo are interpolated separately "
@@ -163,25 +256,9 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         for (int half = 0; half < 2; ++half) {
           auto part = std::make_shared<ir::Var>(*v);
           part->name = ir::join_identifier(v->name, half == 0 ? ctx.options.hi_suffix : ctx.options.lo_suffix);
-          // Mode exact: X_hi/X_lo hold the high/low uint words of the binary64 pattern.
-          part->type = v->declared_type.with_base(ctx.options.mode == Mode::Exact ? ir::Base::Uint : ir::Base::Float);
+          part->type = v->declared_type.with_base(ir::Base::Float);
           part->declared_type = part->type;
-          // Integer varyings must be flat (GLSL); a fragment shader's double input is flat already.
-          const bool varying = (v->storage == ir::Storage::Out && module.stage == ir::StageKind::Vertex) ||
-                               (v->storage == ir::Storage::In && module.stage == ir::StageKind::Fragment);
-          if (ctx.options.mode == Mode::Exact && varying) part->interp = ir::Interp::Flat;
-          if (part->name.find("__") != std::string::npos) {
-            // GLSL reserves every name containing "__" and GLSL ES compilers reject them.
-            if (half == 0 && v->name.find("__") != std::string::npos)
-              ctx.error(v->loc, "'" + v->name + "' contains '__', which GLSL reserves, and so would its split "
-                                "names ('" + part->name + "'); rename it");
-            else if (v->name.find("__") == std::string::npos)
-              ctx.error(v->loc, "splitting '" + v->name + "' makes '" + part->name + "', which contains '__' "
-                                "(GLSL reserves it); choose a --hi-suffix/--lo-suffix without '__'");
-          } else if (names.count(part->name))
-            ctx.error(v->loc, "splitting '" + v->name + "' needs the name '" + part->name +
-                                  "', which the shader already uses; rename it or change --hi-suffix/--lo-suffix");
-          names.insert(part->name);
+          check_generated_name(*v, part->name, half == 0, ctx, names);
           if (half == 1 && v->layout.location >= 0) {
             part->layout.location = next_location[v->storage];
             next_location[v->storage] +=
@@ -203,7 +280,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         splits.push_back(s);
       }
     }
-    if (interface && v->type.base == ir::Base::Block && holds_doubles(v->type)) {
+    if (interface && v->type.base == ir::Base::Block && (holds_doubles(v->type) || ctx.exact_block_members.count(v.get()))) {
       InterfaceVariable entry;
       entry.name = v->name.rfind("anon@", 0) == 0 ? v->type.name : v->name;
       entry.storage = storage_name(v->storage, module.stage, es100);
@@ -213,7 +290,12 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       entry.lowered_names = {entry.name};
       if (v->storage == ir::Storage::Uniform || v->storage == ir::Storage::Buffer) {  // in/out blocks have no layout
         entry.layout = v->layout.packing;
-        entry.members = block_layout(v->type, v->layout.packing);
+        if (auto words = ctx.exact_block_members.find(v.get()); words != ctx.exact_block_members.end()) {
+          entry.members = words->second;  // mode exact: the original offsets, words in place of doubles
+          entry.encoding = exact_io::kEncoding;
+        } else {
+          entry.members = block_layout(v->type, v->layout.packing);
+        }
       }
       manifest.variables.push_back(entry);
     }
@@ -222,7 +304,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   }
   module.globals = globals;
   module.global_inits = inits;
-  if (splits.empty()) return !ctx.failed;
+  if (splits.empty() && word_splits.empty()) return !ctx.failed;
 
   auto main = std::find_if(module.functions.begin(), module.functions.end(),
                            [](const ir::FunctionPtr& f) { return f->name == "main"; });
@@ -247,6 +329,23 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         auto join = Expr::make(Kind::Construct, elems_df[k]->type);
         join->args = {elems_hi[k], elems_lo[k]};
         copy_in.push_back(assign(elems_df[k], join));
+      }
+    }
+  }
+  for (const auto& s : word_splits) {
+    std::vector<ExprPtr> elems_df;
+    for_each_element(sym(s.original), [&](const ExprPtr& e) { elems_df.push_back(e); });
+    std::vector<std::vector<ExprPtr>> elems_parts(s.parts.size());
+    for (size_t k = 0; k < s.parts.size(); ++k)
+      for_each_element(sym(s.parts[k]), [&](const ExprPtr& e) { elems_parts[k].push_back(e); });
+    for (size_t i = 0; i < elems_df.size(); ++i) {
+      if (s.storage == ir::Storage::Out) {
+        for (size_t k = 0; k < s.parts.size(); ++k)
+          copy_out.push_back(assign(elems_parts[k][i], exact_io::words_of(elems_df[i], s.width, static_cast<int>(k))));
+      } else {
+        std::vector<ExprPtr> words;
+        for (const auto& p : elems_parts) words.push_back(p[i]);
+        copy_in.push_back(assign(elems_df[i], exact_io::value_of(words, s.width)));
       }
     }
   }

@@ -5,6 +5,7 @@
 
 #include "ir/walk.hpp"
 #include "plan/analysis_internal.hpp"
+#include "plan/transcendentals.hpp"
 
 namespace doublet::plan {
 using namespace detail;
@@ -107,12 +108,27 @@ bool Analysis::run(const ir::Module& module, const Scene& scene, std::vector<Dia
       diagnostics->push_back(scene_diagnostic(scene, req.path, "the shader has no output (out, gl_Position or buffer) named '" + name + "'"));
       ok = false;
     }
-  if (!ok) return false;
+  // A relation's side is an input, or every declaration of a FUNCTION.LOCAL the shader computes.
+  auto sides = [&](const Relation& r, const std::string& name) {
+    std::vector<const Var*> vars;
+    if (!is_computed_value(name)) return std::vector<const Var*>{inputs_.at(name)};
+    for (const auto& [v, f] : owner_)
+      if (f && f->name + "." + v->name == name && v->declared_type.contains_double()) vars.push_back(v);
+    if (vars.empty()) {
+      diagnostics->push_back(scene_diagnostic(scene, r.path + "/difference", "the shader has no double local or parameter '" + name + "'"));
+      ok = false;
+    }
+    return vars;
+  };
   for (const Relation& r : scene.relations) {
-    const Var *x = inputs_.at(r.a), *y = inputs_.at(r.b);
-    relations[{x, y}] = r.abs_max;
-    relations[{y, x}] = r.abs_max;
+    const std::vector<const Var*> as = sides(r, r.a), bs = sides(r, r.b);
+    for (const Var* x : as)
+      for (const Var* y : bs) {
+        relations[{x, y}] = r.abs_max;
+        relations[{y, x}] = r.abs_max;
+      }
   }
+  if (!ok) return false;
   for (const auto& [name, v] : inputs_)
     if (!scene.inputs.count(name) && v->declared_type.contains_double())
       notes_.push_back("input '" + name + "' has no range in the scene: unbounded");
@@ -218,6 +234,13 @@ double Analysis::rounding(const Expr* e, const Node& n, const Candidate& c) cons
         for (const Box& b : n.args) s = std::max(s, hull(b).mag());
         return (single ? 0x1p-24 : kDf64Rel) * 6 * std::max(s * s, m);
       }
+      if (is_transcendental(f)) {
+        const int arity = static_cast<int>(e->args.size());
+        const Interval x = n.args.empty() ? Interval::top() : hull(n.args[0]);
+        const Interval y = n.args.size() > 1 ? hull(n.args[1]) : Interval::top();
+        return single ? transcendental_error_float(f, arity, x, y, hull(n.range))
+                      : transcendental_error_df64(f, arity, x, y, hull(n.range));
+      }
       return kInf;  // no bound known for this built-in (docs/plan.md, limits)
     }
     default: return 0;  // constructors, swizzles, indexing, calls (their bodies count)
@@ -309,6 +332,7 @@ double node_flops(const Expr* e, const Analysis::Node& n, Mode mode) {
       if (f == "normalize") return single ? 3 * w + 1 : 183 + 33 * w;
       if (f == "cross") return single ? 9 : 210;
       if (f == "mix") return k * (single ? 3 : 66);
+      if (is_transcendental(f)) return k * (single ? 1 : transcendental_flops_df64(f, static_cast<int>(e->args.size())));
       return k * (single ? 1 : 20);
     }
     default: return 0;

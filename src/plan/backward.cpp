@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "plan/analysis_internal.hpp"
+#include "plan/transcendentals.hpp"
 
 namespace doublet::plan {
 using namespace detail;
@@ -116,6 +117,12 @@ struct Backward {
     if (f == "fma") { pass(0, mag(r(1))); pass(1, mag(r(0))); pass(2, 1); return; }
     if (f == "matrixCompMult") { pass(0, mag(r(1))); pass(1, mag(r(0))); return; }
     if (f == "transpose") { pass(0, 1); return; }
+    if (is_transcendental(f)) {  // componentwise: the largest slope over the arguments' hulls
+      const int arity = static_cast<int>(e.args.size());
+      const Interval x = Analysis::hull(r(0)), y = arity > 1 ? Analysis::hull(r(1)) : Interval::top();
+      for (size_t i = 0; i < e.args.size(); ++i) pass(i, transcendental_slope(f, arity, i, x, y));
+      return;
+    }
     for (size_t i = 0; i < e.args.size(); ++i) pass(i, kInf);  // no derivative bound known
   }
 

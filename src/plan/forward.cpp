@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "plan/analysis_internal.hpp"
+#include "plan/transcendentals.hpp"
 
 namespace doublet::plan {
 using namespace detail;
@@ -150,7 +151,6 @@ struct Forward {
     if (f == "floor" || f == "ceil" || f == "trunc" || f == "round" || f == "roundEven")
       return each([](Interval x) { return Interval{std::floor(x.lo), std::ceil(x.hi)}; });
     if (f == "fract" || f == "step" || f == "smoothstep") return Box(n, Interval{0, 1});
-    if (f == "sin" || f == "cos") return Box(n, Interval{-1, 1});
     if (f == "normalize") return Box(n, Interval{-1, 1});
     if (f == "min" || f == "max") {
       Box x = arg(0), y = arg(1), r(n);
@@ -195,7 +195,12 @@ struct Forward {
         for (int row = 0; row < t.vec; ++row) r[static_cast<size_t>(row * t.cols + c)] = x[static_cast<size_t>(c * t.vec + row)];
       return r;
     }
-    if (f == "exp") return each([](Interval x) { return Interval{std::exp(x.lo), std::exp(x.hi)}; });
+    if (is_transcendental(f)) {
+      const int arity = static_cast<int>(args.size());
+      Box x = arg(0), y = arity > 1 ? arg(1) : Box(n, Interval::top()), r(n);
+      for (size_t i = 0; i < n; ++i) r[i] = transcendental_range(f, arity, x[i], y[i]);
+      return r;
+    }
     return top(e.type);
   }
 

@@ -212,13 +212,16 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
 std::string format_table(const PlanOutcome& p) {
   std::string s;
   char line[512];
-  std::snprintf(line, sizeof line, "%-22s %-9s %5s  %-23s %9s %6s  %-9s %7s  %s\n", "value", "kind", "line",
+  // The value column fits the longest name (22 at least), so long FUNCTION.LOCAL names stay aligned.
+  int width = 22;
+  for (const PlanRow& r : p.rows) width = std::max(width, static_cast<int>(std::min<size_t>(r.name.size(), 100)));
+  std::snprintf(line, sizeof line, "%-*s %-9s %5s  %-23s %9s %6s  %-9s %7s  %s\n", width, "value", "kind", "line",
                 "range", "budget", "bits", "mode", "flops", "note");
   s += line;
   for (const PlanRow& r : p.rows) {
     const bool fn = r.kind == "function";
     const std::string range = fn ? "" : "[" + num(r.range.lo) + ", " + num(r.range.hi) + "]";
-    std::snprintf(line, sizeof line, "%-22s %-9s %5d  %-23s %9s %6s  %-9s %7s  %s\n", r.name.c_str(), r.kind.c_str(),
+    std::snprintf(line, sizeof line, "%-*s %-9s %5d  %-23s %9s %6s  %-9s %7s  %s\n", width, r.name.c_str(), r.kind.c_str(),
                   r.line, range.c_str(), fn || std::isinf(r.budget) ? "-" : num(r.budget).c_str(),
                   fn || r.bits == 0 ? "-" : num(r.bits, 3).c_str(), std::string(to_string(r.mode)).c_str(),
                   num(r.flops, 4).c_str(), r.note.c_str());

@@ -181,7 +181,8 @@ struct Parser {
     }
     if (!have_difference || !have_bound) return fail(path, "a relation needs difference and abs_max");
     for (const std::string& n : {r.a, r.b})
-      if (!scene.inputs.count(n)) return fail(path + "/difference", "'" + n + "' is not among the scene's inputs");
+      if (!scene.inputs.count(n) && !is_computed_value(n))
+        return fail(path + "/difference", "'" + n + "' is not among the scene's inputs (nor a FUNCTION.LOCAL value)");
     scene.relations.push_back(std::move(r));
     return true;
   }

@@ -20,7 +20,9 @@ struct InputRange {
   std::string path;                  // JSON pointer of the entry, for diagnostics
 };
 
-// a - b lies in [-abs_max, abs_max], component by component.
+// a - b lies in [-abs_max, abs_max], component by component. Each of a, b is a scene input or a
+// value the shader computes, named FUNCTION.LOCAL as --mode-for names it (is_computed_value):
+// "the eye is within 10 m of the position the shader derives from the inputs".
 struct Relation {
   std::string a, b;
   double abs_max = 0;
@@ -39,6 +41,12 @@ struct Scene {
   std::vector<Relation> relations;
   std::map<std::string, OutputRequirement> outputs;
 };
+
+// True for FUNCTION.LOCAL: a relation's side that is computed by the shader, not an input.
+inline bool is_computed_value(const std::string& name) {
+  const size_t dot = name.find('.');
+  return dot != std::string::npos && dot > 0 && dot + 1 < name.size() && name.find('.', dot + 1) == std::string::npos;
+}
 
 // Parses `text`; on failure returns false with `*error` = "file:line:col: error: ...".
 bool parse_scene(std::string_view text, const std::string& file, Scene* out, Diagnostic* error);

@@ -36,11 +36,16 @@ struct Chunk {
   std::vector<int> widths;
   int min_es = 100;
   bool per_component = false;
-  std::string variant;  // "int": replaces the same-named chunk when EmitRequest::integer_eft
+  std::string variant;  // "int": replaces the same-named chunk when EmitRequest::integer_eft;
+                        // "integer-functions": when EmitRequest::integer_functions
   std::vector<std::pair<std::string, std::vector<std::string>>> uses;  // callee -> widths ("2", "W")
   std::vector<std::string> callees;  // chunk names referenced by the definition, first use order
   std::map<std::string, std::string> fields;  // Algorithm, Source, Bound, Flops
 };
+
+// Modes exact and rte-exact: the rules of these files work on binary64 words (df_* structs of uints);
+// any other rule they call (a transcendental bridge's callee) keeps float words, as ff_* types.
+bool holds_binary64_words(const Chunk& c) { return c.file == "exact.glsl" || c.file == "rte_exact.glsl"; }
 
 std::string trim(std::string_view s) {
   size_t b = 0, e = s.size();
@@ -209,11 +214,17 @@ struct RuleLibrary::Impl {
   std::vector<Chunk> chunks;
   std::map<std::pair<std::string, int>, size_t> index;  // (name, width) -> chunk
   std::map<std::pair<std::string, int>, size_t> int_index;  // (name, width) -> "@variant int" chunk
+  std::map<std::pair<std::string, int>, size_t> intfn_index;  // -> "@variant integer-functions" chunk
   std::set<std::string> names;
   std::string init_error;  // builtin() only: the embedded rules failed to parse
 
-  // integer_eft: the "@variant int" chunk of that name and width when there is one.
-  const Chunk* find(const std::string& name, int width, bool integer_eft = false) const {
+  // integer_eft: the "@variant int" chunk of that name and width when there is one;
+  // integer_functions: the "@variant integer-functions" one.
+  const Chunk* find(const std::string& name, int width, bool integer_eft = false, bool integer_functions = false) const {
+    if (integer_functions) {
+      auto v = intfn_index.find({name, width});
+      if (v != intfn_index.end()) return &chunks[v->second];
+    }
     if (integer_eft) {
       auto v = int_index.find({name, width});
       if (v != int_index.end()) return &chunks[v->second];
@@ -223,7 +234,8 @@ struct RuleLibrary::Impl {
   }
 
   // Direct dependencies of one instance.
-  bool deps(const Chunk& c, int width, std::vector<RuleRef>& out, std::string* error, bool integer_eft = false) const {
+  bool deps(const Chunk& c, int width, std::vector<RuleRef>& out, std::string* error, bool integer_eft = false,
+            bool integer_functions = false) const {
     if (c.per_component && width > 1) {
       out.push_back({c.name, 1});
       return true;
@@ -232,7 +244,7 @@ struct RuleLibrary::Impl {
       auto u = std::find_if(c.uses.begin(), c.uses.end(), [&](const auto& p) { return p.first == callee; });
       if (u != c.uses.end()) {
         for (const auto& spec : u->second) out.push_back({callee, spec == "W" ? width : std::stoi(spec)});
-      } else if (find(callee, width, integer_eft)) {
+      } else if (find(callee, width, integer_eft, integer_functions)) {
         out.push_back({callee, width});
       } else {
         *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " (width " + std::to_string(width) +
@@ -433,7 +445,8 @@ bool parse_file(const std::string& file, const std::string& text, std::vector<Ch
             return fail(start, c.name + ": @min-es takes one of 100 300 310 320");
           c.min_es = std::stoi(w[0]);
         } else if (key == "@variant") {
-          if (w.size() != 1 || w[0] != "int") return fail(start, c.name + ": @variant takes 'int'");
+          if (w.size() != 1 || (w[0] != "int" && w[0] != "integer-functions"))
+            return fail(start, c.name + ": @variant takes 'int' or 'integer-functions'");
           c.variant = w[0];
         } else if (key == "@per-component") {
           if (!w.empty()) return fail(start, c.name + ": @per-component takes no value");
@@ -503,7 +516,7 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       const Chunk& c = im.chunks[i];
       im.names.insert(c.name);
       for (int w : c.widths) {
-        auto& index = c.variant.empty() ? im.index : im.int_index;
+        auto& index = c.variant.empty() ? im.index : c.variant == "int" ? im.int_index : im.intfn_index;
         if (!index.emplace(std::make_pair(c.name, w), i).second) {
           *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(w) +
                    " is defined twice";
@@ -530,20 +543,21 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       }
     }
     // Every instance: dependencies exist, placeholders substitute, no cycles.
-    for (const auto& [key, idx] : im.int_index)
-      if (!im.index.count(key)) {
-        const Chunk& c = im.chunks[idx];
-        *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(key.second) +
-                 ": @variant int replaces nothing (no plain chunk of that name and width)";
-        return std::nullopt;
-      }
-    bool integer_eft = false;
+    for (const auto* variants : {&im.int_index, &im.intfn_index})
+      for (const auto& [key, idx] : *variants)
+        if (!im.index.count(key)) {
+          const Chunk& c = im.chunks[idx];
+          *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(key.second) +
+                   ": @variant " + c.variant + " replaces nothing (no plain chunk of that name and width)";
+          return std::nullopt;
+        }
+    bool integer_eft = false, integer_functions = false;
     std::map<std::pair<std::string, int>, int> state;  // 1 visiting, 2 done
     std::vector<RuleRef> stack;
     std::function<bool(const RuleRef&)> visit = [&](const RuleRef& r) -> bool {
       auto key = std::make_pair(r.name, r.width);
       if (state[key] == 2) return true;
-      const Chunk* c = im.find(r.name, r.width, integer_eft);
+      const Chunk* c = im.find(r.name, r.width, integer_eft, integer_functions);
       if (!c) {
         *error = "rule " + r.name + " has no width " + std::to_string(r.width);
         return false;
@@ -555,7 +569,7 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       }
       state[key] = 1;
       std::vector<RuleRef> ds;
-      if (!im.deps(*c, r.width, ds, error, integer_eft)) return false;
+      if (!im.deps(*c, r.width, ds, error, integer_eft, integer_functions)) return false;
       for (const auto& d : ds)
         if (!visit(d)) return false;
       for (GuardStyle g : {GuardStyle::Precise, GuardStyle::Uniform, GuardStyle::None}) {
@@ -565,8 +579,9 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       state[key] = 2;
       return true;
     };
-    for (bool variant : {false, true}) {
-      integer_eft = variant;
+    for (int variant : {0, 1, 2}) {
+      integer_eft = variant == 1;
+      integer_functions = variant == 2;
       state.clear();
       for (const auto& [key, idx] : im.index)
         if (!visit({key.first, key.second})) return std::nullopt;
@@ -677,9 +692,9 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return false;
       }
       state[key] = 1;
-      const Chunk* c = im.find(r.name, r.width, integer_eft);
+      const Chunk* c = im.find(r.name, r.width, integer_eft, request.integer_functions);
       std::vector<RuleRef> ds;
-      if (!c || !im.deps(*c, r.width, ds, &error, integer_eft)) {
+      if (!c || !im.deps(*c, r.width, ds, &error, integer_eft, request.integer_functions)) {
         if (error.empty()) error = "rule " + r.name + " has no width " + std::to_string(r.width);
         return false;
       }
@@ -697,7 +712,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return result;
       }
     for (const auto& r : order) {
-      const Chunk* c = im.find(r.name, r.width, integer_eft);
+      const Chunk* c = im.find(r.name, r.width, integer_eft, request.integer_functions);
       if (c->min_es > request.es_version) {
         std::string msg = r.name + " is not available on " + es_name(request.es_version) + " (it needs " +
                           es_name(c->min_es) + " or later)";
@@ -719,9 +734,9 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     std::vector<std::string> functions;
     std::set<int> struct_widths, ff_struct_widths;
     for (const auto& r : order) {
-      const Chunk& c = *im.find(r.name, r.width, integer_eft);
+      const Chunk& c = *im.find(r.name, r.width, integer_eft, request.integer_functions);
       // Mode exact: a float-float rule (a bridge's callee) keeps float words, as ff_* types.
-      const bool float_float = request.exact_words && c.file != "exact.glsl";
+      const bool float_float = request.exact_words && !holds_binary64_words(c);
       Subst sc = s;
       if (float_float) sc.exact_words = false;
       std::string text;
@@ -741,10 +756,10 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     if (!order.empty()) {
       if (request.exact_words) {
         const size_t bridged = size_t(std::count_if(order.begin(), order.end(), [&](const RuleRef& r) {
-          return im.find(r.name, r.width, integer_eft)->file != "exact.glsl";
+          return !holds_binary64_words(*im.find(r.name, r.width, integer_eft, request.integer_functions));
         }));
         out += "// doublet exact binary64 runtime (mode exact): " + std::to_string(order.size() - bridged) +
-               " functions from rules/exact.glsl, integer arithmetic (no optimizer guard needed)";
+               " functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)";
         if (bridged)
           out += "; " + std::to_string(bridged) + " float-float functions (on ff_* types) its transcendentals bridge to, with "
                  "integer error-free transformations (df64-int)";

@@ -18,6 +18,8 @@
 //                             each component (for rules that need a per-component branch)
 //   // @uses df_add:1         callee widths, when not the chunk's own width
 //   // @variant int           replaces the same-named chunk when EmitRequest::integer_eft
+//   // @variant integer-functions   replaces the same-named chunk when
+//                             EmitRequest::integer_functions (umulExtended, findMSB: ES 3.10+, GLSL 4.00+)
 // Required header lines: "Algorithm:", "Source:", "Bound:", "Flops:".
 #pragma once
 
@@ -43,6 +45,9 @@ struct EmitRequest {
   int es_version = 300;             // 100/300/310/320; desktop targets pass 320
   bool integer_eft = false;         // df64-int: the "@variant int" chunks (rules/int.glsl) replace
                                     // the same-named float EFTs
+  // The target has GLSL's integer functions (umulExtended, findMSB, ...: ES 3.10+, GLSL 4.00+):
+  // the "@variant integer-functions" chunks (rules/exact.glsl) replace the same-named ones.
+  bool integer_functions = false;
   // Mode exact: the df_* structs hold uint words (binary64 high and low words), not floats. A
   // float-float rule that an exact rule calls (the transcendental bridges) is emitted with its
   // types renamed ff_double/ff_dvecN (float words) and with the integer EFTs (as integer_eft).
@@ -62,7 +67,8 @@ struct RuleInfo {
   std::vector<int> widths;
   int min_es = 100;
   bool per_component = false;
-  std::string variant;    // "int" for a df64-int replacement (rules/int.glsl), else empty
+  std::string variant;    // "int" for a df64-int replacement (rules/int.glsl), "integer-functions" for
+                          // one used where EmitRequest::integer_functions, else empty
   std::string file;       // e.g. "arith.glsl"
   std::string algorithm;  // the "Algorithm:" line
   std::string source;     // the "Source:" line

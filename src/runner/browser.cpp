@@ -163,4 +163,22 @@ BrowserPageRun run_browser_page(const std::string& directory, const BrowserPageO
   return run;
 }
 
+NodeScriptRun run_node_script(const std::string& script, const std::vector<std::string>& args, int timeout_ms) {
+  NodeScriptRun run;
+  const std::string node = find_node();
+  if (node.empty() || !file_exists(script)) {
+    run.unavailable = true;
+    run.error = node.empty() ? "node is not installed (apt-get install nodejs npm)" : "no script " + script;
+    return run;
+  }
+  std::vector<std::string> argv = {node, script};
+  argv.insert(argv.end(), args.begin(), args.end());
+  ChildOutput child = run_child(argv, timeout_ms);
+  run.out = child.out;
+  if (child.timed_out) run.error = script + " did not finish within " + std::to_string(timeout_ms / 1000) + " s";
+  else if (child.status != 0) run.error = child.err.empty() ? script + " failed" : child.err;
+  else run.ok = true;
+  return run;
+}
+
 }  // namespace doublet::runner

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace doublet::runner {
 
@@ -30,5 +31,15 @@ std::string browser_tools_dir();
 std::string browser_unavailable_reason();
 
 BrowserPageRun run_browser_page(const std::string& directory, const BrowserPageOptions& options = {});
+
+// A Node script run to completion (the same child-process handling as the browser runs): its
+// stdout, and why it failed. `unavailable` when there is no node on PATH or no such script.
+struct NodeScriptRun {
+  bool ok = false;  // exit status 0
+  bool unavailable = false;
+  std::string out;
+  std::string error;  // stderr, or what is missing, or the timeout
+};
+NodeScriptRun run_node_script(const std::string& script, const std::vector<std::string>& args, int timeout_ms);
 
 }  // namespace doublet::runner

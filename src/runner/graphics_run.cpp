@@ -126,7 +126,7 @@ std::vector<GraphicsResult> run_graphics_batch(Backend backend, const std::vecto
   }
   detail::SpirvProgram program;
   if (!detail::compile_glsl_stages({{detail::Stage::Vertex, wrapped.vertex}, {detail::Stage::Fragment, wrapped.fragment}},
-                                   &program, &failed.error))
+                                   &program, &failed.error, nullptr, jobs[0].strict_fp64))
     return {failed};
   return detail::vulkan_run_graphics(wrapped, program, jobs);
 }

@@ -41,13 +41,17 @@ struct SpirvProgram {
 void store_scalar(uint8_t* at, char scalar, double value);
 
 // glslang compile + link + IO mapping + reflection + SPIRV-Tools validation.
-// When `iface` is set it also receives the reflected interface.
-bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface = nullptr);
+// When `iface` is set it also receives the reflected interface. `strict_fp64`: ComputeJob::strict_fp64.
+bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface = nullptr,
+                  bool strict_fp64 = false);
 
 // The same for several stages linked as one program (vertex then fragment; words/fragment_words).
 enum class Stage { Compute, Vertex, Fragment };
 bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stages, SpirvProgram* out,
-                         std::string* error, ShaderInterface* iface = nullptr);
+                         std::string* error, ShaderInterface* iface = nullptr, bool strict_fp64 = false);
+
+// Decorates every fp64 arithmetic instruction (OpFAdd, OpFMul, OpDot, ...) NoContraction.
+void decorate_fp64_no_contraction(std::vector<uint32_t>& words);
 
 // True if the module declares OpCapability Float64.
 bool spirv_uses_float64(const std::vector<uint32_t>& words);

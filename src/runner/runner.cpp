@@ -34,7 +34,7 @@ std::vector<ComputeResult> run_compute_batch(Backend backend, const std::vector<
   }
   detail::SpirvProgram program;
   std::string error;
-  if (!detail::compile_glsl(jobs[0].glsl, &program, &error)) {
+  if (!detail::compile_glsl(jobs[0].glsl, &program, &error, nullptr, jobs[0].strict_fp64)) {
     ComputeResult result;
     result.error = std::move(error);
     return {result};

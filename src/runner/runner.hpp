@@ -37,6 +37,10 @@ struct ComputeJob {
   // the declared type (double types exist only on Vulkan). Set after float_uniforms; same rules.
   std::map<std::string, std::vector<double>> uniforms;
   uint32_t groups_x = 1, groups_y = 1, groups_z = 1;
+  // Vulkan: every fp64 arithmetic instruction decorated NoContraction (as if `precise`), so Mesa
+  // neither reassociates nor fuses it: fp64 evaluated as written, IEEE operation by operation (the
+  // reference of `verify --mode exact`). Run with the first job's setting.
+  bool strict_fp64 = false;
 };
 
 struct ComputeResult {
@@ -155,6 +159,7 @@ struct GraphicsJob {
   // Named uniform blocks by block name: their bytes (std140, as the shader declares them), bound
   // as uniform buffers. A block the job does not list reads as zeros.
   std::map<std::string, std::vector<uint8_t>> uniform_blocks;
+  bool strict_fp64 = false;  // as ComputeJob::strict_fp64
 };
 
 // std140 bytes between the columns of a matrix with `rows` rows: a vec4's 16, a dvec3/dvec4's 32.

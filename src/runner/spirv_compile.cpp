@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <set>
 #include <mutex>
 #include <sstream>
 
@@ -187,12 +188,38 @@ void reflect(const glslang::TProgram& program, ShaderInterface* iface) {
 
 }  // namespace
 
-bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface) {
-  return compile_glsl_stages({{Stage::Compute, glsl}}, out, error, iface);
+bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface,
+                  bool strict_fp64) {
+  return compile_glsl_stages({{Stage::Compute, glsl}}, out, error, iface, strict_fp64);
+}
+
+// SPIR-V 1.6 specification, 2.3 (physical layout) and 3.32 (opcodes): types before the code,
+// decorations before the types.
+void decorate_fp64_no_contraction(std::vector<uint32_t>& words) {
+  constexpr uint32_t kOpTypeFloat = 22, kOpTypeVector = 23, kOpTypeMatrix = 24, kOpDecorate = 71;
+  constexpr uint32_t kNoContraction = 42;
+  static const std::set<uint32_t> kArithmetic = {127, 129, 131, 133, 136, 140, 141, 142, 143, 144, 145, 146, 147, 148};
+  // Before the first instruction that is not a mode-setting, debug or annotation one.
+  static const std::set<uint32_t> kPreamble = {2,  3,  4,  5,  6,  7,  8,  10, 11, 14, 15, 16,  17,
+                                               71, 72, 73, 74, 317, 330, 331, 332, 5632, 5633};
+  std::set<uint32_t> fp64_types, results;
+  size_t insert_at = 0;
+  for (size_t i = 5; i < words.size();) {
+    const uint32_t count = words[i] >> 16, opcode = words[i] & 0xffff;
+    if (count == 0 || i + count > words.size()) return;  // malformed: the validator says so
+    if (!insert_at && !kPreamble.count(opcode)) insert_at = i;
+    if (opcode == kOpTypeFloat && words[i + 2] == 64) fp64_types.insert(words[i + 1]);
+    if ((opcode == kOpTypeVector || opcode == kOpTypeMatrix) && fp64_types.count(words[i + 2])) fp64_types.insert(words[i + 1]);
+    if (kArithmetic.count(opcode) && count >= 3 && fp64_types.count(words[i + 1])) results.insert(words[i + 2]);
+    i += count;
+  }
+  std::vector<uint32_t> decorations;
+  for (uint32_t id : results) decorations.insert(decorations.end(), {(3u << 16) | kOpDecorate, id, kNoContraction});
+  if (insert_at) words.insert(words.begin() + static_cast<std::ptrdiff_t>(insert_at), decorations.begin(), decorations.end());
 }
 
 bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stages, SpirvProgram* out,
-                         std::string* error, ShaderInterface* iface) {
+                         std::string* error, ShaderInterface* iface, bool strict_fp64) {
   std::lock_guard<std::mutex> lock(glslang_mutex());
   const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   auto language = [](Stage s) {
@@ -284,6 +311,7 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
       *error = "glslang produced no SPIR-V: " + logger.getAllMessages();
       return false;
     }
+    if (strict_fp64) decorate_fp64_no_contraction(words);
     if (std::string v = validate_spirv(words); !v.empty()) {
       *error = "invalid SPIR-V: " + v;
       return false;

@@ -8,6 +8,7 @@
 #include "verify/bytes.hpp"
 #include "verify/inputs.hpp"
 #include "verify/relations.hpp"
+#include "verify/words.hpp"
 
 namespace doublet::verify {
 namespace {
@@ -114,6 +115,24 @@ std::string ComputeHarness::add_variable(const ShaderInterface& native_if, const
     return false;
   };
   slot_of(native_if, name, &v.native);
+  // Mode exact: a buffer member keeps its place and bytes; a double uniform becomes its word
+  // variables (the manifest's lowered names, uvec2/uvec4 each).
+  if (words_ && !is_uniform) {
+    v.lowered = {v.native};
+    (as_input ? inputs_ : outputs_).push_back(std::move(v));
+    return {};
+  }
+  if (words_ && v.native.is_double) {
+    const InterfaceVariable* mv = find_in_manifest(manifest, name);
+    if (!mv) return "uniform '" + name + "' is not in the manifest";
+    for (const std::string& n : mv->lowered_names) {
+      Slot s;
+      if (!slot_of(lowered_if, n, &s)) continue;  // inactive after lowering
+      v.lowered.push_back(s);
+    }
+    (as_input ? inputs_ : outputs_).push_back(std::move(v));
+    return {};
+  }
   // A double buffer member lowered to a df_* struct (`dvec3 position[]` -> `df_dvec3
   // position[]`): reflection sees a struct, the manifest gives where hi and lo live in each element.
   Slot probe;
@@ -154,6 +173,7 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
                                  const Manifest& manifest, const Spec& spec, uint64_t samples) {
   native_glsl_ = native_glsl;
   lowered_glsl_ = lowered_glsl;
+  words_ = carries_words(manifest);
   ShaderInterface native_if, lowered_if;
   std::string error;
   if (!runner::reflect_compute(native_glsl, &native_if, &error))
@@ -256,11 +276,13 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
   const size_t n = std::max(native_sizes_.size(), lowered_sizes_.size());
   native_sizes_.resize(n, 16);
   lowered_sizes_.resize(n, 16);
+  if (words_)  // one layout: both get the same bytes
+    for (size_t b = 0; b < n; ++b) native_sizes_[b] = lowered_sizes_[b] = std::max(native_sizes_[b], lowered_sizes_[b]);
   return {};
 }
 
 void ComputeHarness::generate(uint64_t seed) {
-  InputGenerator gen(seed);
+  InputGenerator gen(seed, words_);
   values_.assign(dispatches_, {});
   for (uint64_t d = 0; d < dispatches_; ++d)
     for (const Variable& v : inputs_) {
@@ -291,6 +313,7 @@ std::vector<runner::ComputeJob> ComputeHarness::jobs(bool native) const {
   for (uint64_t d = 0; d < dispatches_; ++d) {
     runner::ComputeJob& job = out[d];
     job.glsl = native ? native_glsl_ : lowered_glsl_;
+    job.strict_fp64 = native && words_;  // mode exact is compared with fp64 evaluated as written
     job.groups_x = groups_[0];
     job.groups_y = groups_[1];
     job.groups_z = groups_[2];
@@ -299,6 +322,14 @@ std::vector<runner::ComputeJob> ComputeHarness::jobs(bool native) const {
       const Variable& v = inputs_[i];
       const std::vector<double>& vals = values_[d][i];
       const std::vector<Slot> slots = native ? std::vector<Slot>{v.native} : v.lowered;
+      if (!native && words_ && v.native.is_uniform && v.native.is_double) {  // uvec2/uvec4 word uniforms
+        std::vector<int> components;
+        for (const Slot& s : slots) components.push_back(s.components);
+        const auto parts = word_parts(std::vector<double>(vals.begin(), vals.begin() + v.native.components),
+                                      v.native.components, components);
+        for (size_t part = 0; part < slots.size(); ++part) job.uniforms[slots[part].name] = parts[part];
+        continue;
+      }
       for (size_t part = 0; part < slots.size(); ++part) {
         const Slot& s = slots[part];
         // A split pair gets hi in part 0 and lo in part 1; anything else gets the value itself.

@@ -66,6 +66,7 @@ class ComputeHarness {
                            const Manifest& manifest, bool is_uniform, const std::string& name, bool as_input);
 
   std::string native_glsl_, lowered_glsl_;
+  bool words_ = false;  // mode exact/rte-exact: doubles travel as binary64 words (words.hpp)
   std::vector<Variable> inputs_, outputs_;
   std::vector<std::string> notes_;
   uint64_t beyond_float_range_ = 0;  // input values fed as +-Inf (InputGenerator)

@@ -6,6 +6,7 @@
 #include "verify/bytes.hpp"
 #include "verify/inputs.hpp"
 #include "verify/relations.hpp"
+#include "verify/words.hpp"
 
 namespace doublet::verify {
 namespace {
@@ -70,6 +71,28 @@ std::vector<std::string> lowered_output_names(const Manifest& manifest, const Gr
   return lowered_names(manifest, name);
 }
 
+// Mode exact: the word variables a double became (manifest) and their uints per sample (the
+// lowered shader's reflection); false when one is missing.
+bool word_variables(const Manifest& manifest, const std::string& name, const std::vector<runner::StageVariable>* stage,
+                    const std::vector<runner::ShaderInterface::Uniform>* uniforms, std::vector<std::string>* names,
+                    std::vector<int>* components) {
+  for (const auto& v : manifest.variables) {
+    if (v.name != name || v.encoding.empty()) continue;
+    for (const std::string& n : v.lowered_names) {
+      int c = 0;
+      if (stage)
+        for (const auto& s : *stage) c = s.name == n ? s.components : c;
+      if (uniforms)
+        for (const auto& u : *uniforms) c = u.name == n ? u.components : c;
+      if (c == 0) return false;
+      names->push_back(n);
+      components->push_back(c);
+    }
+    return true;
+  }
+  return false;
+}
+
 const runner::ShaderInterface::UniformBlock* find_block(const GraphicsInterface& s, const std::string& name) {
   for (const auto& b : s.uniform_blocks)
     if (b.name == name) return &b;
@@ -92,6 +115,7 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
   stage_ = stage;
   native_glsl_ = native_glsl;
   lowered_glsl_ = lowered_glsl;
+  words_ = carries_words(manifest);
   GraphicsInterface native_if, lowered_if;
   std::string error;
   if (!runner::reflect_graphics(stage, native_glsl, &native_if, &error))
@@ -112,6 +136,11 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
     Variable v{u.name, true, u.is_double, u.components, lowered_names(manifest, u.name)};
     v.scalar = u.scalar;
     v.columns = u.columns;
+    if (words_ && u.is_double) {
+      v.lowered.clear();
+      if (!word_variables(manifest, u.name, nullptr, &lowered_if.uniforms, &v.lowered, &v.word_components))
+        notes_.push_back("uniform '" + u.name + "' is not used by the lowered shader: fed to the native one only");
+    }
     if (u.columns > 1) notes_.push_back("uniform '" + u.name + "' is a matrix: fed column by column");
     inputs_.push_back(std::move(v));
   }
@@ -127,6 +156,11 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
     const std::string flat = flattened_block_member(manifest, in.name);
     Variable v{in.name, false, in.scalar == 'd', in.components, lowered_names(manifest, flat.empty() ? in.name : flat)};
     v.scalar = in.scalar;
+    if (words_ && v.is_double) {
+      v.lowered.clear();
+      if (!word_variables(manifest, flat.empty() ? in.name : flat, &lowered_if.inputs, nullptr, &v.lowered, &v.word_components))
+        notes_.push_back("input '" + in.name + "' is not used by the lowered shader: fed to the native one only");
+    }
     inputs_.push_back(std::move(v));
   }
   for (const auto& out : native_if.outputs) {
@@ -136,6 +170,12 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
     }
     Variable v{out.name, false, out.scalar == 'd', out.components, lowered_output_names(manifest, native_if, lowered_if, out.name)};
     v.scalar = out.scalar;
+    if (words_ && v.is_double) {
+      v.lowered.clear();
+      const std::string flat = flattened_block_member(manifest, out.name);
+      if (!word_variables(manifest, flat.empty() ? out.name : flat, &lowered_if.outputs, nullptr, &v.lowered, &v.word_components))
+        return "output '" + out.name + "' has no binary64 word outputs in the lowered shader";
+    }
     for (const std::string& n : v.lowered)
       if (!has_output(lowered_if, n)) return "output '" + out.name + "' has no '" + n + "' in the lowered shader";
     outputs_.push_back(std::move(v));
@@ -192,7 +232,9 @@ void GraphicsHarness::add_block_members(const GraphicsInterface& native_if, cons
       v.block = block.name;
       const int rows = m.components / m.columns;
       v.native_place = {m.offset, runner::std140_column_stride(v.is_double, rows), v.is_double};
-      if (const BlockMember* bm = find_manifest_member(manifest, block.name, m.name); bm && bm->hi_offset >= 0) {
+      if (words_) {  // the original bytes at the original places
+        v.lowered_places.push_back(v.native_place);
+      } else if (const BlockMember* bm = find_manifest_member(manifest, block.name, m.name); bm && bm->hi_offset >= 0) {
         for (int part : {bm->hi_offset, bm->lo_offset})
           v.lowered_places.push_back({static_cast<uint32_t>(bm->offset + part), static_cast<uint32_t>(bm->matrix_stride), false});
       } else if (lowered_block) {
@@ -209,7 +251,7 @@ void GraphicsHarness::add_block_members(const GraphicsInterface& native_if, cons
 }
 
 void GraphicsHarness::generate(uint64_t seed) {
-  InputGenerator gen(seed);
+  InputGenerator gen(seed, words_);
   values_.assign(draws_, {});
   for (uint64_t d = 0; d < draws_; ++d)
     for (const Variable& v : inputs_) {
@@ -258,6 +300,7 @@ std::vector<runner::GraphicsJob> GraphicsHarness::jobs(bool native) const {
     runner::GraphicsJob& job = out[d];
     job.stage = stage_;
     job.glsl = native ? native_glsl_ : lowered_glsl_;
+    job.strict_fp64 = native && words_;  // mode exact is compared with fp64 evaluated as written
     job.count = per_draw_;
     for (const auto& [block, size] : native ? native_block_sizes_ : lowered_block_sizes_)
       job.uniform_blocks[block].assign(size, 0);
@@ -268,6 +311,11 @@ std::vector<runner::GraphicsJob> GraphicsHarness::jobs(bool native) const {
         continue;
       }
       const std::vector<std::string> names = native ? std::vector<std::string>{v.name} : v.lowered;
+      if (!native && !v.word_components.empty()) {  // mode exact: uvec2/uvec4 words
+        const auto parts = word_parts(values_[d][i], v.components, v.word_components);
+        for (size_t part = 0; part < names.size(); ++part) (v.is_uniform ? job.uniforms : job.inputs)[names[part]] = parts[part];
+        continue;
+      }
       for (size_t part = 0; part < names.size(); ++part) {
         // A split pair gets hi in part 0 and lo in part 1; anything else gets the value itself.
         std::vector<double> vals = values_[d][i];
@@ -322,10 +370,15 @@ std::vector<OutputStats> GraphicsHarness::compare(const std::vector<runner::Grap
       for (uint64_t d = 0; d < draws_; ++d) {
         const std::vector<double>& want_v = native[d].outputs.at(v.name);
         const std::vector<double>& hi_v = lowered[d].outputs.at(v.lowered[0]);
+        std::vector<const std::vector<double>*> word_outputs;
+        for (const std::string& n : v.word_components.empty() ? std::vector<std::string>{} : v.lowered)
+          word_outputs.push_back(&lowered[d].outputs.at(n));
         for (uint32_t s = 0; s < per_draw_; ++s) {
           const size_t k = s * comps + static_cast<size_t>(c);
-          double want = want_v[k], got = hi_v[k];
-          if (v.output.join_hi_lo) {
+          double want = want_v[k], got = word_outputs.empty() ? hi_v[k] : 0;
+          if (!word_outputs.empty()) {
+            got = joined_word(word_outputs, v.word_components, s, c);
+          } else if (v.output.join_hi_lo) {
             want = join(static_cast<float>(want), static_cast<float>(want_v[k + 1]));
             got = join(static_cast<float>(got), static_cast<float>(hi_v[k + 1]));
           } else if (v.lowered.size() == 2) {

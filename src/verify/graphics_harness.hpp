@@ -56,6 +56,7 @@ class GraphicsHarness {
     bool is_double = false;
     int components = 0;
     std::vector<std::string> lowered;  // one name, or hi and lo names when split
+    std::vector<int> word_components;  // mode exact: uints per sample of each lowered word variable
     InputSpec input;
     OutputSpec output;
     char scalar = 'f';  // 'f', 'd', or an int/uint/bool uniform's 'i', 'u', 'b'
@@ -76,6 +77,7 @@ class GraphicsHarness {
 
   runner::GraphicsStage stage_{};
   std::string native_glsl_, lowered_glsl_;
+  bool words_ = false;  // mode exact/rte-exact: doubles travel as binary64 words (words.hpp)
   std::vector<Variable> inputs_, outputs_;
   std::vector<std::string> notes_;
   uint64_t beyond_float_range_ = 0;  // input values fed as +-Inf (InputGenerator)

@@ -34,7 +34,7 @@ double InputGenerator::draw(const InputSpec& spec) {
 
 double InputGenerator::next(const InputSpec& spec, bool is_double, uint64_t index) {
   const double x = spec.values.empty() ? draw(spec) : spec.values[index % spec.values.size()];
-  const double kept = representable(x, is_double);
+  const double kept = binary64_ && is_double ? x : representable(x, is_double);
   if (std::isfinite(x) && std::isinf(kept)) ++beyond_float_range_;
   return kept;
 }

@@ -16,7 +16,9 @@ namespace doublet::verify {
 
 class InputGenerator {
  public:
-  explicit InputGenerator(uint64_t seed) : rng_(seed) {}
+  // binary64: double inputs are kept as drawn (modes exact, rte-exact carry every double), not
+  // rounded to a float-float pair.
+  explicit InputGenerator(uint64_t seed, bool binary64 = false) : rng_(seed), binary64_(binary64) {}
   // Value number `index` of a variable (index counts samples × components, for cycling "values").
   double next(const InputSpec& spec, bool is_double, uint64_t index);
   // How many finite values next() drew beyond float range (|x| > FLT_MAX, after the split's
@@ -26,6 +28,7 @@ class InputGenerator {
  private:
   double draw(const InputSpec& spec);
   std::mt19937_64 rng_;
+  bool binary64_ = false;
   uint64_t beyond_float_range_ = 0;
 };
 

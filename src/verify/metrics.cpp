@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 namespace doublet::verify {
@@ -44,6 +45,10 @@ void StatsBuilder::add(double got, double want, uint64_t sample) {
   double rel = 0;
   const double bits = correct_bits(got, want, stats_.abs_floor, &rel);
   if (classify(got) != classify(want)) ++stats_.class_mismatches;
+  uint64_t got_bits, want_bits;
+  std::memcpy(&got_bits, &got, 8);
+  std::memcpy(&want_bits, &want, 8);
+  if (got_bits != want_bits) ++(std::isnan(got) && std::isnan(want) ? stats_.nan_payloads : stats_.differing);
   if (std::isfinite(got) && std::isfinite(want))
     stats_.max_abs_err = std::max(stats_.max_abs_err, std::fabs(got - want));
   if (stats_.samples == 0 || bits < stats_.min_bits) {

@@ -22,6 +22,10 @@ struct OutputStats {
   double max_rel_err = 0, p99_rel_err = 0, median_rel_err = 0, max_abs_err = 0;
   double min_bits = kMaxBits, p1_bits = kMaxBits;
   uint64_t class_mismatches = 0;  // samples whose got/want differ in class (a ±0 sign counts too)
+  // Samples whose bits differ (a NaN with another NaN's payload or sign counted apart, in
+  // nan_payloads: GLSL leaves NaN results undefined). Modes exact and rte-exact require 0.
+  uint64_t differing = 0, nan_payloads = 0;
+  bool require_identical = false;
   uint64_t worst_sample = 0;      // sample index of min_bits
   double worst_got = 0, worst_want = 0;
   std::string worst_input;        // filled by the caller from worst_sample
@@ -31,7 +35,10 @@ struct OutputStats {
   bool abs_passed() const {
     return max_abs_err_allowed < 0 || (class_mismatches == 0 && max_abs_err <= max_abs_err_allowed);
   }
-  bool passed() const { return (min_bits_required < 0 || min_bits >= min_bits_required) && abs_passed(); }
+  bool identical_passed() const { return !require_identical || differing == 0; }
+  bool passed() const {
+    return (min_bits_required < 0 || min_bits >= min_bits_required) && abs_passed() && identical_passed();
+  }
 };
 
 // Accumulates samples, then computes the order statistics once.

@@ -51,10 +51,15 @@ std::string format_table(const VerifyReport& r) {
                     o.name.c_str(), o.type.c_str(), static_cast<unsigned long long>(o.samples), o.max_rel_err,
                     o.p99_rel_err, o.median_rel_err, o.max_abs_err, o.min_bits, o.p1_bits,
                     static_cast<unsigned long long>(o.class_mismatches),
-                    o.passed()       ? ""
-                    : !o.abs_passed() ? ("  FAIL (max_abs > " + fmt("%.3g", o.max_abs_err_allowed) + ")").c_str()
-                                      : ("  FAIL (< " + fmt("%.1f", o.min_bits_required) + ")").c_str());
+                    o.passed()             ? ""
+                    : !o.identical_passed() ? "  FAIL (bits differ)"
+                    : !o.abs_passed()       ? ("  FAIL (max_abs > " + fmt("%.3g", o.max_abs_err_allowed) + ")").c_str()
+                                            : ("  FAIL (< " + fmt("%.1f", o.min_bits_required) + ")").c_str());
       s += line;
+      if (o.require_identical)
+        s += "      identical bits required: " + std::to_string(o.differing) + " of " + std::to_string(o.samples) +
+             " differ" + (o.nan_payloads ? " (" + std::to_string(o.nan_payloads) + " NaN with another NaN's payload apart)" : "") +
+             "\n";
       if (o.min_bits < kMaxBits)
         s += "      worst: " + o.worst_input + " -> got " + hex(o.worst_got) + ", want " + hex(o.worst_want) + "\n";
     }
@@ -111,6 +116,9 @@ std::string to_json(const VerifyReport& r) {
                                {"worst_got", hex(o.worst_got)},
                                {"worst_want", hex(o.worst_want)},
                                {"class_mismatches", o.class_mismatches},
+                               {"differing", o.differing},
+                               {"nan_payloads", o.nan_payloads},
+                               {"identical_required", o.require_identical},
                                {"abs_floor", o.abs_floor},
                                {"min_bits_required", o.min_bits_required < 0 ? nlohmann::json(nullptr)
                                                                               : nlohmann::json(o.min_bits_required)},

@@ -10,6 +10,7 @@
 #include "verify/compute_harness.hpp"
 #include "verify/webgpu_jobs.hpp"
 #include "verify/graphics_harness.hpp"
+#include "verify/words.hpp"
 
 namespace doublet::verify {
 namespace {
@@ -283,6 +284,7 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   report.target = std::string(to_string(options.lower.target));
   report.stage = options.lower.stage ? std::string(to_string(*options.lower.stage)) : "";
   report.sabotage = std::string(to_string(options.sabotage));
+  if (options.lower.mode != Mode::Df64) report.mode = std::string(to_string(options.lower.mode));
   report.samples = options.samples;
   report.seed = options.seed;
   if (!options.lower.stage) {
@@ -302,9 +304,14 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   std::string lowered_source(source);
   Options lower_options = options.lower;
   apply_sabotage(options.sabotage, &lowered_source, &lower_options);
-  const Result lowered = lower(lowered_source, lower_options);
+  Result lowered = lower(lowered_source, lower_options);
   if (!lowered.ok) {
     report.input_error = "lowering failed:\n" + diagnostics_text(lowered);
+    return report;
+  }
+  if (!apply_output_sabotage(options.sabotage, &lowered.output)) {
+    report.input_error = "--sabotage " + report.sabotage + " found nothing to break in the lowered shader (it edits "
+                         "mode exact's rounding: use --mode exact or rte-exact)";
     return report;
   }
   report.lowered_glsl = lowered.output;
@@ -346,6 +353,10 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
     case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;
     case Stage::Fragment: run_graphics_stage(runner::GraphicsStage::Fragment, native, lowered, options, &report); break;
   }
+  // Mode exact promises native fp64's bits: any output differing is a failure (NaN payloads apart).
+  if (options.lower.mode == Mode::Exact)
+    for (BackendRun& run : report.runs)
+      for (OutputStats& o : run.outputs) o.require_identical = true;
   return report;
 }
 

@@ -137,6 +137,59 @@ TEST(BenchCli, PlotWritesAPng) {
   std::filesystem::remove(png);
 }
 
+// Mode exact has rows on both backends (GLES included), with bits measured against native fp64.
+TEST(BenchCli, ExactRowsOnBothBackends) {
+  int status = 0;
+  const std::string out =
+      run_capture("--ops add,sqrt --modes fp32,exact,native --backend both --elements 128 --steps 8 --warmup 1 --reps 1", &status);
+  ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+  const size_t gles = out.find("### gles");
+  ASSERT_NE(gles, std::string::npos) << out;
+  for (const char* op : {"add", "sqrt"}) {
+    const std::regex row(std::string(R"(\| )") + op + R"( \| exact \| — \| [0-9.]+ \| 53\.00 \| [0-9.]+ \|)");
+    EXPECT_TRUE(std::regex_search(out.substr(0, gles), row)) << op << " on vulkan\n" << out;
+    EXPECT_TRUE(std::regex_search(out.substr(gles), row)) << op << " on gles\n" << out;
+  }
+}
+
+// --peer-mesa-fp64 with a file that is missing or is not Mesa's: an input error with the reason,
+// never a crash; an op Mesa's path lacks is a usage error.
+TEST(BenchCli, PeerMesaFp64BadInputIsDiagnosed) {
+  int status = 0;
+  std::string out = run_capture("--peer-mesa-fp64 /nonexistent/float64.glsl", &status);
+  EXPECT_EQ(WEXITSTATUS(status), 2) << out;
+  EXPECT_NE(out.find("cannot read (fetch it with scripts/fetch-mesa-fp64)"), std::string::npos) << out;
+  const auto bogus = std::filesystem::temp_directory_path() / ("bogus_fp64_" + std::to_string(::getpid()) + ".glsl");
+  std::ofstream(bogus) << "uint __fadd64(uint a) { return a; }\n#if 1\n";
+  out = run_capture("--peer-mesa-fp64 " + bogus.string(), &status);
+  EXPECT_EQ(WEXITSTATUS(status), 2) << out;
+  EXPECT_NE(out.find("#if around definitions is not supported"), std::string::npos) << out;
+  std::filesystem::remove(bogus);
+  out = run_capture("--peer-mesa-fp64 x.glsl --ops mat4", &status);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << out;
+}
+
+TEST(BenchCli, TranscendentalsPrintEveryVariantWithRatiosAndBits) {
+  int status = 0;
+  const std::string out =
+      run_capture("--transcendentals --peer-luma --ops exp,sin --elements 64 --steps 8 --warmup 0 --reps 1", &status);
+  ASSERT_EQ(WEXITSTATUS(status), 0) << out;
+  for (const char* row : {"| exp | vulkan | fp32 | ", "| exp | vulkan | df64 | ", "| exp | vulkan | native | ",
+                          "| exp | gles | fp32 | ", "| exp | gles | df64 | ", "| sin | gles | df64 | "})
+    EXPECT_NE(out.find(row), std::string::npos) << row << "\n" << out;
+  EXPECT_EQ(out.find("| exp | gles | native |"), std::string::npos) << out;  // GLES has no fp64: no row
+  // luma.gl runs where tools/peers is installed (CI), and says why not elsewhere.
+  EXPECT_TRUE(out.find("| exp | gles | luma.gl | ") != std::string::npos || out.find("luma.gl not run: ") != std::string::npos)
+      << out;
+  EXPECT_NE(out.find("time / native | time / luma.gl | bits"), std::string::npos) << out;
+  EXPECT_NE(out.find("`doublet bench --transcendentals --peer-luma --ops exp,sin"), std::string::npos) << out;
+}
+
+TEST(BenchCli, TranscendentalsUnknownFunctionIsAUsageError) {
+  const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench --transcendentals --ops exp,atan > /dev/null 2>&1";
+  EXPECT_EQ(WEXITSTATUS(std::system(cmd.c_str())), 1);
+}
+
 TEST(BenchCli, UnknownOpIsAUsageError) {
   const std::string cmd = std::string(DOUBLET_CLI_PATH) + " bench --ops nope > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());

@@ -82,7 +82,7 @@ void main() { y = x * x; }
 TEST_F(ModeFlags, BadValuesAreUsageErrors) {
   ProcessResult r = lower({"--mode", "double"});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_TRUE(has(r.err, "--mode: unknown mode 'double' (expected fp32, rte, df64-fast, df64, df64-int, native or exact)")) << r.err;
+  EXPECT_TRUE(has(r.err, "--mode: unknown mode 'double' (expected fp32, rte, df64-fast, df64, df64-int, native, exact or rte-exact)")) << r.err;
   r = lower({"--mode-for", "eye"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_TRUE(has(r.err, "--mode-for: expected NAME=MODE")) << r.err;

@@ -170,8 +170,8 @@ TEST(ExactLowering, SabotagedRoundingDiffers) {
   EXPECT_GT(differing, 0u);
 }
 
-// A vertex shader: double inputs arrive as X_hi/X_lo uint words (attributes), the double output
-// leaves as flat uint words; run in both drivers' vertex stage against the host's IEEE arithmetic.
+// A vertex shader: double inputs arrive as uvec2 words (low, high: the raw bytes of a host double),
+// the double output leaves as a flat uvec2; run in both drivers' vertex stage against the host's IEEE arithmetic.
 TEST(ExactLowering, VertexStageWordsBitIdenticalToIeee) {
   REQUIRE_BACKEND(Backend::Vulkan);
   REQUIRE_BACKEND(Backend::Gles);
@@ -184,8 +184,9 @@ TEST(ExactLowering, VertexStageWordsBitIdenticalToIeee) {
   Result lowered = lower(source, options);
   ASSERT_TRUE(lowered.ok);
   ASSERT_EQ(lowered.manifest.variables.size(), 3u);
-  EXPECT_EQ(lowered.manifest.variables[0].lowered_type, "uint");
-  EXPECT_NE(lowered.output.find("flat out uint r_hi;"), std::string::npos) << lowered.output;
+  EXPECT_EQ(lowered.manifest.variables[0].lowered_type, "uvec2");
+  EXPECT_EQ(lowered.manifest.variables[0].encoding, "binary64-words");
+  EXPECT_NE(lowered.output.find("flat out uvec2 r;"), std::string::npos) << lowered.output;
   constexpr uint32_t kCount = 4096;
   const std::vector<uint64_t> ab = make_pairs();
   GraphicsJob native_job, exact_job;
@@ -195,13 +196,12 @@ TEST(ExactLowering, VertexStageWordsBitIdenticalToIeee) {
   for (int k = 0; k < 2; ++k) {
     const std::string name = k == 0 ? "a" : "b";
     std::vector<double>& values = native_job.inputs[name];
-    std::vector<double>& hi = exact_job.inputs[name + "_hi"];
-    std::vector<double>& lo = exact_job.inputs[name + "_lo"];
+    std::vector<double>& words = exact_job.inputs[name];
     for (uint32_t i = 0; i < kCount; ++i) {
       const uint64_t w = ab[2 * i + k];
       values.push_back(bits<double>(w));
-      hi.push_back(double(w >> 32));
-      lo.push_back(double(w & 0xFFFFFFFFu));
+      words.push_back(double(w & 0xFFFFFFFFu));
+      words.push_back(double(w >> 32));
     }
   }
   // The reference is the host's IEEE binary64 (two roundings, no fused multiply-add): native fp64 in
@@ -227,7 +227,8 @@ TEST(ExactLowering, VertexStageWordsBitIdenticalToIeee) {
     ASSERT_TRUE(got.ok) << backend_name(backend) << ": " << got.error;
     uint32_t differing = 0, nan_payloads = 0;
     for (uint32_t i = 0; i < kCount; ++i) {
-      const uint64_t have = (uint64_t(got.outputs.at("r_hi")[i]) << 32) | uint64_t(got.outputs.at("r_lo")[i]);
+      const std::vector<double>& r = got.outputs.at("r");
+      const uint64_t have = (uint64_t(r[2 * i + 1]) << 32) | uint64_t(r[2 * i]);
       if (have == want[i]) continue;
       if (is_nan(have) && is_nan(want[i])) {
         ++nan_payloads;

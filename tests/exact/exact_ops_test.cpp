@@ -120,11 +120,13 @@ std::vector<uint64_t> make_inputs() {
   return ab;
 }
 
-std::string exact_library(const std::vector<std::string>& names) {
+// integer_functions: the "@variant integer-functions" chunks (umulExtended, findMSB), as es310+ gets.
+std::string exact_library(const std::vector<std::string>& names, bool integer_functions = false) {
   rules::EmitRequest req;
   for (const auto& n : names) req.used.push_back({n, 1});
   req.guard = rules::GuardStyle::None;
   req.es_version = 310;
+  req.integer_functions = integer_functions;
   rules::EmitResult r = rules::RuleLibrary::builtin().emit(req);
   EXPECT_TRUE(r.ok) << r.error;
   return r.text;
@@ -199,16 +201,21 @@ TEST_P(ExactOps, BitIdenticalToNativeFp64) {
   REQUIRE_BACKEND(Backend::Gles);
   const Op& op = ops()[GetParam()];
   static const std::vector<uint64_t> ab = make_inputs();
-  const std::string library = exact_library({std::string("ex_") + op.name + "_bits"});
   const std::vector<uint64_t> native = run(Backend::Vulkan, native_shader(op), ab);
   ASSERT_EQ(native.size(), kCount);
   const Diff native_vs_host = compare(native, host_results(op, ab), ab);
   std::cout << "[ exact ] " << op.name << ": native lavapipe vs host IEEE: " << describe(native_vs_host) << "\n";
-  for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
-    const Diff d = compare(run(backend, exact_shader(op, library), ab), native, ab);
-    std::cout << "[ exact ] " << op.name << " on " << backend_name(backend) << " vs native: " << describe(d) << "\n";
-    RecordProperty(std::string(op.name) + "_" + backend_name(backend) + "_differing", int(d.differing));
-    EXPECT_EQ(d.differing, 0u) << op.name << " on " << backend_name(backend) << ": " << describe(d);
+  // The ES 3.00 functions, and the integer-functions variants es310/es320/glsl450 get.
+  for (bool integer_functions : {false, true}) {
+    const std::string library = exact_library({std::string("ex_") + op.name + "_bits"}, integer_functions);
+    const std::string path = integer_functions ? " (integer functions)" : "";
+    for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
+      const Diff d = compare(run(backend, exact_shader(op, library), ab), native, ab);
+      std::cout << "[ exact ] " << op.name << path << " on " << backend_name(backend) << " vs native: " << describe(d) << "\n";
+      RecordProperty(std::string(op.name) + (integer_functions ? "_intfn_" : "_") + backend_name(backend) + "_differing",
+                     int(d.differing));
+      EXPECT_EQ(d.differing, 0u) << op.name << path << " on " << backend_name(backend) << ": " << describe(d);
+    }
   }
 }
 
@@ -219,6 +226,7 @@ struct Sabotage {
   const char* name;
   std::vector<std::pair<std::string, std::string>> edits;
   std::vector<const char*> ops;
+  bool integer_functions = false;  // sabotage the "@variant integer-functions" chunks
 };
 
 TEST(ExactSabotage, EachSabotageMakesResultsDiffer) {
@@ -233,15 +241,24 @@ TEST(ExactSabotage, EachSabotageMakesResultsDiffer) {
         {"if ((rem.x | rem.y) != 0u) root.x |= 1u;", ""}},
        {"add", "sub", "mul", "div", "sqrt"}},
       {"flush subnormal results to zero", {{"sig = ex_shr_jam64(sig, -e);", "sig = uvec2(0u);"}}, {"add", "sub", "mul", "div"}},
+      // The square root's digits are float estimates: taking them unchecked must show.
+      {"root digits not corrected upwards", {{"while (ex_lt64(ex_shl64(q, 1), r)) {", "if (false) {"}}, {"sqrt"}},
+      {"root digits not corrected downwards", {{"while (r.y >= 0x80000000u) {", "if (false) {"}}, {"sqrt"}},
+      {"quotient digits not corrected upwards", {{"while (!ex_lt64(r, mb)) {", "if (false) {"}}, {"div"}},
+      {"quotient digits not corrected downwards", {{"while (r.y >= 0x80000000u) {", "if (false) {"}}, {"div"}},
+      {"umulExtended's high word dropped", {{"return uvec2(lo, hi);", "return uvec2(lo, 0u);"}}, {"mul", "sqrt"}, true},
+      {"findMSB off by one", {{"return 31 - findMSB(x);", "return 30 - findMSB(x);"}}, {"add", "mul", "sqrt"}, true},
   };
   for (const Sabotage& sab : sabotages) {
     for (const char* name : sab.ops) {
       const Op& op = *std::find_if(ops().begin(), ops().end(), [&](const Op& o) { return std::string(o.name) == name; });
-      std::string library = exact_library({std::string("ex_") + op.name + "_bits"});
+      std::string library = exact_library({std::string("ex_") + op.name + "_bits"}, sab.integer_functions);
       for (const auto& [from, to] : sab.edits) {
         const size_t at = library.find(from);
         if (at != std::string::npos) library.replace(at, from.size(), to);
       }
+      if (sab.integer_functions || std::string(sab.name).find("digits") != std::string::npos)  // its text must be there
+        EXPECT_NE(library.find(sab.edits[0].second), std::string::npos) << sab.name << " did not apply to " << op.name;
       const Diff d = compare(run(Backend::Vulkan, exact_shader(op, library), ab),
                              run(Backend::Vulkan, native_shader(op), ab), ab);
       std::cout << "[ exact ] sabotage '" << sab.name << "', " << op.name << ": " << d.differing << " of " << kCount

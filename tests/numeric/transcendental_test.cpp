@@ -5,8 +5,9 @@
 // (log-uniform magnitudes) plus grids at its special points (multiples of pi/2, 1 for log, 0,
 // the overflow thresholds). Checks: every result within its documented bound
 // (docs/transcendentals.md), >= 44 correct bits in the normal range. Sabotages, each of which
-// must break the bounds: no optimizer guard, doubles demoted to float (drop lo), and each
-// argument reduction skipped by editing the lowered text.
+// must break the bounds: no optimizer guard, doubles demoted to float (drop lo), each argument
+// reduction skipped by editing the lowered text, and the old floor(v + 0.5) trigonometric
+// reduction put back (it breaks without `precise`: the Uniform guard's former gap).
 // DOUBLET_TRANSCENDENTAL_SAMPLES=N sets the random samples per function (default 8192).
 #include <gtest/gtest.h>
 #include <mpfr.h>
@@ -48,8 +49,6 @@ struct Function {
   std::vector<std::pair<const char*, std::function<void(std::mt19937_64&, double&, double&)>>> families;
   // The normal range where >= 44 bits are required (false: bound only).
   std::function<bool(double x, double y, double ref)> normal = nullptr;
-  // Where the Uniform guard (targets without `precise`) keeps the bound: |x| <= this.
-  double uniform_guard_limit = INFINITY;
 };
 
 double uniform(std::mt19937_64& rng, double lo, double hi) {
@@ -60,6 +59,22 @@ double log_uniform(std::mt19937_64& rng, double lo_exp, double hi_exp, bool both
   return both_signs && (rng() & 1) ? -v : v;
 }
 double rel(double c, double ref) { return c * kU2 * std::fabs(ref); }
+
+// |x - k pi/2| for the nearest integer k, with MPFR (x is exact in binary64).
+double distance_to_multiple_of_pio2(double x) {
+  mpfr_t pio2, q, r;
+  for (mpfr_ptr p : {pio2, q, r}) mpfr_init2(p, 256);
+  mpfr_const_pi(pio2, MPFR_RNDN);
+  mpfr_div_2ui(pio2, pio2, 1, MPFR_RNDN);
+  mpfr_set_d(r, x, MPFR_RNDN);
+  mpfr_div(q, r, pio2, MPFR_RNDN);
+  mpfr_rint(q, q, MPFR_RNDN);
+  mpfr_mul(q, q, pio2, MPFR_RNDN);
+  mpfr_sub(r, r, q, MPFR_RNDN);
+  const double d = std::fabs(mpfr_get_d(r, MPFR_RNDN));
+  for (mpfr_ptr p : {pio2, q, r}) mpfr_clear(p);
+  return d;
+}
 
 std::vector<Function> functions() {
   const double pio2 = 1.5707963267948966;
@@ -95,36 +110,57 @@ std::vector<Function> functions() {
                [](double, double, double r) { return rel(37, r); },
                {{"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -125, 127.9, false); }},
                 {"near-1", [](auto& g, double& x, double&) { x = 1 + log_uniform(g, -45, -1); }}}});
+  // pow inputs with |y log x| uniform in [lo, hi] (negative side capped at -70: normal results).
+  auto pow_bin = [](double lo, double hi) {
+    return [lo, hi](std::mt19937_64& g, double& x, double& y) {
+      x = log_uniform(g, -60, 60, false);
+      const bool negative = g() & 1;
+      const double z = negative ? -uniform(g, lo, std::min(hi, 70.0)) : uniform(g, lo, hi);
+      y = z / std::log(x);
+    };
+  };
   f.push_back({"pow", "pow(x, y)", nullptr, mpfr_pow, nullptr, ::pow,
                [](double x, double y, double r) { return rel(40 + 31 * std::fabs(y * std::log(x)), r); },
                {{"|y log x| < 1/2", [](auto& g, double& x, double& y) {
                    x = log_uniform(g, -20, 20, false);
                    y = uniform(g, -0.5, 0.5) / std::max(std::fabs(std::log(x)), 1e-300);
                  }},
-                {"|y log x| < 70", [](auto& g, double& x, double& y) {  // results in the normal range
-                   x = log_uniform(g, -60, 60, false);
-                   y = uniform(g, -70, 70) / std::max(std::fabs(std::log(x)), 1e-300);
-                 }}},
+                // |y log x| by bins (results in the normal range): the bits fall as it grows.
+                {"|y log x| 1/2-4", pow_bin(0.5, 4)},
+                {"|y log x| 4-16", pow_bin(4, 16)},
+                {"|y log x| 16-64", pow_bin(16, 64)},
+                {"|y log x| 64-88", pow_bin(64, 88)}},
                [](double x, double y, double) { return std::fabs(y * std::log(x)) <= 0.5; }});
   auto trig_bound = [](double c) {
     return [c](double x, double, double r) { return rel(c, r) + std::fabs(x) * 0x1p-96; };
   };
-  // >= 44 bits for |x| < 2^38 (between 2^38 and 2^40 the bound still holds, but the bits drop to 43).
-  auto trig_normal = [](double x, double, double) { return std::fabs(x) < 0x1p38; };
+  // >= 44 bits with either guard wherever x is at least 2^-53 |x| away from the nearest multiple of
+  // pi/2. Nearer, the bound's absolute term (the 97-bit pi/2 and the float tail of the reduction,
+  // about |x| 2^-99 measured) dominates the small result: 43.09 bits at sin x = 2^-18, x = 2^38.7.
+  auto trig_normal = [](double x, double, double) {
+    return std::fabs(x) < 0x1p40 && distance_to_multiple_of_pio2(x) >= std::fabs(x) * 0x1p-53;
+  };
+  auto near_large_multiple = [pio2](std::mt19937_64& rng, double& x, double&) {
+    // The float-float nearest k pi/2 for k in [2^20, 2^39]: |x - k pi/2| ~ 2^-49 |x|, the hardest
+    // cases the 48-bit input allows for the Cody-Waite reduction (the two-word k included).
+    x = std::floor(log_uniform(rng, 20, 39, false)) * pio2 * ((rng() & 1) ? -1 : 1);
+  };
   std::vector<std::pair<const char*, std::function<void(std::mt19937_64&, double&, double&)>>> trig_families{
       {"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -30, 30); }},
       {"|x|<pi/4", [](auto& g, double& x, double&) { x = uniform(g, -0.7854, 0.7854); }},
       {"|x|<2^20", [](auto& g, double& x, double&) { x = uniform(g, -0x1p20, 0x1p20); }},
       {"near-k-pi/2", near_multiple},
+      {"near-k-pi/2 big", near_large_multiple},
+      {"2^20-2^30", [](auto& g, double& x, double&) { x = log_uniform(g, 20, 30); }},
       {"2^30-2^34", [](auto& g, double& x, double&) { x = log_uniform(g, 30, 34); }},
       {"2^34-2^36", [](auto& g, double& x, double&) { x = log_uniform(g, 34, 36); }},
       {"2^36-2^38", [](auto& g, double& x, double&) { x = log_uniform(g, 36, 38); }},
       {"2^38-2^40", [](auto& g, double& x, double&) { x = log_uniform(g, 38, 39.99); }}};
-  f.push_back({"sin", "sin(x)", mpfr_sin, nullptr, ::sin, nullptr, trig_bound(20), trig_families, trig_normal, 0x1p20});
-  f.push_back({"cos", "cos(x)", mpfr_cos, nullptr, ::cos, nullptr, trig_bound(20), trig_families, trig_normal, 0x1p20});
+  f.push_back({"sin", "sin(x)", mpfr_sin, nullptr, ::sin, nullptr, trig_bound(20), trig_families, trig_normal});
+  f.push_back({"cos", "cos(x)", mpfr_cos, nullptr, ::cos, nullptr, trig_bound(20), trig_families, trig_normal});
   f.push_back({"tan", "tan(x)", mpfr_tan, nullptr, ::tan, nullptr,
                [](double x, double, double r) { return rel(40, r) + std::fabs(x) * 0x1p-96 * (1 + r * r); },
-               trig_families, trig_normal, 0x1p20});
+               trig_families, trig_normal});
   f.push_back({"atan", "atan(x)", mpfr_atan, nullptr, ::atan, nullptr,
                [](double, double, double r) { return rel(70, r); },
                {{"log-uniform", [](auto& g, double& x, double&) { x = log_uniform(g, -60, 60); }},
@@ -200,7 +236,7 @@ std::vector<Input> make_inputs(const Function& fn, int n, uint64_t seed) {
 struct FamilyResult {
   int samples = 0, failures = 0;
   double min_bits = 99, min_bits_host = 99, worst_ratio = 0;
-  std::string worst;
+  std::string worst, lowest;  // the input with the largest error / bound, the one with the fewest bits
 };
 
 struct Measurement {
@@ -255,11 +291,6 @@ Measurement measure(const Function& fn, Backend backend, doublet::Target target,
     return m;
   }
   m.families.resize(fn.families.size());
-  // The Uniform guard is what doublet emits (Auto) for targets without `precise`.
-  const bool uniform_guard = guard == doublet::GuardKind::Uniform ||
-                             (guard == doublet::GuardKind::Auto && target != doublet::Target::Es320 &&
-                              target != doublet::Target::Glsl450);
-  const double limit = uniform_guard ? fn.uniform_guard_limit : INFINITY;
   mpfr_t x, y, ref, got, err;
   for (mpfr_ptr p : {x, y, ref, got, err}) mpfr_init2(p, 200);
   for (size_t i = 0; i < inputs.size(); ++i) {
@@ -285,12 +316,15 @@ Measurement measure(const Function& fn, Backend backend, doublet::Target target,
     const double bits_host = host_err == 0 ? 99 : -std::log2(host_err / std::fabs(host));
     FamilyResult& fam = m.families[static_cast<size_t>(in.family)];
     ++fam.samples;
-    const bool bad = (!(abs_err <= allowed) || std::isnan(out[0])) && std::fabs(xd) <= limit;
+    const bool bad = !(abs_err <= allowed) || std::isnan(out[0]);
     if (bad) ++fam.failures, ++m.failures;
     fam.min_bits_host = std::min(fam.min_bits_host, bits_host);
     const double ratio = std::isnan(out[0]) ? INFINITY : abs_err / allowed;
     if (bits < fam.min_bits || std::isnan(bits)) {
       fam.min_bits = std::isnan(bits) ? -1 : bits;
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "x=%a y=%a got=%a+%a want=%a", xd, yd, out[0], out[1], rd);
+      fam.lowest = buf;
     }
     if (ratio > fam.worst_ratio || (bad && fam.worst.empty())) {
       fam.worst_ratio = ratio;
@@ -298,7 +332,7 @@ Measurement measure(const Function& fn, Backend backend, doublet::Target target,
       std::snprintf(buf, sizeof buf, "x=%a y=%a got=%a+%a want=%a", xd, yd, out[0], out[1], rd);
       fam.worst = buf;
     }
-    if ((!fn.normal || fn.normal(xd, yd, rd)) && std::fabs(xd) <= limit) m.normal_min_bits = std::min(m.normal_min_bits, std::isnan(bits) ? -1 : bits);
+    if (!fn.normal || fn.normal(xd, yd, rd)) m.normal_min_bits = std::min(m.normal_min_bits, std::isnan(bits) ? -1 : bits);
   }
   for (mpfr_ptr p : {x, y, ref, got, err}) mpfr_clear(p);
   return m;
@@ -308,10 +342,12 @@ std::string report(const Function& fn, const Measurement& m) {
   std::string s;
   for (size_t k = 0; k < m.families.size(); ++k) {
     const FamilyResult& f = m.families[k];
-    char line[512];
-    std::snprintf(line, sizeof line, "  %-6s %-16s n=%6d min bits %6.2f (vs host double %6.2f)  worst err/bound %8.3g  failures %d  %s\n",
+    char line[1024];
+    std::snprintf(line, sizeof line,
+                  "  %-6s %-16s n=%6d min bits %6.2f (vs host double %6.2f)  worst err/bound %8.3g  failures %d  %s"
+                  "  (fewest bits: %s)\n",
                   fn.name, fn.families[k].first, f.samples, f.min_bits, f.min_bits_host, f.worst_ratio, f.failures,
-                  f.worst.c_str());
+                  f.worst.c_str(), f.lowest.c_str());
     s += line;
   }
   char line[128];
@@ -374,6 +410,14 @@ Edit replace(const std::string& from, const std::string& to) {
   };
 }
 
+// Both edits, in order; empty (the sabotage did not apply) when either finds nothing.
+Edit both(const Edit& first, const Edit& second) {
+  return [first, second](const std::string& text) {
+    const std::string once = first(text);
+    return once.empty() ? once : second(once);
+  };
+}
+
 TEST_P(Transcendentals, SkippingAnArgumentReductionBreaksTheBound) {
   auto [backend, target] = GetParam();
   struct Sabotage {
@@ -384,8 +428,8 @@ TEST_P(Transcendentals, SkippingAnArgumentReductionBreaksTheBound) {
       {"exp", replace("floor(a.hi * 1.44269504 + 0.5)", "floor(0.5)")},          // no ln 2 reduction
       {"exp2", replace("floor(a.hi + 0.5)", "floor(0.5)")},                      // no integer split
       {"log", replace("m0.hi < 0.707106781", "m0.hi < 0.0")},                    // m left in [0.5, 1)
-      {"sin", replace("floor(t.hi + 0.5)", "floor(0.5)")},                       // no pi/2 reduction
-      {"cos", replace("floor(t.hi + 0.5)", "floor(0.5)")},
+      {"sin", both(replace("roundEven(t.hi)", "roundEven(0.0)"), replace("roundEven(f + t.lo)", "roundEven(0.0)"))},  // k = 0
+      {"cos", both(replace("roundEven(t.hi)", "roundEven(0.0)"), replace("roundEven(f + t.lo)", "roundEven(0.0)"))},
       {"atan", replace("df_double h = df_atan_halve(h1);", "df_double h = h1;")},  // one half-angle step
   };
   for (const Sabotage& s : sabotages) {
@@ -395,6 +439,31 @@ TEST_P(Transcendentals, SkippingAnArgumentReductionBreaksTheBound) {
       ASSERT_TRUE(m.error.empty()) << fn.name << ": " << m.error;
       std::printf("reduction skipped:\n%s", report(fn, m).c_str());
       EXPECT_GT(m.failures, 0) << fn.name << " kept its bound without its argument reduction\n" << report(fn, m);
+    }
+  }
+}
+
+// The cause of the Uniform guard's old trigonometry gap (31-35 bits for |x| > 2^23): the reduction's
+// k = k1 + k2 computed as k1 = floor(t.hi + 0.5), k2 = floor((t.hi - k1) + t.lo + 0.5). Without
+// `precise` Mesa reassociates the second + 0.5 into the first (t.hi - k1 + 0.5 becomes
+// (t.hi + 0.5) - k1, and t.hi + 0.5 rounds to t.hi above 2^23), so k2 comes out one short and the
+// kernels run outside |r| <= pi/4. Put back into the lowered text, that form must break the bound
+// with the Uniform guard (the check above would catch the regression) and keep it with `precise`.
+TEST_P(Transcendentals, FloorPlusHalfReductionNeedsPrecise) {
+  auto [backend, target] = GetParam();
+  const bool precise = target == doublet::Target::Es320 || target == doublet::Target::Glsl450;
+  const Edit old_reduction = both(replace("roundEven(t.hi)", "floor(t.hi + 0.5)"),
+                                  replace("roundEven(f + t.lo)", "floor(f + t.lo + 0.5)"));
+  for (const Function& fn : functions()) {
+    if (fn.name != std::string("sin") && fn.name != std::string("cos")) continue;
+    Measurement m = measure(fn, backend, target, doublet::GuardKind::Auto, false, old_reduction);
+    ASSERT_TRUE(m.error.empty()) << fn.name << ": " << m.error;
+    std::printf("floor(x + 0.5) reduction:\n%s", report(fn, m).c_str());
+    if (precise) {
+      EXPECT_EQ(m.failures, 0) << fn.name << "\n" << report(fn, m);
+    } else {
+      EXPECT_GT(m.failures, 0) << fn.name << " kept its bound with the old reduction\n" << report(fn, m);
+      EXPECT_LT(m.normal_min_bits, 40.0) << fn.name;
     }
   }
 }

@@ -37,6 +37,21 @@ TEST(PlanCli, FarEyeAndOrbitKeepDf64) {
   EXPECT_EQ(r.out.find(" fp32 "), std::string::npos) << r.out;
 }
 
+// wgs84.scene.json relates a computed value (main.p, the ECEF position) to the eye: plan uses it;
+// verify, which draws inputs only, refuses it at the relation instead of sampling without it.
+TEST(PlanCli, Wgs84PlanAndVerifyRefusingTheComputedRelation) {
+  const std::string out = temp("wgs84.plan.json");
+  CliRun r = run_doublet("plan " + kScenes + "/wgs84_ecef.vert --scene " + kScenes + "/wgs84.scene.json -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("main.rel"), std::string::npos) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(read_file(out)),
+            nlohmann::json::parse(R"({"version": 1, "mode": "df64", "mode_for": {"up_vector": "fp32", "main.rel": "fp32"}})"));
+  r = run_doublet("verify " + kScenes + "/globe_rte.vert --scene " + kScenes + "/wgs84.scene.json");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("wgs84.scene.json:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("verify cannot sample a relation on 'main.p'"), std::string::npos) << r.out;
+}
+
 TEST(PlanCli, BadScenesExit2WithPosition) {
   const std::string scene = temp("bad.scene.json");
   write_file(scene, "{\n  \"outputs\": {\"v_rel\": {\"abs_error\": \"lots\"}}\n}\n");

@@ -92,6 +92,8 @@ TEST_P(RuleCompiles, EveryRuleAndWidth) {
     req.guard = g;
     req.es_version = t.es_version;
     req.exact_words = ref.name.rfind("ex_", 0) == 0;  // rules/exact.glsl: uint words
+    // What the compiler passes: umulExtended/findMSB variants where the target has them.
+    req.integer_functions = t.version >= 310 && t.version != 330;
     EmitResult r = lib.emit(req);
     if (min_es(ref.name) > 100) {
       if (t.es_version < min_es(ref.name)) {

@@ -439,6 +439,35 @@ TEST(RuleFormat, UsesAndPerComponent) {
   EXPECT_EQ(fns[2].name, "both");
 }
 
+// `@variant integer-functions` replaces the plain chunk (here a dependency) only when the request
+// says the target has the integer functions; it must replace something and name a known kind.
+TEST(RuleFormat, IntegerFunctionsVariant) {
+  std::string err;
+  const std::string h = kHeader;
+  auto l = parse_one(h + "uint lead(uint x) {\n  return x >> 1u;\n}\n\n" + h +
+                         "// @min-es 310\n// @variant integer-functions\nuint lead(uint x) {\n  return uint(findMSB(x));\n}\n\n" +
+                         h + "uint top(uint x) {\n  return lead(x);\n}\n",
+                     &err);
+  ASSERT_TRUE(l) << err;
+  EmitRequest req;
+  req.used = {{"top", 1}};
+  req.guard = GuardStyle::None;
+  req.es_version = 310;
+  EmitResult plain = l->emit(req);
+  ASSERT_TRUE(plain.ok) << plain.error;
+  EXPECT_NE(plain.text.find("x >> 1u"), std::string::npos) << plain.text;
+  EXPECT_EQ(plain.text.find("findMSB"), std::string::npos) << plain.text;
+  req.integer_functions = true;
+  EmitResult variant = l->emit(req);
+  ASSERT_TRUE(variant.ok) << variant.error;
+  EXPECT_NE(variant.text.find("findMSB"), std::string::npos) << variant.text;
+  EXPECT_EQ(variant.text.find("x >> 1u"), std::string::npos) << variant.text;
+  EXPECT_FALSE(parse_one(h + "// @variant integer-functions\nuint lone(uint x) {\n  return x;\n}\n", &err));
+  EXPECT_NE(err.find("@variant integer-functions replaces nothing"), std::string::npos) << err;
+  EXPECT_FALSE(parse_one(h + "// @variant fast\nuint lead(uint x) {\n  return x;\n}\n", &err));
+  EXPECT_NE(err.find("@variant takes 'int' or 'integer-functions'"), std::string::npos) << err;
+}
+
 TEST(RuleFormat, Errors) {
   struct Case {
     std::string text;

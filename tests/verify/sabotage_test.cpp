@@ -16,7 +16,7 @@ TEST(Sabotage, DemotesTypesAndLiteralSuffixesButNotComments) {
 }
 
 TEST(Sabotage, NamesRoundTrip) {
-  for (Sabotage s : {Sabotage::None, Sabotage::DropLo, Sabotage::DropGuard})
+  for (Sabotage s : {Sabotage::None, Sabotage::DropLo, Sabotage::DropGuard, Sabotage::TiesAway})
     EXPECT_EQ(parse_sabotage(to_string(s)), s);
   EXPECT_FALSE(parse_sabotage("drop-hi"));
 }

@@ -181,17 +181,19 @@ df_double df_add_f(df_double a, float b) {
 // x - k P1 is exact (it keeps the bits of x.lo), then k1 P2 brings it down to |r| + |k| 2^-48,
 // so the later sums round relative to about |r|; the smallest terms (k2 P3, k P4) are float.
 // The quadrant is computed in float: k - 4 floor(k/4) is exact for every float integer.
+// k1 and k2 are roundEven, not floor(v + 0.5): without `precise` Mesa reassociates a second
+// "+ 0.5" into the first (t.hi - k1 + 0.5 becomes (t.hi + 0.5) - k1, and t.hi + 0.5 rounds to
+// t.hi above 2^23), k came out one short and the kernels ran outside |r| <= pi/4 (31 bits).
 // Algorithm: Cody-Waite reduction by pi/2 with a four-word constant, exact TwoProd products, two-word k
 // Source: Cody, Waite, 1980; Muller, Elementary Functions, 3rd ed., 2016, section 11.2
 // Bound: 6u^2 * abs(r) + abs(x) * 2^-96 (absolute)
-// Flops: 269
-// Range: |x| < 2^40 with the Precise guard; with the Uniform guard (no `precise`: ES 3.00/3.10, GL 3.30)
-// Mesa's optimizer costs bits for |x| > 2^20 (docs/transcendentals.md). Callers return NaN beyond 2^40.
+// Flops: 267
+// Range: |x| < 2^40 with either guard. Callers return NaN beyond 2^40.
 df_double df_trig_reduce(df_double a, out int q) {
   df_double t = df_mul(a, df_double(float(0.636619747), float(2.5682553e-08)));
-  float k1 = ((floor(t.hi + 0.5)) - df_guard);
+  float k1 = ((roundEven(t.hi)) - df_guard);
   float f = ((t.hi - k1) - df_guard);
-  float k2 = ((floor(f + t.lo + 0.5)) - df_guard);
+  float k2 = ((roundEven(f + t.lo)) - df_guard);
   float n1 = (-k1);
   float n2 = (-k2);
   df_double p11 = df_two_prod(n1, 1.57079637);
@@ -302,7 +304,7 @@ df_double df_sin_quadrant(df_double r, int q) {
 // Algorithm: df_trig_reduce (Cody-Waite, four-word pi/2), df_sin_quadrant
 // Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 20u^2 (relative) plus abs(x) * 2^-96 absolute
-// Flops: 590 (on the path taken)
+// Flops: 588 (on the path taken)
 // Range: |x| < 2^40.
 df_double df_sin(df_double a) {
   float ax = (abs(a.hi));
@@ -410,7 +412,7 @@ df_double df_div(df_double a, df_double b) {
 // Algorithm: df_trig_reduce (Cody-Waite, four-word pi/2), df_sin_quadrant at quadrant q + 1
 // Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 20u^2 (relative) plus abs(x) * 2^-96 absolute
-// Flops: 590 (on the path taken)
+// Flops: 588 (on the path taken)
 // Range: |x| < 2^40.
 df_double df_cos(df_double a) {
   float ax = (abs(a.hi));
@@ -703,7 +705,8 @@ df_double df_ldexp(df_double a, int e) {
 // k L1 is exact for |k| <= 256; k L2 is an exact TwoProd), |r| <= 0.35; e^x = 2^k (1 + expm1(r)).
 // Special values (C99 F.9.3.1): exp(+Inf) = +Inf, exp(-Inf) = +0, exp(NaN) = NaN; x > 89 gives
 // +Inf, x < -104 gives +0. Results below 2^-102 (x < -70.7) lose bits as lo becomes subnormal
-// (df_ldexp), and vertex/fragment stages may flush them.
+// (df_ldexp), and vertex/fragment stages may flush them. floor(v + 0.5) is safe here (unlike in
+// df_trig_reduce): |v| < 151, so v + 0.5 is exact and any reassociation gives the same k.
 // Algorithm: Cody-Waite reduction by ln 2 (three words), df_expm1_kernel, df_ldexp
 // Source: Cody, Waite, Software Manual for the Elementary Functions, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 10u^2
@@ -902,7 +905,7 @@ df_double df_pow(df_double x, df_double y) {
 // Algorithm: df_trig_reduce, df_sin_kernel and df_cos_kernel, DWDivDW2
 // Source: Cody, Waite, 1980; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017
 // Bound: 40u^2 (relative) plus abs(x) * 2^-96 absolute times (1 + tan(x)^2)
-// Flops: 943
+// Flops: 941
 // Range: |x| < 2^40.
 df_double df_tan(df_double a) {
   float ax = (abs(a.hi));
@@ -1076,7 +1079,8 @@ df_double df_tanh(df_double a) {
 // k L1 is exact for |k| <= 256; k L2 is an exact TwoProd), |r| <= 0.35; e^x = 2^k (1 + expm1(r)).
 // Special values (C99 F.9.3.1): exp(+Inf) = +Inf, exp(-Inf) = +0, exp(NaN) = NaN; x > 89 gives
 // +Inf, x < -104 gives +0. Results below 2^-102 (x < -70.7) lose bits as lo becomes subnormal
-// (df_ldexp), and vertex/fragment stages may flush them.
+// (df_ldexp), and vertex/fragment stages may flush them. floor(v + 0.5) is safe here (unlike in
+// df_trig_reduce): |v| < 151, so v + 0.5 is exact and any reassociation gives the same k.
 // Algorithm: Cody-Waite reduction by ln 2 (three words), df_expm1_kernel, df_ldexp
 // Source: Cody, Waite, Software Manual for the Elementary Functions, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 10u^2
@@ -1095,7 +1099,7 @@ df_dvec2 df_exp(df_dvec2 a) {
 // Algorithm: df_trig_reduce (Cody-Waite, four-word pi/2), df_sin_quadrant
 // Source: Cody, Waite, 1980; Hida, Li, Bailey, ARITH-15, 2001
 // Bound: 20u^2 (relative) plus abs(x) * 2^-96 absolute
-// Flops: 590 (on the path taken)
+// Flops: 588 (on the path taken)
 // Range: |x| < 2^40.
 // (width 2: the width-1 df_sin applied to each component)
 df_dvec2 df_sin(df_dvec2 a) {
