@@ -15,6 +15,11 @@
 //          and square root by digit recurrence (high radix, digits selected by an estimate and
 //          corrected), the remainder as sticky bit. Here the digits are 14-18 bits, estimated
 //          with one float division and checked in integer arithmetic.
+//   [VTN]  Mesa 22.3 (2022) src/compiler/spirv/vtn_glsl450.c and vtn_alu.c: the operation order of
+//          native's determinant, inverse and matrix products (read as a fact source, not copied;
+//          the orders kept here are the ones tests/exact measured to give native's bits).
+//   [JMP]  M. Joldes, J.-M. Muller, V. Popescu, ACM TOMS 44(2), 2017: the float-float arithmetic
+//          (rules/arith.glsl, rules/transcendental.glsl) the transcendental bridges call.
 
 // ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
 // Algorithm: word sums with the carry of the low word (a.x + b.x < a.x)
@@ -1992,4 +1997,27 @@ $DF ex_refract($DF i, $DF n, df_double eta) {
     r.lo[c] = v.x;
   }
   return r;
+}
+
+// ex_det2_bits: the determinant of the 2x2 matrix with columns (a, b) and (c, d) as native fp64 on lavapipe computes it: a d - b c, every step rounded (Mesa's spirv_to_nir build_mat2_det).
+// Algorithm: ex_mul_first twice, ex_sub_bits
+// Source: Mesa 22.3 (2022), src/compiler/spirv/vtn_glsl450.c (build_mat2_det), read, not copied; measured by tests/exact/exact_matrix_test.cpp
+// Bound: 0.5 ulp per step (three roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_det2_bits(uvec2 a, uvec2 b, uvec2 c, uvec2 d) {
+  return ex_sub_bits(ex_mul_first(a, d), ex_mul_first(b, c));
+}
+
+// ex_det3_bits: the determinant of the 3x3 matrix with columns (a, b, c), (d, e, f), (g, h, i) as native fp64 on lavapipe computes it: Mesa's a (e i) - a (f h), ... factored by its optimizer into x = (e i - f h) a, y' = (d i - f g) b, z = (d h - e g) c, then z + (x - y'), every step rounded (the order shows in the last bit, and in the sign of an exactly zero determinant).
+// Algorithm: ex_mul_first, ex_sub_bits, ex_sub_last, ex_add_first in the measured order
+// Source: Mesa 22.3 (2022), src/compiler/spirv/vtn_glsl450.c (build_mat3_det) and nir_opt_algebraic (inexact factoring), read, not copied; measured by tests/exact/exact_matrix_test.cpp
+// Bound: 0.5 ulp per step (14 roundings)
+// Flops: 0 (integer arithmetic)
+// @min-es 300
+uvec2 ex_det3_bits(uvec2 a, uvec2 b, uvec2 c, uvec2 d, uvec2 e, uvec2 f, uvec2 g, uvec2 h, uvec2 i) {
+  uvec2 x = ex_mul_first(ex_sub_bits(ex_mul_first(e, i), ex_mul_first(f, h)), a);
+  uvec2 y = ex_mul_first(ex_sub_last(ex_mul_first(d, i), ex_mul_first(f, g)), b);
+  uvec2 z = ex_mul_first(ex_sub_bits(ex_mul_first(d, h), ex_mul_first(e, g)), c);
+  return ex_add_first(z, ex_sub_bits(x, y));
 }

@@ -76,12 +76,15 @@ std::string missing_struct_types(const std::vector<int>& widths, const std::stri
 }
 
 // struct df_dmatCxR { matCxR hi; matCxR lo; } for every matrix shape the lowered code names.
-std::string matrix_struct_types(std::vector<std::pair<int, int>> shapes) {
+// Mode exact: GLSL has no uint matrices, so the words are arrays of uint column vectors.
+std::string matrix_struct_types(std::vector<std::pair<int, int>> shapes, bool exact) {
   std::sort(shapes.begin(), shapes.end());
   std::string out;
   for (auto [cols, rows] : shapes) {
-    std::string m = passes::matrix::float_type_name(cols, rows);
-    out += "struct " + passes::matrix::type_name(cols, rows) + " {\n  " + m + " hi;\n  " + m + " lo;\n};\n";
+    const std::string m = passes::matrix::float_type_name(cols, rows), u = "uvec" + std::to_string(rows);
+    const std::string suffix = "[" + std::to_string(cols) + "]";
+    out += "struct " + passes::matrix::type_name(cols, rows) + " {\n  " + (exact ? u + " hi" + suffix : m + " hi") +
+           ";\n  " + (exact ? u + " lo" + suffix : m + " lo") + ";\n};\n";
   }
   return out;
 }
@@ -301,7 +304,7 @@ Result lower_unchecked(std::string_view source, const Options& options) {
     std::string helpers;
     for (const auto& name : ctx.helper_order) helpers += "\n" + ctx.helpers[name];
     print_options.runtime = missing_struct_types(ctx.widths_used, emitted.text, exact) +
-                            matrix_struct_types(ctx.matrices_used) + emitted.text + helpers;
+                            matrix_struct_types(ctx.matrices_used, exact) + emitted.text + helpers;
     if (options.target == Target::Webgl2) print_options.runtime = emit::spell_float_max_for_webgl(print_options.runtime);
     if (!ctx.rules_used.empty() && !exact) {
       if (guard.style == rules::GuardStyle::Precise) result.manifest.guard.kind = "precise";

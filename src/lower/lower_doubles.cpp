@@ -13,6 +13,7 @@
 #include "lower/block_layout.hpp"
 #include "lower/lower.hpp"
 #include "lower/matrix_helpers.hpp"
+#include "lower/matrix_helpers_exact.hpp"
 
 namespace doublet::passes {
 
@@ -93,6 +94,18 @@ class DoubleLowering {
     fast_ = ctx_.fast_global_inits;
     for (size_t i = 0; i < module_.globals.size(); ++i) {
       auto& g = module_.globals[i];
+      if (exact() && is_interface(g->storage) && holds_double_matrix(g->type)) {
+        std::string what = g->name;  // the member of a block that holds the matrix
+        if (g->type.base == ir::Base::Block && g->type.fields)
+          for (const auto& f : *g->type.fields)
+            if (holds_double_matrix(f.type)) {
+              what = f.name;
+              break;
+            }
+        ctx_.error(g->loc, "a double matrix in an interface ('" + what + "') is not supported by --mode exact yet: "
+                           "pass its columns as dvecN and build the matrix in the shader");
+        continue;
+      }
       if (g->type.base == ir::Base::Block && holds_doubles(g->type)) lower_block(*g);
       lower_var(*g);
       if (module_.global_inits[i]) module_.global_inits[i] = lower(module_.global_inits[i]);
@@ -117,15 +130,20 @@ class DoubleLowering {
   }
   std::string word_type_name(int width) const { return exact() ? uint_type_name(width) : float_type_name(width); }
 
+  static bool is_interface(ir::Storage s) {
+    return s == ir::Storage::In || s == ir::Storage::Out || s == ir::Storage::Uniform || s == ir::Storage::Buffer;
+  }
+  static bool holds_double_matrix(const ir::Type& t) {
+    if (t.base == ir::Base::Double && t.is_matrix()) return true;
+    if (t.fields)
+      for (const auto& f : *t.fields)
+        if (holds_double_matrix(f.type)) return true;
+    return false;
+  }
+
   // ---- types ---------------------------------------------------------------
   ir::Type lower_type(const ir::Type& t, ir::Loc loc) {
     if (t.base != ir::Base::Double) return t;
-    if (t.is_matrix() && exact()) {
-      if (reported_.insert("exact:" + ir::type_name(t)).second)
-        ctx_.error(loc, ir::type_name(t) + " is not supported by --mode exact yet: exact mode lowers double and "
-                        "dvec2-4; use --mode df64 for double matrices");
-      return t;
-    }
     if (t.is_matrix()) {
       if (t.cols != t.vec && ctx_.options.target == Target::Es100 && reported_.insert(ir::type_name(t)).second)
         ctx_.error(loc, ir::type_name(t) + " is not available on es100: GLSL ES 1.00 has only square matrices; use "
@@ -348,6 +366,19 @@ class DoubleLowering {
         lo.d = pair.lo;
         his.push_back(hi);
         los.push_back(lo);
+      }
+      if (exact() && is_matrix) {  // no uint matrices: the columns as df_dvecR constants, joined by a helper
+        const int c = matrix::cols(elem_type), r = matrix::rows(elem_type);
+        std::vector<ExprPtr> columns;
+        for (int j = 0; j < c; ++j) {
+          auto h = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Uint, r), e->loc);
+          auto l = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Uint, r), e->loc);
+          h->values.assign(his.begin() + j * r, his.begin() + (j + 1) * r);
+          l->values.assign(los.begin() + j * r, los.begin() + (j + 1) * r);
+          columns.push_back(ir::make_node(Kind::Construct, "", df_type(r), {h, l}, e->loc));
+        }
+        return ir::make_node(Kind::Call, matrix::exact::from_components(ctx_, c, r, std::vector<int>(size_t(c), r)),
+                             elem_type, columns, e->loc);
       }
       ir::Type word_type = is_matrix ? float_matrix(matrix::cols(elem_type), matrix::rows(elem_type))
                                      : ir::scalar_type(exact() ? ir::Base::Uint : ir::Base::Float, width);
@@ -757,9 +788,15 @@ class DoubleLowering {
     int c = matrix::cols(m->type), r = matrix::rows(m->type);
     ctx_.use_width(r);
     if (is_pure(m) && j->kind == Kind::Const) {
-      auto word = [&](const char* w) {
-        auto index = Expr::make(Kind::Index, ir::scalar_type(ir::Base::Float, r), loc);
-        index->args = {member(m, w, float_matrix(c, r)), j};
+      auto word = [&](const char* w) {  // mode exact: the words are arrays of uvecR columns
+        ir::Type words = float_matrix(c, r), column = ir::scalar_type(ir::Base::Float, r);
+        if (exact()) {
+          column = ir::scalar_type(ir::Base::Uint, r);
+          words = column;
+          words.array_dims = {c};
+        }
+        auto index = Expr::make(Kind::Index, column, loc);
+        index->args = {member(m, w, words), j};
         return index;
       };
       return ir::make_node(Kind::Construct, "", df_type(r), {word("hi"), word("lo")}, loc);
@@ -876,6 +913,7 @@ class DoubleLowering {
       if (a->type.is_matrix()) {  // dmat4(mat4): hi is the float matrix, lo is zero
         ExprPtr hi = a;
         if (a->type.cols != c || a->type.vec != r) hi = ir::make_node(Kind::Construct, "", float_matrix(c, r), {a}, e->loc);
+        if (exact()) return ir::make_node(Kind::Call, matrix::exact::from_float(ctx_, c, r), e->type, {hi}, e->loc);
         auto zero = ir::make_node(Kind::Construct, "", float_matrix(c, r), {float_const(0.0f, e->loc)}, e->loc);
         return ir::make_node(Kind::Construct, "", e->type, {hi, zero}, e->loc);
       }

@@ -5,6 +5,8 @@
 // determinant adds with signs): determinants and inverses cancel, so their bounds are absolute.
 #include "lower/matrix_helpers.hpp"
 
+#include "lower/matrix_helpers_exact.hpp"
+
 #include <functional>
 #include <map>
 
@@ -49,6 +51,8 @@ std::string from_scalars(const std::string& prefix, int w) {
 
 int dot_constant(int w) { return w == 1 ? 7 : w == 2 ? 10 : 13; }
 
+bool exact_mode(const Context& ctx) { return ctx.options.mode == Mode::Exact; }
+
 }  // namespace
 
 std::string type_name(int cols, int rows) {
@@ -70,6 +74,7 @@ int cols(const ir::Type& t) { return t.name[7] - '0'; }
 int rows(const ir::Type& t) { return t.name.size() > 8 ? t.name[9] - '0' : cols(t); }
 
 std::string elementwise(Context& ctx, const std::string& rule, int c, int r, Operand a, Operand b) {
+  if (exact_mode(ctx)) return exact::elementwise(ctx, rule, c, r, a, b);
   auto spell = [&](Operand o) { return o == Operand::Matrix ? suffix(c, r) : std::string("double"); };
   std::string name = rule + "_" + spell(a) + "_" + spell(b);
   // df_mul_dmatN_dmatN is the linear-algebra product (times_matrix); component-wise is matrixCompMult.
@@ -94,6 +99,7 @@ std::string elementwise(Context& ctx, const std::string& rule, int c, int r, Ope
 }
 
 std::string negate(Context& ctx, int c, int r) {
+  if (exact_mode(ctx)) return exact::negate(ctx, c, r);
   std::string name = "df_neg_" + suffix(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_matrix(c, r);
@@ -103,6 +109,7 @@ std::string negate(Context& ctx, int c, int r) {
 }
 
 std::string times_vector(Context& ctx, int c, int r) {
+  if (exact_mode(ctx)) return exact::times_vector(ctx, c, r);
   std::string name = "df_mul_" + suffix(c, r) + "_" + dvec(c).substr(3);
   if (ctx.helpers.count(name)) return name;
   ctx.use_rule("df_dot", c);
@@ -126,6 +133,7 @@ std::string times_vector(Context& ctx, int c, int r) {
 }
 
 std::string vector_times(Context& ctx, int c, int r) {
+  if (exact_mode(ctx)) return exact::vector_times(ctx, c, r);
   std::string name = "df_mul_" + dvec(r).substr(3) + "_" + suffix(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_rule("df_dot", r);
@@ -140,6 +148,7 @@ std::string vector_times(Context& ctx, int c, int r) {
 }
 
 std::string times_matrix(Context& ctx, int inner, int r, int c) {
+  if (exact_mode(ctx)) return exact::times_matrix(ctx, inner, r, c);
   std::string name = "df_mul_" + suffix(inner, r) + "_" + suffix(c, inner);
   if (ctx.helpers.count(name)) return name;
   std::string mv = times_vector(ctx, inner, r);
@@ -155,6 +164,7 @@ std::string times_matrix(Context& ctx, int inner, int r, int c) {
 }
 
 std::string outer_product(Context& ctx, int c, int r) {
+  if (exact_mode(ctx)) return exact::outer_product(ctx, c, r);
   std::string name = "df_outer_product_" + suffix(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_rule("df_mul", r);
@@ -173,6 +183,7 @@ std::string outer_product(Context& ctx, int c, int r) {
 }
 
 std::string transpose(Context& ctx, int c, int r) {
+  if (exact_mode(ctx)) return exact::transpose(ctx, c, r);
   std::string name = "df_transpose_" + suffix(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_matrix(c, r);
@@ -255,6 +266,7 @@ int det_constant(int size) { return size == 1 ? 0 : det_constant(size - 1) + 7 +
 }  // namespace
 
 std::string determinant(Context& ctx, int size) {
+  if (exact_mode(ctx)) return exact::determinant(ctx, size);
   std::string name = "df_determinant_" + suffix(size, size);
   if (ctx.helpers.count(name)) return name;
   ctx.use_rule("df_mul", 1);
@@ -272,6 +284,7 @@ std::string determinant(Context& ctx, int size) {
 }
 
 std::string inverse(Context& ctx, int size) {
+  if (exact_mode(ctx)) return exact::inverse(ctx, size);
   std::string name = "df_inverse_" + suffix(size, size);
   if (ctx.helpers.count(name)) return name;
   ctx.use_rule("df_mul", 1);
@@ -329,6 +342,7 @@ std::string inverse(Context& ctx, int size) {
 }
 
 std::string equal(Context& ctx, int c, int r, bool negated) {
+  if (exact_mode(ctx)) return exact::equal(ctx, c, r, negated);
   std::string name = std::string(negated ? "df_not_equal_" : "df_equal_") + suffix(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_matrix(c, r);
@@ -368,6 +382,7 @@ std::string assign_element(Context& ctx, int c, int r) {
 }
 
 std::string from_components(Context& ctx, int c, int r, const std::vector<int>& widths) {
+  if (exact_mode(ctx)) return exact::from_components(ctx, c, r, widths);
   std::string name = "df_make_" + suffix(c, r);
   for (int w : widths) name += "_" + n(w);
   if (ctx.helpers.count(name)) return name;
@@ -387,6 +402,7 @@ std::string from_components(Context& ctx, int c, int r, const std::vector<int>& 
 }
 
 std::string diagonal(Context& ctx, int c, int r) {
+  if (exact_mode(ctx)) return exact::diagonal(ctx, c, r);
   std::string name = "df_diagonal_" + suffix(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_matrix(c, r);
@@ -397,6 +413,7 @@ std::string diagonal(Context& ctx, int c, int r) {
 }
 
 std::string resize(Context& ctx, int fc, int fr, int c, int r) {
+  if (exact_mode(ctx)) return exact::resize(ctx, fc, fr, c, r);
   std::string name = "df_resize_" + suffix(fc, fr) + "_" + suffix(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_matrix(fc, fr);
@@ -409,6 +426,7 @@ std::string resize(Context& ctx, int fc, int fr, int c, int r) {
 }
 
 std::string to_float(Context& ctx, int c, int r) {
+  if (exact_mode(ctx)) return exact::to_float(ctx, c, r);
   std::string name = "df_to_" + float_type_name(c, r);
   if (ctx.helpers.count(name)) return name;
   ctx.use_rule("df_to_float", r);

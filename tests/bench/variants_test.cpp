@@ -35,29 +35,19 @@ TEST(BenchVariants, NativeIsVulkanOnly) {
   EXPECT_EQ(make_variant(Mode::Native, doublet::runner::Backend::Vulkan, src, doublet::Target::Es320, "add").glsl, src);
 }
 
-// --modes exact: the scalar and geometric kernels lower to the integer runtime, the
-// transcendentals to its float-float bridges; the others (matrices) are refused with the
-// lowering's diagnostic in the note, never an empty shader without a reason.
-TEST(BenchVariants, ExactLowersScalarKernelsAndNamesWhatItRefuses) {
+// --modes exact: every kernel lowers: the scalar, geometric and matrix kernels to the integer
+// runtime, the transcendentals to its float-float bridges.
+TEST(BenchVariants, ExactLowersEveryKernel) {
   EXPECT_EQ(parse_mode("exact"), Mode::Exact);
   EXPECT_STREQ(mode_name(Mode::Exact), "exact");
   for (const Kernel& k : kernels()) {
     const Variant v = make_variant(Mode::Exact, doublet::runner::Backend::Gles, kernel_source(k, 16),
                                    doublet::Target::Es320, k.op);
+    ASSERT_FALSE(v.glsl.empty()) << k.op << ": " << v.note;
+    EXPECT_FALSE(names_double_type(v.glsl)) << k.op;
     const bool scalar = k.op == "add" || k.op == "sub" || k.op == "mul" || k.op == "div" || k.op == "sqrt";
-    const bool transcendental = k.op == "exp" || k.op == "log" || k.op == "cos" || k.op == "atan" || k.op == "pow";
-    const bool geometric = k.op == "dot3" || k.op == "length3";
-    if (scalar || transcendental || geometric) {
-      ASSERT_FALSE(v.glsl.empty()) << k.op << ": " << v.note;
-      EXPECT_FALSE(names_double_type(v.glsl)) << k.op;
-      const std::string rule = geometric ? k.op.substr(0, k.op.size() - 1) : k.op;
-      EXPECT_NE(v.glsl.find("ex_" + rule + (scalar ? "_bits(" : "(")), std::string::npos) << k.op;
-    } else {
-      EXPECT_TRUE(v.glsl.empty()) << k.op;
-      EXPECT_TRUE(v.note.find("not implemented by --mode exact yet") != std::string::npos ||
-                  v.note.find("is not supported by --mode exact yet") != std::string::npos)
-          << k.op << ": " << v.note;
-    }
+    const std::string rule = k.op == "mat4" ? "mul_dmat4_dvec4" : k.op.back() == '3' ? k.op.substr(0, k.op.size() - 1) : k.op;
+    EXPECT_NE(v.glsl.find("ex_" + rule + (scalar ? "_bits(" : "(")), std::string::npos) << k.op;
   }
 }
 
