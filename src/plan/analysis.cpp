@@ -51,9 +51,12 @@ bool Analysis::run(const ir::Module& module, const Scene& scene, std::vector<Dia
     if (!v || !seen.insert(v).second) return;
     if (f) owner_[v] = f;
     if (v->declared_type.contains_double()) double_vars_.push_back(v);
-    if (is_input_storage(v->storage) || (v->storage == ir::Storage::Global && false)) inputs_.emplace(v->name, v);
+    // Inputs: in, uniform, and buffer members a shader may read (not writeonly); an anonymous
+    // block's instance (anon@N) is none — its members are.
+    const bool block_instance = v->declared_type.base == ir::Base::Block;
+    if (is_input_storage(v->storage) && !is_writeonly(v) && !block_instance) inputs_.emplace(v->name, v);
     if (v->storage == ir::Storage::Out || v->storage == ir::Storage::BuiltIn ||
-        (v->storage == ir::Storage::Buffer && !v->readonly))
+        (v->storage == ir::Storage::Buffer && !is_readonly(v) && !block_instance))
       outputs_.emplace(v->name, v);
   };
   for (const auto& g : module.globals) visit_var(g.get(), nullptr);
@@ -153,10 +156,12 @@ double Analysis::storage_error(const Var* v, const Candidate& c) const {
   if (!v->declared_type.contains_double()) return 0;
   const double m = hull(range(v)).mag();
   const ir::Function* f = owner(v);
-  const bool fp32 = c.fp32_vars.count(v) || (f && (c.mode_of(f) == Mode::Fp32 || c.mode_of(f) == Mode::Rte));
+  const Mode mode = f ? c.mode_of(f) : c.base;
+  const bool fp32 = c.fp32_vars.count(v) || (f && (mode == Mode::Fp32 || mode == Mode::Rte));
   if (fp32) return float_half_ulp(m);
-  if (is_input_storage(v->storage)) return m == 0 ? 0 : m * kDf64Repr;
-  return 0;
+  if (mode == Mode::Exact) return 0;  // binary64 words: the value itself
+  if (is_input_storage(v->storage)) return float_float_error(m, kDf64Repr);
+  return m > kFloatMax ? kInf : 0;  // a float-float local beyond float's range overflows
 }
 
 double Analysis::rounding(const Expr* e, const Node& n, const Candidate& c) const {
@@ -170,9 +175,15 @@ double Analysis::rounding(const Expr* e, const Node& n, const Candidate& c) cons
   if (!e->type.is_double()) return 0;
   const Mode mode = c.mode_of(n.fn);
   const bool single = mode == Mode::Fp32 || mode == Mode::Rte;
+  const bool exact = mode == Mode::Exact;
   const double half = float_half_ulp(m);
-  const double df = (mode == Mode::Df64Fast ? kDf64FastRel : kDf64Rel) * m;
-  auto by_mode = [&](double fp32_ulps) { return single ? fp32_ulps * half : df; };
+  // One double operation's rounding: binary64's half ulp (exact), or float-float's relative bound
+  // inside float's range.
+  const double wide = exact ? double_half_ulp(m) : float_float_error(m, mode == Mode::Df64Fast ? kDf64FastRel : kDf64Rel);
+  auto by_mode = [&](double fp32_ulps) { return single ? fp32_ulps * half : wide; };
+  // k roundings relative to `terms` (sums of products): float and float-float only in float's range.
+  const double rel = single ? 0x1p-24 : exact ? kExactRel : kDf64Rel;
+  auto of_terms = [&](double k, double terms) { return !exact && terms > kFloatMax ? kInf : k * rel * terms; };
   switch (e->kind) {
     case Expr::Kind::Sym: {
       if (!single) return 0;
@@ -184,9 +195,12 @@ double Analysis::rounding(const Expr* e, const Node& n, const Candidate& c) cons
       return half;
     }
     case Expr::Kind::Const: {
+      if (exact) return 0;
+      if (!single) return float_float_error(m, kDf64Repr);
       double worst = 0;
-      for (const ir::Scalar& s : e->values) worst = std::max(worst, std::fabs(s.d - static_cast<double>(static_cast<float>(s.d))));
-      return single ? worst : m * kDf64Repr;
+      for (const ir::Scalar& s : e->values)
+        worst = std::max(worst, std::fabs(s.d) > kFloatMax ? kInf : std::fabs(s.d - static_cast<double>(static_cast<float>(s.d))));
+      return worst;
     }
     case Expr::Kind::Unary: return e->op == "-" ? 0 : by_mode(1);
     case Expr::Kind::Binary: {
@@ -200,7 +214,7 @@ double Analysis::rounding(const Expr* e, const Node& n, const Candidate& c) cons
         if (lt.is_matrix() || rt.is_matrix()) {  // k products summed: k roundings of the largest term
           const int k = lt.is_matrix() ? lt.cols : lt.vec;
           const double terms = n.args.size() == 2 ? k * hull(n.args[0]).mag() * hull(n.args[1]).mag() : kInf;
-          return (single ? k * 0x1p-24 : k * kDf64Rel) * terms;
+          return of_terms(k, terms);
         }
         return by_mode(1);
       }
@@ -222,24 +236,25 @@ double Analysis::rounding(const Expr* e, const Node& n, const Candidate& c) cons
         const size_t k = std::max(a0.size(), a1.size());
         for (size_t i = 0; i < k; ++i) s += fit(a0, k)[i].mag() * fit(a1, k)[i].mag();
         if (f == "distance") s *= 4;  // (a - b)^2 <= 2a^2 + 2b^2, and the subtraction rounds
-        const double err = (single ? static_cast<double>(k) * 0x1p-24 : static_cast<double>(k) * kDf64Rel) * s;
+        const double err = of_terms(static_cast<double>(k), s);
         if (f == "dot") return err;
         const double len_min = hull(n.range).mig();
         const double through_sqrt = len_min > 0 ? err / (2 * len_min) : std::sqrt(err);
         return std::min(through_sqrt, std::sqrt(err)) + by_mode(6);
       }
-      if (f == "normalize") return (single ? 0x1p-24 : kDf64Rel) * (2.0 * static_cast<double>(n.args.empty() ? 4 : n.args[0].size()) + 8);
+      if (f == "normalize") return rel * (2.0 * static_cast<double>(n.args.empty() ? 4 : n.args[0].size()) + 8);
       if (f == "mix" || f == "fma" || f == "cross" || f == "matrixCompMult") {
         double s = 0;
         for (const Box& b : n.args) s = std::max(s, hull(b).mag());
-        return (single ? 0x1p-24 : kDf64Rel) * 6 * std::max(s * s, m);
+        return of_terms(6, std::max(s * s, m));
       }
       if (is_transcendental(f)) {
         const int arity = static_cast<int>(e->args.size());
         const Interval x = n.args.empty() ? Interval::top() : hull(n.args[0]);
         const Interval y = n.args.size() > 1 ? hull(n.args[1]) : Interval::top();
-        return single ? transcendental_error_float(f, arity, x, y, hull(n.range))
-                      : transcendental_error_df64(f, arity, x, y, hull(n.range));
+        if (single) return transcendental_error_float(f, arity, x, y, hull(n.range));
+        if (exact) return transcendental_error_exact(f, arity, x, y, hull(n.range));
+        return transcendental_error_df64(f, arity, x, y, hull(n.range));
       }
       return kInf;  // no bound known for this built-in (docs/plan.md, limits)
     }
@@ -295,9 +310,33 @@ bool Analysis::may_cancel(const ir::Function* f) const {
 namespace {
 
 // Flops of one node (docs/rules.md): float ops count 1 per component and operation.
+double node_flops(const Expr* e, const Analysis::Node& n, Mode mode);
+
+// Mode exact in float-operation equivalents: the time of one binary64 operation in integer
+// arithmetic over fp32's, measured on lavapipe (docs/modes.md: add/sub 65x, mul 25x, div 37x,
+// sqrt 34x); anything else as its float-float count times add's ratio to df64 (65/20).
+double exact_flops(const Expr* e, const Analysis::Node& n) {
+  const double k = std::max(1, components(e->type));
+  if (e->kind == Expr::Kind::Binary) {
+    std::string op = e->op;
+    if (is_assign(op) && op != "=") op = op.substr(0, op.size() - 1);
+    const ir::Type &lt = e->args[0]->type, &rt = e->args[1]->type;
+    if (op == "*" && (lt.is_matrix() || rt.is_matrix())) {
+      const double c = lt.is_matrix() ? lt.cols : lt.vec;
+      return k * (25 * c + 65 * (c - 1));
+    }
+    if (op == "+" || op == "-") return 65 * k;
+    if (op == "*") return 25 * k;
+    if (op == "/") return 37 * k;
+  }
+  if (e->kind == Expr::Kind::Builtin && e->name == "sqrt") return 34 * k;
+  return node_flops(e, n, Mode::Df64) * 65 / 20;
+}
+
 double node_flops(const Expr* e, const Analysis::Node& n, Mode mode) {
   if (!e->type.is_double() && !(e->kind == Expr::Kind::Construct && !e->args.empty() && e->args[0]->type.is_double()))
     return 0;
+  if (mode == Mode::Exact) return exact_flops(e, n);
   const double k = std::max(1, components(e->type));
   const bool single = mode == Mode::Fp32 || mode == Mode::Rte;
   const int w = n.args.empty() ? 1 : static_cast<int>(n.args[0].size());

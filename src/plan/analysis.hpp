@@ -26,20 +26,27 @@ namespace doublet::plan {
 
 using Box = std::vector<Interval>;  // one interval per component
 
-// A candidate plan: arithmetic mode per function (absent: Df64), declarations stored as float.
+// A candidate plan: arithmetic mode per function (absent: `base`), declarations stored as float.
+// Mode exact is only ever a whole-shader base (it does not mix with other modes).
 struct Candidate {
+  Mode base = Mode::Df64;
   std::map<const ir::Function*, Mode> function_mode;
   std::set<const ir::Var*> fp32_vars;
   Mode mode_of(const ir::Function* f) const {
     auto it = function_mode.find(f);
-    return it == function_mode.end() ? Mode::Df64 : it->second;
+    return it == function_mode.end() ? base : it->second;
   }
 };
+
+// A buffer member is read-only (an input) or write-only by its own qualifier or its block's.
+inline bool is_readonly(const ir::Var* v) { return v->readonly || (v->block && v->block->readonly); }
+inline bool is_writeonly(const ir::Var* v) { return v->writeonly || (v->block && v->block->writeonly); }
 
 // Relative rounding of one double operation per mode (docs/plan.md, "Error model").
 inline constexpr double kDf64Rel = 0x1p-44;      // >= every accurate rule's bound (15u^2 + 56u^3 for div)
 inline constexpr double kDf64FastRel = 0x1p-40;  // assumed for df64-fast where no operand cancels
 inline constexpr double kDf64Repr = 0x1p-48;     // a double input carried as hi + lo
+inline constexpr double kExactRel = 0x1p-53;     // binary64, correctly rounded: half an ulp
 
 class Analysis {
  public:

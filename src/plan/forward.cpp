@@ -350,6 +350,15 @@ struct Forward {
             if (i.lo > i.hi) i = Interval::top();
           return record(&e, col, args);
         }
+        // A vector's component (glslang spells `.x` as an index): the components the index may name.
+        if (!t.is_array() && !t.is_matrix() && n == 1 && args[0].size() == static_cast<size_t>(components(t)) &&
+            args.size() > 1) {
+          Interval c{kInf, -kInf};
+          const Interval at = Analysis::hull(args[1]);
+          for (size_t k = 0; k < args[0].size(); ++k)
+            if (at.lo <= static_cast<double>(k) && static_cast<double>(k) <= at.hi) c = join(c, args[0][k]);
+          return record(&e, Box(1, c.lo > c.hi ? Analysis::hull(args[0]) : c), args);
+        }
         // An input array whose scene range is per element component: every element has that box.
         if (t.is_array() && args[0].size() == n && n > 1) return record(&e, args[0], args);
         return record(&e, Box(n, Analysis::hull(args[0])), args);

@@ -54,10 +54,33 @@ inline Interval sqrt(Interval a) { return {std::sqrt(std::max(a.lo, 0.0)), std::
 
 // Half the spacing of floats at magnitude m: the largest error of rounding any |x| <= m to float
 // (round to nearest, m a normal float magnitude): 2^(floor(log2 m) - 24).
+// Float's largest finite value, and its smallest normal: below it a vertex/fragment stage may
+// flush to zero (so a value under 2^-126 may lose all of itself).
+inline constexpr double kFloatMax = 0x1.fffffep127;
+inline constexpr double kFloatMinNormal = 0x1p-126;
+
+// Half an ulp of float at magnitude m; infinite beyond float's range (the value overflows), at
+// least min(m, 2^-126) (flushed subnormals).
 inline double float_half_ulp(double m) {
   if (!(m > 0)) return 0;
+  if (!std::isfinite(m) || m > kFloatMax) return kInf;
+  return std::max(std::ldexp(1.0, std::ilogb(m) - 24), std::min(m, kFloatMinNormal));
+}
+
+// Float-float's absolute error at magnitude m for a relative bound `rel`: float's exponent range
+// (beyond FLT_MAX hi overflows), and below 2^-102 lo turns subnormal and may flush.
+inline double float_float_error(double m, double rel) {
+  if (!(m > 0)) return 0;
+  if (!std::isfinite(m) || m > kFloatMax) return kInf;
+  return std::max(rel * m, std::min(m, kFloatMinNormal));
+}
+
+// Half an ulp of binary64 at magnitude m (mode exact: every operation correctly rounded);
+// subnormals are kept, so the floor is the smallest subnormal (its half is not a double).
+inline double double_half_ulp(double m) {
+  if (!(m > 0)) return 0;
   if (!std::isfinite(m)) return kInf;
-  return std::ldexp(1.0, std::ilogb(m) - 24);
+  return std::max(std::ldexp(1.0, std::ilogb(m) - 53), 0x1p-1074);
 }
 
 }  // namespace doublet::plan

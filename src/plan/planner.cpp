@@ -33,24 +33,29 @@ std::string kind_of(const ir::Var* v) {
   switch (v->storage) {
     case S::In: case S::Uniform: return "input";
     case S::Out: case S::BuiltIn: return "output";
-    case S::Buffer: return v->readonly ? "input" : "buffer";
+    case S::Buffer: return is_readonly(v) ? "input" : is_writeonly(v) ? "output" : "buffer";
     case S::ParamIn: case S::ParamOut: case S::ParamInOut: return "parameter";
     case S::Local: return "local";
     default: return "global";
   }
 }
 
-// True when `line` declares `name` as an interface variable: a storage word (in, out, uniform,
-// buffer, attribute, varying), then `name` as a whole word with nothing but an optional array size
-// before the `;`, and no `;`, `{` or `}` in between. A scanner, not a regex: libstdc++'s matcher
-// recurses per character, and a user's 4 MB line would overflow the stack.
-bool declares_interface_variable(std::string_view line, const std::string& name) {
+// The line declaring interface variable `name`: after a storage word (in, out, uniform, buffer,
+// attribute, varying) or inside a block that one opens, `name` as a whole word with nothing but
+// an optional array size before the `;`. glslang places interface variables at their first use;
+// the table wants the declaration. A scanner, not a regex: libstdc++'s matcher recurses per
+// character, and a user's 4 MB line would overflow the stack.
+int declaration_line(std::string_view source, const std::string& name, int fallback) {
   static const std::set<std::string_view> storage{"in", "out", "uniform", "buffer", "attribute", "varying"};
-  bool storage_seen = false;
+  bool storage_seen = false, in_block = false;
+  int line = 1;
   size_t i = 0;
-  while (i < line.size()) {
-    const char c = line[i];
+  while (i < source.size()) {
+    const char c = source[i];
+    if (c == '\n') ++line;
     if (c == ';' || c == '{' || c == '}') {
+      if (c == '{') in_block = storage_seen;
+      if (c == '}') in_block = false;
       storage_seen = false;
       ++i;
       continue;
@@ -60,31 +65,18 @@ bool declares_interface_variable(std::string_view line, const std::string& name)
       continue;
     }
     size_t end = i;
-    while (end < line.size() && frontend::is_word_char(line[end])) ++end;
-    const std::string_view word = line.substr(i, end - i);
+    while (end < source.size() && frontend::is_word_char(source[end])) ++end;
+    const std::string_view word = source.substr(i, end - i);
     i = end;
     if (storage.count(word)) storage_seen = true;
-    if (!storage_seen || word != name) continue;
-    std::string_view rest = frontend::trim_blanks(line.substr(end));
+    if ((!storage_seen && !in_block) || word != name) continue;
+    std::string_view rest = frontend::trim_blanks(source.substr(end, 200));
     if (!rest.empty() && rest.front() == '[') {
       const size_t close = rest.find_first_of("]");
       if (close == std::string_view::npos) continue;
       rest = frontend::trim_blanks(rest.substr(close + 1));
     }
-    if (!rest.empty() && rest.front() == ';') return true;
-  }
-  return false;
-}
-
-// glslang places interface variables at their first use; the table wants the declaration.
-int declaration_line(std::string_view source, const std::string& name, int fallback) {
-  int line = 1;
-  size_t start = 0;
-  while (start < source.size()) {
-    const size_t end = std::min(source.find('\n', start), source.size());
-    if (declares_interface_variable(source.substr(start, end - start), name)) return line;
-    start = end + 1;
-    ++line;
+    if (!rest.empty() && rest.front() == ';') return line;
   }
   return fallback;
 }
@@ -117,29 +109,62 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
   std::vector<const ir::Function*> functions;
   for (const auto& f : module.functions) functions.push_back(f.get());
 
-  Candidate all_df64, all_fp32;
+  Candidate all_df64, all_fp32, all_exact;
+  all_exact.base = Mode::Exact;
   for (const ir::Function* f : functions) all_fp32.function_mode[f] = Mode::Fp32;
   for (const ir::Var* v : a.double_vars()) all_fp32.fp32_vars.insert(v);
   out.feasible = true;
   std::map<std::string, double> base;
+  std::vector<std::string> df64_misses;
   for (const auto& [name, req] : scene.outputs) {
     base[name] = a.error_estimate(name, all_df64);
-    OutputRow row{name, req.abs_error, 0, a.error_estimate(name, all_df64), a.error_estimate(name, all_fp32)};
+    OutputRow row{name, req.abs_error, 0, a.error_estimate(name, all_df64), a.error_estimate(name, all_fp32),
+                  a.error_estimate(name, all_exact)};
     if (!(row.estimate_df64 <= req.abs_error)) {
       out.feasible = false;
-      out.notes.push_back(std::isinf(row.estimate_df64)
-                              ? "output '" + name + "': no error bound can be proven (an unbounded range, a loop, "
-                                                    "or a built-in without a known bound): everything stays df64"
-                              : "output '" + name + "': even df64 everywhere is estimated at " + num(row.estimate_df64) +
-                                    " > the required " + num(req.abs_error));
+      df64_misses.push_back(std::isinf(row.estimate_df64)
+                                ? "output '" + name + "': no error bound can be proven with df64 (a value beyond float's "
+                                                      "range, an unbounded range, a loop, or a built-in without a known bound)"
+                                : "output '" + name + "': even df64 everywhere is estimated at " +
+                                      num(row.estimate_df64) + " > the required " + num(req.abs_error));
     }
     out.outputs.push_back(row);
+  }
+  // Name the values float-float cannot hold (finite, beyond FLT_MAX): the usual reason for exact.
+  std::string beyond_float;
+  for (const ir::Var* v : a.double_vars()) {
+    const double m = Analysis::hull(a.range(v)).mag();
+    if (!(m > kFloatMax) || std::isinf(m) || v->declared_type.base == ir::Base::Block) continue;
+    const ir::Function* f = a.owner(v);
+    beyond_float += (beyond_float.empty() ? "" : ", ") + (f ? f->name + "." : std::string()) + v->name + " reaches " + num(m);
+  }
+  if (!beyond_float.empty())
+    out.notes.push_back("beyond float's range (3.4e38), where float-float overflows: " + beyond_float);
+  // Where float-float cannot keep a promise (values beyond float's range, or more than its ~48
+  // bits), binary64 in integer arithmetic may: mode exact for the whole shader (it does not mix
+  // with other modes), on targets that have 32-bit integers.
+  const bool exact_keeps_all = std::all_of(out.outputs.begin(), out.outputs.end(),
+                                           [](const OutputRow& r) { return r.estimate_exact <= r.required; });
+  const bool exact_target = options.target != Target::Es100 && options.target != Target::Wgsl;
+  if (!out.feasible && exact_keeps_all && exact_target) {
+    out.feasible = true;
+    out.mode = Mode::Exact;
+    for (const std::string& miss : df64_misses)
+      out.notes.push_back(miss + "; binary64 (mode exact) keeps it: the plan is mode exact for the whole shader");
+  } else {
+    for (const std::string& miss : df64_misses) {
+      std::string why = ": everything stays df64";
+      if (exact_keeps_all && !exact_target)
+        why = "; mode exact would keep it, but target " + std::string(to_string(options.target)) +
+              " has no 32-bit integers for it: everything stays df64";
+      out.notes.push_back(miss + why);
+    }
   }
 
   // Cheapest first: whole functions in float (fp32, then rte), then df64-fast where no operand
   // can cancel; then, inside df64 functions, each declaration stored as float.
-  Candidate plan;
-  if (out.feasible) {
+  Candidate plan = out.mode == Mode::Exact ? all_exact : all_df64;
+  if (out.feasible && out.mode != Mode::Exact) {
     for (const ir::Function* f : functions) {
       for (Mode m : {Mode::Fp32, Mode::Rte, Mode::Df64Fast}) {
         if (m == Mode::Df64Fast && a.may_cancel(f)) continue;
@@ -178,11 +203,12 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
     r.flops = a.flops(plan, f);
     r.note = "arithmetic of the body";
     out.rows.push_back(r);
-    if (r.mode != Mode::Df64) out.mode_for.emplace_back(f->name, r.mode);
+    if (r.mode != out.mode) out.mode_for.emplace_back(f->name, r.mode);
   }
   std::vector<const ir::Var*> vars = a.double_vars();
   std::stable_sort(vars.begin(), vars.end(), [](const ir::Var* x, const ir::Var* y) { return x->loc.line < y->loc.line; });
   for (const ir::Var* v : vars) {
+    if (v->declared_type.base == ir::Base::Block) continue;  // anonymous block instance: its members have rows
     const ir::Function* f = a.owner(v);
     PlanRow r;
     r.name = f ? f->name + "." + v->name : v->name;
@@ -194,7 +220,7 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
     const double m = r.range.mag();
     r.bits = std::isinf(r.budget) || m == 0 ? 0 : r.budget == 0 ? kInf : std::max(0.0, std::log2(m / r.budget) + 1);
     const bool fp32 = plan.fp32_vars.count(v) || (f && (plan.mode_of(f) == Mode::Fp32 || plan.mode_of(f) == Mode::Rte));
-    r.mode = fp32 ? Mode::Fp32 : f ? plan.mode_of(f) : Mode::Df64;
+    r.mode = fp32 ? Mode::Fp32 : f ? plan.mode_of(f) : plan.base;
     r.flops = a.flops_of(v, plan);
     if (is_interface(v)) r.note = "interface: keeps its declared type";
     if (std::isinf(r.budget)) r.note = r.note.empty() ? "no scene output depends on it" : r.note;
@@ -227,14 +253,16 @@ std::string format_table(const PlanOutcome& p) {
                   num(r.flops, 4).c_str(), r.note.c_str());
     s += line;
   }
-  s += "\noutput                 required  estimate(plan)  estimate(all df64)  estimate(all fp32)\n";
+  s += "\noutput                 required  estimate(plan)  estimate(all df64)  estimate(all fp32)  estimate(exact)\n";
   for (const OutputRow& o : p.outputs) {
-    std::snprintf(line, sizeof line, "%-22s %9s  %14s  %18s  %18s\n", o.name.c_str(), num(o.required).c_str(),
-                  num(o.estimate).c_str(), num(o.estimate_df64).c_str(), num(o.estimate_fp32).c_str());
+    std::snprintf(line, sizeof line, "%-22s %9s  %14s  %18s  %18s  %15s\n", o.name.c_str(), num(o.required).c_str(),
+                  num(o.estimate).c_str(), num(o.estimate_df64).c_str(), num(o.estimate_fp32).c_str(),
+                  num(o.estimate_exact).c_str());
     s += line;
   }
   s += "\ndouble flops per invocation: " + num(p.flops_plan, 5) + " with the plan, " + num(p.flops_df64, 5) +
-       " all df64 (docs/rules.md)\n";
+       " all df64 (docs/rules.md" + (p.mode == Mode::Exact ? "; mode exact counts fp32-time equivalents measured on lavapipe" : "") +
+       ")\n";
   for (const std::string& n : p.notes) s += "note: " + n + "\n";
   return s;
 }
@@ -270,14 +298,14 @@ bool load_plan(std::string_view text, const std::string& file, Options* options,
   if (!j.contains("version") || j["version"] != 1) return fail("/version", "version must be 1");
   if (j.contains("mode")) {
     const auto m = j["mode"].is_string() ? parse_mode(j["mode"].get<std::string>()) : std::nullopt;
-    if (!m) return fail("/mode", "mode must be one of fp32, rte, df64-fast, df64, native");
+    if (!m) return fail("/mode", "mode must be one of fp32, rte, df64-fast, df64, df64-int, native, exact, rte-exact");
     options->mode = *m;
   }
   if (j.contains("mode_for")) {
     if (!j["mode_for"].is_object()) return fail("/mode_for", "mode_for must be an object of NAME: MODE");
     for (const auto& [name, v] : j["mode_for"].items()) {
       const auto m = v.is_string() ? parse_mode(v.get<std::string>()) : std::nullopt;
-      if (!m) return fail("/mode_for/" + name, "'" + name + "': mode must be one of fp32, rte, df64-fast, df64, native");
+      if (!m) return fail("/mode_for/" + name, "'" + name + "': mode must be one of fp32, rte, df64-fast, df64, df64-int, native, exact, rte-exact");
       options->mode_for.emplace_back(name, *m);
     }
   }

@@ -32,12 +32,13 @@ struct OutputRow {
   double estimate = 0;       // with the plan
   double estimate_df64 = 0;  // everything df64
   double estimate_fp32 = 0;  // everything fp32
+  double estimate_exact = 0; // everything binary64 (mode exact)
 };
 
 struct PlanOutcome {
   bool ok = false;                       // false: diagnostics say why (bad shader or scene names)
   std::vector<Diagnostic> diagnostics;
-  bool feasible = false;                 // every output's df64 estimate within its requirement
+  bool feasible = false;                 // every output's estimate within its requirement (df64, or exact)
   std::vector<PlanRow> rows;
   std::vector<OutputRow> outputs;
   std::vector<std::string> notes;

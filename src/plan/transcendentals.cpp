@@ -130,6 +130,10 @@ double transcendental_slope(const std::string& f, int arity, size_t i, Interval 
 double transcendental_error_df64(const std::string& f, int arity, Interval a, Interval b, Interval result) {
   const double m = result.mag();
   if (!result.bounded() || !a.bounded() || (arity == 2 && !b.bounded())) return kInf;
+  // Float-float holds float's exponent range only: arguments or results beyond it overflow,
+  // positive arguments below float's smallest normal may flush to zero (log(0) = -inf).
+  if (a.mag() > kFloatMax || (arity == 2 && b.mag() > kFloatMax) || m > kFloatMax) return kInf;
+  if ((f == "log" || f == "log2" || f == "pow") && a.lo < kFloatMinNormal) return kInf;
   auto relative = [&](double c) { return c * kU2 * m; };
   if (f == "exp") return a.lo >= -70.7 && a.hi <= 88.72 ? relative(10) : kInf;
   if (f == "exp2") return a.lo >= -102 && a.hi < 128 ? relative(12) : kInf;
@@ -149,6 +153,18 @@ double transcendental_error_df64(const std::string& f, int arity, Interval a, In
   if (f == "sinh" || f == "cosh") return a.mag() <= 88.72 ? relative(f == "sinh" ? 50 : 20) : kInf;
   if (f == "tanh") return relative(50);
   return kInf;
+}
+
+double transcendental_error_exact(const std::string& f, int arity, Interval a, Interval b, Interval result) {
+  const double m = result.mag();
+  if (!result.bounded() || !a.bounded() || (arity == 2 && !b.bounded())) return kInf;
+  // The bridge adds 2u^2 (first-order residual correction) and one binary64 rounding.
+  auto bridged = [&](double rule) { return rule + 2 * kU2 * m + double_half_ulp(m); };
+  // log/log2 scale any positive binary64 into float's range; atan and atan(y, x) take every pair.
+  if (f == "log" || f == "log2") return a.lo > 0 ? bridged((f == "log" ? 28 : 37) * kU2 * m) : kInf;
+  if (f == "atan") return bridged(70 * kU2 * m);
+  const double rule = transcendental_error_df64(f, arity, a, b, result);
+  return std::isinf(rule) ? kInf : bridged(rule);
 }
 
 double transcendental_error_float(const std::string& f, int arity, Interval a, Interval b, Interval result) {

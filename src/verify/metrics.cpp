@@ -49,8 +49,12 @@ void StatsBuilder::add(double got, double want, uint64_t sample) {
   std::memcpy(&got_bits, &got, 8);
   std::memcpy(&want_bits, &want, 8);
   if (got_bits != want_bits) ++(std::isnan(got) && std::isnan(want) ? stats_.nan_payloads : stats_.differing);
+  // Absolute error: |got - want| between finite values; infinite where only one side is finite
+  // or the infinities differ (an overflow where native is finite); NaN against NaN is no error.
   if (std::isfinite(got) && std::isfinite(want))
     stats_.max_abs_err = std::max(stats_.max_abs_err, std::fabs(got - want));
+  else if (got != want && !(std::isnan(got) && std::isnan(want)))
+    stats_.max_abs_err = std::numeric_limits<double>::infinity();
   if (stats_.samples == 0 || bits < stats_.min_bits) {
     stats_.min_bits = bits;
     stats_.worst_sample = sample;

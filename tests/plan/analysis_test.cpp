@@ -190,4 +190,63 @@ void main() { r = x; }
   EXPECT_NE(p.diagnostics[0].message.find("'nope'"), std::string::npos);
 }
 
+// Values beyond float's range (3.4e38): float-float overflows there, so its estimate is infinite
+// (before, df64 was estimated at 2^-44 relative and chosen: inf at run time), and the plan is mode
+// exact where the target has 32-bit integers.
+TEST(PlanAnalysis, ValuesBeyondFloatRangeChooseExact) {
+  const std::string shader = R"(#version 450
+uniform double a;
+uniform double b;
+out double r;
+void main() { double p = a * b; r = p * 1e-40; }
+)";
+  const std::string scene = R"({"inputs": {"a": {"min": 1e20, "max": 1e25}, "b": {"min": 1e20, "max": 1e25}},
+        "outputs": {"r": {"abs_error": 1e-3}}})";
+  const PlanOutcome p = run(shader, scene);
+  ASSERT_TRUE(p.ok);
+  ASSERT_EQ(p.outputs.size(), 1u);
+  EXPECT_TRUE(std::isinf(p.outputs[0].estimate_df64));
+  EXPECT_TRUE(std::isinf(p.outputs[0].estimate_fp32));
+  // p = a*b <= 1e50 rounds by half an ulp of binary64 there, 2^(166-53), weighted by 1e-40; r <= 1e10
+  // rounds by 2^(33-53); 1e-40 is exact in binary64: 1.04e-6 + 9.5e-7.
+  EXPECT_NEAR(p.outputs[0].estimate_exact, std::ldexp(1.0, 113) * 1e-40 + std::ldexp(1.0, -20), 1e-9);
+  EXPECT_TRUE(p.feasible);
+  EXPECT_EQ(p.mode, Mode::Exact);
+  EXPECT_TRUE(p.mode_for.empty());
+  EXPECT_EQ(row(p, "main.p").mode, Mode::Exact);
+  // ES 1.00 has no 32-bit integers: no exact; the plan stays df64 and says why.
+  Scene s;
+  Diagnostic d;
+  ASSERT_TRUE(parse_scene(scene, "scene.json", &s, &d));
+  Options o;
+  o.stage = Stage::Vertex;
+  o.target = Target::Es100;
+  const PlanOutcome es100 = make_plan(shader, o, s);
+  EXPECT_FALSE(es100.feasible);
+  EXPECT_EQ(es100.mode, Mode::Df64);
+  bool said = false;
+  for (const std::string& n : es100.notes) said |= n.find("es100") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
+// glslang spells `v.x` as an index into the vector: the component's own range, not the hull of
+// the vector (a buffer's dvec2 of distance and mass kept them apart only after this).
+TEST(PlanAnalysis, VectorComponentOfABufferElementKeepsItsRange) {
+  const PlanOutcome p = run(R"(#version 450
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer In { dvec2 body[]; };
+layout(std430, binding = 1) writeonly buffer Out { double r[]; };
+void main() { uint i = gl_GlobalInvocationID.x; double x = body[i].x; double y = body[i].y; r[i] = x + y; }
+)", R"({"inputs": {"body": {"min": [1, 100], "max": [2, 200]}}, "outputs": {"r": {"abs_error": 1e-3}}})",
+                            Stage::Compute);
+  ASSERT_TRUE(p.ok);
+  EXPECT_EQ(row(p, "main.x").range.lo, 1);
+  EXPECT_EQ(row(p, "main.x").range.hi, 2);
+  EXPECT_EQ(row(p, "main.y").range.lo, 100);
+  EXPECT_EQ(row(p, "main.y").range.hi, 200);
+  EXPECT_EQ(row(p, "r").kind, "output");  // a writeonly block's member: no "no range" note
+  for (const PlanRow& r : p.rows) EXPECT_EQ(r.name.find("anon@"), std::string::npos) << r.name;
+  for (const std::string& n : p.notes) EXPECT_EQ(n.find("'r' has no range"), std::string::npos) << n;
+}
+
 }  // namespace

@@ -102,4 +102,17 @@ TEST(PlanCli, LowerAppliesThePlanAndRejectsBadPlans) {
   EXPECT_EQ(r.exit_code, 2) << r.out;
 }
 
+// The plan says why it leaves float-float: the value beyond float's range, and each output's
+// estimate in binary64 next to df64's infinite one.
+TEST(PlanCli, GravityInSiUnitsTableNamesTheValueBeyondFloat) {
+  const std::string out = temp("gravity.plan.json");
+  const CliRun r = run_doublet("plan " + kScenes + "/gravity_si.comp --scene " + kScenes + "/gravity_si.scene.json -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(read_file(out)), nlohmann::json::parse(R"({"version": 1, "mode": "exact", "mode_for": {}})"));
+  EXPECT_NE(r.out.find("estimate(exact)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("main.gmm reaches 2.66e+48"), std::string::npos) << r.out;  // 6.6743e-11 * 2.1e30 * 1.9e28
+  EXPECT_NE(r.out.find("the plan is mode exact for the whole shader"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("anon@"), std::string::npos) << r.out;
+}
+
 }  // namespace

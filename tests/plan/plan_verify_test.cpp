@@ -76,4 +76,21 @@ TEST(PlanVerify, OrbitKeepsDf64AndMeetsOneMicrometre) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
 }
 
+// Beyond float's range (G M m reaches 3e47): the plan is mode exact, whose run is bit-identical
+// to native; df64 (the default) overflows to inf and is caught by the same scene.
+TEST(PlanVerify, GravityInSiUnitsPlansExactAndDf64Overflows) {
+  const std::string plan = make_plan("gravity_si.comp", "gravity_si.scene.json", "gravity.plan.json");
+  EXPECT_NE(read_file(plan).find("\"mode\": \"exact\""), std::string::npos) << read_file(plan);
+  const std::string base = "verify " + kScenes + "/gravity_si.comp --target es310 --samples 1024 --scene " + kScenes +
+                           "/gravity_si.scene.json ";
+  CliRun r = run_doublet(base + "--plan " + plan);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("identical bits required: 0 of"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("EXCEEDED"), std::string::npos) << r.out;
+  r = run_doublet(base);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("measured inf"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("EXCEEDED"), std::string::npos) << r.out;
+}
+
 }  // namespace
