@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include "lower/block_layout.hpp"
 #include "lower/exact_interface.hpp"
@@ -131,10 +132,24 @@ void check_generated_name(const ir::Var& v, const std::string& generated, bool f
   names.insert(generated);
 }
 
+// The locations user declarations hold, per storage class ([first, first + count) each, a
+// dvec3/4 counted as two), and the next location past all of them.
+struct HeldLocations {
+  std::map<ir::Storage, std::vector<std::tuple<const ir::Var*, int, int>>> held;
+  std::map<ir::Storage, int> next;
+  bool held_by_other(const ir::Var* v, int first, int count) const {
+    auto it = held.find(v->storage);
+    if (it == held.end()) return false;
+    for (const auto& [w, from, n] : it->second)
+      if (w != v && first < from + n && from < first + count) return true;
+    return false;
+  }
+};
+
 // Mode exact: `v` becomes its word variables (exact_interface.hpp); v stays as the private df_*
 // value, renamed NAME_value when the first word variable takes its name.
 WordSplit split_into_words(const ir::VarPtr& v, ir::StageKind stage, Context& ctx, std::set<std::string>& names,
-                           InterfaceVariable& entry) {
+                           InterfaceVariable& entry, HeldLocations& locations) {
   WordSplit s;
   s.original = v;
   s.storage = v->storage;
@@ -150,8 +165,16 @@ WordSplit split_into_words(const ir::VarPtr& v, ir::StageKind stage, Context& ct
     part->type.array_dims = v->declared_type.array_dims;
     part->declared_type = part->type;
     if (varying) part->interp = ir::Interp::Flat;  // integer varyings must be flat (GLSL)
-    // One location per element and part: a dvec3/dvec4's two parts fill the two locations it had.
-    if (v->layout.location >= 0) part->layout.location = v->layout.location + static_cast<int>(k) * elements;
+    // One location per element and part: a dvec3/dvec4's two parts fill the two locations it had
+    // (SPIR-V's count), unless another declaration holds the second (OpenGL counts a vertex
+    // input's dvec3 as one location): then the next free one past every declaration.
+    if (v->layout.location >= 0) {
+      part->layout.location = v->layout.location + static_cast<int>(k) * elements;
+      if (k > 0 && locations.held_by_other(v.get(), part->layout.location, elements)) {
+        part->layout.location = locations.next[v->storage];
+        locations.next[v->storage] += elements;
+      }
+    }
     if (!suffixes[k].empty()) check_generated_name(*v, part->name, k == 0, ctx, names, "");
     entry.lowered_names.push_back(part->name);
     entry.lowered_types.push_back(ir::type_name(part->type) + ir::array_suffix(part->type));
@@ -176,13 +199,15 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   for (const auto& g : module.globals) names.insert(g->name);
   for (const auto& f : module.functions) names.insert(f->name);
 
-  // Next free location per storage class, for the _lo halves.
-  std::map<ir::Storage, int> next_location;
+  // Next free location per storage class, for the _lo halves (and exact's displaced parts).
+  HeldLocations locations;
+  std::map<ir::Storage, int>& next_location = locations.next;
   for (const auto& g : module.globals) {
     if (g->layout.location < 0) continue;
     int slots = (g->type.is_array() ? g->type.array_dims[0] : 1) * std::max(g->declared_type.cols, 1);
     if (g->declared_type.is_double() && g->declared_type.vec > 2) slots *= 2;  // dvec3/4 take two locations
     next_location[g->storage] = std::max(next_location[g->storage], g->layout.location + slots);
+    locations.held[g->storage].emplace_back(g.get(), g->layout.location, slots);
   }
 
   std::vector<ir::VarPtr> globals;
@@ -235,7 +260,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         ctx.error(v->loc, "'" + v->name + "': double matrices cannot cross the interface in --mode exact yet; pass "
                           "the columns as dvecN variables");
       } else if (binary64_words(ctx.options)) {
-        WordSplit s = split_into_words(v, module.stage, ctx, names, entry);
+        WordSplit s = split_into_words(v, module.stage, ctx, names, entry, locations);
         for (const auto& part : s.parts) {
           globals.push_back(part);
           inits.push_back(nullptr);

@@ -243,6 +243,58 @@ TEST(ExactLowering, VertexStageWordsBitIdenticalToIeee) {
   }
 }
 
+// OpenGL counts a vertex input's dvec3 as one location, so sources place the next one right after
+// it (examples/scenes/orbit_step.vert); mode exact's second part (X_z) then goes past every
+// declaration instead of onto the neighbour's location (glslang refused the lowered shader:
+// "overlapping use of location 1", an internal error). Run: words in, IEEE result out, 0 differ.
+TEST(ExactLowering, AdjacentDvec3InputsGetDistinctLocations) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  REQUIRE_BACKEND(Backend::Gles);
+  const char* source = "#version 450\nlayout(location = 0) in dvec3 p;\nlayout(location = 1) in dvec3 v;\n"
+                       "flat out dvec3 r;\nvoid main() { r = p + v * 3.0lf; gl_Position = vec4(0.0); }\n";
+  Options options;
+  options.stage = Stage::Vertex;
+  options.target = Target::Es300;
+  options.mode = Mode::Exact;
+  Result lowered = lower(source, options);
+  ASSERT_TRUE(lowered.ok) << (lowered.diagnostics.empty() ? "" : format_diagnostic(lowered.diagnostics[0]));
+  EXPECT_NE(lowered.output.find("layout(location = 0) in uvec4 p_xy;"), std::string::npos) << lowered.output;
+  EXPECT_NE(lowered.output.find("layout(location = 1) in uvec4 v_xy;"), std::string::npos) << lowered.output;
+  EXPECT_NE(lowered.output.find("layout(location = 2) in uvec2 v_z;"), std::string::npos) << lowered.output;
+  EXPECT_NE(lowered.output.find("layout(location = 3) in uvec2 p_z;"), std::string::npos) << lowered.output;
+  constexpr uint32_t kCount = 1024;
+  const std::vector<uint64_t> words = make_pairs();
+  GraphicsJob job;
+  job.glsl = lowered.output;
+  job.count = kCount;
+  std::vector<uint64_t> want(3 * kCount);
+  auto feed = [&](const std::string& name, uint64_t w) {
+    job.inputs[name].push_back(double(w & 0xFFFFFFFFu));
+    job.inputs[name].push_back(double(w >> 32));
+  };
+  for (uint32_t i = 0; i < kCount; ++i)
+    for (uint32_t c = 0; c < 3; ++c) {
+      const uint64_t pw = words[(6 * i + c) % words.size()], vw = words[(6 * i + 3 + c) % words.size()];
+      feed(c < 2 ? "p_xy" : "p_z", pw);
+      feed(c < 2 ? "v_xy" : "v_z", vw);
+      volatile double product = bits<double>(vw) * 3.0;
+      want[3 * i + c] = bits<uint64_t>(double(bits<double>(pw) + product));
+    }
+  for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
+    const GraphicsResult got = run_graphics(backend, job);
+    ASSERT_TRUE(got.ok) << backend_name(backend) << ": " << got.error;
+    uint32_t differing = 0;
+    for (uint32_t i = 0; i < kCount; ++i)
+      for (uint32_t c = 0; c < 3; ++c) {
+        const std::vector<double>& r = got.outputs.at(c < 2 ? "r_xy" : "r_z");
+        const size_t at = c < 2 ? 4 * i + 2 * c : 2 * i;
+        const uint64_t have = (uint64_t(r[at + 1]) << 32) | uint64_t(r[at]);
+        differing += have != want[3 * i + c] && !(is_nan(have) && is_nan(want[3 * i + c]));
+      }
+    EXPECT_EQ(differing, 0u) << backend_name(backend);
+  }
+}
+
 // What mode exact refuses, each with a clear diagnostic (never an internal error).
 TEST(ExactLowering, RefusalsAreDiagnosed) {
   auto first_error = [](const Result& r) {
