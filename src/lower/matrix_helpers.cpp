@@ -51,7 +51,8 @@ std::string from_scalars(const std::string& prefix, int w) {
 
 int dot_constant(int w) { return w == 1 ? 7 : w == 2 ? 10 : 13; }
 
-bool exact_mode(const Context& ctx) { return ctx.options.mode == Mode::Exact; }
+// Mode exact and rte-exact store double matrices as binary64 words (matrix_helpers_exact).
+bool exact_mode(const Context& ctx) { return binary64_words(ctx.options); }
 
 }  // namespace
 

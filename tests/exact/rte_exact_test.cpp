@@ -185,6 +185,39 @@ TEST(RteExact, DifferenceRoundedOnceMatchesMpfrOnBothDrivers) {
   }
 }
 
+// Double matrices in rte-exact are stored as mode exact's (binary64 words): the differences of
+// their elements round once like any other (the helpers were float-float's before: the lowered
+// shader did not compile, an internal error).
+TEST(RteExact, MatrixElementsKeepTheirWordsAndTheirDifferenceRoundsOnce) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  REQUIRE_BACKEND(Backend::Gles);
+  Options o;
+  o.stage = Stage::Compute;
+  o.target = Target::Es310;
+  o.mode = Mode::RteExact;
+  const Result lowered = lower(R"(#version 450
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer In { dvec2 ab[]; };
+layout(std430, binding = 1) writeonly buffer Out { float r[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  dmat2 m = dmat2(ab[i].x, 0.0lf, 0.0lf, 1.0lf);
+  m[1][1] = ab[i].y;
+  r[i] = float(m[0][0] - m[1][1]);
+}
+)", o);
+  std::string diagnostics;
+  for (const Diagnostic& d : lowered.diagnostics) diagnostics += format_diagnostic(d) + "\n";
+  ASSERT_TRUE(lowered.ok) << diagnostics;
+  const std::vector<double> ab = make_pairs();
+  uint32_t checks = 0;
+  const std::vector<float> want = reference(ab, &checks);
+  for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
+    const uint32_t n = differing(run(backend, lowered.output, ab), want, ab, backend_name(backend));
+    EXPECT_EQ(n, 0u) << backend_name(backend);
+  }
+}
+
 TEST(RteExact, RoundingTwiceOrWithoutStickyDiffers) {
   REQUIRE_BACKEND(Backend::Vulkan);
   const std::vector<double> ab = make_pairs();
