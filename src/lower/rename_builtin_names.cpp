@@ -60,7 +60,11 @@ bool rename_functions_named_like_builtins(ir::Module& module, Context& ctx) {
   for (const auto& f : module.functions)
     if (f->name != "main") user_functions.insert(f->name);
   if (user_functions.empty()) return true;
-  const std::set<std::string> builtins = builtin_function_names(user_functions, ctx.options.target, stage_of(module));
+  // glslang's ES 1.00 accepts an overload of a built-in name (the probe's) and refuses only a
+  // redefinition, which fp32's demotion makes of `double exp(double)`: ES 1.00 asks ES 3.00's
+  // names (a superset; renaming one more function there is harmless).
+  const Target probe_target = ctx.options.target == Target::Es100 ? Target::Es300 : ctx.options.target;
+  const std::set<std::string> builtins = builtin_function_names(user_functions, probe_target, stage_of(module));
   if (builtins.empty()) return true;
   for (const auto& f : module.functions) taken.insert(f->name);
   for (const auto& g : module.globals) taken.insert(g->name);

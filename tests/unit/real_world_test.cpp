@@ -65,6 +65,22 @@ TEST(RealWorld, UserPreciseIsDroppedWithAWarningWhereTheTargetLacksIt) {
   }
 }
 
+// fp32 demotes `double exp(double)` to `float exp(float)`: a redefinition of ES 1.00's built-in,
+// which glslang refuses there (it accepts overloads, so the rename was skipped): internal error.
+TEST(RealWorld, DemotedOverloadOfABuiltinNameIsRenamedOnEs100) {
+  const char* source = "#version 450\nuniform double s;\nout float shade;\n"
+                       "double exp(double x) { return 1.0lf + x; }\n"
+                       "void main() { shade = float(exp(s)); gl_Position = vec4(0.0); }\n";
+  doublet::Options o;
+  o.stage = Stage::Vertex;
+  o.target = Target::Es100;
+  o.mode = doublet::Mode::Fp32;
+  const doublet::Result r = doublet::lower(source, o);
+  expect_no_internal_error(r);
+  EXPECT_TRUE(r.ok) << messages(r);
+  EXPECT_NE(r.output.find("float exp_user(float x)"), std::string::npos) << r.output;
+}
+
 }  // namespace
 
 namespace {

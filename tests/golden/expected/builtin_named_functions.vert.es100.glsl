@@ -222,16 +222,16 @@ attribute vec4 position;
 varying float shade;
 df_double mix_user;
 
-df_double exp(df_double x);
-float mix(float a, float b);
+df_double exp_user(df_double x);
+float mix_user2(float a, float b);
 df_double distance2(df_double a, df_double b);
 
-df_double exp(df_double x)
+df_double exp_user(df_double x)
 {
   return df_add(df_add_f(x, 1.0), df_mul(df_mul_pow2(x, 0.5), x));
 }
 
-float mix(float a, float b)
+float mix_user2(float a, float b)
 {
   return 0.5 * (a + b);
 }
@@ -245,6 +245,6 @@ void main()
 {
   scale = df_double(scale_hi, scale_lo);
   mix_user = scale;
-  shade = mix(df_to_float(exp(scale)), df_to_float(distance2(mix_user, df_double(1.0, 0.0))));
+  shade = mix_user2(df_to_float(exp_user(scale)), df_to_float(distance2(mix_user, df_double(1.0, 0.0))));
   gl_Position = position;
 }
