@@ -392,6 +392,10 @@ class Printer {
       case ir::Base::Uint: return std::to_string(v.i) + "u";
       case ir::Base::Float: return float_literal(static_cast<float>(v.d));
       case ir::Base::Double: {  // only mode native keeps doubles
+        // GLSL has no infinity or NaN literal; glslang folds these divisions to them (`1e+309` in
+        // glslang's own stringToDouble.vert printed as `inf.0lf` before).
+        if (std::isinf(v.d)) return v.d > 0 ? "(1.0lf / 0.0lf)" : "(-1.0lf / 0.0lf)";
+        if (std::isnan(v.d)) return "(0.0lf / 0.0lf)";
         char buf[40];
         std::snprintf(buf, sizeof buf, "%.17g", v.d);
         std::string s = buf;
