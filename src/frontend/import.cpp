@@ -4,6 +4,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <optional>
@@ -458,6 +459,7 @@ class Importer {
       auto e = make(ir::Expr::Kind::Call, a);
       e->name = demangle(a->getName());
       e->args = std::move(args);
+      calls_.emplace(a->getName().c_str(), std::make_pair(a->getLoc(), e));  // the first call of each overload
       return e;
     }
     if (op > EOpConstructGuardStart && op < EOpConstructGuardEnd) {
@@ -606,6 +608,27 @@ class Importer {
           }
     f->body = seq.size() > 1 ? block(seq[1]) : ir::Stmt::make(ir::Stmt::Kind::Block);
     module_.functions.push_back(f);
+    defined_.insert(a->getName().c_str());
+  }
+
+  // glslang accepts a call of a function that is only declared (its body may come from another
+  // compilation unit at link time, as in its own link.* tests); the lowered shader stands alone, so
+  // that call would only fail doublet's re-validation (an internal error before).
+  void refuse_calls_without_bodies() {
+    std::vector<std::pair<TSourceLoc, ir::ExprPtr>> missing;
+    for (const auto& [mangled, call] : calls_)
+      if (!defined_.count(mangled)) missing.push_back(call);
+    std::sort(missing.begin(), missing.end(), [](const auto& a, const auto& b) {
+      return std::make_pair(a.first.line, a.first.column) < std::make_pair(b.first.line, b.first.column);
+    });
+    for (const auto& call : missing) {
+      const ir::Expr& e = *call.second;
+      std::string signature = e.name + "(";
+      for (size_t i = 0; i < e.args.size(); ++i) signature += (i ? ", " : "") + ir::type_name(e.args[i]->type);
+      signature += ")";
+      error(call.first, "'" + signature + "' is declared but has no body in this shader: doublet lowers a "
+                        "shader on its own, so a function's body cannot come from another compilation unit");
+    }
   }
 
   void global_symbol(TIntermSymbol* sym) {
@@ -664,6 +687,8 @@ class Importer {
   std::map<std::string, std::shared_ptr<std::vector<ir::Field>>> structs_;
   std::unordered_map<const ir::Var*, size_t> global_index_;  // position in module_.globals
   std::set<std::string> reported_;  // diagnostics given once per kind
+  std::set<std::string> defined_;    // mangled names of the functions with a body
+  std::map<std::string, std::pair<TSourceLoc, ir::ExprPtr>> calls_;  // mangled name -> first call
 
  public:
   bool failed() const { return failed_; }
@@ -684,6 +709,7 @@ bool Importer::run(TIntermediate& intermediate) {
   }
   linker_objects(root);
   top_level(root);
+  refuse_calls_without_bodies();
   if (module_.stage == ir::StageKind::Compute)
     for (int i = 0; i < 3; ++i) module_.local_size[i] = static_cast<int>(intermediate.getLocalSize(i));
   return !failed_;

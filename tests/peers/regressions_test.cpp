@@ -47,3 +47,36 @@ void main() {
 }
 
 }  // namespace
+
+namespace {
+
+// missingBodies.vert, link.*.vert, recurse1.frag, spv.unit1.frag, ...: glslang accepts a call of a
+// function declared without a body (the body may come from another compilation unit at link time);
+// the lowered shader failed re-validation ("no matching overloaded function found": internal error).
+// Now each call of an overload without a body is refused where it is.
+TEST(PeerRegressions, CallOfAFunctionWithoutBodyIsRefusedAtTheCall) {
+  const char* shader = R"(#version 450
+layout(location = 0) out vec4 color;
+uniform double u;
+double scale(double x);
+float scale(float x) { return 2.0 * x; }
+double global_value();
+double g = global_value();
+void main() {
+  double s = scale(u);
+  color = vec4(float(s + g), scale(1.0), 0.0, 1.0);
+}
+)";
+  for (Target t : {Target::Es300, Target::Glsl450}) {
+    Result r = lower(shader, options(Stage::Fragment, t));
+    ASSERT_FALSE(r.ok) << r.output;
+    const std::string m = messages(r);
+    EXPECT_NE(m.find("peer.glsl:7:25: error: 'global_value()' is declared but has no body in this shader"),
+              std::string::npos) << m;
+    EXPECT_NE(m.find("peer.glsl:9:21: error: 'scale(double)' is declared but has no body"), std::string::npos) << m;
+    EXPECT_EQ(m.find("scale(float)"), std::string::npos) << m;  // that overload has its body
+    EXPECT_EQ(m.find("internal error"), std::string::npos) << m;
+  }
+}
+
+}  // namespace
