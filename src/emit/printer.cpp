@@ -81,6 +81,9 @@ class Printer {
       case Target::Glsl450: out_ << "#version 450 core\n"; break;
     }
     for (const auto& e : options_.extensions) out_ << "#extension " << e << " : require\n";
+    for (const auto& e : options_.user_extensions)
+      if (std::find(options_.extensions.begin(), options_.extensions.end(), e) == options_.extensions.end())
+        out_ << "#extension " << e << " : enable\n";
     out_ << "precision highp float;\nprecision highp int;\n";
     if (es_ && version_ >= 300) {
       std::set<std::string> opaque;

@@ -80,3 +80,73 @@ void main() {
 }
 
 }  // namespace
+
+namespace {
+
+// spv.subgroup.frag, spv.drawParams.vert, spv.multiView.frag, ... (about 30 files): the shader's
+// #extension directives were dropped, so its uses of their built-ins failed re-validation
+// ("required extension not requested": internal error). They are carried now, except to WebGL,
+// whose shaders enable none (refused there at the use).
+TEST(PeerRegressions, TheShadersExtensionsAreCarriedIntoTheOutput) {
+  const char* shader = R"(#version 450
+#extension GL_KHR_shader_subgroup_basic : enable
+#extension GL_ARB_gpu_shader_fp64 : enable
+layout(location = 0) out vec4 color;
+uniform double u;
+void main() {
+  color = vec4(float(u * 3.0lf), float(gl_SubgroupSize), 0.0, 1.0);
+}
+)";
+  for (Target t : {Target::Es310, Target::Glsl450}) {
+    Result r = lower(shader, options(Stage::Fragment, t));
+    ASSERT_TRUE(r.ok) << to_string(t) << "\n" << messages(r);
+    EXPECT_NE(r.output.find("#extension GL_KHR_shader_subgroup_basic : enable\n"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("GL_ARB_gpu_shader_fp64"), std::string::npos) << r.output;  // no double left
+  }
+  Result web = lower(shader, options(Stage::Fragment, Target::Webgl2));
+  ASSERT_FALSE(web.ok) << web.output;
+  const std::string m = messages(web);
+  EXPECT_NE(m.find("peer.glsl:7:"), std::string::npos) << m;
+  EXPECT_NE(m.find("gl_SubgroupSize"), std::string::npos) << m;
+  EXPECT_EQ(m.find("internal error"), std::string::npos) << m;
+}
+
+// spv.dead-after-return.vert, GL_ARB_draw_instanced.vert, spv.150.vert, ...: desktop constructs
+// an ES target lacks (a non-flat `out int`, a vertex input array, a struct output holding a struct)
+// failed re-validation: internal errors. glslang says the same of the user's own text compiled as
+// the target, so they are refused at the user's line with glslang's words.
+TEST(PeerRegressions, WhatTheTargetLacksInTheUsersOwnTextIsRefusedAtItsLine) {
+  const char* input_array = R"(#version 450
+uniform double u;
+layout(location = 0) in vec4 weights[2];
+void main() {
+  gl_Position = (weights[0] + weights[1]) * float(u);
+}
+)";
+  const char* int_output = R"(#version 450
+uniform double u;
+layout(location = 0) out int id;
+void main() {
+  id = int(u);
+  gl_Position = vec4(0.0);
+}
+)";
+  const std::pair<const char*, const char*> cases[] = {
+      {input_array, "peer.glsl:3:1: error: target es300 does not allow this (glslang, compiling the shader itself as "
+                    "es300: 'vertex input arrays' : not supported with this profile: es); change it, or choose a "
+                    "target that allows it"},
+      {int_output, "peer.glsl:3:26: error: target es300 does not allow this (glslang, compiling the shader itself as "
+                   "es300: 'int' : must be qualified as flat out)"}};
+  for (const auto& [shader, expected] : cases) {
+    Result r = lower(shader, options(Stage::Vertex, Target::Es300));
+    ASSERT_FALSE(r.ok) << r.output;
+    const std::string m = messages(r);
+    EXPECT_NE(m.find(expected), std::string::npos) << m;
+    EXPECT_EQ(m.find("internal error"), std::string::npos) << m;
+    // The same shader for a desktop target lowers.
+    Result desktop = lower(shader, options(Stage::Vertex, Target::Glsl450));
+    EXPECT_TRUE(desktop.ok) << messages(desktop);
+  }
+}
+
+}  // namespace
