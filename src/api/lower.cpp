@@ -207,33 +207,46 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
   // Only the main file is recompiled: a shader with #include keeps the internal error.
   frontend::LogicalLines lines(source);
   std::string_view logical, rest;
-  int version_line = 0;
+  int version_line = 0, last_extension_line = 0;
   std::set<int> extension_lines;  // WebGL: none in the shader (carried_extensions)
   while (lines.next(logical)) {
     const std::string_view name = frontend::directive_name(logical, rest);
     if (name == "include") return false;
     if (name == "version" && version_line == 0) version_line = lines.line();
-    if (name == "extension" && options.target == Target::Webgl2) extension_lines.insert(lines.line());
+    if (name == "extension") {
+      last_extension_line = lines.line();
+      if (options.target == Target::Webgl2) extension_lines.insert(lines.line());
+    }
   }
   if (version_line == 0) return false;
+  // What an ES target needs before the user's code, after the #version and #extension lines (which
+  // must come first), then `#line` so that the user's line numbers stay (ES and 3.30+: #line N
+  // numbers the next line N).
+  const int prelude_after = std::max(version_line, last_extension_line);
+  std::string prelude = "#define double float\n";  // ES stops at the reserved word `double`
+  for (const char* n : {"2", "3", "4"}) {
+    prelude += std::string("#define dvec") + n + " vec" + n + "\n#define dmat" + n + " mat" + n + "\n";
+    for (const char* m : {"2", "3", "4"}) prelude += std::string("#define dmat") + n + "x" + m + " mat" + n + "x" + m + "\n";
+  }
+  for (const auto& [name, value] : options.defines) prelude += "#define " + name + " " + value + "\n";
+  if (target_is_es(options.target)) {
+    prelude += "precision highp float;\nprecision highp int;\n";  // desktop shaders declare none
+    if (target_version(options.target) >= 300)
+      for (const char* t : {"sampler3D", "samplerCubeShadow", "sampler2DShadow", "sampler2DArray", "sampler2DArrayShadow",
+                            "isampler2D", "isampler3D", "isamplerCube", "isampler2DArray", "usampler2D", "usampler3D",
+                            "usamplerCube", "usampler2DArray"})
+        prelude += std::string("precision highp ") + t + ";\n";
+  }
+  prelude += "#line " + std::to_string(prelude_after + 1) + "\n";
   const frontend::LineIndex index(source);
   std::string text;
   for (int n = 1; n <= index.line_count(); ++n) {
-    if (n != version_line) {
+    if (n == version_line)
+      text += "#version " + std::to_string(target_version(options.target)) +
+              (target_is_es(options.target) ? (target_version(options.target) == 100 ? "" : " es") : " core") + "\n";
+    else
       text += extension_lines.count(n) ? "\n" : std::string(index.line(n)) + "\n";
-      continue;
-    }
-    text += "#version " + std::to_string(target_version(options.target)) +
-            (target_is_es(options.target) ? (target_version(options.target) == 100 ? "" : " es") : " core") + "\n";
-    // Doubles as floats: an ES target stops at the reserved word `double` before the construct in
-    // question; the double types are doublet's business anyway.
-    text += "#define double float\n";
-    for (const char* n : {"2", "3", "4"}) {
-      text += std::string("#define dvec") + n + " vec" + n + "\n#define dmat" + n + " mat" + n + "\n";
-      for (const char* m : {"2", "3", "4"}) text += std::string("#define dmat") + n + "x" + m + " mat" + n + "x" + m + "\n";
-    }
-    for (const auto& [name, value] : options.defines) text += "#define " + name + " " + value + "\n";
-    text += "#line " + std::to_string(n + 1) + "\n";  // ES and 3.30+: the number of the next line
+    if (n == prelude_after) text += prelude;
   }
   const auto original = main_string_errors(emit::validate(text, *options.stage, options.target));
   std::set<std::string> original_messages;

@@ -225,7 +225,11 @@ class Importer {
 
   // ---- variables ---------------------------------------------------------
   ir::VarPtr var_for(const TIntermSymbol& sym) {
-    auto it = vars_.find(sym.getId());
+    // An unnamed parameter (`float bar(int) { ... }`) has no symbol id of its own: every one
+    // shared the first one's variable, so bar's int parameter was printed as the float of an
+    // earlier function's (glslang's recurse1.vert: an internal error on ES). Each gets its own.
+    const bool unnamed = sym.getName().empty();
+    auto it = unnamed ? vars_.end() : vars_.find(sym.getId());
     if (it != vars_.end()) {
       if (it->second->loc.line == 0) it->second->loc = loc_of(sym.getLoc());  // linker objects carry no place
       return it->second;
@@ -254,7 +258,7 @@ class Importer {
       v->loc = loc_of(sym.getType().getStruct()->front().loc);  // a block from the linker objects: its first member
     else if (v->loc.line == 0)
       v->loc = global_declaration(v->name);
-    vars_[sym.getId()] = v;
+    if (!unnamed) vars_[sym.getId()] = v;
     if (v->storage == ir::Storage::Const && sym.getConstArray().size() > 0) {
       // A constant array/struct indexed dynamically: glslang keeps the symbol
       // but not the declaration; declare it from its folded value.
@@ -617,7 +621,8 @@ class Importer {
   void refuse_calls_without_bodies() {
     std::vector<std::pair<TSourceLoc, ir::ExprPtr>> missing;
     for (const auto& [mangled, call] : calls_)
-      if (!defined_.count(mangled)) missing.push_back(call);
+      if (!defined_.count(mangled) && !(transcendentals && is_transcendental_name(call.second->name)))
+        missing.push_back(call);  // the transcendental prototypes are doublet's (mark_transcendental_calls)
     std::sort(missing.begin(), missing.end(), [](const auto& a, const auto& b) {
       return std::make_pair(a.first.line, a.first.column) < std::make_pair(b.first.line, b.first.column);
     });
@@ -691,6 +696,7 @@ class Importer {
   std::map<std::string, std::pair<TSourceLoc, ir::ExprPtr>> calls_;  // mangled name -> first call
 
  public:
+  bool transcendentals = false;  // parsed with the transcendental prototypes
   bool failed() const { return failed_; }
   void linker_objects(TIntermAggregate* root) {
     for (TIntermNode* n : root->getSequence())
@@ -725,6 +731,7 @@ bool import_module(const ParsedShader& parsed, const Options& options, ir::Modul
   out.source_version = parsed.info.version;
   out.source_es = parsed.info.es;
   Importer importer(options, parsed.source, out, diagnostics);
+  importer.transcendentals = parsed.transcendentals;
   if (!importer.run(*parsed.intermediate)) return false;
   if (parsed.transcendentals) mark_transcendental_calls(out);
   return place_declarations(out, options, diagnostics);

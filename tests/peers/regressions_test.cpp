@@ -150,3 +150,29 @@ void main() {
 }
 
 }  // namespace
+
+namespace {
+
+// recurse1.vert: unnamed parameters (`float bar(int) { ... }`) have no symbol id of their own, so
+// every one became the first one's variable: bar's int parameter was printed as an earlier
+// function's float, and on ES the call bar(2) no longer matched (internal error).
+TEST(PeerRegressions, EachUnnamedParameterKeepsItsOwnType) {
+  const char* shader = R"(#version 310 es
+precision highp float;
+layout(location = 0) out vec4 color;
+uniform double u;
+float first(float) { return 1.0; }
+float second(int) { return 2.0; }
+double third(double, double b) { return b * u; }
+void main() {
+  color = vec4(first(0.5), second(2), float(third(u, u)), 1.0);
+}
+)";
+  for (Target t : {Target::Es310, Target::Glsl450}) {
+    Result r = lower(shader, options(Stage::Fragment, t));
+    ASSERT_TRUE(r.ok) << to_string(t) << "\n" << messages(r);
+    EXPECT_NE(r.output.find("float second(int "), std::string::npos) << r.output;
+  }
+}
+
+}  // namespace
