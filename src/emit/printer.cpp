@@ -305,10 +305,17 @@ class Printer {
   }
 
   std::string signature(const ir::Function& f) {
-    std::string s = ir::type_name(f.return_type) + " " + f.name + "(";
+    // An array return type keeps its size (`float[4] foo(...)`: printed `float foo` before, web.array.frag).
+    std::string s = ir::type_name(f.return_type) + ir::array_suffix(f.return_type) + " " + f.name + "(";
     for (size_t i = 0; i < f.params.size(); ++i) {
       const auto& p = *f.params[i];
       if (i) s += ", ";
+      // An image argument may not drop a memory qualifier (spv.paramMemory.frag, reflection.vert).
+      if (p.coherent) s += "coherent ";
+      if (p.volatile_) s += "volatile ";
+      if (p.restrict_) s += "restrict ";
+      if (p.readonly) s += "readonly ";
+      if (p.writeonly) s += "writeonly ";
       if (p.storage == ir::Storage::ParamOut) s += "out ";
       if (p.storage == ir::Storage::ParamInOut) s += "inout ";
       s += declarator(p.type, p.name);

@@ -176,3 +176,34 @@ void main() {
 }
 
 }  // namespace
+
+namespace {
+
+// web.array.frag, spv.AofA.frag: a function returning an array was printed without the array
+// size (`float foo(...)` for `float[4] foo(...)`); spv.paramMemory.frag, reflection.vert: an
+// image parameter lost its memory qualifiers, and glslang refuses a call that drops one. Both were
+// internal errors on every target.
+TEST(PeerRegressions, ArrayReturnTypesAndParameterMemoryQualifiersArePrinted) {
+  const char* shader = R"(#version 310 es
+precision highp float;
+layout(binding = 0, rgba32f) coherent writeonly uniform highp image2D img;
+layout(location = 0) out vec4 color;
+uniform double u;
+double[2] pair(double a) { return double[](a, 2.0lf * a); }
+void store(coherent writeonly highp image2D i, vec4 v) { imageStore(i, ivec2(0), v); }
+void main() {
+  double p[2] = pair(u);
+  store(img, vec4(float(p[1])));
+  color = vec4(float(p[0]));
+}
+)";
+  for (Target t : {Target::Es310, Target::Glsl450})
+    for (Mode m : {Mode::Df64, Mode::Fp32, Mode::Exact}) {
+      Result r = lower(shader, options(Stage::Fragment, t, m));
+      ASSERT_TRUE(r.ok) << to_string(t) << " " << to_string(m) << "\n" << messages(r);
+      EXPECT_NE(r.output.find("[2] pair("), std::string::npos) << r.output;
+      EXPECT_NE(r.output.find("void store(coherent writeonly "), std::string::npos) << r.output;
+    }
+}
+
+}  // namespace
