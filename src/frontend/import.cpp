@@ -122,6 +122,7 @@ class Importer {
       case EbtBlock: {
         out.base = t.getBasicType() == EbtStruct ? ir::Base::Struct : ir::Base::Block;
         out.name = t.getTypeName().c_str();
+        if (out.base == ir::Base::Struct && out.name.empty()) out.name = anonymous_struct_name(t.getStruct());
         out.fields = struct_fields(t, loc, out.base == ir::Base::Struct);
         break;
       }
@@ -154,6 +155,7 @@ class Importer {
 
   std::shared_ptr<std::vector<ir::Field>> struct_fields(const TType& t, const TSourceLoc& loc, bool is_struct) {
     std::string name = t.getTypeName().c_str();
+    if (is_struct && name.empty()) name = anonymous_struct_name(t.getStruct());
     if (is_struct) {
       auto it = structs_.find(name);
       if (it != structs_.end()) return it->second;
@@ -177,6 +179,21 @@ class Importer {
     }
     return fields;
   }
+
+  // `struct { float r; } parts[2];` has no type name: printed as an empty name (`uniform void
+  // parts[2]`, spv.uniformInitializerStruct.frag), and every anonymous struct shared the first
+  // one's fields. Each gets a name of its own that the main file does not use.
+  std::string anonymous_struct_name(const TTypeList* members) {
+    auto it = anonymous_structs_.find(members);
+    if (it != anonymous_structs_.end()) return it->second;
+    std::string name;
+    for (int n = static_cast<int>(anonymous_structs_.size()) + 1;; ++n) {
+      name = "anonymous_struct" + std::to_string(n);
+      if (source_.find(name) == std::string_view::npos) break;
+    }
+    return anonymous_structs_[members] = name;
+  }
+  std::map<const TTypeList*, std::string> anonymous_structs_;
 
   static ir::Layout import_layout(const TQualifier& q) {
     ir::Layout l;
@@ -641,6 +658,18 @@ class Importer {
     if (name.rfind("gl_", 0) == 0) return;
     if (sym->getBasicType() == EbtBlock && std::string(sym->getType().getTypeName().c_str()).rfind("gl_", 0) == 0)
       return;  // built-in blocks (gl_PerVertex)
+    // A uniform's initializer (desktop 4.30+: its value until the application sets one) lives in
+    // the symbol's constant, not in the tree, and was silently dropped: the lowered shader read 0
+    // (spv.uniformInitializerStruct.frag). Refused until it is carried.
+    if (sym->getQualifier().storage == EvqUniform && sym->getConstArray().size() > 0 &&
+        reported_.insert("uniform initializer " + name).second) {
+      const ir::Loc at = sym->getLoc().line ? loc_of(sym->getLoc()) : global_declaration(name);  // linker objects carry no place
+      diags_.push_back({options_.file_name, at.line, at.column, Severity::Error,
+            "uniform '" + name + "' has an initializer (its value until the application sets one): doublet does "
+            "not carry uniform initializers, and the lowered uniform would start at 0; remove the initializer "
+            "and set the value from the application"});
+      failed_ = true;
+    }
     ir::VarPtr v = var_for(*sym);
     if (!global_index_.emplace(v.get(), module_.globals.size()).second) return;
     if (v->storage == ir::Storage::Local) v->storage = ir::Storage::Global;  // a global `const` with a run-time value

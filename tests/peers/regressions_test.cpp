@@ -207,3 +207,48 @@ void main() {
 }
 
 }  // namespace
+
+namespace {
+
+// spv.uniformInitializerStruct.frag: an anonymous struct type was printed with an empty name
+// (`uniform void parts[2]`: internal error), and every anonymous struct shared the first one's
+// fields. Each gets a name of its own.
+TEST(PeerRegressions, AnonymousStructsGetNamesOfTheirOwn) {
+  const char* shader = R"(#version 310 es
+precision highp float;
+layout(location = 0) out vec4 color;
+uniform double u;
+struct { float r; double d; } a;
+struct { int n; } b[2];
+void main() {
+  a.r = 1.0; a.d = u; b[1].n = 3;
+  color = vec4(a.r, float(a.d), float(b[1].n), 1.0);
+}
+)";
+  for (Mode m : {Mode::Df64, Mode::Fp32, Mode::Exact}) {
+    Result r = lower(shader, options(Stage::Fragment, Target::Es310, m));
+    ASSERT_TRUE(r.ok) << to_string(m) << "\n" << messages(r);
+    EXPECT_NE(r.output.find("anonymous_struct1"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("anonymous_struct2 b[2]"), std::string::npos) << r.output;
+  }
+}
+
+// The same file's `uniform struct {...} parts[2] = {...};`: a uniform's initializer (its default
+// value, desktop 4.30+) was silently dropped, so the lowered uniform read 0. Refused now.
+TEST(PeerRegressions, UniformInitializersAreRefusedNotDropped) {
+  const char* shader = R"(#version 450
+layout(location = 0) out vec4 color;
+layout(location = 0) uniform float k = 2.0;
+layout(location = 1) uniform double d = 3.0lf;
+void main() { color = vec4(k, float(d), 0.0, 1.0); }
+)";
+  for (Mode m : {Mode::Df64, Mode::Native}) {
+    Result r = lower(shader, options(Stage::Fragment, Target::Glsl450, m));
+    ASSERT_FALSE(r.ok) << r.output;
+    const std::string msg = messages(r);
+    EXPECT_NE(msg.find("peer.glsl:3:36: error: uniform 'k' has an initializer"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("peer.glsl:4:37: error: uniform 'd' has an initializer"), std::string::npos) << msg;
+  }
+}
+
+}  // namespace
