@@ -35,9 +35,34 @@ const std::string kDir = DOUBLET_GLSLANG_TESTS;
 const Target kTargets[] = {Target::Es310, Target::Glsl450, Target::Es300, Target::Webgl2};
 constexpr int kHangSeconds = 60;  // one lowering; the largest of these files takes well under 1 s
 
-// Internal errors found by this sweep and not fixed yet, as "FILE MODE TARGET". Each must still
-// fail (so its fix shows up here and the line is deleted); docs/robustness.md lists them.
+// Internal errors found by this sweep and not fixed yet, as "FILE TARGET" (the same in every mode;
+// mode native runs glsl450 only). Each must still fail (so its fix shows up here and the line is
+// deleted); docs/robustness.md, "glslang's test suite", lists them.
 const std::set<std::string> kKnown = {
+    // An ES 1.00 loop index into a sampler array (ES 1.00 allows it, 3.x does not); the shader is
+    // not valid ES 3.x for other reasons, so the refusal cannot be put on the user's line.
+    "100Limits.vert es300", "100Limits.vert es310", "100Limits.vert webgl2",
+    // An implicitly sized array (sized by its largest constant index) is printed unsized.
+    "310implicitSizeArrayError.vert es300", "310implicitSizeArrayError.vert webgl2",
+    "spv.nonuniform5.frag es300", "spv.nonuniform5.frag webgl2",
+    "spv.140.frag glsl450",  // the same, indexed with a variable
+    // ES lacks vertex input arrays, variable-indexed fragment output arrays, flat struct outputs,
+    // arrays of arrays (3.00), gl_SampleMask without GL_OES_sample_variables (3.10), multiview on
+    // WebGL; glslang stops on the user's text compiled as ES before it reaches the construct.
+    "spv.430.vert es300", "spv.430.vert es310", "spv.430.vert webgl2",
+    "spv.simpleMat.vert es300", "spv.simpleMat.vert es310", "spv.simpleMat.vert webgl2",
+    "spv.accessChain.frag es300", "spv.accessChain.frag es310", "spv.accessChain.frag webgl2",
+    "spv.noLocation.vert es300", "spv.noLocation.vert webgl2",
+    "spv.shaderDrawParams.vert es300", "spv.shaderDrawParams.vert webgl2",
+    "spv.sampleMaskOverrideCoverage.frag es310",
+    "spv.OVR_multiview.vert webgl2",
+    // pervertexEXT input arrays: "overlapping use of location 1" in the lowered text.
+    "spv.fragmentShaderBarycentric2.frag es310", "spv.fragmentShaderBarycentric2.frag glsl450",
+    "spv.fragmentShaderBarycentric4.frag es310", "spv.fragmentShaderBarycentric4.frag glsl450",
+    // glslang's hidden temporaries for converted out arguments (tempReturn, tempArg) are used but
+    // never declared in the lowered text.
+    "spv.functionSemantics.frag es300", "spv.functionSemantics.frag es310", "spv.functionSemantics.frag glsl450",
+    "spv.functionSemantics.frag webgl2",
 };
 
 std::optional<Stage> stage_of(const std::string& name) {
@@ -203,29 +228,34 @@ TEST_P(GlslangSuite, EveryShaderLowersOrIsRefusedNeverInternally) {
 
   std::map<Target, std::map<Outcome, int>> counts;
   std::set<std::string> known_seen;
+  std::map<Target, int> known_bad;  // of the internal errors, those listed in kKnown
   for (const Record& r : records) {
     counts[r.target][r.outcome] += 1;
-    const std::string key = r.file + " " + std::string(to_string(mode)) + " " + std::string(to_string(r.target));
+    const std::string key = r.file + " " + std::string(to_string(r.target));
     const bool bad = r.outcome != Outcome::Lowered && r.outcome != Outcome::Refused;
     if (kKnown.count(key)) {
       known_seen.insert(key);
-      EXPECT_TRUE(bad) << key << ": " << outcome_name(r.outcome) << " now; delete its kKnown line";
+      // Mode native refuses every ES target up front (no doubles there).
+      if (mode != Mode::Native || r.target == Target::Glsl450)
+        EXPECT_TRUE(bad) << key << " --mode " << to_string(mode) << ": " << outcome_name(r.outcome)
+                         << " now; delete its kKnown line";
+      if (bad) known_bad[r.target] += 1;
       continue;
     }
     EXPECT_FALSE(bad) << "doublet lower build/peers/glslang-Test/" << r.file << " --mode " << to_string(mode)
                       << " --target " << to_string(r.target) << ": " << outcome_name(r.outcome) << ": " << r.detail;
   }
   for (const std::string& k : kKnown)
-    if (k.find(" " + std::string(to_string(mode)) + " ") != std::string::npos && !known_seen.count(k))
+    if ((mode != Mode::Native || k.find(" glsl450") != std::string::npos) && !known_seen.count(k))
       ADD_FAILURE() << k << ": listed in kKnown but not swept (file renamed?)";
 
   std::printf("[ glslang ] %zu shaders (%d of other stages not lowered), --mode %s, %.1f s\n", names.size(), others,
               std::string(to_string(mode)).c_str(), seconds);
   for (Target t : kTargets) {
     auto& c = counts[t];
-    std::printf("[ glslang ]   %-8s %4d lowered, %4d refused, %d internal, %d crash, %d hang\n",
+    std::printf("[ glslang ]   %-8s %4d lowered, %4d refused, %d internal (%d known), %d crash, %d hang\n",
                 std::string(to_string(t)).c_str(), c[Outcome::Lowered], c[Outcome::Refused], c[Outcome::Internal],
-                c[Outcome::Crash], c[Outcome::Hang]);
+                known_bad[t], c[Outcome::Crash], c[Outcome::Hang]);
   }
   // Every outcome as "FILE MODE TARGET OUTCOME DETAIL" lines, for reading the refusals.
   if (const char* report = std::getenv("DOUBLET_PEERS_REPORT")) {
