@@ -13,6 +13,7 @@
 
 #include "frontend/builtin_names.hpp"
 #include "frontend/declarations.hpp"
+#include "frontend/text_scan.hpp"
 
 namespace doublet::frontend {
 namespace {
@@ -179,6 +180,38 @@ class Importer {
     }
     return fields;
   }
+
+  // glslang keeps no name for the built-ins doublet does not import (subgroupBarrier(),
+  // memoryBarrierAtomicCounter(), textureProjLodOffset(...): "unsupported built-in operation" named
+  // none, for 56 of glslang's test files). Its place is the call's closing parenthesis (or, with
+  // one argument, the argument): the name is the identifier before the '(' on that line.
+  std::string unsupported_call_message(const TSourceLoc& loc, const char* fallback) {
+    const std::string file = loc.name ? loc.name->c_str() : "";
+    if ((!file.empty() && file != "0" && file != options_.file_name) || loc.line <= 0 || loc.column <= 0)
+      return fallback;  // in an #included file
+    if (!line_index_) line_index_.emplace(source_);
+    const std::string_view row = line_index_->line(loc.line);
+    const size_t at = static_cast<size_t>(loc.column - 1);
+    if (at >= row.size()) return fallback;
+    size_t open = at + 1;
+    if (row[at] == ')') {  // a call of several arguments (or none): at its ')'
+      int depth = 0;
+      for (size_t i = at + 1; i-- > 0;) {
+        if (row[i] == ')') ++depth;
+        if (row[i] == '(' && --depth == 0) { open = i; break; }
+      }
+    } else if (at > 0 && row[at - 1] == '(') {  // a call of one argument: at the argument
+      open = at - 1;
+    }
+    if (open > at) return fallback;
+    size_t end = open;
+    while (end > 0 && is_blank(row[end - 1])) --end;
+    size_t begin = end;
+    while (begin > 0 && is_word_char(row[begin - 1])) --begin;
+    if (begin == end || is_digit(row[begin])) return fallback;
+    return "built-in function '" + std::string(row.substr(begin, end - begin)) + "' is not supported by doublet";
+  }
+  std::optional<LineIndex> line_index_;
 
   // `struct { float r; } parts[2];` has no type name: printed as an empty name (`uniform void
   // parts[2]`, spv.uniformInitializerStruct.frag), and every anonymous struct shared the first
@@ -465,7 +498,7 @@ class Importer {
       e->args = {expr(u->getOperand())};
       return e;
     }
-    error(u->getLoc(), "unsupported operation");
+    error(u->getLoc(), unsupported_call_message(u->getLoc(), "unsupported operation"));
     return make(ir::Expr::Kind::Const, u);
   }
 
@@ -496,7 +529,7 @@ class Importer {
     const char* name = builtin_function_name(op, static_cast<int>(args.size()));
     if (!name) {
       std::string mangled = a->getName().c_str();
-      error(a->getLoc(), mangled.empty() ? std::string("unsupported built-in operation")
+      error(a->getLoc(), mangled.empty() ? unsupported_call_message(a->getLoc(), "unsupported built-in operation")
                                          : "built-in function '" + demangle(a->getName()) + "' is not supported");
       return make(ir::Expr::Kind::Const, a);
     }

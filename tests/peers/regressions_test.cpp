@@ -252,3 +252,30 @@ void main() { color = vec4(k, float(d), 0.0, 1.0); }
 }
 
 }  // namespace
+
+namespace {
+
+// glsl.es320.subgroupBasic.comp, spv.atomic.comp, newTexture.frag, 300BuiltIns.frag (56 files):
+// built-ins doublet does not import were refused as "unsupported built-in operation", naming none.
+TEST(PeerRegressions, AnUnsupportedBuiltInIsNamed) {
+  const char* shader = R"(#version 450
+#extension GL_KHR_shader_subgroup_basic : enable
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) buffer B { double d; uint n; };
+void main() {
+  d = d * 2.0lf;
+  subgroupBarrier();
+  n = subgroupElect() ? 1u : 0u;
+  float f = noise1(1.0);
+}
+)";
+  Result r = lower(shader, options(Stage::Compute, Target::Glsl450));
+  ASSERT_FALSE(r.ok) << r.output;
+  const std::string m = messages(r);
+  EXPECT_NE(m.find("peer.glsl:7:19: error: built-in function 'subgroupBarrier' is not supported by doublet"),
+            std::string::npos) << m;
+  EXPECT_NE(m.find("error: built-in function 'subgroupElect' is not supported by doublet"), std::string::npos) << m;
+  EXPECT_NE(m.find("error: built-in function 'noise1' is not supported by doublet"), std::string::npos) << m;
+}
+
+}  // namespace
