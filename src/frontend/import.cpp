@@ -14,6 +14,7 @@
 #include "frontend/builtin_names.hpp"
 #include "frontend/declarations.hpp"
 #include "frontend/text_scan.hpp"
+#include "ir/walk.hpp"
 
 namespace doublet::frontend {
 namespace {
@@ -778,6 +779,15 @@ bool Importer::run(TIntermediate& intermediate) {
   linker_objects(root);
   top_level(root);
   refuse_calls_without_bodies();
+  // glslang's hidden `tempReturn` (an out argument converted after the call: `f(x)` with
+  // `out int` for a float x) is a global it never declares: the lowered text used it undeclared
+  // (spv.functionSemantics.frag, internal error). It lives within one expression: a local, whose
+  // declaration place_declarations then hoists.
+  for (const auto& f : module_.functions)
+    ir::visit(f->body, [&](const ir::ExprPtr& e) {
+      if (e->kind == ir::Expr::Kind::Sym && e->var->storage == ir::Storage::Global && !global_index_.count(e->var.get()))
+        e->var->storage = ir::Storage::Local;
+    });
   if (module_.stage == ir::StageKind::Compute)
     for (int i = 0; i < 3; ++i) module_.local_size[i] = static_cast<int>(intermediate.getLocalSize(i));
   return !failed_;

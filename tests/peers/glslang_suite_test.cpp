@@ -59,10 +59,6 @@ const std::set<std::string> kKnown = {
     // pervertexEXT input arrays: "overlapping use of location 1" in the lowered text.
     "spv.fragmentShaderBarycentric2.frag es310", "spv.fragmentShaderBarycentric2.frag glsl450",
     "spv.fragmentShaderBarycentric4.frag es310", "spv.fragmentShaderBarycentric4.frag glsl450",
-    // glslang's hidden temporaries for converted out arguments (tempReturn, tempArg) are used but
-    // never declared in the lowered text.
-    "spv.functionSemantics.frag es300", "spv.functionSemantics.frag es310", "spv.functionSemantics.frag glsl450",
-    "spv.functionSemantics.frag webgl2",
 };
 
 std::optional<Stage> stage_of(const std::string& name) {

@@ -279,3 +279,29 @@ void main() {
 }
 
 }  // namespace
+
+namespace {
+
+// spv.functionSemantics.frag: an out argument converted after the call (a double variable for an
+// `out float` parameter) goes through glslang's hidden `tempReturn`, a global it never declares:
+// the lowered text used it undeclared (internal error on every target).
+TEST(PeerRegressions, ConvertedOutArgumentsKeepTheirTemporariesDeclared) {
+  const char* shader = R"(#version 450
+layout(location = 0) out vec4 color;
+uniform double u;
+float half_of(double a, out float r) { r = float(a) * 0.5; return 1.0; }
+void main() {
+  double d;
+  float k = half_of(u, d);
+  color = vec4(float(d * u), k, 0.0, 1.0);
+}
+)";
+  for (Target t : {Target::Es310, Target::Glsl450})
+    for (Mode m : {Mode::Df64, Mode::Fp32, Mode::Exact}) {
+      Result r = lower(shader, options(Stage::Fragment, t, m));
+      ASSERT_TRUE(r.ok) << to_string(t) << " " << to_string(m) << "\n" << messages(r);
+      EXPECT_NE(r.output.find("float tempReturn;"), std::string::npos) << r.output;
+    }
+}
+
+}  // namespace
