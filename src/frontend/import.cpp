@@ -704,6 +704,26 @@ class Importer {
             "and set the value from the application"});
       failed_ = true;
     }
+    // Per-vertex and per-primitive qualifiers (barycentric and mesh extensions) are not in the IR:
+    // dropped, `pervertexNV in float a[3]` became an ordinary input whose three locations overlapped
+    // the next one's (spv.fragmentShaderBarycentric2.frag), a different shader.
+    auto per_qualifier = [](const TQualifier& q) -> const char* {
+      return q.pervertexNV ? "pervertexNV" : q.pervertexEXT ? "pervertexEXT" : q.perPrimitiveNV ? "perprimitiveNV"
+             : q.perViewNV ? "perviewNV" : q.perTaskNV ? "taskNV" : nullptr;
+    };
+    auto refuse_per = [&](const char* per, const std::string& what, const TSourceLoc& loc) {
+      if (!reported_.insert(std::string(per) + " " + what).second) return;
+      const ir::Loc at = loc.line ? loc_of(loc) : global_declaration(name);
+      diags_.push_back({ir::file_of(at, options_.file_name), at.line, at.column, Severity::Error,
+                        "'" + what + "' is declared '" + per + "', a qualifier doublet does not carry: the lowered "
+                        "variable would be an ordinary one"});
+      failed_ = true;
+    };
+    if (const char* per = per_qualifier(sym->getQualifier())) refuse_per(per, name, sym->getLoc());
+    if (sym->getBasicType() == EbtBlock && sym->getType().getStruct())
+      for (const TTypeLoc& member : *sym->getType().getStruct())
+        if (const char* per = per_qualifier(member.type->getQualifier()))
+          refuse_per(per, member.type->getFieldName().c_str(), member.loc);
     ir::VarPtr v = var_for(*sym);
     if (!global_index_.emplace(v.get(), module_.globals.size()).second) return;
     if (v->storage == ir::Storage::Local) v->storage = ir::Storage::Global;  // a global `const` with a run-time value

@@ -56,9 +56,6 @@ const std::set<std::string> kKnown = {
     "spv.shaderDrawParams.vert es300", "spv.shaderDrawParams.vert webgl2",
     "spv.sampleMaskOverrideCoverage.frag es310",
     "spv.OVR_multiview.vert webgl2",
-    // pervertexEXT input arrays: "overlapping use of location 1" in the lowered text.
-    "spv.fragmentShaderBarycentric2.frag es310", "spv.fragmentShaderBarycentric2.frag glsl450",
-    "spv.fragmentShaderBarycentric4.frag es310", "spv.fragmentShaderBarycentric4.frag glsl450",
 };
 
 std::optional<Stage> stage_of(const std::string& name) {

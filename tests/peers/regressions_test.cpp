@@ -305,3 +305,29 @@ void main() {
 }
 
 }  // namespace
+
+namespace {
+
+// spv.fragmentShaderBarycentric2/4.frag, spv.perprimitiveNV.frag: per-vertex and per-primitive
+// qualifiers were dropped, so `pervertexEXT in float a[3]` became an ordinary input (its three
+// locations then overlapped the next input's: internal error; alone it was a different shader).
+TEST(PeerRegressions, PerVertexAndPerPrimitiveQualifiersAreRefusedNotDropped) {
+  const char* shader = R"(#version 450
+#extension GL_EXT_fragment_shader_barycentric : require
+#extension GL_NV_mesh_shader : require
+layout(location = 0) pervertexEXT in float ids[3];
+layout(location = 4) in B { perprimitiveNV float f; };
+layout(location = 0) out float value;
+uniform double u;
+void main() { value = float(u) * (gl_BaryCoordEXT.x * ids[0] + f); }
+)";
+  Result r = lower(shader, options(Stage::Fragment, Target::Glsl450));
+  ASSERT_FALSE(r.ok) << r.output;
+  const std::string m = messages(r);
+  EXPECT_NE(m.find("peer.glsl:4:"), std::string::npos) << m;
+  EXPECT_NE(m.find("'ids' is declared 'pervertexEXT', a qualifier doublet does not carry"), std::string::npos) << m;
+  EXPECT_NE(m.find("'f' is declared 'perprimitiveNV'"), std::string::npos) << m;
+  EXPECT_EQ(m.find("internal error"), std::string::npos) << m;
+}
+
+}  // namespace
