@@ -42,10 +42,14 @@ const std::set<std::string> kKnown = {
     // An ES 1.00 loop index into a sampler array (ES 1.00 allows it, 3.x does not); the shader is
     // not valid ES 3.x for other reasons, so the refusal cannot be put on the user's line.
     "100Limits.vert es300", "100Limits.vert es310", "100Limits.vert webgl2",
-    // An implicitly sized array (sized by its largest constant index) is printed unsized.
+    // A block member array sized only by its uses (glslang refuses it at link time) is printed unsized.
     "310implicitSizeArrayError.vert es300", "310implicitSizeArrayError.vert webgl2",
+    // An unsized uniform block array (a Vulkan descriptor array) ES 3.00 lacks; compiled as ES,
+    // the user's text stops at its #extension line first.
     "spv.nonuniform5.frag es300", "spv.nonuniform5.frag webgl2",
-    "spv.140.frag glsl450",  // the same, indexed with a variable
+    // The redeclaration `in float gl_ClipDistance[5];` is dropped: the built-in stays unsized and
+    // its variable index is refused.
+    "spv.140.frag glsl450",
     // ES lacks vertex input arrays, variable-indexed fragment output arrays, flat struct outputs,
     // arrays of arrays (3.00), gl_SampleMask without GL_OES_sample_variables (3.10), multiview on
     // WebGL; glslang stops on the user's text compiled as ES before it reaches the construct.
