@@ -148,6 +148,22 @@ std::string resolve_stage(const std::string& input, Options& opt) {
   if (input == "-") return "reading the shader from stdin requires -S vert|frag|comp";
   opt.stage = stage_from_path(input);
   if (opt.stage) return {};
+  // A stage doublet does not lower, named by glslang's extensions: say which, not "cannot tell"
+  // (glslang's own test suite has 186 such files).
+  static const std::pair<const char*, const char*> kOtherStages[] = {
+      {".geom", "a geometry shader"},         {".tesc", "a tessellation control shader"},
+      {".tese", "a tessellation evaluation shader"}, {".mesh", "a mesh shader"},
+      {".task", "a task shader"},             {".rgen", "a ray generation shader"},
+      {".rint", "a ray intersection shader"}, {".rahit", "an any-hit shader"},
+      {".rchit", "a closest-hit shader"},     {".rmiss", "a miss shader"},
+      {".rcall", "a callable shader"}};
+  std::string name = input;
+  if (name.size() > 5 && name.compare(name.size() - 5, 5, ".glsl") == 0) name.resize(name.size() - 5);
+  for (const auto& [ext, what] : kOtherStages) {
+    const size_t len = std::char_traits<char>::length(ext);
+    if (name.size() > len && name.compare(name.size() - len, len, ext) == 0)
+      return "'" + input + "' is " + what + ": doublet lowers vertex, fragment and compute shaders only";
+  }
   return "cannot tell the shader stage from the file name '" + input +
          "' (expected .vert, .frag, .comp, optionally followed by .glsl); use -S";
 }

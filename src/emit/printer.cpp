@@ -81,6 +81,9 @@ class Printer {
       case Target::Glsl450: out_ << "#version 450 core\n"; break;
     }
     for (const auto& e : options_.extensions) out_ << "#extension " << e << " : require\n";
+    for (const auto& e : options_.user_extensions)
+      if (std::find(options_.extensions.begin(), options_.extensions.end(), e) == options_.extensions.end())
+        out_ << "#extension " << e << " : enable\n";
     out_ << "precision highp float;\nprecision highp int;\n";
     if (es_ && version_ >= 300) {
       std::set<std::string> opaque;
@@ -302,10 +305,17 @@ class Printer {
   }
 
   std::string signature(const ir::Function& f) {
-    std::string s = ir::type_name(f.return_type) + " " + f.name + "(";
+    // An array return type keeps its size (`float[4] foo(...)`: printed `float foo` before, web.array.frag).
+    std::string s = ir::type_name(f.return_type) + ir::array_suffix(f.return_type) + " " + f.name + "(";
     for (size_t i = 0; i < f.params.size(); ++i) {
       const auto& p = *f.params[i];
       if (i) s += ", ";
+      // An image argument may not drop a memory qualifier (spv.paramMemory.frag, reflection.vert).
+      if (p.coherent) s += "coherent ";
+      if (p.volatile_) s += "volatile ";
+      if (p.restrict_) s += "restrict ";
+      if (p.readonly) s += "readonly ";
+      if (p.writeonly) s += "writeonly ";
       if (p.storage == ir::Storage::ParamOut) s += "out ";
       if (p.storage == ir::Storage::ParamInOut) s += "inout ";
       s += declarator(p.type, p.name);
@@ -392,6 +402,10 @@ class Printer {
       case ir::Base::Uint: return std::to_string(v.i) + "u";
       case ir::Base::Float: return float_literal(static_cast<float>(v.d));
       case ir::Base::Double: {  // only mode native keeps doubles
+        // GLSL has no infinity or NaN literal; glslang folds these divisions to them (`1e+309` in
+        // glslang's own stringToDouble.vert printed as `inf.0lf` before).
+        if (std::isinf(v.d)) return v.d > 0 ? "(1.0lf / 0.0lf)" : "(-1.0lf / 0.0lf)";
+        if (std::isnan(v.d)) return "(0.0lf / 0.0lf)";
         char buf[40];
         std::snprintf(buf, sizeof buf, "%.17g", v.d);
         std::string s = buf;

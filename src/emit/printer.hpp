@@ -15,6 +15,7 @@ namespace doublet::emit {
 struct PrintOptions {
   Target target = Target::Es300;
   std::vector<std::string> extensions;  // #extension NAME : require
+  std::vector<std::string> user_extensions;  // the shader's own: #extension NAME : enable
   std::string runtime;                  // float-float runtime text, printed before user types
   std::string after_structs;            // helpers over user struct types, printed after them
   // The runtime's guard uniform, when it declares one. The user's loose numeric uniforms are then

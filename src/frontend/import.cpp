@@ -4,6 +4,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <optional>
@@ -12,6 +13,8 @@
 
 #include "frontend/builtin_names.hpp"
 #include "frontend/declarations.hpp"
+#include "frontend/text_scan.hpp"
+#include "ir/walk.hpp"
 
 namespace doublet::frontend {
 namespace {
@@ -121,6 +124,7 @@ class Importer {
       case EbtBlock: {
         out.base = t.getBasicType() == EbtStruct ? ir::Base::Struct : ir::Base::Block;
         out.name = t.getTypeName().c_str();
+        if (out.base == ir::Base::Struct && out.name.empty()) out.name = anonymous_struct_name(t.getStruct());
         out.fields = struct_fields(t, loc, out.base == ir::Base::Struct);
         break;
       }
@@ -153,6 +157,7 @@ class Importer {
 
   std::shared_ptr<std::vector<ir::Field>> struct_fields(const TType& t, const TSourceLoc& loc, bool is_struct) {
     std::string name = t.getTypeName().c_str();
+    if (is_struct && name.empty()) name = anonymous_struct_name(t.getStruct());
     if (is_struct) {
       auto it = structs_.find(name);
       if (it != structs_.end()) return it->second;
@@ -176,6 +181,53 @@ class Importer {
     }
     return fields;
   }
+
+  // glslang keeps no name for the built-ins doublet does not import (subgroupBarrier(),
+  // memoryBarrierAtomicCounter(), textureProjLodOffset(...): "unsupported built-in operation" named
+  // none, for 56 of glslang's test files). Its place is the call's closing parenthesis (or, with
+  // one argument, the argument): the name is the identifier before the '(' on that line.
+  std::string unsupported_call_message(const TSourceLoc& loc, const char* fallback) {
+    const std::string file = loc.name ? loc.name->c_str() : "";
+    if ((!file.empty() && file != "0" && file != options_.file_name) || loc.line <= 0 || loc.column <= 0)
+      return fallback;  // in an #included file
+    if (!line_index_) line_index_.emplace(source_);
+    const std::string_view row = line_index_->line(loc.line);
+    const size_t at = static_cast<size_t>(loc.column - 1);
+    if (at >= row.size()) return fallback;
+    size_t open = at + 1;
+    if (row[at] == ')') {  // a call of several arguments (or none): at its ')'
+      int depth = 0;
+      for (size_t i = at + 1; i-- > 0;) {
+        if (row[i] == ')') ++depth;
+        if (row[i] == '(' && --depth == 0) { open = i; break; }
+      }
+    } else if (at > 0 && row[at - 1] == '(') {  // a call of one argument: at the argument
+      open = at - 1;
+    }
+    if (open > at) return fallback;
+    size_t end = open;
+    while (end > 0 && is_blank(row[end - 1])) --end;
+    size_t begin = end;
+    while (begin > 0 && is_word_char(row[begin - 1])) --begin;
+    if (begin == end || is_digit(row[begin])) return fallback;
+    return "built-in function '" + std::string(row.substr(begin, end - begin)) + "' is not supported by doublet";
+  }
+  std::optional<LineIndex> line_index_;
+
+  // `struct { float r; } parts[2];` has no type name: printed as an empty name (`uniform void
+  // parts[2]`, spv.uniformInitializerStruct.frag), and every anonymous struct shared the first
+  // one's fields. Each gets a name of its own that the main file does not use.
+  std::string anonymous_struct_name(const TTypeList* members) {
+    auto it = anonymous_structs_.find(members);
+    if (it != anonymous_structs_.end()) return it->second;
+    std::string name;
+    for (int n = static_cast<int>(anonymous_structs_.size()) + 1;; ++n) {
+      name = "anonymous_struct" + std::to_string(n);
+      if (source_.find(name) == std::string_view::npos) break;
+    }
+    return anonymous_structs_[members] = name;
+  }
+  std::map<const TTypeList*, std::string> anonymous_structs_;
 
   static ir::Layout import_layout(const TQualifier& q) {
     ir::Layout l;
@@ -224,7 +276,11 @@ class Importer {
 
   // ---- variables ---------------------------------------------------------
   ir::VarPtr var_for(const TIntermSymbol& sym) {
-    auto it = vars_.find(sym.getId());
+    // An unnamed parameter (`float bar(int) { ... }`) has no symbol id of its own: every one
+    // shared the first one's variable, so bar's int parameter was printed as the float of an
+    // earlier function's (glslang's recurse1.vert: an internal error on ES). Each gets its own.
+    const bool unnamed = sym.getName().empty();
+    auto it = unnamed ? vars_.end() : vars_.find(sym.getId());
     if (it != vars_.end()) {
       if (it->second->loc.line == 0) it->second->loc = loc_of(sym.getLoc());  // linker objects carry no place
       return it->second;
@@ -253,7 +309,7 @@ class Importer {
       v->loc = loc_of(sym.getType().getStruct()->front().loc);  // a block from the linker objects: its first member
     else if (v->loc.line == 0)
       v->loc = global_declaration(v->name);
-    vars_[sym.getId()] = v;
+    if (!unnamed) vars_[sym.getId()] = v;
     if (v->storage == ir::Storage::Const && sym.getConstArray().size() > 0) {
       // A constant array/struct indexed dynamically: glslang keeps the symbol
       // but not the declaration; declare it from its folded value.
@@ -443,7 +499,7 @@ class Importer {
       e->args = {expr(u->getOperand())};
       return e;
     }
-    error(u->getLoc(), "unsupported operation");
+    error(u->getLoc(), unsupported_call_message(u->getLoc(), "unsupported operation"));
     return make(ir::Expr::Kind::Const, u);
   }
 
@@ -458,6 +514,7 @@ class Importer {
       auto e = make(ir::Expr::Kind::Call, a);
       e->name = demangle(a->getName());
       e->args = std::move(args);
+      calls_.emplace(a->getName().c_str(), std::make_pair(a->getLoc(), e));  // the first call of each overload
       return e;
     }
     if (op > EOpConstructGuardStart && op < EOpConstructGuardEnd) {
@@ -473,7 +530,7 @@ class Importer {
     const char* name = builtin_function_name(op, static_cast<int>(args.size()));
     if (!name) {
       std::string mangled = a->getName().c_str();
-      error(a->getLoc(), mangled.empty() ? std::string("unsupported built-in operation")
+      error(a->getLoc(), mangled.empty() ? unsupported_call_message(a->getLoc(), "unsupported built-in operation")
                                          : "built-in function '" + demangle(a->getName()) + "' is not supported");
       return make(ir::Expr::Kind::Const, a);
     }
@@ -606,6 +663,28 @@ class Importer {
           }
     f->body = seq.size() > 1 ? block(seq[1]) : ir::Stmt::make(ir::Stmt::Kind::Block);
     module_.functions.push_back(f);
+    defined_.insert(a->getName().c_str());
+  }
+
+  // glslang accepts a call of a function that is only declared (its body may come from another
+  // compilation unit at link time, as in its own link.* tests); the lowered shader stands alone, so
+  // that call would only fail doublet's re-validation (an internal error before).
+  void refuse_calls_without_bodies() {
+    std::vector<std::pair<TSourceLoc, ir::ExprPtr>> missing;
+    for (const auto& [mangled, call] : calls_)
+      if (!defined_.count(mangled) && !(transcendentals && is_transcendental_name(call.second->name)))
+        missing.push_back(call);  // the transcendental prototypes are doublet's (mark_transcendental_calls)
+    std::sort(missing.begin(), missing.end(), [](const auto& a, const auto& b) {
+      return std::make_pair(a.first.line, a.first.column) < std::make_pair(b.first.line, b.first.column);
+    });
+    for (const auto& call : missing) {
+      const ir::Expr& e = *call.second;
+      std::string signature = e.name + "(";
+      for (size_t i = 0; i < e.args.size(); ++i) signature += (i ? ", " : "") + ir::type_name(e.args[i]->type);
+      signature += ")";
+      error(call.first, "'" + signature + "' is declared but has no body in this shader: doublet lowers a "
+                        "shader on its own, so a function's body cannot come from another compilation unit");
+    }
   }
 
   void global_symbol(TIntermSymbol* sym) {
@@ -613,6 +692,38 @@ class Importer {
     if (name.rfind("gl_", 0) == 0) return;
     if (sym->getBasicType() == EbtBlock && std::string(sym->getType().getTypeName().c_str()).rfind("gl_", 0) == 0)
       return;  // built-in blocks (gl_PerVertex)
+    // A uniform's initializer (desktop 4.30+: its value until the application sets one) lives in
+    // the symbol's constant, not in the tree, and was silently dropped: the lowered shader read 0
+    // (spv.uniformInitializerStruct.frag). Refused until it is carried.
+    if (sym->getQualifier().storage == EvqUniform && sym->getConstArray().size() > 0 &&
+        reported_.insert("uniform initializer " + name).second) {
+      const ir::Loc at = sym->getLoc().line ? loc_of(sym->getLoc()) : global_declaration(name);  // linker objects carry no place
+      diags_.push_back({options_.file_name, at.line, at.column, Severity::Error,
+            "uniform '" + name + "' has an initializer (its value until the application sets one): doublet does "
+            "not carry uniform initializers, and the lowered uniform would start at 0; remove the initializer "
+            "and set the value from the application"});
+      failed_ = true;
+    }
+    // Per-vertex and per-primitive qualifiers (barycentric and mesh extensions) are not in the IR:
+    // dropped, `pervertexNV in float a[3]` became an ordinary input whose three locations overlapped
+    // the next one's (spv.fragmentShaderBarycentric2.frag), a different shader.
+    auto per_qualifier = [](const TQualifier& q) -> const char* {
+      return q.pervertexNV ? "pervertexNV" : q.pervertexEXT ? "pervertexEXT" : q.perPrimitiveNV ? "perprimitiveNV"
+             : q.perViewNV ? "perviewNV" : q.perTaskNV ? "taskNV" : nullptr;
+    };
+    auto refuse_per = [&](const char* per, const std::string& what, const TSourceLoc& loc) {
+      if (!reported_.insert(std::string(per) + " " + what).second) return;
+      const ir::Loc at = loc.line ? loc_of(loc) : global_declaration(name);
+      diags_.push_back({ir::file_of(at, options_.file_name), at.line, at.column, Severity::Error,
+                        "'" + what + "' is declared '" + per + "', a qualifier doublet does not carry: the lowered "
+                        "variable would be an ordinary one"});
+      failed_ = true;
+    };
+    if (const char* per = per_qualifier(sym->getQualifier())) refuse_per(per, name, sym->getLoc());
+    if (sym->getBasicType() == EbtBlock && sym->getType().getStruct())
+      for (const TTypeLoc& member : *sym->getType().getStruct())
+        if (const char* per = per_qualifier(member.type->getQualifier()))
+          refuse_per(per, member.type->getFieldName().c_str(), member.loc);
     ir::VarPtr v = var_for(*sym);
     if (!global_index_.emplace(v.get(), module_.globals.size()).second) return;
     if (v->storage == ir::Storage::Local) v->storage = ir::Storage::Global;  // a global `const` with a run-time value
@@ -664,8 +775,11 @@ class Importer {
   std::map<std::string, std::shared_ptr<std::vector<ir::Field>>> structs_;
   std::unordered_map<const ir::Var*, size_t> global_index_;  // position in module_.globals
   std::set<std::string> reported_;  // diagnostics given once per kind
+  std::set<std::string> defined_;    // mangled names of the functions with a body
+  std::map<std::string, std::pair<TSourceLoc, ir::ExprPtr>> calls_;  // mangled name -> first call
 
  public:
+  bool transcendentals = false;  // parsed with the transcendental prototypes
   bool failed() const { return failed_; }
   void linker_objects(TIntermAggregate* root) {
     for (TIntermNode* n : root->getSequence())
@@ -684,6 +798,16 @@ bool Importer::run(TIntermediate& intermediate) {
   }
   linker_objects(root);
   top_level(root);
+  refuse_calls_without_bodies();
+  // glslang's hidden `tempReturn` (an out argument converted after the call: `f(x)` with
+  // `out int` for a float x) is a global it never declares: the lowered text used it undeclared
+  // (spv.functionSemantics.frag, internal error). It lives within one expression: a local, whose
+  // declaration place_declarations then hoists.
+  for (const auto& f : module_.functions)
+    ir::visit(f->body, [&](const ir::ExprPtr& e) {
+      if (e->kind == ir::Expr::Kind::Sym && e->var->storage == ir::Storage::Global && !global_index_.count(e->var.get()))
+        e->var->storage = ir::Storage::Local;
+    });
   if (module_.stage == ir::StageKind::Compute)
     for (int i = 0; i < 3; ++i) module_.local_size[i] = static_cast<int>(intermediate.getLocalSize(i));
   return !failed_;
@@ -699,6 +823,7 @@ bool import_module(const ParsedShader& parsed, const Options& options, ir::Modul
   out.source_version = parsed.info.version;
   out.source_es = parsed.info.es;
   Importer importer(options, parsed.source, out, diagnostics);
+  importer.transcendentals = parsed.transcendentals;
   if (!importer.run(*parsed.intermediate)) return false;
   if (parsed.transcendentals) mark_transcendental_calls(out);
   return place_declarations(out, options, diagnostics);

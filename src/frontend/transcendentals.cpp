@@ -11,13 +11,13 @@ constexpr const char* kUnary[] = {"exp", "exp2", "log", "log2", "sin", "cos", "t
                                   "asin", "acos", "atan", "sinh", "cosh", "tanh"};
 constexpr const char* kBinary[] = {"pow", "atan"};
 
-bool is_name(std::string_view word) {
+}  // namespace
+
+bool is_transcendental_name(std::string_view word) {
   for (const char* n : kUnary)
     if (word == n) return true;
   return word == "pow";
 }
-
-}  // namespace
 
 bool refuses_transcendental(std::string_view glslang_log) {
   for (const char* n : kUnary)
@@ -43,7 +43,7 @@ void mark_transcendental_calls(ir::Module& module) {
   std::set<std::string> defined;
   for (const auto& f : module.functions) defined.insert(f->name);
   auto mark = [&](const ir::ExprPtr& e) -> ir::ExprPtr {
-    if (e->kind == ir::Expr::Kind::Call && is_name(e->name) && !defined.count(e->name)) e->kind = ir::Expr::Kind::Builtin;
+    if (e->kind == ir::Expr::Kind::Call && is_transcendental_name(e->name) && !defined.count(e->name)) e->kind = ir::Expr::Kind::Builtin;
     return e;
   };
   for (size_t i = 0; i < module.global_inits.size(); ++i)

@@ -21,6 +21,9 @@ bool refuses_transcendental(std::string_view glslang_log);
 // `double exp(double x); dvec2 exp(dvec2 x); ...` for every function and width.
 const std::string& transcendental_prototypes();
 
+// One of the extension's function names ("exp", "atan", ...).
+bool is_transcendental_name(std::string_view word);
+
 // Calls of the prototypes (a function of that name that the module does not define) become
 // Kind::Builtin nodes named like the GLSL function ("exp", "atan").
 void mark_transcendental_calls(ir::Module& module);
