@@ -85,11 +85,11 @@ Result lower_wgsl(std::string_view source, const Options& options) {
                              "--mode native keeps the doubles, and WGSL has no f64: use --mode df64 (the default)"});
     return r;
   }
-  if (options.mode == Mode::Exact || options.mode == Mode::RteExact) {
+  if (options.mode == Mode::RteExact) {
     Result r;
     r.diagnostics.push_back({options.file_name, 0, 0, Severity::Error,
-                             "--mode " + std::string(to_string(options.mode)) + " is not available for target wgsl yet (its runtime's ternaries on calls "
-                             "have no WGSL form): use a GLSL ES 3.00+ target, or --mode df64-int on wgsl"});
+                             "--mode rte-exact is not available for target wgsl yet: use --mode exact (binary64 in integer "
+                             "arithmetic) or df64-int on wgsl"});
     return r;
   }
   Options glsl_options = options;

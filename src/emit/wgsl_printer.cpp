@@ -428,6 +428,14 @@ class WgslPrinter {
         out_ << "}\n";
         return;
       case Stmt::Kind::Expr:
+        if (s->expr->kind == Kind::Binary && s->expr->op == "=" && branching_ternary(s->expr->args[1]) &&
+            ir::is_pure(s->expr->args[0]) && !(s->expr->args[0]->kind == Kind::Member && s->expr->args[0]->name.size() > 1 &&
+                                               s->expr->args[0]->args[0]->type.base != Base::Struct &&
+                                               s->expr->args[0]->args[0]->type.base != Base::Block)) {
+          const std::string target = lvalue(s->expr->args[0]);
+          ternary_as_if(s->expr->args[1], depth, [&](const std::string& v) { return target + " = " + v + ";"; });
+          return;
+        }
         indent(depth);
         if (s->expr->kind == Kind::Call && copy_in_out_call(*s->expr, depth)) return;
         out_ << simple_statement(s->expr) << ";\n";
@@ -435,6 +443,12 @@ class WgslPrinter {
       case Stmt::Kind::Decl:
         indent(depth);
         out_ << "var " << ident(s->var->name) << ": " << type(s->var->type, s->var->loc);
+        if (s->expr && branching_ternary(s->expr) && !names_variable(s->expr, s->var->name)) {
+          out_ << ";\n";
+          const std::string target = ident(s->var->name);
+          ternary_as_if(s->expr, depth, [&](const std::string& v) { return target + " = " + v + ";"; });
+          return;
+        }
         if (s->expr) out_ << " = " << expr(s->expr);
         out_ << ";\n";
         return;
@@ -460,6 +474,10 @@ class WgslPrinter {
       case Stmt::Kind::Continue: indent(depth); out_ << "continue;\n"; return;
       case Stmt::Kind::Discard: indent(depth); out_ << "discard;\n"; return;
       case Stmt::Kind::Return:
+        if (s->expr && branching_ternary(s->expr)) {
+          ternary_as_if(s->expr, depth, [](const std::string& v) { return "return " + v + ";"; });
+          return;
+        }
         indent(depth);
         out_ << "return" << (s->expr ? " " + expr(s->expr) : "") << ";\n";
         return;
@@ -467,6 +485,40 @@ class WgslPrinter {
   }
 
   std::string condition(const ir::ExprPtr& e) { return "(" + expr(e) + ")"; }
+
+  // A ?: that select() cannot take (a branch calls a function of the shader or has side
+  // effects) at the top of a return, a declaration or an assignment: if/else, so that only the
+  // chosen operand is evaluated, as in GLSL (mode exact's runtime: `return c ? ex_f(a) : ex_g(b);`).
+  bool branching_ternary(const ir::ExprPtr& e) {
+    if (e->kind != Kind::Ternary) return false;
+    bool calls = false;  // a call of the shader's own functions (not the float-float runtime's): cost
+    for (int k = 1; k <= 2; ++k)
+      ir::visit(e->args[static_cast<size_t>(k)],
+                [&](const ir::ExprPtr& x) { calls |= x->kind == Kind::Call && x->name.rfind("doublet_rt_", 0) != 0; });
+    return calls || has_effects(e->args[1]) || has_effects(e->args[2]);
+  }
+
+  static bool names_variable(const ir::ExprPtr& e, const std::string& name) {
+    bool found = false;
+    ir::visit(e, [&](const ir::ExprPtr& x) { found |= x->kind == Kind::Sym && x->var && x->var->name == name; });
+    return found;
+  }
+
+  void ternary_as_if(const ir::ExprPtr& e, int depth, const std::function<std::string(const std::string&)>& finish) {
+    indent(depth);
+    out_ << "if " << condition(e->args[0]) << " {\n";
+    for (int branch = 1; branch <= 2; ++branch) {
+      const ir::ExprPtr& x = e->args[static_cast<size_t>(branch)];
+      if (branching_ternary(x)) {
+        ternary_as_if(x, depth + 1, finish);
+      } else {
+        indent(depth + 1);
+        out_ << finish(expr(x)) << "\n";
+      }
+      indent(depth);
+      out_ << (branch == 1 ? "} else {\n" : "}\n");
+    }
+  }
 
   // for/while: { init; loop { if !(cond) { break; } body; continuing { step } } };
   // do-while: loop { body; continuing { break if !(cond); } }.
@@ -555,7 +607,14 @@ class WgslPrinter {
         if (has_effects(a)) return true;
       return false;
     }
-    if (e->kind == Kind::Call || e->kind == Kind::Sym || e->kind == Kind::Const) return ir::has_side_effects(e);
+    if (e->kind == Kind::Call) {
+      const ir::Function* f = callee_of(*e);
+      if (!f || !pure_and_loop_free(*f)) return true;
+      for (const auto& a : e->args)
+        if (has_effects(a)) return true;
+      return false;
+    }
+    if (e->kind == Kind::Sym || e->kind == Kind::Const) return ir::has_side_effects(e);
     if (e->kind == Kind::Binary || e->kind == Kind::Unary || e->kind == Kind::Builtin) {
       auto shallow = std::make_shared<Expr>(*e);
       shallow->args.clear();
@@ -569,6 +628,44 @@ class WgslPrinter {
     for (const auto& a : e->args)
       if (has_effects(a)) return true;
     return false;
+  }
+
+  // A function select() may call for the operand it does not choose: it has only `in` parameters,
+  // assigns only its own locals and parameters, has no loop (so it ends on any argument), no
+  // discard, and calls only such functions and built-ins without side effects (mode exact's
+  // `ex_from_bits(ex_is_nan(w) ? ex_pick_nan(w, w) : ...)`).
+  std::map<const ir::Function*, bool> pure_memo_;
+  bool pure_and_loop_free(const ir::Function& f) {
+    if (auto it = pure_memo_.find(&f); it != pure_memo_.end()) return it->second;
+    pure_memo_[&f] = false;  // GLSL has no recursion; a cycle would be refused here
+    bool pure = true;
+    for (const auto& p : f.params) pure &= p->storage == ir::Storage::ParamIn;
+    std::function<void(const ir::StmtPtr&)> walk = [&](const ir::StmtPtr& st) {
+      if (!st || !pure) return;
+      if (st->kind == Stmt::Kind::Loop || st->kind == Stmt::Kind::Discard) pure = false;
+      for (const auto& b : st->body) walk(b);
+    };
+    walk(f.body);
+    if (pure)
+      ir::visit(f.body, [&](const ir::ExprPtr& x) {
+        if (!pure) return;
+        if (x->kind == Kind::Call) {
+          const ir::Function* g = callee_of(*x);
+          pure &= g && pure_and_loop_free(*g);
+        } else if (x->kind == Kind::Builtin) {
+          auto shallow = std::make_shared<Expr>(*x);
+          shallow->args.clear();
+          pure &= !ir::has_side_effects(shallow);
+        } else if ((x->kind == Kind::Binary && x->op.size() >= 1 && x->op.back() == '=' && x->op != "==" && x->op != "!=" &&
+                    x->op != "<=" && x->op != ">=") ||
+                   (x->kind == Kind::Unary && x->op.size() == 3)) {
+          ir::ExprPtr root = x->args[0];
+          while (root->kind == Kind::Member || root->kind == Kind::Index) root = root->args[0];
+          pure &= root->kind == Kind::Sym && root->var &&
+                  (root->var->storage == ir::Storage::Local || root->var->storage == ir::Storage::ParamIn);
+        }
+      });
+    return pure_memo_[&f] = pure;
   }
 
   static bool ends_in_jump(const ir::StmtPtr& s) {
@@ -814,6 +911,36 @@ class WgslPrinter {
     return fn;
   }
 
+  // umulExtended(x, y, msb, lsb): WGSL has no widening multiply; a helper forms the 64-bit
+  // products from 16-bit halves (four 16x16-bit products, the middle sum's carry kept), msb and lsb
+  // written through pointers (they must be local variables, as for calls of the shader's functions).
+  std::string umul_extended(const Expr& e) {
+    const auto& a = e.args;
+    const std::string t = type(a[0]->type);
+    const std::string fn = "df_umulExtended" + (a[0]->type.vec > 1 ? std::to_string(a[0]->type.vec) : std::string());
+    helpers_[fn] = "fn " + fn + "(x: " + t + ", y: " + t + ", msb: ptr<function, " + t + ">, lsb: ptr<function, " + t +
+                   ">) {\n"
+                   "  let xl = x & " + t + "(0xFFFFu);\n  let xh = x >> " + t + "(16u);\n"
+                   "  let yl = y & " + t + "(0xFFFFu);\n  let yh = y >> " + t + "(16u);\n"
+                   "  let ll = xl * yl;\n  let lh = xl * yh;\n  let hl = xh * yl;\n  let hh = xh * yh;\n"
+                   "  let mid = lh + hl;\n"
+                   "  let mid_carry = select(" + t + "(0u), " + t + "(0x10000u), mid < lh);\n"
+                   "  let lo = ll + (mid << " + t + "(16u));\n"
+                   "  *lsb = lo;\n"
+                   "  *msb = hh + (mid >> " + t + "(16u)) + mid_carry + select(" + t + "(0u), " + t + "(1u), lo < ll);\n}\n";
+    std::string s = fn + "(" + expr(a[0]) + ", " + expr(a[1]);
+    for (size_t i = 2; i < 4; ++i) {
+      ir::ExprPtr root = a[i];
+      if (!is_local_root(root)) {
+        error(a[i]->loc, "umulExtended's msb and lsb arguments must be local variables in WGSL (they become pointers to "
+                         "function memory); pass locals and copy them");
+        return "0";
+      }
+      s += ", " + (pointer_params_.count(root->var.get()) ? ident(root->var->name) : "&" + expr(root));
+    }
+    return s + ")";
+  }
+
   std::string builtin(const Expr& e) {
     const std::string& n = e.name;
     const auto& a = e.args;
@@ -847,6 +974,13 @@ class WgslPrinter {
       return matrix_per_column(*product, "*");
     }
     if (n == "not") return "!(" + expr(a[0]) + ")";
+    // GLSL's findMSB, findLSB and bitCount return int (ivecN) for uint operands too; WGSL's return
+    // the operand's type. u32 -> i32 keeps the bits, so findMSB(0u) is still -1.
+    if ((n == "findMSB" || n == "findLSB" || n == "bitCount") && a.size() == 1 && a[0]->type.base == Base::Uint) {
+      const std::string wgsl = n == "findMSB" ? "firstLeadingBit" : n == "findLSB" ? "firstTrailingBit" : "countOneBits";
+      return type(e.type) + "(" + wgsl + "(" + expr(a[0]) + "))";
+    }
+    if (n == "umulExtended" && a.size() == 4) return umul_extended(e);
     if (n == "atan") return a.size() == 2 ? "atan2(" + args_text(a) + ")" : "atan(" + expr(a[0]) + ")";
     if (n == "uintBitsToFloat" || n == "intBitsToFloat") {
       // A constant argument would make this a const-expression, where WGSL rejects an infinite or

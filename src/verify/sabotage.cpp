@@ -31,7 +31,14 @@ bool apply_output_sabotage(Sabotage s, std::string* lowered) {
   // rules/exact.glsl's round-and-pack: on an exact tie the last kept bit is cleared (to even).
   const std::string tie = "if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;";
   const size_t at = lowered->find(tie);
-  if (at == std::string::npos) return false;
+  if (at == std::string::npos) {
+    // The same line as the WGSL printer spells it (target wgsl, verify --backend webgpu).
+    const std::string wgsl_tie = "if ((roundBits == 512u)) {\n    sig_v[0i] &= 4294967294u;\n  }";
+    const size_t w = lowered->find(wgsl_tie);
+    if (w == std::string::npos) return false;
+    lowered->erase(w, wgsl_tie.size());
+    return true;
+  }
   lowered->erase(at, tie.size());
   return true;
 }

@@ -337,6 +337,10 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
       Options wgsl_options = lower_options;
       wgsl_options.target = Target::Wgsl;
       wgsl = lower(lowered_source, wgsl_options);
+      if (wgsl->ok && !apply_output_sabotage(options.sabotage, &wgsl->output)) {
+        report.input_error = "--sabotage " + report.sabotage + " found nothing to break in the WGSL lowering";
+        return report;
+      }
       if (!wgsl->ok) {
         const std::string why = "the WGSL lowering failed:\n" + diagnostics_text(*wgsl);
         if (alone) {

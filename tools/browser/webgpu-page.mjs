@@ -31,8 +31,11 @@ async function validate(device, m) {
     device.createComputePipeline({ layout: 'auto', compute: { module, entryPoint: 'main' } });
   } else if (m.stage === 'vert') {
     // One vertex buffer per @location input of the entry point (float inputs only).
-    const buffers = [...m.code.matchAll(/@location\((\d+)\) df_in_\w+: (?:vec(\d)<f32>|f32)/g)].map((x) => ({
-      arrayStride: 16, attributes: [{ shaderLocation: Number(x[1]), offset: 0, format: x[2] ? `float32x${x[2]}` : 'float32' }] }));
+    // (mode exact's inputs are u32 words: vec2<u32>, vec4<u32>)
+    const buffers = [...m.code.matchAll(/@location\((\d+)\) df_in_\w+: (?:vec(\d)<([fui])32>|([fui])32)/g)].map((x) => {
+      const kind = { f: 'float32', u: 'uint32', i: 'sint32' }[x[3] || x[4]];
+      return { arrayStride: 16, attributes: [{ shaderLocation: Number(x[1]), offset: 0, format: x[2] ? `${kind}x${x[2]}` : kind }] };
+    });
     device.createRenderPipeline({ layout: 'auto', vertex: { module, entryPoint: 'main', buffers }, primitive: { topology: 'point-list' },
                                   depthStencil: { format: 'depth32float', depthWriteEnabled: true, depthCompare: 'always' } });
   } else {
