@@ -96,6 +96,23 @@ TEST(WebGpuVerify, DropGuardFailsAndDf64IntNeedsNoGuard) {
   for (const auto& [op, b] : kept) EXPECT_GE(b, 44) << op << "\n" << integer.out;
 }
 
+// Mode exact in WGSL: binary64 in u32 arithmetic in Chromium's WebGPU, bit-identical to native fp64
+// on lavapipe (ties included); rounding ties away from zero must differ there too.
+TEST(WebGpuVerify, ExactIsBitIdenticalInChromiumAndTiesAwayFails) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  CliRun r = verify(kOps + " --spec " + kOps + ".json --backend webgpu --mode exact");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("identical bits required: 0 of"), std::string::npos) << r.out;
+  const std::string ties = std::string(DOUBLET_VERIFY_SHADERS) + "/exact_words.comp --spec " +
+                           std::string(DOUBLET_VERIFY_SHADERS) + "/exact_ties.json --backend webgpu --mode exact";
+  r = verify(ties);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find("FAIL"), std::string::npos) << r.out;
+  r = verify(ties + " --sabotage ties-away");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("FAIL"), std::string::npos) << r.out;
+}
+
 TEST(WebGpuVerify, VertexShaderAndManyDispatchesAreInputErrors) {
   const CliRun vertex = verify(std::string(DOUBLET_VERIFY_SHADERS) + "/pairs.vert --backend webgpu");
   EXPECT_EQ(vertex.exit_code, 2) << vertex.out;
