@@ -833,7 +833,7 @@ class DoubleLowering {
       };
       return ir::make_node(Kind::Construct, "", df_type(r), {word("hi"), word("lo")}, loc);
     }
-    return ir::make_node(Kind::Call, matrix::column(ctx_, c, r), df_type(r), {m, j}, loc);
+    return ir::make_node(Kind::Call, matrix::column(ctx_, c, r), df_type(r), {m, int_index(j)}, loc);
   }
 
   static bool is_double_matrix(const ir::Type& t) { return t.is_double() && t.is_matrix() && !t.is_array(); }
@@ -871,9 +871,12 @@ class DoubleLowering {
       rhs = arithmetic(e->op.substr(0, 1), current, rhs, e->loc);
     }
     if (!is_df(rhs->type)) rhs = to_df(rhs);
-    if (element) return ir::make_node(Kind::Call, matrix::assign_element(ctx_, c, r), df_type(1), {m, j, i, rhs}, e->loc);
+    // The helpers take int indices; a uint index (gl_GlobalInvocationID arithmetic) is converted.
+    if (element)
+      return ir::make_node(Kind::Call, matrix::assign_element(ctx_, c, r), df_type(1), {m, int_index(j), int_index(i), rhs},
+                           e->loc);
     if (df_width(rhs->type) < r) rhs = splat(rhs, r);
-    return ir::make_node(Kind::Call, matrix::assign_column(ctx_, c, r), df_type(r), {m, j, rhs}, e->loc);
+    return ir::make_node(Kind::Call, matrix::assign_column(ctx_, c, r), df_type(r), {m, int_index(j), rhs}, e->loc);
   }
 
   ExprPtr matrix_arithmetic(const std::string& op, ExprPtr a, ExprPtr b, ir::Loc loc) {
