@@ -767,6 +767,81 @@ class BlockWords {
     return out;
   }
 
+  // The words of column `j` of the block matrix `m` (a matrix place), as a dvecR place.
+  Place matrix_column_place(const Place& m, const ExprPtr& j, ir::Loc loc) {
+    const int rows = matrix::rows(m.type);
+    ir::Type columns = rows == 2 ? uint_type(4) : word_struct(rows);
+    const ir::Type column_word = columns;
+    columns.array_dims = {matrix::cols(m.type)};
+    auto index = Expr::make(Kind::Index, column_word, loc);
+    index->args = {ir::make_node(Kind::Member, "c", columns, {m.parts[0]}, loc), j};
+    Place p;
+    p.doubles = true;
+    p.type = df_type(rows);
+    p.parts = {index};
+    return p;
+  }
+
+  // m[j] of a block matrix reads only that column's words: lower_doubles wrote it
+  // df_dvecR(m.hi[j], m.lo[j]) (constant j) or df_column_dmatCxR(m, j).
+  ExprPtr matrix_column_load(const ExprPtr& e) {
+    ExprPtr m, j;
+    if (e->kind == Kind::Call && e->name.rfind("df_column_dmat", 0) == 0 && e->args.size() == 2) {
+      m = e->args[0], j = e->args[1];
+    } else if (e->kind == Kind::Construct && is_df(e->type) && e->args.size() == 2) {
+      const ExprPtr &hi = e->args[0], &lo = e->args[1];
+      auto half = [](const ExprPtr& x, const char* name) {
+        return x->kind == Kind::Index && x->args[1]->kind == Kind::Const && x->args[0]->kind == Kind::Member &&
+               x->args[0]->name == name && matrix::is_matrix(x->args[0]->args[0]->type);
+      };
+      if (!half(hi, "hi") || !half(lo, "lo") || hi->args[1]->values.empty() || lo->args[1]->values.empty() ||
+          hi->args[1]->values[0].i != lo->args[1]->values[0].i)
+        return nullptr;
+      m = hi->args[0]->args[0], j = hi->args[1];
+    } else {
+      return nullptr;
+    }
+    if (!matrix::is_matrix(m->type)) return nullptr;
+    std::optional<Place> p = place(m);
+    if (!p) return nullptr;
+    return load(matrix_column_place(*p, rw(j), e->loc), e->loc);
+  }
+
+  // m[j] = v and m[j][i] = x on a block matrix (lowered to df_assign_column_/df_assign_element_
+  // calls with m inout) store only that column's or element's words, as native does: a load and
+  // store of the whole matrix would also rewrite the columns other invocations may be writing.
+  // An element with a dynamic row index has no swizzle: nullptr, and the generic inout path
+  // (the whole matrix loaded before and stored after the statement) takes it.
+  ExprPtr matrix_part_store(const ExprPtr& e, bool used) {
+    const bool column = e->name.rfind("df_assign_column_", 0) == 0, element = e->name.rfind("df_assign_element_", 0) == 0;
+    if ((!column && !element) || e->args.size() != (column ? 3u : 4u) || !matrix::is_matrix(e->args[0]->type)) return nullptr;
+    int row = -1;
+    if (element) {
+      const ExprPtr& i = e->args[2];
+      if (i->kind != Kind::Const || i->values.empty()) return nullptr;
+      row = static_cast<int>(i->values[0].i);
+    }
+    std::optional<Place> m = place(e->args[0]);
+    if (!m) return nullptr;
+    const int rows = matrix::rows(m->type);
+    Place p = matrix_column_place(*m, rw(e->args[1]), e->loc);
+    if (column) return store(p, rw(e->args[2]), e->loc, used);
+    const ExprPtr index = p.parts[0];
+    // Element `row`: its two words inside the column's words.
+    ExprPtr words = index;
+    std::string swizzle = row % 2 == 0 ? "xy" : "zw";
+    if (rows > 2) {
+      const bool first = row < 2;
+      const ir::Type part = first || rows == 4 ? uint_type(4) : uint_type(2);
+      words = ir::make_node(Kind::Member, first ? "xy" : rows == 3 ? "z" : "zw", part, {index}, e->loc);
+      if (!first && rows == 3) swizzle.clear();  // z is one double: the member itself
+    }
+    if (!swizzle.empty()) words = ir::make_node(Kind::Member, swizzle, uint_type(2), {words}, e->loc);
+    p.type = df_type(1);
+    p.parts = {words};
+    return store(p, rw(e->args[3]), e->loc, used);
+  }
+
   // `used`: the expression's value is read (false for an expression statement or a loop step).
   ExprPtr rw(const ExprPtr& e, bool used = true) {
     if (!e) return e;
@@ -779,7 +854,9 @@ class BlockWords {
         return e;
       }
     }
+    if (ExprPtr column = matrix_column_load(e)) return column;
     if (e->kind == Kind::Call) {
+      if (ExprPtr column_store = matrix_part_store(e, used)) return column_store;
       const std::vector<bool> written = written_arguments(e);
       for (size_t i = 0; i < e->args.size(); ++i) {
         if (!written[i]) {
