@@ -20,7 +20,9 @@
 //     glUniform4uiv / glUniform2uiv (by u.components)(location(u.name), u.count, u.words.data());
 //   for (auto& a : doublet::pack::word_attributes(*m->find("position"), offsetof(Vertex, position)))
 //     glVertexAttribIPointer(loc(a), a.components, GL_UNSIGNED_INT, sizeof(Vertex), (void*)a.offset_bytes);
-// and a uniform/storage block takes the std140/std430 bytes of its doubles unchanged.
+//   uniform dmat4 M -> uniform_words(*m->find("M"), column_major_doubles): one uvec4[8], glUniform4uiv
+// and a uniform/storage block takes the std140/std430 bytes of its doubles unchanged (dmat members
+// too: column-major, std140/std430 column strides).
 //
 // Header-only, C++20, standard library only (the manifest parser is a small JSON reader).
 #pragma once
@@ -415,6 +417,13 @@ inline int double_components(std::string_view type) {
   if (type.size() >= 5 && type.starts_with("dvec") && type[4] >= '2' && type[4] <= '4') return type[4] - '0';
   return 0;
 }
+// doubles per element of "dmatC"/"dmatCxR" (arrays too: "dmat4[2]"); 0 otherwise.
+inline int matrix_doubles(std::string_view type) {
+  if (type.size() < 5 || !type.starts_with("dmat") || type[4] < '2' || type[4] > '4') return 0;
+  const int cols = type[4] - '0';
+  if (type.size() >= 7 && type[5] == 'x' && type[6] >= '2' && type[6] <= '4') return cols * (type[6] - '0');
+  return cols * cols;
+}
 }  // namespace detail
 
 inline bool is_binary64_words(const Variable& v) { return v.encoding == "binary64-words"; }
@@ -430,8 +439,26 @@ struct UniformWords {
 // The words of `uniform double/dvecN X[...]` lowered by mode exact, from its value as the host holds
 // it (elements × components doubles, element after element). For double and dvec2 the words are the
 // value's bytes as they are; dvec3/dvec4 split each element into X_xy (first two components) and
-// X_z/X_zw. Empty when `v` is not a mode-exact double uniform or the size does not match.
+// X_z/X_zw. A dmatCxR[n] takes its C*R*n doubles column-major, matrix after matrix (one uvec4 array
+// in the host's bytes). Empty when `v` is not a mode-exact double uniform or the size does not match.
 inline std::vector<UniformWords> uniform_words(const Variable& v, std::span<const double> value) {
+  if (const int m = detail::matrix_doubles(v.type)) {
+    // `uniform dmatCxR M[n]` -> `uvec4 M[ceil(n*C*R/2)]`: the column-major doubles' words as they are
+    // (glUniform4uiv(location(M), count, words)); an odd number of doubles (dmat3) pads 2 zero words.
+    const std::size_t doubles = detail::array_elements(v.type) * static_cast<std::size_t>(m);
+    if (!is_binary64_words(v) || doubles == 0 || value.size() != doubles || v.lowered_names.size() != 1 ||
+        v.lowered_types.size() != 1 || detail::uint_components(v.lowered_types[0]) != 4 ||
+        detail::array_elements(v.lowered_types[0]) != (doubles + 1) / 2)
+      return {};
+    UniformWords u{v.lowered_names[0], 4, static_cast<int>((doubles + 1) / 2), {}};
+    for (const double x : value) {
+      const ExactWords w = exact_words(x);
+      u.words.push_back(w.lo);
+      u.words.push_back(w.hi);
+    }
+    u.words.resize(static_cast<std::size_t>(u.count) * 4, 0u);
+    return {u};
+  }
   const int n = detail::double_components(v.type);
   const std::size_t elements = detail::array_elements(v.type);
   if (!is_binary64_words(v) || n == 0 || elements == 0 || value.size() != elements * static_cast<std::size_t>(n) ||

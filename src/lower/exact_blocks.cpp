@@ -20,6 +20,7 @@
 
 #include "lower/block_layout.hpp"
 #include "lower/lower.hpp"
+#include "lower/matrix_helpers.hpp"
 
 namespace doublet::passes {
 namespace {
@@ -65,6 +66,10 @@ class Layout {
 
  private:
   Shape element(const ir::Type& t) const {
+    if (matrix::is_matrix(t)) {  // column-major dmatCxR: C columns, each a dvecR at the array stride
+      const int stride = matrix::rows(t) == 2 ? 16 : 32;
+      return {matrix::cols(t) * stride, stride};
+    }
     if (is_df(t)) {
       const int w = df_width(t);
       return {8 * w, w == 1 ? 8 : w == 2 ? 16 : 32};
@@ -103,7 +108,7 @@ std::string spelled(const ir::Type& t) {  // df_dvec3[4] -> dvec3[4]
 
 // What one member of a block or struct became.
 struct FieldPlan {
-  enum Kind { Same, Words, Split, Twin } kind = Same;
+  enum Kind { Same, Words, Split, Twin, Matrix } kind = Same;
   ir::Type original;                 // the lowered (df_*/struct) type the shader computes with
   ir::Type word;                     // Words/Twin: the word type (arrays kept); Split: part 0's
   std::vector<std::string> names;    // the emitted members: one, or NAME_xy + NAME_z(w) for Split
@@ -227,6 +232,24 @@ class BlockWords {
     return t;
   }
 
+  // ex_dmatCxR_words { COLUMN c[C]; }, COLUMN = uvec4 (R = 2) or ex_dvecR_words (R = 3, 4): in
+  // std140 and std430 a column-major dmatCxR is laid out as an array of C dvecR (16- or 32-byte
+  // stride), which these words repeat; a struct keeps an array of matrices one element per matrix.
+  ir::Type matrix_words(int cols, int rows) {
+    const std::string name = "ex_dmat" + std::to_string(cols) + "x" + std::to_string(rows) + "_words";
+    for (const auto& t : word_structs_)
+      if (t.name == name) return t;
+    ir::Type column = rows == 2 ? uint_type(4) : word_struct(rows);
+    column.array_dims = {cols};
+    ir::Type t;
+    t.base = ir::Base::Struct;
+    t.name = name;
+    t.fields = std::make_shared<std::vector<ir::Field>>();
+    t.fields->push_back({"c", column, {}, {}});
+    word_structs_.push_back(t);
+    return t;
+  }
+
   // The word type of one element (no array dimensions) of a member in an array, or nullopt when
   // the element holds no doubles.
   std::optional<ir::Type> word_element(const ir::Type& t, bool std140, ir::Loc loc) {
@@ -286,6 +309,13 @@ class BlockWords {
           part.type = fp.part_types[k];
           add(part);
         }
+      } else if (matrix::is_matrix(element)) {  // ex_dmatCxR_words: the columns' words at the column stride
+        fp.kind = FieldPlan::Matrix;
+        fp.word = with_dims(matrix_words(matrix::cols(element), matrix::rows(element)), f.type);
+        fp.names = {f.name};
+        ir::Field part = f;
+        part.type = fp.word;
+        add(part);
       } else if (std::optional<ir::Type> word = word_element(element, std140, loc)) {
         fp.kind = is_df(element) ? FieldPlan::Words : FieldPlan::Twin;
         fp.word = with_dims(*word, f.type);
@@ -367,6 +397,11 @@ class BlockWords {
       m.offset = base + at[i];
       m.size = s.size;
       m.array_stride = f.type.is_array() ? s.stride : 0;
+      if (fp.kind == FieldPlan::Matrix) {
+        ir::Type element = f.type;
+        element.array_dims.clear();
+        m.matrix_stride = matrix::rows(element) == 2 ? 16 : 32;
+      }
       if (fp.kind == FieldPlan::Split)
         m.lowered_type = ir::type_name(fp.part_types[0]) + " " + fp.names[0] + ", " + ir::type_name(fp.part_types[1]) +
                          " " + fp.names[1];
@@ -459,7 +494,8 @@ class BlockWords {
         if (base->kind == Kind::Index) base->args[1] = rw(base->args[1]);
         return place_of(block_plans_.at(block).fields.at(e->name), base, nullptr, e->loc);
       }
-      if (is_df(base->type) || base->type.is_array()) return std::nullopt;  // hi/lo of a value
+      if (is_df(base->type) || matrix::is_matrix(base->type) || base->type.is_array())
+        return std::nullopt;  // hi/lo of a value: the member is loaded whole (rw)
       std::optional<Place> outer = place(base);
       if (!outer) return std::nullopt;
       if (outer->fields) return place_of(outer->fields->fields.at(e->name), outer->parts[0], nullptr, e->loc);
@@ -478,7 +514,7 @@ class BlockWords {
       p.doubles = true;
       index->type = outer->parts[0]->type.element();
       p.parts = {index};
-      if (!p.type.is_array() && !is_df(p.type)) p.fields = plan_of_type_.at(index->type.name);
+      if (!p.type.is_array() && !is_df(p.type) && !matrix::is_matrix(p.type)) p.fields = plan_of_type_.at(index->type.name);
       return p;
     }
     return std::nullopt;
@@ -560,12 +596,45 @@ class BlockWords {
 
   std::string accessor(const Place& p, Access access, ir::Loc loc) {
     if (is_df(p.type)) return df_accessor(p.type, access);
+    if (matrix::is_matrix(p.type)) return matrix_accessor(p.type, access);
     if (!p.fields) {
       ctx_.error(loc, std::string(access == Access::Load ? "reading" : "writing") + " a whole array of doubles in a "
                       "block is not supported by --mode exact: access its elements");
       return "";
     }
     return struct_accessor(p.parts[0]->type, access == Access::Load, loc);
+  }
+
+  // df_dmatCxR ex_load_dmatCxR(ex_dmatCxR_words w) / ex_dmatCxR_words ex_words_dmatCxR(df_dmatCxR v),
+  // column by column through the dvecR accessors.
+  std::string matrix_accessor(const ir::Type& type, Access access) {
+    const int c = matrix::cols(type), r = matrix::rows(type);
+    const std::string df = ir::type_name(type), words = ir::type_name(matrix_words(c, r));
+    const std::string suffix = df.substr(3), column = df_type_name(r);
+    const std::string column_accessor = df_accessor(df_type(r), access == Access::Load ? Access::Load : Access::Words);
+    const std::string name = (access == Access::Load ? "ex_load_" : "ex_words_") + suffix;
+    const std::string uvec = "uvec" + std::to_string(r), col_words = r == 2 ? "uvec4" : "ex_dvec" + std::to_string(r) + "_words";
+    std::string text;
+    if (access == Access::Load) {
+      text = df + " " + name + "(" + words + " w) {\n";
+      std::string hi, lo;
+      for (int j = 0; j < c; ++j) {
+        const std::string v = "c" + std::to_string(j);
+        text += "  " + column + " " + v + " = " + column_accessor + "(w.c[" + std::to_string(j) + "]);\n";
+        hi += (j ? ", " : "") + v + ".hi";
+        lo += (j ? ", " : "") + v + ".lo";
+      }
+      const std::string array = uvec + "[" + std::to_string(c) + "]";
+      text += "  return " + df + "(" + array + "(" + hi + "), " + array + "(" + lo + "));\n}\n";
+    } else {
+      text = words + " " + name + "(" + df + " v) {\n  return " + words + "(" + col_words + "[" + std::to_string(c) + "](";
+      for (int j = 0; j < c; ++j)
+        text += (j ? ", " : "") + column_accessor + "(" + column + "(v.hi[" + std::to_string(j) + "], v.lo[" +
+                std::to_string(j) + "]))";
+      text += "));\n}\n";
+    }
+    helper(name, text);
+    return name;
   }
 
   // S ex_load_S_words(S_words w) / S_words ex_words_S_words(S v), member by member.
@@ -698,6 +767,81 @@ class BlockWords {
     return out;
   }
 
+  // The words of column `j` of the block matrix `m` (a matrix place), as a dvecR place.
+  Place matrix_column_place(const Place& m, const ExprPtr& j, ir::Loc loc) {
+    const int rows = matrix::rows(m.type);
+    ir::Type columns = rows == 2 ? uint_type(4) : word_struct(rows);
+    const ir::Type column_word = columns;
+    columns.array_dims = {matrix::cols(m.type)};
+    auto index = Expr::make(Kind::Index, column_word, loc);
+    index->args = {ir::make_node(Kind::Member, "c", columns, {m.parts[0]}, loc), j};
+    Place p;
+    p.doubles = true;
+    p.type = df_type(rows);
+    p.parts = {index};
+    return p;
+  }
+
+  // m[j] of a block matrix reads only that column's words: lower_doubles wrote it
+  // df_dvecR(m.hi[j], m.lo[j]) (constant j) or df_column_dmatCxR(m, j).
+  ExprPtr matrix_column_load(const ExprPtr& e) {
+    ExprPtr m, j;
+    if (e->kind == Kind::Call && e->name.rfind("df_column_dmat", 0) == 0 && e->args.size() == 2) {
+      m = e->args[0], j = e->args[1];
+    } else if (e->kind == Kind::Construct && is_df(e->type) && e->args.size() == 2) {
+      const ExprPtr &hi = e->args[0], &lo = e->args[1];
+      auto half = [](const ExprPtr& x, const char* name) {
+        return x->kind == Kind::Index && x->args[1]->kind == Kind::Const && x->args[0]->kind == Kind::Member &&
+               x->args[0]->name == name && matrix::is_matrix(x->args[0]->args[0]->type);
+      };
+      if (!half(hi, "hi") || !half(lo, "lo") || hi->args[1]->values.empty() || lo->args[1]->values.empty() ||
+          hi->args[1]->values[0].i != lo->args[1]->values[0].i)
+        return nullptr;
+      m = hi->args[0]->args[0], j = hi->args[1];
+    } else {
+      return nullptr;
+    }
+    if (!matrix::is_matrix(m->type)) return nullptr;
+    std::optional<Place> p = place(m);
+    if (!p) return nullptr;
+    return load(matrix_column_place(*p, rw(j), e->loc), e->loc);
+  }
+
+  // m[j] = v and m[j][i] = x on a block matrix (lowered to df_assign_column_/df_assign_element_
+  // calls with m inout) store only that column's or element's words, as native does: a load and
+  // store of the whole matrix would also rewrite the columns other invocations may be writing.
+  // An element with a dynamic row index has no swizzle: nullptr, and the generic inout path
+  // (the whole matrix loaded before and stored after the statement) takes it.
+  ExprPtr matrix_part_store(const ExprPtr& e, bool used) {
+    const bool column = e->name.rfind("df_assign_column_", 0) == 0, element = e->name.rfind("df_assign_element_", 0) == 0;
+    if ((!column && !element) || e->args.size() != (column ? 3u : 4u) || !matrix::is_matrix(e->args[0]->type)) return nullptr;
+    int row = -1;
+    if (element) {
+      const ExprPtr& i = e->args[2];
+      if (i->kind != Kind::Const || i->values.empty()) return nullptr;
+      row = static_cast<int>(i->values[0].i);
+    }
+    std::optional<Place> m = place(e->args[0]);
+    if (!m) return nullptr;
+    const int rows = matrix::rows(m->type);
+    Place p = matrix_column_place(*m, rw(e->args[1]), e->loc);
+    if (column) return store(p, rw(e->args[2]), e->loc, used);
+    const ExprPtr index = p.parts[0];
+    // Element `row`: its two words inside the column's words.
+    ExprPtr words = index;
+    std::string swizzle = row % 2 == 0 ? "xy" : "zw";
+    if (rows > 2) {
+      const bool first = row < 2;
+      const ir::Type part = first || rows == 4 ? uint_type(4) : uint_type(2);
+      words = ir::make_node(Kind::Member, first ? "xy" : rows == 3 ? "z" : "zw", part, {index}, e->loc);
+      if (!first && rows == 3) swizzle.clear();  // z is one double: the member itself
+    }
+    if (!swizzle.empty()) words = ir::make_node(Kind::Member, swizzle, uint_type(2), {words}, e->loc);
+    p.type = df_type(1);
+    p.parts = {words};
+    return store(p, rw(e->args[3]), e->loc, used);
+  }
+
   // `used`: the expression's value is read (false for an expression statement or a loop step).
   ExprPtr rw(const ExprPtr& e, bool used = true) {
     if (!e) return e;
@@ -710,7 +854,9 @@ class BlockWords {
         return e;
       }
     }
+    if (ExprPtr column = matrix_column_load(e)) return column;
     if (e->kind == Kind::Call) {
+      if (ExprPtr column_store = matrix_part_store(e, used)) return column_store;
       const std::vector<bool> written = written_arguments(e);
       for (size_t i = 0; i < e->args.size(); ++i) {
         if (!written[i]) {

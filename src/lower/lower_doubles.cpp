@@ -94,18 +94,7 @@ class DoubleLowering {
     fast_ = ctx_.fast_global_inits;
     for (size_t i = 0; i < module_.globals.size(); ++i) {
       auto& g = module_.globals[i];
-      if (exact() && is_interface(g->storage) && holds_double_matrix(g->type)) {
-        std::string what = g->name;  // the member of a block that holds the matrix
-        if (g->type.base == ir::Base::Block && g->type.fields)
-          for (const auto& f : *g->type.fields)
-            if (holds_double_matrix(f.type)) {
-              what = f.name;
-              break;
-            }
-        ctx_.error(g->loc, "a double matrix in an interface ('" + what + "') is not supported by --mode exact yet: "
-                           "pass its columns as dvecN and build the matrix in the shader");
-        continue;
-      }
+      if (exact() && is_interface(g->storage) && holds_double_matrix(g->type) && !exact_matrix_interface(*g)) continue;
       if (g->type.base == ir::Base::Block && holds_doubles(g->type)) lower_block(*g);
       lower_var(*g);
       if (module_.global_inits[i]) module_.global_inits[i] = lower(module_.global_inits[i]);
@@ -139,6 +128,49 @@ class DoubleLowering {
       for (const auto& f : *t.fields)
         if (holds_double_matrix(f.type)) return true;
     return false;
+  }
+
+  // Mode exact carries a double matrix across the interface as a loose uniform (uvec4 words) or as
+  // a column-major member of a uniform/storage block (split_interfaces.cpp, exact_blocks.cpp);
+  // everything else is diagnosed here. False when `g` was diagnosed.
+  bool exact_matrix_interface(const ir::Var& g) {
+    auto refuse = [&](const std::string& what, const std::string& why) {
+      ctx_.error(g.loc, "a double matrix in an interface ('" + what + "') " + why);
+      return false;
+    };
+    if (g.type.base == ir::Base::Block && g.type.fields) {
+      if (g.storage != ir::Storage::Uniform && g.storage != ir::Storage::Buffer) {
+        for (const auto& f : *g.type.fields)
+          if (holds_double_matrix(f.type))
+            return refuse(f.name, "is supported by --mode exact only in uniform and storage blocks and as a loose "
+                                  "uniform: pass its columns as dvecN members and build the matrix in the shader");
+        return true;
+      }
+      for (const auto& f : *g.type.fields) {
+        if (!holds_double_matrix(f.type)) continue;
+        if (f.type.base != ir::Base::Double)
+          return refuse(f.name, "inside a struct member of a block is not supported by --mode exact yet: make the "
+                                "matrix a member of the block itself");
+        if (f.layout.matrix == "row_major" || (f.layout.matrix.empty() && g.layout.matrix == "row_major"))
+          return refuse(f.name, "with layout(row_major) is not supported by --mode exact: declare it column_major "
+                                "(the default) and transpose the host's data");
+        if (f.type.array_dims.size() > 1)
+          return refuse(f.name, "in a multi-dimensional array is not supported by --mode exact");
+      }
+      return true;
+    }
+    if (g.storage == ir::Storage::Uniform && g.type.base == ir::Base::Double) {
+      if (g.type.array_dims.size() > 1 || (g.type.is_array() && g.type.array_dims[0] <= 0))
+        return refuse(g.name, "in a multi-dimensional or unsized uniform array is not supported by --mode exact");
+      return true;
+    }
+    if (g.storage == ir::Storage::Uniform)
+      return refuse(g.name, "inside a struct uniform is not supported by --mode exact yet: declare the matrix as a "
+                            "uniform of its own");
+    return refuse(g.name, std::string("as a") + (g.storage == ir::Storage::In ? "n input" : "n output") +
+                              " is not supported by --mode exact: pass its columns as dvecN " +
+                              (g.storage == ir::Storage::In ? "inputs" : "outputs") +
+                              " (one location each) and build the matrix with dmatN(c0, c1, ...)");
   }
 
   // ---- types ---------------------------------------------------------------
@@ -801,7 +833,7 @@ class DoubleLowering {
       };
       return ir::make_node(Kind::Construct, "", df_type(r), {word("hi"), word("lo")}, loc);
     }
-    return ir::make_node(Kind::Call, matrix::column(ctx_, c, r), df_type(r), {m, j}, loc);
+    return ir::make_node(Kind::Call, matrix::column(ctx_, c, r), df_type(r), {m, int_index(j)}, loc);
   }
 
   static bool is_double_matrix(const ir::Type& t) { return t.is_double() && t.is_matrix() && !t.is_array(); }
@@ -839,9 +871,12 @@ class DoubleLowering {
       rhs = arithmetic(e->op.substr(0, 1), current, rhs, e->loc);
     }
     if (!is_df(rhs->type)) rhs = to_df(rhs);
-    if (element) return ir::make_node(Kind::Call, matrix::assign_element(ctx_, c, r), df_type(1), {m, j, i, rhs}, e->loc);
+    // The helpers take int indices; a uint index (gl_GlobalInvocationID arithmetic) is converted.
+    if (element)
+      return ir::make_node(Kind::Call, matrix::assign_element(ctx_, c, r), df_type(1), {m, int_index(j), int_index(i), rhs},
+                           e->loc);
     if (df_width(rhs->type) < r) rhs = splat(rhs, r);
-    return ir::make_node(Kind::Call, matrix::assign_column(ctx_, c, r), df_type(r), {m, j, rhs}, e->loc);
+    return ir::make_node(Kind::Call, matrix::assign_column(ctx_, c, r), df_type(r), {m, int_index(j), rhs}, e->loc);
   }
 
   ExprPtr matrix_arithmetic(const std::string& op, ExprPtr a, ExprPtr b, ir::Loc loc) {

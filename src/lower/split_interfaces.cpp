@@ -191,6 +191,61 @@ WordSplit split_into_words(const ir::VarPtr& v, ir::StageKind stage, Context& ct
   return s;
 }
 
+// Mode exact: a loose `uniform dmatCxR M[n]` becomes `uniform uvec4 M[ceil(n*C*R/2)]`, the
+// matrices' doubles column-major, element after element, two per uvec4 (low word, high word each):
+// the host's column-major doubles are the words unchanged (only an odd count, e.g. dmat3, leaves
+// the last zw unused). M itself becomes the private df_dmat value M_value, loaded at main's start.
+struct MatrixSplit {
+  ir::VarPtr original, words;
+  int cols = 0, rows = 0;
+};
+
+MatrixSplit split_matrix_uniform(const ir::VarPtr& v, Context& ctx, std::set<std::string>& names,
+                                 InterfaceVariable& entry) {
+  MatrixSplit s;
+  s.original = v;
+  s.cols = v->declared_type.cols;
+  s.rows = v->declared_type.vec;
+  const int elements = v->declared_type.is_array() ? v->declared_type.array_dims[0] : 1;
+  s.words = std::make_shared<ir::Var>(*v);
+  s.words->type = ir::scalar_type(ir::Base::Uint, 4);
+  s.words->type.array_dims = {(elements * s.cols * s.rows + 1) / 2};
+  s.words->declared_type = s.words->type;
+  v->name = ir::join_identifier(v->name, "_value");
+  check_generated_name(*s.original, v->name, false, ctx, names, "");
+  entry.split = true;
+  entry.encoding = exact_io::kEncoding;
+  entry.lowered_names = {s.words->name};
+  entry.lowered_type = ir::type_name(s.words->type) + ir::array_suffix(s.words->type);
+  entry.lowered_types = {entry.lowered_type};
+  return s;
+}
+
+// The df_dmatCxR value whose first double is double number `first` of the words.
+ExprPtr matrix_value(const MatrixSplit& s, int first) {
+  const ir::Type word = ir::scalar_type(ir::Base::Uint), column = ir::scalar_type(ir::Base::Uint, s.rows);
+  ir::Type columns = column;
+  columns.array_dims = {s.cols};
+  auto half = [&](bool high) {
+    auto array = Expr::make(Kind::Construct, columns);
+    for (int j = 0; j < s.cols; ++j) {
+      auto col = Expr::make(Kind::Construct, column);
+      for (int i = 0; i < s.rows; ++i) {
+        const int k = first + j * s.rows + i;  // double k: words 2k (low), 2k + 1 (high)
+        const char* letter = k % 2 == 0 ? (high ? "y" : "x") : (high ? "w" : "z");
+        col->args.push_back(member(index(sym(s.words), k / 2), letter, word));
+      }
+      array->args.push_back(s.rows == 1 ? col->args[0] : col);
+    }
+    return array;
+  };
+  ir::Type type = s.original->type;
+  type.array_dims.clear();
+  auto value = Expr::make(Kind::Construct, type);
+  value->args = {half(true), half(false)};
+  return value;
+}
+
 }  // namespace
 
 bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
@@ -214,6 +269,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   std::vector<ExprPtr> inits;
   std::vector<Split> splits;
   std::vector<WordSplit> word_splits;
+  std::vector<MatrixSplit> matrix_splits;
   for (size_t i = 0; i < module.globals.size(); ++i) {
     const ir::VarPtr& v = module.globals[i];
     bool interface = v->storage == ir::Storage::In || v->storage == ir::Storage::Out ||
@@ -257,8 +313,13 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
                                                              [](int d) { return d <= 0; })) {
         ctx.error(v->loc, "unsized arrays of doubles cannot be split into hi/lo interface variables");
       } else if (binary64_words(ctx.options) && v->declared_type.is_matrix()) {
-        ctx.error(v->loc, "'" + v->name + "': double matrices cannot cross the interface in --mode exact yet; pass "
-                          "the columns as dvecN variables");
+        // lower_doubles let only loose uniforms through (in/out matrices are diagnosed there).
+        matrix_splits.push_back(split_matrix_uniform(v, ctx, names, entry));
+        globals.push_back(matrix_splits.back().words);
+        inits.push_back(nullptr);
+        manifest.variables.push_back(entry);
+        v->storage = ir::Storage::Global;  // the private df_dmat value the shader body uses
+        v->layout = {};
       } else if (binary64_words(ctx.options)) {
         WordSplit s = split_into_words(v, module.stage, ctx, names, entry, locations);
         for (const auto& part : s.parts) {
@@ -329,7 +390,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   }
   module.globals = globals;
   module.global_inits = inits;
-  if (splits.empty() && word_splits.empty()) return !ctx.failed;
+  if (splits.empty() && word_splits.empty() && matrix_splits.empty()) return !ctx.failed;
 
   auto main = std::find_if(module.functions.begin(), module.functions.end(),
                            [](const ir::FunctionPtr& f) { return f->name == "main"; });
@@ -373,6 +434,12 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         copy_in.push_back(assign(elems_df[i], exact_io::value_of(words, s.width)));
       }
     }
+  }
+  for (const auto& s : matrix_splits) {
+    std::vector<ExprPtr> elems_df;
+    for_each_element(sym(s.original), [&](const ExprPtr& e) { elems_df.push_back(e); });
+    for (size_t e = 0; e < elems_df.size(); ++e)
+      copy_in.push_back(assign(elems_df[e], matrix_value(s, static_cast<int>(e) * s.cols * s.rows)));
   }
   auto& body = (*main)->body->body;
   body.insert(body.begin(), copy_in.begin(), copy_in.end());

@@ -166,6 +166,13 @@ std::string set_uniform(GLuint program, const std::string& name, const std::vect
     glUniform1f(location, value);
     return {};
   }
+  if (size > 1 && (type == GL_UNSIGNED_INT_VEC4 || type == GL_INT_VEC4) && values->size() == 4 * size_t(size)) {
+    std::vector<GLuint> u(values->size());  // an array of uvec4 (mode exact's matrix words), all elements
+    for (size_t c = 0; c < u.size(); ++c) u[c] = static_cast<GLuint>((*values)[c]);
+    if (type == GL_UNSIGNED_INT_VEC4) glUniform4uiv(location, size, u.data());
+    else glUniform4iv(location, size, reinterpret_cast<const GLint*>(u.data()));
+    return {};
+  }
   if (size == 1 && set_matrix(location, type, *values)) return {};
   if (size == 1 && set_integer_vector(location, type, *values)) return {};
   const size_t components = type == GL_FLOAT ? 1 : type == GL_FLOAT_VEC2 ? 2 : type == GL_FLOAT_VEC3 ? 3

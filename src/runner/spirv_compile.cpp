@@ -80,7 +80,12 @@ void uniform_shape(int gl_type, int size, char* scalar, int* components, int* co
   *components = 0;
   *columns = 1;
   *scalar = 'f';
-  if (size != 1) return;
+  if (size != 1) {
+    // An array of 4-component integer vectors (mode exact's uvec4 matrix words): its std140 stride is
+    // 16 bytes, so its components are consecutive.
+    if (size > 1 && integer_components(gl_type, scalar) == 4) *components = 4 * size;
+    return;
+  }
   int rows = 0;
   bool is_double = false;
   if (matrix_shape(gl_type, &is_double, columns, &rows)) *components = *columns * rows;

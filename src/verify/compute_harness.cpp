@@ -327,7 +327,12 @@ std::vector<runner::ComputeJob> ComputeHarness::jobs(bool native) const {
         for (const Slot& s : slots) components.push_back(s.components);
         const auto parts = word_parts(std::vector<double>(vals.begin(), vals.begin() + v.native.components),
                                       v.native.components, components);
-        for (size_t part = 0; part < slots.size(); ++part) job.uniforms[slots[part].name] = parts[part];
+        for (size_t part = 0; part < slots.size(); ++part) {
+          job.uniforms[slots[part].name] = parts[part];
+          // A dmat3 (9 doubles) fills 4.5 uvec4s of `uvec4 M[5]`: the last two words are unused.
+          if (job.uniforms[slots[part].name].size() < size_t(slots[part].components))
+            job.uniforms[slots[part].name].resize(size_t(slots[part].components), 0.0);
+        }
         continue;
       }
       for (size_t part = 0; part < slots.size(); ++part) {

@@ -313,7 +313,12 @@ std::vector<runner::GraphicsJob> GraphicsHarness::jobs(bool native) const {
       const std::vector<std::string> names = native ? std::vector<std::string>{v.name} : v.lowered;
       if (!native && !v.word_components.empty()) {  // mode exact: uvec2/uvec4 words
         const auto parts = word_parts(values_[d][i], v.components, v.word_components);
-        for (size_t part = 0; part < names.size(); ++part) (v.is_uniform ? job.uniforms : job.inputs)[names[part]] = parts[part];
+        for (size_t part = 0; part < names.size(); ++part) {
+          std::vector<double>& words = (v.is_uniform ? job.uniforms : job.inputs)[names[part]];
+          words = parts[part];
+          // A dmat3 uniform (9 doubles) fills 4.5 uvec4s of `uvec4 M[5]`: the last two words are unused.
+          if (v.is_uniform && words.size() < size_t(v.word_components[part])) words.resize(size_t(v.word_components[part]), 0.0);
+        }
         continue;
       }
       for (size_t part = 0; part < names.size(); ++part) {

@@ -312,11 +312,11 @@ TEST(ExactLowering, RefusalsAreDiagnosed) {
   EXPECT_FALSE(es100.ok);
   EXPECT_NE(first_error(es100).find("--mode exact needs 32-bit integers"), std::string::npos) << first_error(es100);
 
-  Result matrix = lower_exact("#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer B { dmat2 m; };\n"
+  Result matrix = lower_exact("#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, row_major, binding = 0) buffer B { dmat2 m; };\n"
                               "void main() { m = m * m; }\n");
   EXPECT_FALSE(matrix.ok);
   EXPECT_NE(first_error(matrix).find(":3:"), std::string::npos) << first_error(matrix);
-  EXPECT_NE(first_error(matrix).find("a double matrix in an interface ('m') is not supported by --mode exact"),
+  EXPECT_NE(first_error(matrix).find("a double matrix in an interface ('m') with layout(row_major) is not supported by --mode exact"),
             std::string::npos)
       << first_error(matrix);
 

@@ -1,0 +1,541 @@
+#version 310 es
+precision highp float;
+precision highp int;
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+struct df_dvec2 {
+  uvec2 hi;
+  uvec2 lo;
+};
+struct df_dvec3 {
+  uvec3 hi;
+  uvec3 lo;
+};
+struct df_dmat2 {
+  uvec2 hi[2];
+  uvec2 lo[2];
+};
+struct df_dmat2x3 {
+  uvec3 hi[2];
+  uvec3 lo[2];
+};
+struct df_dmat3x2 {
+  uvec2 hi[3];
+  uvec2 lo[3];
+};
+struct df_dmat3 {
+  uvec3 hi[3];
+  uvec3 lo[3];
+};
+struct df_dmat4 {
+  uvec4 hi[4];
+  uvec4 lo[4];
+};
+// doublet exact binary64 runtime (mode exact): 24 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+struct df_double { uint hi; uint lo; };
+struct df_dvec4 { uvec4 hi; uvec4 lo; };
+
+// ex_is_nan: true when the bit pattern is a NaN.
+// Algorithm: exponent field all ones and a nonzero significand
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+bool ex_is_nan(uvec2 a) {
+  return (a.y & 0x7FFFFFFFu) > 0x7FF00000u || ((a.y & 0x7FFFFFFFu) == 0x7FF00000u && a.x != 0u);
+}
+
+// ex_pick_nan: the NaN result of an operation with a NaN operand: a if it is a NaN, else b, made quiet.
+// Algorithm: set the quiet bit (significand bit 51) of a if it is a NaN, else of b. Native fp64 on lavapipe (LLVM, x86 SSE) returns the first source operand's NaN, and LLVM passes a commutative operation's operands swapped: ex_add_bits and ex_mul_bits call ex_pick_nan(b, a), ex_sub_bits and ex_div_bits ex_pick_nan(a, b) (measured by tests/exact)
+// Source: IEEE 754-2019, 6.2.3 (NaN propagation); Intel SDM vol. 1, 2016, 4.8.3.5 (first source)
+// Bound: exact
+// Flops: 0
+uvec2 ex_pick_nan(uvec2 a, uvec2 b) {
+  uvec2 n = ex_is_nan(a) ? a : b;
+  return uvec2(n.x, n.y | 0x00080000u);
+}
+
+// ex_sig: the 53-bit integer significand (implicit bit set for normal numbers), as (lo, hi).
+// Algorithm: low 52 bits of the pattern, bit 52 set when the exponent field is nonzero
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+uvec2 ex_sig(uvec2 a) {
+  uint hi = a.y & 0x000FFFFFu;
+  if ((a.y & 0x7FF00000u) != 0u) hi |= 0x00100000u;
+  return uvec2(a.x, hi);
+}
+
+// ex_clz32: ex_clz32 by findMSB, where the target has GLSL's integer functions.
+// Algorithm: 31 - findMSB(x); findMSB(0) is -1, so 0 gives 32
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (findMSB)
+// Bound: exact
+// Flops: 0 (2 integer operations)
+int ex_clz32(uint x) {
+  return 31 - findMSB(x);
+}
+
+// ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
+// Algorithm: ex_clz32 of the high word, else 32 + ex_clz32 of the low word
+// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3
+// Bound: exact
+// Flops: 0
+int ex_clz64(uvec2 a) {
+  return a.y != 0u ? ex_clz32(a.y) : 32 + ex_clz32(a.x);
+}
+
+// ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: split by case).
+// Algorithm: word shift by case n == 0, n < 32, n >= 32
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
+// Bound: exact
+// Flops: 0 (up to 6 integer operations)
+uvec2 ex_shl64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 32) return uvec2(0u, a.x << uint(n - 32));
+  return uvec2(a.x << uint(n), (a.y << uint(n)) | (a.x >> uint(32 - n)));
+}
+
+// ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
+// Algorithm: a normal number's significand as it is; subnormals shifted left by their leading zeros, exponent lowered by the same count
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+uvec2 ex_normalize_sig(uvec2 a, out int x) {
+  uvec2 m = ex_sig(a);
+  if ((a.y & 0x7FF00000u) != 0u) {
+    x = int((a.y >> 20) & 0x7FFu);
+    return m;
+  }
+  int shift = ex_clz64(m) - 11;
+  x = 1 - shift;
+  return ex_shl64(m, shift);
+}
+
+// ex_mul32: ex_mul32 by umulExtended, where the target has GLSL's integer functions (Mesa's soft-fp64 multiplies this way too).
+// Algorithm: umulExtended: the 64-bit product's high and low words in one built-in
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (umulExtended)
+// Bound: exact
+// Flops: 0 (1 integer multiplication)
+uvec2 ex_mul32(uint a, uint b) {
+  uint hi, lo;
+  umulExtended(a, b, hi, lo);
+  return uvec2(lo, hi);
+}
+
+// ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
+// Algorithm: word sums with the carry of the low word (a.x + b.x < a.x)
+// Source: two's-complement multiword addition (Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm A)
+// Bound: exact
+// Flops: 0 (4 integer operations)
+uvec2 ex_add64(uvec2 a, uvec2 b) {
+  uint lo = a.x + b.x;
+  return uvec2(lo, a.y + b.y + (lo < a.x ? 1u : 0u));
+}
+
+// ex_shr_jam64: a >> n for n >= 0, the shifted-out bits ORed into bit 0 (the sticky bit).
+// Algorithm: word shift by case; any nonzero bit shifted out sets bit 0 ("jamming")
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (shiftRightJam64 semantics)
+// Bound: exact
+// Flops: 0 (up to 10 integer operations)
+uvec2 ex_shr_jam64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 64) return uvec2((a.x | a.y) != 0u ? 1u : 0u, 0u);
+  uvec2 r;
+  uint lost;
+  if (n >= 32) {
+    r = uvec2(n == 32 ? a.y : a.y >> uint(n - 32), 0u);
+    lost = a.x | (n == 32 ? 0u : a.y << uint(64 - n));
+  } else {
+    r = uvec2((a.x >> uint(n)) | (a.y << uint(32 - n)), a.y >> uint(n));
+    lost = a.x << uint(32 - n);
+  }
+  r.x |= lost != 0u ? 1u : 0u;
+  return r;
+}
+
+// ex_round_pack: the binary64 nearest (ties to even) to sig * 2^(e - 1084), sign s. sig < 2^63; if e > 0 its top bit must be bit 62.
+// Algorithm: e < 0: jamming shift to e = 0 (subnormal); keep 53 bits, 10 round bits; add half, clear the last bit on an exact tie; the significand's carry runs into the exponent field (up to infinity)
+// Source: IEEE 754-2019, 4.3.1; Hauser, Berkeley SoftFloat 3e, 2018 (roundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (about 30 integer operations)
+uvec2 ex_round_pack(bool s, int e, uvec2 sig) {
+  uint signWord = s ? 0x80000000u : 0u;
+  if (e > 0x7FD) return uvec2(0u, signWord | 0x7FF00000u);
+  if (e < 0) {
+    sig = ex_shr_jam64(sig, -e);
+    e = 0;
+  }
+  uint roundBits = sig.x & 0x3FFu;
+  sig = ex_add64(sig, uvec2(0x200u, 0u));
+  sig = uvec2((sig.x >> 10) | (sig.y << 22), sig.y >> 10);
+  if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;
+  return ex_add64(uvec2(0u, signWord | (uint(e) << 20)), sig);
+}
+
+// ex_mul_bits: a * b in binary64, correctly rounded (ties to even).
+// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, a one-bit jamming normalization, rounded once
+// Source: IEEE 754-2019, 5.4.1, 7.2 (0 * Inf invalid); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (16 integer multiplications, about 80 other integer operations)
+uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
+  uint signWord = (a.y ^ b.y) & 0x80000000u;
+  uint absA = a.y & 0x7FFFFFFFu, absB = b.y & 0x7FFFFFFFu;
+  bool zeroA = (absA | a.x) == 0u, zeroB = (absB | b.x) == 0u;
+  if (absA == 0x7FF00000u || absB == 0x7FF00000u) {
+    if (zeroA || zeroB) return uvec2(0u, 0xFFF80000u);
+    return uvec2(0u, signWord | 0x7FF00000u);
+  }
+  if (zeroA || zeroB) return uvec2(0u, signWord);
+  int xa, xb;
+  uvec2 ma = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
+  uvec2 p00 = ex_mul32(ma.x, mb.x), p01 = ex_mul32(ma.x, mb.y);
+  uvec2 p10 = ex_mul32(ma.y, mb.x), p11 = ex_mul32(ma.y, mb.y);
+  uvec2 mid = ex_add64(ex_add64(uvec2(p00.y, 0u), uvec2(p01.x, 0u)), uvec2(p10.x, 0u));
+  uvec2 top = ex_add64(ex_add64(uvec2(p01.y, 0u), uvec2(p10.y, 0u)), uvec2(mid.y, 0u));
+  uint w1 = mid.x;
+  uint w2 = top.x + p11.x;
+  uint w3 = p11.y + top.y + (w2 < p11.x ? 1u : 0u);
+  uvec2 sig = uvec2((w1 >> 10) | (w2 << 22), (w2 >> 10) | (w3 << 22));
+  if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;
+  // The product of two significands in [2^52, 2^53) leaves sig's top bit at 63 or 62.
+  int e = xa + xb - 1024;
+  if (sig.y >= 0x80000000u) {
+    sig = uvec2((sig.x >> 1) | (sig.y << 31) | (sig.x & 1u), sig.y >> 1);
+    e += 1;
+  }
+  return ex_round_pack(signWord != 0u, e, sig);
+}
+
+// ex_mul_first: a * b with a's NaN passed on first, as native's built-in sequences (dot, cross, smoothstep...) order their products (measured by tests/exact/exact_builtins_test.cpp).
+// Algorithm: ex_mul_bits(b, a): multiplication is commutative in value; only the NaN choice changes
+// Source: IEEE 754-2019, 5.4.1, 6.2.3
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+uvec2 ex_mul_first(uvec2 a, uvec2 b) {
+  return ex_mul_bits(b, a);
+}
+
+// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
+// Algorithm: exponent field, subnormals and zero counted as field 1
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+int ex_exponent(uvec2 a) {
+  return max(int((a.y >> 20) & 0x7FFu), 1);
+}
+
+// ex_lt64: unsigned a < b on 64-bit words.
+// Algorithm: compare high words, then low words
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword comparison)
+// Bound: exact
+// Flops: 0 (3 integer comparisons)
+bool ex_lt64(uvec2 a, uvec2 b) {
+  return a.y < b.y || (a.y == b.y && a.x < b.x);
+}
+
+// ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
+// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
+  int z = ex_clz64(sig);
+  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
+  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
+}
+
+// ex_sub64: 64-bit difference, modulo 2^64.
+// Algorithm: word differences with the borrow of the low word (a.x < b.x)
+// Source: two's-complement multiword subtraction (Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm S)
+// Bound: exact
+// Flops: 0 (4 integer operations)
+uvec2 ex_sub64(uvec2 a, uvec2 b) {
+  return uvec2(a.x - b.x, a.y - b.y - (a.x < b.x ? 1u : 0u));
+}
+
+// ex_add_bits: a + b in binary64, correctly rounded (ties to even).
+// Algorithm: order by magnitude; significands << 10; the smaller jam-shifted by the exponent difference; add or subtract; normalize and round once. Exact cancellation gives +0; (-0) + (-0) = -0
+// Source: IEEE 754-2019, 5.4.1, 6.3; Hauser, Berkeley SoftFloat 3e, 2018 (addMagsF64/subMagsF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (about 60 integer operations)
+uvec2 ex_add_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
+  bool sa = a.y >= 0x80000000u, sb = b.y >= 0x80000000u;
+  bool infA = (a.y & 0x7FFFFFFFu) == 0x7FF00000u, infB = (b.y & 0x7FFFFFFFu) == 0x7FF00000u;
+  if (infA || infB) {
+    if (infA && infB && sa != sb) return uvec2(0u, 0xFFF80000u);
+    return infA ? a : b;
+  }
+  uvec2 ma = ex_sig(a), mb = ex_sig(b);
+  int xa = ex_exponent(a), xb = ex_exponent(b);
+  if ((ma.x | ma.y | mb.x | mb.y) == 0u) return uvec2(0u, (sa && sb) ? 0x80000000u : 0u);
+  if (xb > xa || (xb == xa && ex_lt64(ma, mb))) {
+    uvec2 tm = ma; ma = mb; mb = tm;
+    int tx = xa; xa = xb; xb = tx;
+    bool ts = sa; sa = sb; sb = ts;
+  }
+  uvec2 big = ex_shl64(ma, 10);
+  uvec2 small = ex_shr_jam64(ex_shl64(mb, 10), xa - xb);
+  if (sa == sb) return ex_norm_round_pack(sa, xa - 1, ex_add64(big, small));
+  uvec2 d = ex_sub64(big, small);
+  if ((d.x | d.y) == 0u) return uvec2(0u, 0u);
+  return ex_norm_round_pack(sa, xa - 1, d);
+}
+
+// ex_fma_bits: fma(a, b, c) as native fp64 on lavapipe computes it: a * b rounded to binary64, then + c rounded (two roundings, not IEEE fusedMultiplyAdd).
+// Algorithm: p = ex_mul_bits(a, b), then ex_add_bits(p, c); with NaN operands native passes on the first NaN of a, b (then p, c) in operand order, not swapped as for a * b (measured by tests/exact/exact_fma_test.cpp)
+// Source: GLSL 4.60 specification, 2017, 8.3 (fma: "may" be a single operation; precision of a*b+c otherwise); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (two roundings)
+// Flops: 0 (integer arithmetic)
+uvec2 ex_fma_bits(uvec2 a, uvec2 b, uvec2 c) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
+  uvec2 p = ex_mul_bits(a, b);
+  if (ex_is_nan(p)) return p;
+  return ex_add_bits(p, c);
+}
+
+// ex_from_bits: the mode-exact double of a binary64 pattern uvec2(low word, high word).
+// Algorithm: member reorder
+// Source: GLSL 4.60 specification, 2017, 8.4 (packDouble2x32 word order)
+// Bound: exact
+// Flops: 0
+df_double ex_from_bits(uvec2 w) {
+  return df_double(w.y, w.x);
+}
+
+// ex_bits: the binary64 pattern of a mode-exact double as uvec2(low word, high word), the order of unpackDouble2x32.
+// Algorithm: member reorder
+// Source: GLSL 4.60 specification, 2017, 8.4 (unpackDouble2x32 word order)
+// Bound: exact
+// Flops: 0
+uvec2 ex_bits(df_double a) {
+  return uvec2(a.lo, a.hi);
+}
+
+// ex_mul: a * b (mode exact), correctly rounded.
+// Algorithm: ex_mul_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+df_double ex_mul(df_double a, df_double b) {
+  return ex_from_bits(ex_mul_bits(ex_bits(a), ex_bits(b)));
+}
+
+// ex_add: a + b (mode exact), correctly rounded.
+// Algorithm: ex_add_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+df_double ex_add(df_double a, df_double b) {
+  return ex_from_bits(ex_add_bits(ex_bits(a), ex_bits(b)));
+}
+
+// ex_add: a + b (mode exact), correctly rounded.
+// Algorithm: ex_add_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// (width 4: the width-1 ex_add applied to each component)
+df_dvec4 ex_add(df_dvec4 a, df_dvec4 b) {
+  df_double r0 = ex_add(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  df_double r1 = ex_add(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  df_double r2 = ex_add(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  df_double r3 = ex_add(df_double(a.hi.w, a.lo.w), df_double(b.hi.w, b.lo.w));
+  return df_dvec4(uvec4(r0.hi, r1.hi, r2.hi, r3.hi), uvec4(r0.lo, r1.lo, r2.lo, r3.lo));
+}
+
+// ex_mul_dmat4_dvec4: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
+// first, every step rounded as native's (each fma twice).
+df_dvec4 ex_mul_dmat4_dvec4(df_dmat4 m, df_dvec4 v) {
+  uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][0], m.hi[3][0]), uvec2(v.lo[3], v.hi[3])))));
+  uvec2 p1 = ex_fma_bits(uvec2(m.lo[0][1], m.hi[0][1]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][1], m.hi[1][1]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][1], m.hi[2][1]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][1], m.hi[3][1]), uvec2(v.lo[3], v.hi[3])))));
+  uvec2 p2 = ex_fma_bits(uvec2(m.lo[0][2], m.hi[0][2]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][2], m.hi[1][2]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][2], m.hi[2][2]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][2], m.hi[3][2]), uvec2(v.lo[3], v.hi[3])))));
+  uvec2 p3 = ex_fma_bits(uvec2(m.lo[0][3], m.hi[0][3]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][3], m.hi[1][3]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][3], m.hi[2][3]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][3], m.hi[3][3]), uvec2(v.lo[3], v.hi[3])))));
+  return df_dvec4(uvec4(p0.y, p1.y, p2.y, p3.y), uvec4(p0.x, p1.x, p2.x, p3.x));
+}
+
+// ex_mul_dmat3_dvec3: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
+// first, every step rounded as native's (each fma twice).
+df_dvec3 ex_mul_dmat3_dvec3(df_dmat3 m, df_dvec3 v) {
+  uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]), ex_mul_first(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2]))));
+  uvec2 p1 = ex_fma_bits(uvec2(m.lo[0][1], m.hi[0][1]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][1], m.hi[1][1]), uvec2(v.lo[1], v.hi[1]), ex_mul_first(uvec2(m.lo[2][1], m.hi[2][1]), uvec2(v.lo[2], v.hi[2]))));
+  uvec2 p2 = ex_fma_bits(uvec2(m.lo[0][2], m.hi[0][2]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][2], m.hi[1][2]), uvec2(v.lo[1], v.hi[1]), ex_mul_first(uvec2(m.lo[2][2], m.hi[2][2]), uvec2(v.lo[2], v.hi[2]))));
+  return df_dvec3(uvec3(p0.y, p1.y, p2.y), uvec3(p0.x, p1.x, p2.x));
+}
+
+df_double df_component_dvec2(df_dvec2 v, int i) {
+  return df_double(v.hi[i], v.lo[i]);
+}
+
+df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
+  return df_dvec4(uvec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), uvec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
+}
+
+df_double df_swizzle_dvec3_z(df_dvec3 v) {
+  return df_double(v.hi.z, v.lo.z);
+}
+
+df_dvec4 df_assign_column_dmat4(inout df_dmat4 m, int j, df_dvec4 v) {
+  m.hi[j] = v.hi;
+  m.lo[j] = v.lo;
+  return v;
+}
+
+df_double df_swizzle_dvec4_w(df_dvec4 v) {
+  return df_double(v.hi.w, v.lo.w);
+}
+
+df_double df_assign_element_dmat4(inout df_dmat4 m, int j, int i, df_double x) {
+  m.hi[j][i] = x.hi;
+  m.lo[j][i] = x.lo;
+  return x;
+}
+
+// ex_mul_dmat2_dvec2: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
+// first, every step rounded as native's (each fma twice).
+df_dvec2 ex_mul_dmat2_dvec2(df_dmat2 m, df_dvec2 v) {
+  uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_mul_first(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1])));
+  uvec2 p1 = ex_fma_bits(uvec2(m.lo[0][1], m.hi[0][1]), uvec2(v.lo[0], v.hi[0]), ex_mul_first(uvec2(m.lo[1][1], m.hi[1][1]), uvec2(v.lo[1], v.hi[1])));
+  return df_dvec2(uvec2(p0.y, p1.y), uvec2(p0.x, p1.x));
+}
+
+// ex_mul_dmat2_dmat3x2: column j of a * b is a * (column j of b) (ex_mul_dmat2_dvec2).
+df_dmat3x2 ex_mul_dmat2_dmat3x2(df_dmat2 a, df_dmat3x2 b) {
+  df_dvec2 c0 = ex_mul_dmat2_dvec2(a, df_dvec2(b.hi[0], b.lo[0]));
+  df_dvec2 c1 = ex_mul_dmat2_dvec2(a, df_dvec2(b.hi[1], b.lo[1]));
+  df_dvec2 c2 = ex_mul_dmat2_dvec2(a, df_dvec2(b.hi[2], b.lo[2]));
+  return df_dmat3x2(uvec2[3](c0.hi, c1.hi, c2.hi), uvec2[3](c0.lo, c1.lo, c2.lo));
+}
+
+df_double df_swizzle_dvec2_y(df_dvec2 v) {
+  return df_double(v.hi.y, v.lo.y);
+}
+
+df_double df_assign_element_dmat3x2(inout df_dmat3x2 m, int j, int i, df_double x) {
+  m.hi[j][i] = x.hi;
+  m.lo[j][i] = x.lo;
+  return x;
+}
+
+struct ex_dvec3_words {
+  uvec4 xy;
+  uvec2 z;
+};
+struct ex_dmat3x3_words {
+  ex_dvec3_words c[3];
+};
+struct ex_dmat2x3_words {
+  ex_dvec3_words c[2];
+};
+struct ex_dmat2x2_words {
+  uvec4 c[2];
+};
+struct ex_dvec4_words {
+  uvec4 xy;
+  uvec4 zw;
+};
+struct ex_dmat4x4_words {
+  ex_dvec4_words c[4];
+};
+struct ex_dmat3x2_words {
+  uvec4 c[3];
+};
+
+df_dvec4 ex_load_dvec4(uvec4 xy, uvec4 zw) {
+  return df_dvec4(uvec4(xy.yw, zw.yw), uvec4(xy.xz, zw.xz));
+}
+df_dvec4 ex_load_dvec4(ex_dvec4_words w) {
+  return ex_load_dvec4(w.xy, w.zw);
+}
+
+df_dvec2 ex_load_dvec2(uvec4 w) {
+  return df_dvec2(w.yw, w.xz);
+}
+
+df_double ex_load_double(uvec2 w) {
+  return df_double(w.y, w.x);
+}
+
+ex_dvec4_words ex_words_dvec4(df_dvec4 v) {
+  return ex_dvec4_words(uvec4(v.lo.x, v.hi.x, v.lo.y, v.hi.y), uvec4(v.lo.z, v.hi.z, v.lo.w, v.hi.w));
+}
+
+ex_dmat4x4_words ex_words_dmat4(df_dmat4 v) {
+  return ex_dmat4x4_words(ex_dvec4_words[4](ex_words_dvec4(df_dvec4(v.hi[0], v.lo[0])), ex_words_dvec4(df_dvec4(v.hi[1], v.lo[1])), ex_words_dvec4(df_dvec4(v.hi[2], v.lo[2])), ex_words_dvec4(df_dvec4(v.hi[3], v.lo[3]))));
+}
+
+df_dvec3 ex_load_dvec3(uvec4 xy, uvec2 z) {
+  return df_dvec3(uvec3(xy.yw, z.y), uvec3(xy.xz, z.x));
+}
+df_dvec3 ex_load_dvec3(ex_dvec3_words w) {
+  return ex_load_dvec3(w.xy, w.z);
+}
+
+uvec2 ex_words_double(df_double v) {
+  return uvec2(v.lo, v.hi);
+}
+
+df_dmat2 ex_load_dmat2(ex_dmat2x2_words w) {
+  df_dvec2 c0 = ex_load_dvec2(w.c[0]);
+  df_dvec2 c1 = ex_load_dvec2(w.c[1]);
+  return df_dmat2(uvec2[2](c0.hi, c1.hi), uvec2[2](c0.lo, c1.lo));
+}
+
+df_dmat3x2 ex_load_dmat3x2(ex_dmat3x2_words w) {
+  df_dvec2 c0 = ex_load_dvec2(w.c[0]);
+  df_dvec2 c1 = ex_load_dvec2(w.c[1]);
+  df_dvec2 c2 = ex_load_dvec2(w.c[2]);
+  return df_dmat3x2(uvec2[3](c0.hi, c1.hi, c2.hi), uvec2[3](c0.lo, c1.lo, c2.lo));
+}
+
+uvec4 ex_words_dvec2(df_dvec2 v) {
+  return uvec4(v.lo.x, v.hi.x, v.lo.y, v.hi.y);
+}
+
+ex_dmat3x2_words ex_words_dmat3x2(df_dmat3x2 v) {
+  return ex_dmat3x2_words(uvec4[3](ex_words_dvec2(df_dvec2(v.hi[0], v.lo[0])), ex_words_dvec2(df_dvec2(v.hi[1], v.lo[1])), ex_words_dvec2(df_dvec2(v.hi[2], v.lo[2]))));
+}
+
+
+uniform uvec4 u_model[8];
+df_dmat4 u_model_value;
+uniform uvec4 r[9];
+df_dmat3 r_value[2];
+layout(std140, binding = 0) uniform Mats {
+  float s;
+  uint ex_pad0;
+  uvec2 ex_pad1;
+  uvec4 ex_pad2;
+  ex_dmat3x3_words a;
+  ex_dmat2x3_words b;
+  ex_dmat2x2_words c;
+  uvec2 k;
+};
+layout(std430, binding = 1) buffer Io {
+  float f;
+  uint ex_pad3;
+  uvec2 ex_pad4;
+  uvec4 ex_pad5;
+  ex_dmat4x4_words m;
+  ex_dmat3x2_words n[2];
+  ex_dvec4_words v[];
+} io;
+
+
+void main()
+{
+  u_model_value = df_dmat4(uvec4[4](uvec4(u_model[0].y, u_model[0].w, u_model[1].y, u_model[1].w), uvec4(u_model[2].y, u_model[2].w, u_model[3].y, u_model[3].w), uvec4(u_model[4].y, u_model[4].w, u_model[5].y, u_model[5].w), uvec4(u_model[6].y, u_model[6].w, u_model[7].y, u_model[7].w)), uvec4[4](uvec4(u_model[0].x, u_model[0].z, u_model[1].x, u_model[1].z), uvec4(u_model[2].x, u_model[2].z, u_model[3].x, u_model[3].z), uvec4(u_model[4].x, u_model[4].z, u_model[5].x, u_model[5].z), uvec4(u_model[6].x, u_model[6].z, u_model[7].x, u_model[7].z)));
+  r_value[0] = df_dmat3(uvec3[3](uvec3(r[0].y, r[0].w, r[1].y), uvec3(r[1].w, r[2].y, r[2].w), uvec3(r[3].y, r[3].w, r[4].y)), uvec3[3](uvec3(r[0].x, r[0].z, r[1].x), uvec3(r[1].z, r[2].x, r[2].z), uvec3(r[3].x, r[3].z, r[4].x)));
+  r_value[1] = df_dmat3(uvec3[3](uvec3(r[4].w, r[5].y, r[5].w), uvec3(r[6].y, r[6].w, r[7].y), uvec3(r[7].w, r[8].y, r[8].w)), uvec3[3](uvec3(r[4].z, r[5].x, r[5].z), uvec3(r[6].x, r[6].z, r[7].x), uvec3(r[7].z, r[8].x, r[8].z)));
+  uint i = gl_GlobalInvocationID.x;
+  df_dvec4 x = ex_load_dvec4(io.v[i]);
+  io.v[i] = ex_words_dvec4(ex_add(ex_mul_dmat4_dvec4(u_model_value, x), df_make_dvec4_3_1(ex_mul_dmat3_dvec3(r_value[i & 1u], df_dvec3(x.hi.xyz, x.lo.xyz)), ex_mul(df_component_dvec2(ex_load_dvec2(c.c[1]), int(i & 1u)), ex_load_double(k)))));
+  if (i == 0u)
+  {
+    io.m = ex_words_dmat4(u_model_value);
+    io.m.c[2] = ex_words_dvec4(ex_add(ex_load_dvec4(io.m.c[1]), df_make_dvec4_3_1(ex_load_dvec3(a.c[0]), df_swizzle_dvec3_z(ex_load_dvec3(b.c[1])))));
+    io.m.c[3].xy.zw = ex_words_double(ex_mul(df_swizzle_dvec4_w(ex_load_dvec4(io.m.c[0])), ex_load_double(k)));
+    io.n[1] = ex_words_dmat3x2(ex_mul_dmat2_dmat3x2(ex_load_dmat2(c), ex_load_dmat3x2(io.n[0])));
+    io.n[0].c[2].zw = ex_words_double(ex_add(df_swizzle_dvec2_y(ex_load_dvec2(io.n[0].c[2])), df_swizzle_dvec3_z(ex_load_dvec3(a.c[2]))));
+  }
+}

@@ -1,0 +1,376 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+struct df_dvec3 {
+  uvec3 hi;
+  uvec3 lo;
+};
+struct df_dmat4 {
+  uvec4 hi[4];
+  uvec4 lo[4];
+};
+// doublet exact binary64 runtime (mode exact): 23 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+struct df_double { uint hi; uint lo; };
+struct df_dvec4 { uvec4 hi; uvec4 lo; };
+
+// ex_is_nan: true when the bit pattern is a NaN.
+// Algorithm: exponent field all ones and a nonzero significand
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+bool ex_is_nan(uvec2 a) {
+  return (a.y & 0x7FFFFFFFu) > 0x7FF00000u || ((a.y & 0x7FFFFFFFu) == 0x7FF00000u && a.x != 0u);
+}
+
+// ex_pick_nan: the NaN result of an operation with a NaN operand: a if it is a NaN, else b, made quiet.
+// Algorithm: set the quiet bit (significand bit 51) of a if it is a NaN, else of b. Native fp64 on lavapipe (LLVM, x86 SSE) returns the first source operand's NaN, and LLVM passes a commutative operation's operands swapped: ex_add_bits and ex_mul_bits call ex_pick_nan(b, a), ex_sub_bits and ex_div_bits ex_pick_nan(a, b) (measured by tests/exact)
+// Source: IEEE 754-2019, 6.2.3 (NaN propagation); Intel SDM vol. 1, 2016, 4.8.3.5 (first source)
+// Bound: exact
+// Flops: 0
+uvec2 ex_pick_nan(uvec2 a, uvec2 b) {
+  uvec2 n = ex_is_nan(a) ? a : b;
+  return uvec2(n.x, n.y | 0x00080000u);
+}
+
+// ex_sig: the 53-bit integer significand (implicit bit set for normal numbers), as (lo, hi).
+// Algorithm: low 52 bits of the pattern, bit 52 set when the exponent field is nonzero
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+uvec2 ex_sig(uvec2 a) {
+  uint hi = a.y & 0x000FFFFFu;
+  if ((a.y & 0x7FF00000u) != 0u) hi |= 0x00100000u;
+  return uvec2(a.x, hi);
+}
+
+// ex_clz32: count of leading zero bits of a 32-bit word (32 for 0); ES 3.00 has no findMSB.
+// Algorithm: binary search over 16, 8, 4, 2, 1 bit halves
+// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3 (nlz, binary search)
+// Bound: exact
+// Flops: 0 (about 16 integer operations)
+int ex_clz32(uint x) {
+  if (x == 0u) return 32;
+  int n = 0;
+  if ((x & 0xFFFF0000u) == 0u) { n += 16; x <<= 16; }
+  if ((x & 0xFF000000u) == 0u) { n += 8; x <<= 8; }
+  if ((x & 0xF0000000u) == 0u) { n += 4; x <<= 4; }
+  if ((x & 0xC0000000u) == 0u) { n += 2; x <<= 2; }
+  if ((x & 0x80000000u) == 0u) { n += 1; }
+  return n;
+}
+
+// ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
+// Algorithm: ex_clz32 of the high word, else 32 + ex_clz32 of the low word
+// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3
+// Bound: exact
+// Flops: 0
+int ex_clz64(uvec2 a) {
+  return a.y != 0u ? ex_clz32(a.y) : 32 + ex_clz32(a.x);
+}
+
+// ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: split by case).
+// Algorithm: word shift by case n == 0, n < 32, n >= 32
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
+// Bound: exact
+// Flops: 0 (up to 6 integer operations)
+uvec2 ex_shl64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 32) return uvec2(0u, a.x << uint(n - 32));
+  return uvec2(a.x << uint(n), (a.y << uint(n)) | (a.x >> uint(32 - n)));
+}
+
+// ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
+// Algorithm: a normal number's significand as it is; subnormals shifted left by their leading zeros, exponent lowered by the same count
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+uvec2 ex_normalize_sig(uvec2 a, out int x) {
+  uvec2 m = ex_sig(a);
+  if ((a.y & 0x7FF00000u) != 0u) {
+    x = int((a.y >> 20) & 0x7FFu);
+    return m;
+  }
+  int shift = ex_clz64(m) - 11;
+  x = 1 - shift;
+  return ex_shl64(m, shift);
+}
+
+// ex_mul32: full 64-bit product of two 32-bit words from four 16x16-bit products (ES 3.00 has no umulExtended).
+// Algorithm: schoolbook multiplication in 16-bit limbs, carries of the middle sum propagated
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
+// Bound: exact
+// Flops: 0 (4 integer multiplications, about 14 other integer operations)
+uvec2 ex_mul32(uint a, uint b) {
+  uint al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+  uint ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;
+  uint mid = lh + hl;
+  uint midCarry = mid < lh ? 0x10000u : 0u;
+  uint lo = ll + (mid << 16);
+  uint hi = hh + (mid >> 16) + midCarry + (lo < ll ? 1u : 0u);
+  return uvec2(lo, hi);
+}
+
+// ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
+// Algorithm: word sums with the carry of the low word (a.x + b.x < a.x)
+// Source: two's-complement multiword addition (Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm A)
+// Bound: exact
+// Flops: 0 (4 integer operations)
+uvec2 ex_add64(uvec2 a, uvec2 b) {
+  uint lo = a.x + b.x;
+  return uvec2(lo, a.y + b.y + (lo < a.x ? 1u : 0u));
+}
+
+// ex_shr_jam64: a >> n for n >= 0, the shifted-out bits ORed into bit 0 (the sticky bit).
+// Algorithm: word shift by case; any nonzero bit shifted out sets bit 0 ("jamming")
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (shiftRightJam64 semantics)
+// Bound: exact
+// Flops: 0 (up to 10 integer operations)
+uvec2 ex_shr_jam64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 64) return uvec2((a.x | a.y) != 0u ? 1u : 0u, 0u);
+  uvec2 r;
+  uint lost;
+  if (n >= 32) {
+    r = uvec2(n == 32 ? a.y : a.y >> uint(n - 32), 0u);
+    lost = a.x | (n == 32 ? 0u : a.y << uint(64 - n));
+  } else {
+    r = uvec2((a.x >> uint(n)) | (a.y << uint(32 - n)), a.y >> uint(n));
+    lost = a.x << uint(32 - n);
+  }
+  r.x |= lost != 0u ? 1u : 0u;
+  return r;
+}
+
+// ex_round_pack: the binary64 nearest (ties to even) to sig * 2^(e - 1084), sign s. sig < 2^63; if e > 0 its top bit must be bit 62.
+// Algorithm: e < 0: jamming shift to e = 0 (subnormal); keep 53 bits, 10 round bits; add half, clear the last bit on an exact tie; the significand's carry runs into the exponent field (up to infinity)
+// Source: IEEE 754-2019, 4.3.1; Hauser, Berkeley SoftFloat 3e, 2018 (roundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (about 30 integer operations)
+uvec2 ex_round_pack(bool s, int e, uvec2 sig) {
+  uint signWord = s ? 0x80000000u : 0u;
+  if (e > 0x7FD) return uvec2(0u, signWord | 0x7FF00000u);
+  if (e < 0) {
+    sig = ex_shr_jam64(sig, -e);
+    e = 0;
+  }
+  uint roundBits = sig.x & 0x3FFu;
+  sig = ex_add64(sig, uvec2(0x200u, 0u));
+  sig = uvec2((sig.x >> 10) | (sig.y << 22), sig.y >> 10);
+  if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;
+  return ex_add64(uvec2(0u, signWord | (uint(e) << 20)), sig);
+}
+
+// ex_mul_bits: a * b in binary64, correctly rounded (ties to even).
+// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, a one-bit jamming normalization, rounded once
+// Source: IEEE 754-2019, 5.4.1, 7.2 (0 * Inf invalid); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (16 integer multiplications, about 80 other integer operations)
+uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
+  uint signWord = (a.y ^ b.y) & 0x80000000u;
+  uint absA = a.y & 0x7FFFFFFFu, absB = b.y & 0x7FFFFFFFu;
+  bool zeroA = (absA | a.x) == 0u, zeroB = (absB | b.x) == 0u;
+  if (absA == 0x7FF00000u || absB == 0x7FF00000u) {
+    if (zeroA || zeroB) return uvec2(0u, 0xFFF80000u);
+    return uvec2(0u, signWord | 0x7FF00000u);
+  }
+  if (zeroA || zeroB) return uvec2(0u, signWord);
+  int xa, xb;
+  uvec2 ma = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
+  uvec2 p00 = ex_mul32(ma.x, mb.x), p01 = ex_mul32(ma.x, mb.y);
+  uvec2 p10 = ex_mul32(ma.y, mb.x), p11 = ex_mul32(ma.y, mb.y);
+  uvec2 mid = ex_add64(ex_add64(uvec2(p00.y, 0u), uvec2(p01.x, 0u)), uvec2(p10.x, 0u));
+  uvec2 top = ex_add64(ex_add64(uvec2(p01.y, 0u), uvec2(p10.y, 0u)), uvec2(mid.y, 0u));
+  uint w1 = mid.x;
+  uint w2 = top.x + p11.x;
+  uint w3 = p11.y + top.y + (w2 < p11.x ? 1u : 0u);
+  uvec2 sig = uvec2((w1 >> 10) | (w2 << 22), (w2 >> 10) | (w3 << 22));
+  if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;
+  // The product of two significands in [2^52, 2^53) leaves sig's top bit at 63 or 62.
+  int e = xa + xb - 1024;
+  if (sig.y >= 0x80000000u) {
+    sig = uvec2((sig.x >> 1) | (sig.y << 31) | (sig.x & 1u), sig.y >> 1);
+    e += 1;
+  }
+  return ex_round_pack(signWord != 0u, e, sig);
+}
+
+// ex_mul_first: a * b with a's NaN passed on first, as native's built-in sequences (dot, cross, smoothstep...) order their products (measured by tests/exact/exact_builtins_test.cpp).
+// Algorithm: ex_mul_bits(b, a): multiplication is commutative in value; only the NaN choice changes
+// Source: IEEE 754-2019, 5.4.1, 6.2.3
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+uvec2 ex_mul_first(uvec2 a, uvec2 b) {
+  return ex_mul_bits(b, a);
+}
+
+// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
+// Algorithm: exponent field, subnormals and zero counted as field 1
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+int ex_exponent(uvec2 a) {
+  return max(int((a.y >> 20) & 0x7FFu), 1);
+}
+
+// ex_lt64: unsigned a < b on 64-bit words.
+// Algorithm: compare high words, then low words
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword comparison)
+// Bound: exact
+// Flops: 0 (3 integer comparisons)
+bool ex_lt64(uvec2 a, uvec2 b) {
+  return a.y < b.y || (a.y == b.y && a.x < b.x);
+}
+
+// ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
+// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
+  int z = ex_clz64(sig);
+  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
+  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
+}
+
+// ex_sub64: 64-bit difference, modulo 2^64.
+// Algorithm: word differences with the borrow of the low word (a.x < b.x)
+// Source: two's-complement multiword subtraction (Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm S)
+// Bound: exact
+// Flops: 0 (4 integer operations)
+uvec2 ex_sub64(uvec2 a, uvec2 b) {
+  return uvec2(a.x - b.x, a.y - b.y - (a.x < b.x ? 1u : 0u));
+}
+
+// ex_add_bits: a + b in binary64, correctly rounded (ties to even).
+// Algorithm: order by magnitude; significands << 10; the smaller jam-shifted by the exponent difference; add or subtract; normalize and round once. Exact cancellation gives +0; (-0) + (-0) = -0
+// Source: IEEE 754-2019, 5.4.1, 6.3; Hauser, Berkeley SoftFloat 3e, 2018 (addMagsF64/subMagsF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (about 60 integer operations)
+uvec2 ex_add_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
+  bool sa = a.y >= 0x80000000u, sb = b.y >= 0x80000000u;
+  bool infA = (a.y & 0x7FFFFFFFu) == 0x7FF00000u, infB = (b.y & 0x7FFFFFFFu) == 0x7FF00000u;
+  if (infA || infB) {
+    if (infA && infB && sa != sb) return uvec2(0u, 0xFFF80000u);
+    return infA ? a : b;
+  }
+  uvec2 ma = ex_sig(a), mb = ex_sig(b);
+  int xa = ex_exponent(a), xb = ex_exponent(b);
+  if ((ma.x | ma.y | mb.x | mb.y) == 0u) return uvec2(0u, (sa && sb) ? 0x80000000u : 0u);
+  if (xb > xa || (xb == xa && ex_lt64(ma, mb))) {
+    uvec2 tm = ma; ma = mb; mb = tm;
+    int tx = xa; xa = xb; xb = tx;
+    bool ts = sa; sa = sb; sb = ts;
+  }
+  uvec2 big = ex_shl64(ma, 10);
+  uvec2 small = ex_shr_jam64(ex_shl64(mb, 10), xa - xb);
+  if (sa == sb) return ex_norm_round_pack(sa, xa - 1, ex_add64(big, small));
+  uvec2 d = ex_sub64(big, small);
+  if ((d.x | d.y) == 0u) return uvec2(0u, 0u);
+  return ex_norm_round_pack(sa, xa - 1, d);
+}
+
+// ex_fma_bits: fma(a, b, c) as native fp64 on lavapipe computes it: a * b rounded to binary64, then + c rounded (two roundings, not IEEE fusedMultiplyAdd).
+// Algorithm: p = ex_mul_bits(a, b), then ex_add_bits(p, c); with NaN operands native passes on the first NaN of a, b (then p, c) in operand order, not swapped as for a * b (measured by tests/exact/exact_fma_test.cpp)
+// Source: GLSL 4.60 specification, 2017, 8.3 (fma: "may" be a single operation; precision of a*b+c otherwise); IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp per step (two roundings)
+// Flops: 0 (integer arithmetic)
+uvec2 ex_fma_bits(uvec2 a, uvec2 b, uvec2 c) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
+  uvec2 p = ex_mul_bits(a, b);
+  if (ex_is_nan(p)) return p;
+  return ex_add_bits(p, c);
+}
+
+// ex_to_float_bits: the float nearest (ties to even) to a binary64 pattern, as float bits; overflow gives Inf, tiny values float subnormals or zero.
+// Algorithm: significand cut to 31 bits with a sticky bit, exponent re-biased (1023 -> 127); round-and-pack with 7 round bits (jamming shift into the float subnormal range)
+// Source: IEEE 754-2019, 5.4.2, 4.3.1; Hauser, Berkeley SoftFloat 3e, 2018 (roundPackToF32 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+uint ex_to_float_bits(uvec2 a) {
+  uint signWord = a.y & 0x80000000u;
+  int field = int((a.y >> 20) & 0x7FFu);
+  uint fracHi = a.y & 0xFFFFFu;
+  if (field == 0x7FF) {
+    if ((fracHi | a.x) == 0u) return signWord | 0x7F800000u;
+    return signWord | 0x7FC00000u | (fracHi << 3) | (a.x >> 29);
+  }
+  if (field == 0) return signWord;
+  uint sig = 0x40000000u | (fracHi << 10) | (a.x >> 22);
+  if ((a.x & 0x3FFFFFu) != 0u) sig |= 1u;
+  int e = field - 1023 + 127 - 1;
+  if (e > 0xFD) return signWord | 0x7F800000u;
+  if (e < 0) {
+    int n = -e;
+    sig = n >= 31 ? 1u : (sig >> uint(n)) | ((sig << uint(32 - n)) != 0u ? 1u : 0u);
+    e = 0;
+  }
+  uint roundBits = sig & 0x7Fu;
+  sig = (sig + 0x40u) >> 7;
+  if (roundBits == 0x40u) sig &= 0xFFFFFFFEu;
+  return signWord + (uint(e) << 23) + sig;
+}
+
+// ex_bits: the binary64 pattern of a mode-exact double as uvec2(low word, high word), the order of unpackDouble2x32.
+// Algorithm: member reorder
+// Source: GLSL 4.60 specification, 2017, 8.4 (unpackDouble2x32 word order)
+// Bound: exact
+// Flops: 0
+uvec2 ex_bits(df_double a) {
+  return uvec2(a.lo, a.hi);
+}
+
+// ex_to_float: float(a) (mode exact), rounded to nearest even.
+// Algorithm: ex_to_float_bits
+// Source: IEEE 754-2019, 5.4.2
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+float ex_to_float(df_double a) {
+  return uintBitsToFloat(ex_to_float_bits(ex_bits(a)));
+}
+
+// ex_to_float: float(a) (mode exact), rounded to nearest even.
+// Algorithm: ex_to_float_bits
+// Source: IEEE 754-2019, 5.4.2
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+// (width 4: the width-1 ex_to_float applied to each component)
+vec4 ex_to_float(df_dvec4 a) {
+  float r0 = ex_to_float(df_double(a.hi.x, a.lo.x));
+  float r1 = ex_to_float(df_double(a.hi.y, a.lo.y));
+  float r2 = ex_to_float(df_double(a.hi.z, a.lo.z));
+  float r3 = ex_to_float(df_double(a.hi.w, a.lo.w));
+  return vec4(r0, r1, r2, r3);
+}
+
+df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
+  return df_dvec4(uvec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), uvec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
+}
+
+// ex_mul_dmat4_dvec4: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
+// first, every step rounded as native's (each fma twice).
+df_dvec4 ex_mul_dmat4_dvec4(df_dmat4 m, df_dvec4 v) {
+  uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][0], m.hi[3][0]), uvec2(v.lo[3], v.hi[3])))));
+  uvec2 p1 = ex_fma_bits(uvec2(m.lo[0][1], m.hi[0][1]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][1], m.hi[1][1]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][1], m.hi[2][1]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][1], m.hi[3][1]), uvec2(v.lo[3], v.hi[3])))));
+  uvec2 p2 = ex_fma_bits(uvec2(m.lo[0][2], m.hi[0][2]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][2], m.hi[1][2]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][2], m.hi[2][2]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][2], m.hi[3][2]), uvec2(v.lo[3], v.hi[3])))));
+  uvec2 p3 = ex_fma_bits(uvec2(m.lo[0][3], m.hi[0][3]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][3], m.hi[1][3]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][3], m.hi[2][3]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][3], m.hi[3][3]), uvec2(v.lo[3], v.hi[3])))));
+  return df_dvec4(uvec4(p0.y, p1.y, p2.y, p3.y), uvec4(p0.x, p1.x, p2.x, p3.x));
+}
+
+layout(location = 0) in uvec4 position_xy;
+layout(location = 1) in uvec2 position_z;
+df_dvec3 position;
+uniform uvec4 u_model[8];
+df_dmat4 u_model_value;
+uniform mat4 u_view_projection;
+
+
+void main()
+{
+  position = df_dvec3(uvec3(position_xy.yw, position_z.y), uvec3(position_xy.xz, position_z.x));
+  u_model_value = df_dmat4(uvec4[4](uvec4(u_model[0].y, u_model[0].w, u_model[1].y, u_model[1].w), uvec4(u_model[2].y, u_model[2].w, u_model[3].y, u_model[3].w), uvec4(u_model[4].y, u_model[4].w, u_model[5].y, u_model[5].w), uvec4(u_model[6].y, u_model[6].w, u_model[7].y, u_model[7].w)), uvec4[4](uvec4(u_model[0].x, u_model[0].z, u_model[1].x, u_model[1].z), uvec4(u_model[2].x, u_model[2].z, u_model[3].x, u_model[3].z), uvec4(u_model[4].x, u_model[4].z, u_model[5].x, u_model[5].z), uvec4(u_model[6].x, u_model[6].z, u_model[7].x, u_model[7].z)));
+  df_dvec4 world = ex_mul_dmat4_dvec4(u_model_value, df_make_dvec4_3_1(position, df_double(1072693248u, 0u)));
+  gl_Position = u_view_projection * ex_to_float(world);
+}
