@@ -124,6 +124,7 @@ class BlockWords {
   BlockWords(ir::Module& m, Context& c) : module_(m), ctx_(c) {}
 
   void run() {
+    if (ctx_.failed) return;  // an interface already refused (e.g. a struct uniform holding a dmat) has no plan
     for (const auto& g : module_.globals)
       if (g->type.base == ir::Base::Block && holds_doubles(g->type)) plan_block(*g);
     struct_uniforms();

@@ -122,8 +122,9 @@ class DoubleLowering {
   static bool is_interface(ir::Storage s) {
     return s == ir::Storage::In || s == ir::Storage::Out || s == ir::Storage::Uniform || s == ir::Storage::Buffer;
   }
+  // A dmat, or a struct holding one (whose fields may already be lowered to df_dmat* by run()).
   static bool holds_double_matrix(const ir::Type& t) {
-    if (t.base == ir::Base::Double && t.is_matrix()) return true;
+    if ((t.base == ir::Base::Double && t.is_matrix()) || matrix::is_matrix(t)) return true;
     if (t.fields)
       for (const auto& f : *t.fields)
         if (holds_double_matrix(f.type)) return true;
