@@ -4,6 +4,7 @@
 #include "api/lower_wgsl.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <cstring>
 #include <chrono>
 #include <regex>
@@ -21,13 +22,16 @@ bool has_error(const std::vector<Diagnostic>& diags) {
   return std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
-// The front end refuses identifiers with doublet's runtime prefix df_ (users may not declare
-// them), so the runtime's names cross the re-import under another prefix and come back after.
+// The front end refuses identifiers with doublet's runtime prefixes df_ and (mode exact) ex_
+// (users may not declare them), so the runtime's names cross the re-import under other prefixes
+// and come back after.
 constexpr const char* kCarrierPrefix = "doublet_rt_";
+constexpr const char* kExactCarrierPrefix = "doublet_rx_";
 
 std::string restore_prefix(std::string text) {
-  for (size_t at = text.find(kCarrierPrefix); at != std::string::npos; at = text.find(kCarrierPrefix, at))
-    text.replace(at, std::strlen(kCarrierPrefix), "df_");
+  for (const auto& [carrier, prefix] : {std::pair{kCarrierPrefix, "df_"}, std::pair{kExactCarrierPrefix, "ex_"}})
+    for (size_t at = text.find(carrier); at != std::string::npos; at = text.find(carrier, at))
+      text.replace(at, std::strlen(carrier), prefix);
   return text;
 }
 
@@ -35,7 +39,8 @@ void print_from_glsl(Result& result, const Options& options, const std::string& 
   // ES precision statements for opaque types (atomic_uint, images) do not parse as desktop GLSL,
   // which the front end reads: they go; the WGSL printer refuses those types at their declaration.
   const std::string glsl = std::regex_replace(
-      std::regex_replace(glsl_with_runtime_names, std::regex(R"(\bdf_)"), kCarrierPrefix),
+      std::regex_replace(std::regex_replace(glsl_with_runtime_names, std::regex(R"(\bdf_)"), kCarrierPrefix),
+                         std::regex(R"(\bex_)"), kExactCarrierPrefix),
       std::regex(R"(precision highp (?!float;|int;)\w+;)"), "");
   Options internal = options;
   internal.target = Target::Es310;

@@ -111,11 +111,16 @@ void collect_locals(const ir::StmtPtr& s, std::vector<ir::VarPtr>& out, std::set
 
 bool place_declarations(ir::Module& module, const Options& options, std::vector<Diagnostic>& diagnostics) {
   bool ok = true;
+  // Mode exact's runtime (rules/exact.glsl) is named ex_*: reserved there too, or a user's `ex_add`
+  // would collide with it in the lowered text.
+  const bool exact = options.mode == Mode::Exact || options.mode == Mode::RteExact;
   auto reserved = [&](const std::string& name, ir::Loc loc) {
-    if (name.rfind("df_", 0) != 0) return;
+    const bool df = name.rfind("df_", 0) == 0, ex = exact && name.rfind("ex_", 0) == 0;
+    if (!df && !ex) return;
     diagnostics.push_back({ir::file_of(loc, options.file_name), loc.line, loc.column, Severity::Error,
-                           "identifier '" + name + "' uses the prefix 'df_', which doublet reserves for its "
-                           "float-float runtime; rename it"});
+                           "identifier '" + name + "' uses the prefix '" + (df ? "df_" : "ex_") +
+                               "', which doublet reserves for its " + (df ? "float-float" : "binary64 (mode exact)") +
+                               " runtime; rename it"});
     ok = false;
   };
 

@@ -65,6 +65,28 @@ TEST(RealWorld, UserPreciseIsDroppedWithAWarningWhereTheTargetLacksIt) {
   }
 }
 
+// Mode exact's runtime is ex_*: a user function of that name would collide with it in the lowered
+// text (ex_add(df_double, df_double) twice), so the prefix is reserved there, like df_ everywhere.
+TEST(RealWorld, ExPrefixIsReservedInModeExactOnly) {
+  const char* source = "#version 450\nlayout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer B { double x; };\n"
+                       "double ex_add(double a, double b) { return a - b; }\nvoid main() { x = ex_add(x, 1.0lf); }\n";
+  doublet::Options o;
+  o.stage = Stage::Compute;
+  o.target = Target::Es310;
+  o.file_name = "user.comp";
+  for (doublet::Mode mode : {doublet::Mode::Exact, doublet::Mode::RteExact}) {
+    o.mode = mode;
+    const doublet::Result r = doublet::lower(source, o);
+    EXPECT_FALSE(r.ok);
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(doublet::format_diagnostic(r.diagnostics[0]).rfind("user.comp:4:", 0), 0u) << messages(r);
+    EXPECT_NE(messages(r).find("prefix 'ex_'"), std::string::npos) << messages(r);
+  }
+  o.mode = doublet::Mode::Df64;
+  const doublet::Result df64 = doublet::lower(source, o);
+  EXPECT_TRUE(df64.ok) << messages(df64);
+}
+
 // fp32 demotes `double exp(double)` to `float exp(float)`: a redefinition of ES 1.00's built-in,
 // which glslang refuses there (it accepts overloads, so the rename was skipped): internal error.
 TEST(RealWorld, DemotedOverloadOfABuiltinNameIsRenamedOnEs100) {
