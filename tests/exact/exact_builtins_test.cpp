@@ -85,24 +85,13 @@ class ExactBuiltins : public ::testing::TestWithParam<int> {};
 TEST_P(ExactBuiltins, BitIdenticalToNativeFp64) { expect_bit_identical(groups()[size_t(GetParam())]); }
 
 INSTANTIATE_TEST_SUITE_P(Groups, ExactBuiltins, ::testing::Range(0, int(groups().size())),
-                         [](const ::testing::TestParamInfo<int>& info) {
-                           std::string n = groups()[size_t(info.param)].name;
-                           for (char& ch : n)
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           return n;
-                         });
+                         [](const ::testing::TestParamInfo<int>& info) { return group_test_name(groups(), info.param); });
 
 // The same comparison sees each built-in family broken: another (mathematically equal) order of
 // operations for mix, smoothstep, normalize and dot, ldexp without native's clamp, modf without
 // its sign rule. Each edit must apply to the lowered text and change some results.
 TEST(ExactBuiltinsSabotage, OtherOrdersAndRulesDiffer) {
-  REQUIRE_BACKEND(Backend::Vulkan);
-  struct Sabotage {
-    const char* name;
-    int group;
-    std::string from, to;
-  };
-  const std::vector<Sabotage> sabotages = {
+  expect_sabotages_differ(groups(), {
       {"mix as x + a(y - x)", 0, "return ex_from_bits(ex_fma_bits(ex_bits(y), wa, rest));",
        "return ex_from_bits(ex_add_bits(ex_bits(x), ex_mul_bits(wa, ex_sub_bits(ex_bits(y), ex_bits(x)))));"},
       {"smoothstep as (t t)(3 - 2t)", 0, "return ex_from_bits(ex_mul_first(t, ex_mul_first(t, s)));",
@@ -114,23 +103,7 @@ TEST(ExactBuiltinsSabotage, OtherOrdersAndRulesDiffer) {
       {"dot3 summed from the last component", 3,
        "uvec2 s = ex_mul_first(uvec2(a.lo.x, a.hi.x), uvec2(b.lo.x, b.hi.x));\n  for (int k = 1; k < 3; ++k)",
        "uvec2 s = ex_mul_first(uvec2(a.lo.z, a.hi.z), uvec2(b.lo.z, b.hi.z));\n  for (int k = 1; k >= 0; --k)"},
-  };
-  for (const Sabotage& sab : sabotages) {
-    const Group& g = groups()[size_t(sab.group)];
-    const std::string native_src = source(g);
-    std::string exact_src = lower_exact(native_src);
-    const size_t at = exact_src.find(sab.from);
-    ASSERT_NE(at, std::string::npos) << sab.name;
-    exact_src.replace(at, sab.from.size(), sab.to);
-    const std::vector<uint64_t> in = inputs(g, 1u << 16);  // a sabotage shows on far fewer
-    const int arity = g.doubles + g.ints, results = int(g.results.size());
-    const std::vector<Count> c = compare_group(g, in, run_words(Backend::Vulkan, exact_src, in, arity, results),
-                                               run_words(Backend::Vulkan, native_src, in, arity, results));
-    uint64_t total = 0;
-    for (const Count& k : c) total += k.differing;
-    std::cout << "[ exact ] sabotage '" << sab.name << "': " << total << " results differ\n";
-    EXPECT_GT(total, 0u) << sab.name;
-  }
+  });
 }
 
 }  // namespace

@@ -111,17 +111,6 @@ std::vector<std::vector<uint8_t>> run(Backend backend, const std::string& glsl, 
   return r.ok ? r.buffers : std::vector<std::vector<uint8_t>>{};
 }
 
-// Bytes that differ between two runs, every buffer.
-size_t differing_bytes(const std::vector<std::vector<uint8_t>>& a, const std::vector<std::vector<uint8_t>>& b) {
-  if (a.size() != b.size()) return SIZE_MAX;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (a[i].size() != b[i].size()) return SIZE_MAX;
-    for (size_t k = 0; k < a[i].size(); ++k) n += a[i][k] != b[i][k];
-  }
-  return n;
-}
-
 struct Lowered {
   Result result;
   std::vector<std::vector<uint8_t>> inputs;

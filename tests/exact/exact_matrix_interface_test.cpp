@@ -111,16 +111,6 @@ std::vector<uint8_t> fill(const InterfaceVariable& block, uint32_t elements, std
   return bytes;
 }
 
-size_t differing_bytes(const std::vector<std::vector<uint8_t>>& a, const std::vector<std::vector<uint8_t>>& b) {
-  if (a.size() != b.size()) return SIZE_MAX;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (a[i].size() != b[i].size()) return SIZE_MAX;
-    for (size_t k = 0; k < a[i].size(); ++k) n += a[i][k] != b[i][k];
-  }
-  return n;
-}
-
 struct Case {
   Result lowered;
   std::vector<std::vector<uint8_t>> buffers;

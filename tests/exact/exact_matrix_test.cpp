@@ -70,47 +70,20 @@ class ExactMatrices : public ::testing::TestWithParam<int> {};
 TEST_P(ExactMatrices, BitIdenticalToNativeFp64) { expect_bit_identical(groups()[size_t(GetParam())]); }
 
 INSTANTIATE_TEST_SUITE_P(Groups, ExactMatrices, ::testing::Range(0, int(groups().size())),
-                         [](const ::testing::TestParamInfo<int>& info) {
-                           std::string n = groups()[size_t(info.param)].name;
-                           for (char& ch : n)
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           return n;
-                         });
+                         [](const ::testing::TestParamInfo<int>& info) { return group_test_name(groups(), info.param); });
 
 // Another order of the same formulas must show: a matrix-vector product summed from the first
 // column (as older Mesa did), the 3x3 determinant summed without Mesa's reassociation, the 4x4
 // one as spirv_to_nir writes it, (p0 - p1) + (p2 - p3), and an inverse with one sign of its adjugate lost.
 TEST(ExactMatricesSabotage, OtherOrdersDiffer) {
-  REQUIRE_BACKEND(Backend::Vulkan);
-  struct Sabotage {
-    const char* name;
-    int group;
-    std::string from, to;
-  };
-  const std::vector<Sabotage> sabotages = {
+  expect_sabotages_differ(groups(), {
       {"m * v from the first column", 0, "uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]), ex_mul_first(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2]))));",
        "uvec2 p0 = ex_add_bits(ex_add_bits(ex_mul_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0])), ex_mul_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]))), ex_mul_bits(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2])));"},
       {"det3 summed x + (y + z)", 1, "return ex_add_first(z, ex_sub_bits(x, y));", "return ex_sub_bits(x, ex_sub_bits(y, z));"},
       {"det4 as (p0 - p1) + (p2 - p3)", 1, "uvec2 det = ex_sub_bits(ex_add_first(p0, ex_sub_bits(p2, p3)), p1);",
        "uvec2 det = ex_add_first(ex_sub_bits(p0, p1), ex_sub_bits(p2, p3));"},
       {"inverse with an odd cofactor not negated", 2, "ex_mul_first(inv, ex_neg_bits(", "ex_mul_first(inv, ("},
-  };
-  for (const Sabotage& sab : sabotages) {
-    const Group& g = groups()[size_t(sab.group)];
-    const std::string native_src = source(g);
-    std::string exact_src = lower_exact(native_src);
-    const size_t at = exact_src.find(sab.from);
-    ASSERT_NE(at, std::string::npos) << sab.name;
-    exact_src.replace(at, sab.from.size(), sab.to);
-    const std::vector<uint64_t> in = inputs(g, 1u << 16);  // a sabotage shows on far fewer
-    const int arity = g.doubles + g.ints, results = int(g.results.size());
-    const std::vector<Count> c = compare_group(g, in, run_words(Backend::Vulkan, exact_src, in, arity, results),
-                                               run_words(Backend::Vulkan, native_src, in, arity, results));
-    uint64_t total = 0;
-    for (const Count& k : c) total += k.differing;
-    std::cout << "[ exact ] sabotage '" << sab.name << "': " << total << " results differ\n";
-    EXPECT_GT(total, 0u) << sab.name;
-  }
+  });
 }
 
 }  // namespace

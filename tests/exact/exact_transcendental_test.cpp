@@ -22,6 +22,7 @@
 
 #include "doublet/doublet.hpp"
 #include "exact_harness.hpp"
+#include "../numeric/pio2_distance.hpp"
 
 namespace doublet::runner::test::exact {
 namespace {
@@ -58,21 +59,6 @@ double random_sign(std::mt19937_64& g, double v) { return (g() & 1) ? -v : v; }
 // Full 53-bit significands: a float-float pair cannot hold them, so the residual correction matters.
 double full(std::mt19937_64& g, double v) { return dbl((pat(v) & ~0xFFFFFull) | (g() & 0xFFFFFull)); }
 
-// |x - k pi/2| for the nearest integer k, with MPFR (x is exact in binary64).
-double distance_to_multiple_of_pio2(double x) {
-  mpfr_t pio2, q, r;
-  for (mpfr_ptr p : {pio2, q, r}) mpfr_init2(p, 256);
-  mpfr_const_pi(pio2, MPFR_RNDN);
-  mpfr_div_2ui(pio2, pio2, 1, MPFR_RNDN);
-  mpfr_set_d(r, x, MPFR_RNDN);
-  mpfr_div(q, r, pio2, MPFR_RNDN);
-  mpfr_rint(q, q, MPFR_RNDN);
-  mpfr_mul(q, q, pio2, MPFR_RNDN);
-  mpfr_sub(r, r, q, MPFR_RNDN);
-  const double d = std::fabs(mpfr_get_d(r, MPFR_RNDN));
-  for (mpfr_ptr p : {pio2, q, r}) mpfr_clear(p);
-  return d;
-}
 // The df64 trig rule's 44-bit range (docs/transcendentals.md, Limits): x at least 2^-53 |x| from
 // every multiple of pi/2; nearer, the reduction's |x| 2^-99 absolute error dominates a small result.
 bool away_from_multiple_of_pio2(double x) { return distance_to_multiple_of_pio2(x) >= std::fabs(x) * 0x1p-53; }

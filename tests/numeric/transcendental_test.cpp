@@ -25,6 +25,7 @@
 #include "doublet/doublet.hpp"
 #include "frontend/demote.hpp"
 #include "runner/runner.hpp"
+#include "pio2_distance.hpp"
 
 namespace {
 
@@ -60,21 +61,6 @@ double log_uniform(std::mt19937_64& rng, double lo_exp, double hi_exp, bool both
 }
 double rel(double c, double ref) { return c * kU2 * std::fabs(ref); }
 
-// |x - k pi/2| for the nearest integer k, with MPFR (x is exact in binary64).
-double distance_to_multiple_of_pio2(double x) {
-  mpfr_t pio2, q, r;
-  for (mpfr_ptr p : {pio2, q, r}) mpfr_init2(p, 256);
-  mpfr_const_pi(pio2, MPFR_RNDN);
-  mpfr_div_2ui(pio2, pio2, 1, MPFR_RNDN);
-  mpfr_set_d(r, x, MPFR_RNDN);
-  mpfr_div(q, r, pio2, MPFR_RNDN);
-  mpfr_rint(q, q, MPFR_RNDN);
-  mpfr_mul(q, q, pio2, MPFR_RNDN);
-  mpfr_sub(r, r, q, MPFR_RNDN);
-  const double d = std::fabs(mpfr_get_d(r, MPFR_RNDN));
-  for (mpfr_ptr p : {pio2, q, r}) mpfr_clear(p);
-  return d;
-}
 
 std::vector<Function> functions() {
   const double pio2 = 1.5707963267948966;

@@ -51,6 +51,17 @@ T bits(U x) {
   ASSERT_TRUE(result.ok) << ::doublet::runner::backend_name(backend) << ": " << result.error;       \
   ASSERT_EQ(result.buffers.size(), (job).buffers.size())
 
+// Bytes that differ between two runs' buffers, every buffer (SIZE_MAX when their shapes differ).
+inline size_t differing_bytes(const std::vector<std::vector<uint8_t>>& a, const std::vector<std::vector<uint8_t>>& b) {
+  if (a.size() != b.size()) return SIZE_MAX;
+  size_t n = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i].size() != b[i].size()) return SIZE_MAX;
+    for (size_t k = 0; k < a[i].size(); ++k) n += a[i][k] != b[i][k];
+  }
+  return n;
+}
+
 inline std::string backend_param_name(const ::testing::TestParamInfo<Backend>& info) {
   return backend_name(info.param);
 }
