@@ -50,10 +50,11 @@ bool Analysis::run(const ir::Module& module, const Scene& scene, std::vector<Dia
   auto visit_var = [&](const Var* v, const ir::Function* f) {
     if (!v || !seen.insert(v).second) return;
     if (f) owner_[v] = f;
-    if (v->declared_type.contains_double()) double_vars_.push_back(v);
-    // Inputs: in, uniform, and buffer members a shader may read (not writeonly); an anonymous
-    // block's instance (anon@N) is none — its members are.
+    // An anonymous block's instance (anon@N) is no value of its own: its members are (inputs,
+    // outputs, double declarations).
     const bool block_instance = v->declared_type.base == ir::Base::Block;
+    if (v->declared_type.contains_double() && !block_instance) double_vars_.push_back(v);
+    // Inputs: in, uniform, and buffer members a shader may read (not writeonly).
     if (is_input_storage(v->storage) && !is_writeonly(v) && !block_instance) inputs_.emplace(v->name, v);
     if (v->storage == ir::Storage::Out || v->storage == ir::Storage::BuiltIn ||
         (v->storage == ir::Storage::Buffer && !is_readonly(v) && !block_instance))

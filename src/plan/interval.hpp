@@ -52,15 +52,14 @@ inline Interval abs(Interval a) { return a.lo >= 0 ? a : a.hi <= 0 ? -a : Interv
 inline Interval square(Interval a) { Interval m = abs(a); return {m.lo * m.lo, m.hi * m.hi}; }
 inline Interval sqrt(Interval a) { return {std::sqrt(std::max(a.lo, 0.0)), std::sqrt(std::max(a.hi, 0.0))}; }
 
-// Half the spacing of floats at magnitude m: the largest error of rounding any |x| <= m to float
-// (round to nearest, m a normal float magnitude): 2^(floor(log2 m) - 24).
 // Float's largest finite value, and its smallest normal: below it a vertex/fragment stage may
 // flush to zero (so a value under 2^-126 may lose all of itself).
 inline constexpr double kFloatMax = 0x1.fffffep127;
 inline constexpr double kFloatMinNormal = 0x1p-126;
 
-// Half an ulp of float at magnitude m; infinite beyond float's range (the value overflows), at
-// least min(m, 2^-126) (flushed subnormals).
+// Half the spacing of floats at magnitude m, 2^(floor(log2 m) - 24): the largest error of
+// rounding any |x| <= m to float (round to nearest); infinite beyond float's range (the value
+// overflows), at least min(m, 2^-126) (flushed subnormals).
 inline double float_half_ulp(double m) {
   if (!(m > 0)) return 0;
   if (!std::isfinite(m) || m > kFloatMax) return kInf;

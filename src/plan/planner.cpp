@@ -134,7 +134,7 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
   std::string beyond_float;
   for (const ir::Var* v : a.double_vars()) {
     const double m = Analysis::hull(a.range(v)).mag();
-    if (!(m > kFloatMax) || std::isinf(m) || v->declared_type.base == ir::Base::Block) continue;
+    if (!(m > kFloatMax) || std::isinf(m)) continue;
     const ir::Function* f = a.owner(v);
     beyond_float += (beyond_float.empty() ? "" : ", ") + (f ? f->name + "." : std::string()) + v->name + " reaches " + num(m);
   }
@@ -142,10 +142,10 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
     out.notes.push_back("beyond float's range (3.4e38), where float-float overflows: " + beyond_float);
   // Where float-float cannot keep a promise (values beyond float's range, or more than its ~48
   // bits), binary64 in integer arithmetic may: mode exact for the whole shader (it does not mix
-  // with other modes), on targets that have 32-bit integers.
+  // with other modes), on every target but ES 1.00, which has no 32-bit integers.
   const bool exact_keeps_all = std::all_of(out.outputs.begin(), out.outputs.end(),
                                            [](const OutputRow& r) { return r.estimate_exact <= r.required; });
-  const bool exact_target = options.target != Target::Es100 && options.target != Target::Wgsl;
+  const bool exact_target = options.target != Target::Es100;
   if (!out.feasible && exact_keeps_all && exact_target) {
     out.feasible = true;
     out.mode = Mode::Exact;
@@ -208,7 +208,6 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
   std::vector<const ir::Var*> vars = a.double_vars();
   std::stable_sort(vars.begin(), vars.end(), [](const ir::Var* x, const ir::Var* y) { return x->loc.line < y->loc.line; });
   for (const ir::Var* v : vars) {
-    if (v->declared_type.base == ir::Base::Block) continue;  // anonymous block instance: its members have rows
     const ir::Function* f = a.owner(v);
     PlanRow r;
     r.name = f ? f->name + "." + v->name : v->name;
