@@ -100,8 +100,7 @@ std::string targets_with_builtin_variable(const std::string& name, Stage stage) 
   auto [it, inserted] = known.try_emplace({name, stage});
   if (!inserted) return it->second;
   for (Target t : {Target::Es100, Target::Es300, Target::Es310, Target::Es320, Target::Glsl330, Target::Glsl450}) {  // webgl2 = es300 here
-    const std::string version = "#version " + std::to_string(target_version(t)) +
-                                (t == Target::Es100 ? "" : target_is_es(t) ? " es" : " core");
+    const std::string version = emit::version_directive(t);
     const std::string layout = stage == Stage::Compute ? "layout(local_size_x = 1) in;\n" : "";
     const std::string log = emit::validate(version + "\nprecision highp float;\n" + layout + "void main() { " + name + "; }\n",
                                            stage, t);
@@ -242,8 +241,7 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
   std::string text;
   for (int n = 1; n <= index.line_count(); ++n) {
     if (n == version_line)
-      text += "#version " + std::to_string(target_version(options.target)) +
-              (target_is_es(options.target) ? (target_version(options.target) == 100 ? "" : " es") : " core") + "\n";
+      text += emit::version_directive(options.target) + "\n";
     else
       text += extension_lines.count(n) ? "\n" : std::string(index.line(n)) + "\n";
     if (n == prelude_after) text += prelude;

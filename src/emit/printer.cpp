@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "emit/validate.hpp"
 #include "ir/walk.hpp"
 
 namespace doublet::emit {
@@ -71,15 +72,7 @@ class Printer {
 
   // ---- header --------------------------------------------------------------
   void header() {
-    switch (options_.target) {
-      case Target::Es100: out_ << "#version 100\n"; break;
-      case Target::Es300:
-      case Target::Webgl2: out_ << "#version 300 es\n"; break;
-      case Target::Es310: out_ << "#version 310 es\n"; break;
-      case Target::Es320: out_ << "#version 320 es\n"; break;
-      case Target::Glsl330: out_ << "#version 330 core\n"; break;
-      case Target::Glsl450: out_ << "#version 450 core\n"; break;
-    }
+    out_ << version_directive(options_.target) << "\n";
     for (const auto& e : options_.extensions) out_ << "#extension " << e << " : require\n";
     for (const auto& e : options_.user_extensions)
       if (std::find(options_.extensions.begin(), options_.extensions.end(), e) == options_.extensions.end())

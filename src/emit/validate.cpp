@@ -7,6 +7,11 @@
 
 namespace doublet::emit {
 
+std::string version_directive(Target target) {
+  const std::string version = "#version " + std::to_string(target_version(target));
+  return target == Target::Es100 ? version : version + (target_is_es(target) ? " es" : " core");
+}
+
 std::string validate(std::string_view text, Stage stage, Target target) {
   frontend::ensure_glslang_initialized();
   EShLanguage lang = stage == Stage::Vertex ? EShLangVertex : stage == Stage::Fragment ? EShLangFragment : EShLangCompute;

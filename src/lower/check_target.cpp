@@ -151,9 +151,7 @@ bool opaque_type_exists(const std::string& name, Target target) {
   auto [it, inserted] = known.try_emplace({name, target}, true);
   if (inserted) {
     const std::string log =
-        emit::validate(std::string(target_is_es(target) ? "#version " + std::to_string(target_version(target)) +
-                                                              (target == Target::Es100 ? "" : " es")
-                                                        : "#version " + std::to_string(target_version(target)) + " core") +
+        emit::validate(emit::version_directive(target) +
                            "\nprecision highp float;\nuniform highp " + name + " probe;\nvoid main() {}\n",
                        Stage::Fragment, target);
     it->second = log.find("Reserved word") == std::string::npos && log.find("syntax error") == std::string::npos;

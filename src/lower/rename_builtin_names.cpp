@@ -32,8 +32,7 @@ Stage stage_of(const ir::Module& m) {
 // first, so the probe is parsed again without it until it passes (one parse per built-in name found,
 // plus one; there are about 200 built-in names, so this is bounded whatever the shader).
 std::set<std::string> builtin_function_names(std::set<std::string> names, Target target, Stage stage) {
-  const std::string header = "#version " + std::to_string(target_version(target)) +
-                             (target == Target::Es100 ? "" : " es") + "\nprecision highp float;\n";
+  const std::string header = emit::version_directive(target) + "\nprecision highp float;\n";
   const std::string marker = "' : function name is redeclaration of existing name";
   std::set<std::string> builtins;
   while (!names.empty()) {
