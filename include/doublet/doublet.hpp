@@ -107,6 +107,15 @@ struct Options {
   // cheaper rules of equal or better accuracy where the operands allow (x*x, a power of two, a
   // float widened to double). Off: every operation is its general rule.
   bool optimize = true;
+  // The pipeline (docs/architecture.md): stop after the pass of this name (`doublet lower
+  // --stop-after PASS`; pass_names() lists them) and return the IR printed as it is then, not
+  // re-validated — for tests and for debugging a lowering. Empty: run every pass.
+  std::string stop_after;
+  // Tests only: passes to leave out (to show that a pass test fails without its pass).
+  std::vector<std::string> skip_passes;
+  // Check the IR's consistency after every pass (an internal error names the pass that broke
+  // it). On in the test suites; costs a walk of the IR per pass.
+  bool check_ir = false;
 };
 
 // One member of a uniform or storage block after lowering (members of nested structs are listed
@@ -196,6 +205,8 @@ std::optional<Target> parse_target(std::string_view name);
 std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native", "df64-int", "exact", "rte-exact"
 std::optional<Mode> parse_mode(std::string_view name);
 std::optional<Stage> parse_stage(std::string_view name);  // "vert"|"frag"|"comp"
+// The passes of the pipeline, in order (Options::stop_after names one): "parse", "import", ...
+std::vector<std::string_view> pass_names();
 // The lints Options::disabled_lints can name: "float-literal", "wasted-double", ...
 std::vector<std::string_view> lint_names();
 // Stage from a file name: x.vert, x.frag, x.comp, x.vert.glsl, ...

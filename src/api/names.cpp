@@ -2,37 +2,17 @@
 #include <nlohmann/json.hpp>
 
 #include "doublet/doublet.hpp"
+#include "target/target.hpp"
 
 namespace doublet {
 
-namespace {
-struct TargetName {
-  Target target;
-  const char* name;
-  int version;
-  bool es;
-};
-constexpr TargetName kTargets[] = {
-    {Target::Es100, "es100", 100, true},   {Target::Es300, "es300", 300, true},
-    {Target::Es310, "es310", 310, true},   {Target::Es320, "es320", 320, true},
-    {Target::Glsl330, "glsl330", 330, false}, {Target::Glsl450, "glsl450", 450, false},
-    {Target::Webgl2, "webgl2", 300, true},
-    {Target::Wgsl, "wgsl", 0, false},
-};
-const TargetName& info(Target t) {
-  for (const auto& n : kTargets)
-    if (n.target == t) return n;
-  return kTargets[1];
-}
-}  // namespace
-
-std::string_view to_string(Target t) { return info(t).name; }
-bool target_is_es(Target t) { return info(t).es; }
-int target_version(Target t) { return info(t).version; }
+std::string_view to_string(Target t) { return target::facts(t).name; }
+bool target_is_es(Target t) { return target::facts(t).es; }
+int target_version(Target t) { return target::facts(t).version; }
 
 std::optional<Target> parse_target(std::string_view name) {
-  for (const auto& n : kTargets)
-    if (name == n.name) return n.target;
+  for (Target t : target::all_targets())
+    if (name == target::facts(t).name) return t;
   return std::nullopt;
 }
 

@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "emit/validate.hpp"
+#include "target/target.hpp"
 #include "ir/walk.hpp"
 
 namespace doublet::emit {
@@ -72,7 +72,7 @@ class Printer {
 
   // ---- header --------------------------------------------------------------
   void header() {
-    out_ << version_directive(options_.target) << "\n";
+    out_ << target::version_directive(options_.target) << "\n";
     for (const auto& e : options_.extensions) out_ << "#extension " << e << " : require\n";
     for (const auto& e : options_.user_extensions)
       if (std::find(options_.extensions.begin(), options_.extensions.end(), e) == options_.extensions.end())

@@ -4,6 +4,8 @@
 // reports: "Float overflow" for a literal above FLT_MAX, no `precise` in ESSL 3.00.
 #include "emit/webgl_rules.hpp"
 
+#include "target/target.hpp"
+
 #include <cfloat>
 #include <cstdlib>
 
@@ -63,9 +65,9 @@ std::vector<WebglViolation> webgl_violations(std::string_view text) {
         out.push_back({line, "'precise' is not a WebGL 2.0 (GLSL ES 3.00) keyword"});
       else if (name.rfind("webgl_", 0) == 0 || name.rfind("_webgl_", 0) == 0)
         out.push_back({line, "'" + std::string(name) + "': WebGL reserves identifiers beginning with webgl_ and _webgl_"});
-      else if (name.size() > kWebglMaxIdentifierLength)
+      else if (name.size() > target::facts(Target::Webgl2).max_identifier_length)
         out.push_back({line, "an identifier of " + std::to_string(name.size()) + " characters: WebGL 2.0 allows " +
-                                 std::to_string(kWebglMaxIdentifierLength)});
+                                 std::to_string(target::facts(Target::Webgl2).max_identifier_length)});
       i = end;
       continue;
     }

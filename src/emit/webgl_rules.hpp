@@ -8,16 +8,13 @@
 
 namespace doublet::emit {
 
-// WebGL 2.0 (ANGLE's translator) refuses identifiers longer than this.
-constexpr std::size_t kWebglMaxIdentifierLength = 1024;
-
 struct WebglViolation {
   int line = 0;  // in the printed text, 1-based
   std::string message;
 };
 
 // What the printed shader does that WebGL 2.0 forbids: `precise`, an `#extension` directive, an
-// identifier beginning with webgl_ or _webgl_ or longer than kWebglMaxIdentifierLength, a float
+// identifier beginning with webgl_ or _webgl_ or longer than the target table allows (target/target.hpp), a float
 // literal beyond the float range (ANGLE warns 'Float overflow' and clamps it). A struct-typed
 // ternary cannot be seen in text; check_target finds those on the IR.
 std::vector<WebglViolation> webgl_violations(std::string_view text);

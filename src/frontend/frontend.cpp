@@ -1,7 +1,7 @@
 #include "frontend/frontend.hpp"
 #include "frontend/read_limited.hpp"
 
-#include "api/big_stack.hpp"
+#include "support/big_stack.hpp"
 #include "frontend/macro_budget.hpp"
 #include "frontend/text_scan.hpp"
 #include "frontend/transcendentals.hpp"
@@ -492,7 +492,7 @@ void configure(glslang::TShader& shader, ShaderStrings& strings, const std::stri
   shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
 }
 
-// The operator limit (api/big_stack.hpp) applied to the text glslang's parser
+// The operator limit (support/big_stack.hpp) applied to the text glslang's parser
 // will see: macros can spell a million operators in one short line. The macro
 // budget has bounded what preprocessing produces.
 std::optional<Diagnostic> check_expanded_operators(const std::string& text, const std::string& preamble,

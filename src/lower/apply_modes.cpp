@@ -45,12 +45,12 @@ class ModeApplier {
  public:
   // rte-exact's arithmetic is rte's (its storage, binary64 words, is lower_doubles' business).
   ModeApplier(ir::Module& m, Context& c)
-      : module_(m), ctx_(c), global_(c.options.mode == Mode::RteExact ? Mode::Rte : c.options.mode) {}
+      : module_(m), ctx_(c), global_(c.config.mode == Mode::RteExact ? Mode::Rte : c.config.mode) {}
 
   bool resolve(const std::vector<frontend::ModePragma>& pragmas) {
     index_declarations();
     for (const auto& p : pragmas) apply_pragma(p);
-    for (const auto& [name, mode] : ctx_.options.mode_for) apply_name(name, mode);
+    for (const auto& [name, mode] : ctx_.config.mode_for) apply_name(name, mode);
     return !ctx_.failed;
   }
 
@@ -146,7 +146,7 @@ class ModeApplier {
       if (p.top_level && !function) vars = globals_named_on(p.next_line, *p.next_text);
     }
     if (!function && vars.empty()) {
-      ctx_.diagnostics.push_back({ctx_.options.file_name, p.line, p.column, Severity::Warning,
+      ctx_.diagnostics.push_back({ctx_.config.file_name, p.line, p.column, Severity::Warning,
                                   spelled + " is not followed by a declaration; it has no effect"});
       return;
     }
@@ -200,7 +200,7 @@ class ModeApplier {
   }
 
   void error_at(int line, int column, const std::string& message) {
-    ctx_.diagnostics.push_back({ctx_.options.file_name, line, column, Severity::Error, message});
+    ctx_.diagnostics.push_back({ctx_.config.file_name, line, column, Severity::Error, message});
     ctx_.failed = true;
   }
 
@@ -445,9 +445,9 @@ class ModeApplier {
     static const std::set<std::string> missing_es100{"trunc", "round", "roundEven", "modf", "isnan", "isinf",
                                                      "transpose", "determinant", "inverse", "outerProduct",
                                                      "frexp", "ldexp"};
-    const Target t = ctx_.options.target;
+    const Target t = ctx_.config.target;
     if (t == Target::Es100) return !missing_es100.count(name);
-    if (t == Target::Es300 || t == Target::Webgl2 || t == Target::Glsl330) return name != "frexp" && name != "ldexp";
+    if (!ctx_.config.facts->frexp_ldexp) return name != "frexp" && name != "ldexp";
     return true;
   }
 
@@ -462,14 +462,14 @@ class ModeApplier {
     }
     Base base = arithmetic_base(arithmetic_);
     const bool bool_mix = n == "mix" && e->args.size() == 3 && e->args[2]->type.base == Base::Bool;
-    if (base == Base::Float && (!has_float_builtin(n) || (bool_mix && ctx_.options.target == Target::Es100)))
+    if (base == Base::Float && (!has_float_builtin(n) || (bool_mix && ctx_.config.target == Target::Es100)))
       base = Base::Double;  // the float-float rule, its result rounded where it is used
     size_t out_argument = e->args.size();
     if (n == "modf" && e->args.size() == 2) {  // modf(x, out i): computed in i's precision
       out_argument = 1;
       base = e->args[1]->type.base;
       if (base == Base::Float && !has_float_builtin(n)) {
-        ctx_.error(e->loc, "modf has no float version on " + std::string(to_string(ctx_.options.target)) +
+        ctx_.error(e->loc, "modf has no float version on " + std::string(to_string(ctx_.config.target)) +
                                ": give its out argument a float-float mode (rte, df64-fast or df64)");
         return e;
       }

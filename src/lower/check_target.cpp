@@ -16,8 +16,8 @@
 #include <mutex>
 #include <set>
 
-#include "emit/validate.hpp"
-#include "emit/webgl_rules.hpp"
+#include "target/glslang_checks.hpp"
+#include "target/target.hpp"
 #include "ir/walk.hpp"
 #include "lower/lower.hpp"
 
@@ -139,26 +139,6 @@ class Es100Checker {
   std::set<std::string> reported_;
 };
 
-constexpr Target kAllTargets[] = {Target::Es100,   Target::Es300,   Target::Es310, Target::Es320,
-                                  Target::Glsl330, Target::Glsl450, Target::Webgl2};
-
-// Whether the opaque type `name` exists in `target`'s language: glslang calls a missing one a
-// reserved word or does not parse it as a type at all.
-bool opaque_type_exists(const std::string& name, Target target) {
-  static std::mutex mutex;
-  static std::map<std::pair<std::string, Target>, bool> known;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto [it, inserted] = known.try_emplace({name, target}, true);
-  if (inserted) {
-    const std::string log =
-        emit::validate(emit::version_directive(target) +
-                           "\nprecision highp float;\nuniform highp " + name + " probe;\nvoid main() {}\n",
-                       Stage::Fragment, target);
-    it->second = log.find("Reserved word") == std::string::npos && log.find("syntax error") == std::string::npos;
-  }
-  return it->second;
-}
-
 // How to do without a desktop-only opaque type on ES, where there is a usual way.
 std::string replacement_hint(const std::string& name) {
   if (name.find("1D") != std::string::npos) return "a 1D texture can be a 2D one of height 1 (sampler2D, y = 0.5)";
@@ -173,19 +153,19 @@ class TypeAvailabilityChecker {
   TypeAvailabilityChecker(const ir::Module& m, Context& c) : module_(m), ctx_(c) {}
 
   void run() {
-    const Target target = ctx_.options.target;
+    const Target target = ctx_.config.target;
     const std::string target_name(to_string(target));
     for (const auto& g : module_.globals) {
-      if (g->type.base == ir::Base::Opaque && !opaque_type_exists(g->type.name, target)) {
+      if (g->type.base == ir::Base::Opaque && !target::opaque_type_exists(g->type.name, target)) {
         std::string elsewhere;
-        for (Target t : kAllTargets)
-          if (opaque_type_exists(g->type.name, t)) elsewhere += (elsewhere.empty() ? "" : ", ") + std::string(to_string(t));
+        for (Target t : target::all_targets(false))
+          if (target::opaque_type_exists(g->type.name, t)) elsewhere += (elsewhere.empty() ? "" : ", ") + std::string(to_string(t));
         std::string hint = replacement_hint(g->type.name);
         ctx_.error(g->loc, "'" + g->name + "' has the type " + g->type.name + ", which " + target_name +
                                " does not have; " + (hint.empty() ? "" : hint + ", or ") +
                                (elsewhere.empty() ? "no target of doublet has it" : "target " + elsewhere));
       }
-      const bool storage_blocks = target_is_es(target) ? target_version(target) >= 310 : target_version(target) >= 430;
+      const bool storage_blocks = ctx_.config.facts->storage_blocks;
       if (g->type.base == ir::Base::Block && g->storage == ir::Storage::Buffer && !storage_blocks &&
           target != Target::Es100)  // es100: Es100Checker refuses every block
         ctx_.error(g->loc, "storage block '" + g->type.name + "' (buffer) is not available on " + target_name +
@@ -200,7 +180,7 @@ class TypeAvailabilityChecker {
 };
 
 // WebGL 2.0 on top of ES 3.00: the user's names (reserved webgl_ / _webgl_ prefixes, at most
-// emit::kWebglMaxIdentifierLength characters), and no ternary on a struct or an array left over
+// the target table's max_identifier_length characters), and no ternary on a struct or an array left over
 // by select_structs.
 class WebglChecker {
  public:
@@ -223,10 +203,10 @@ class WebglChecker {
     if (name.rfind("gl_", 0) == 0 || !reported_.insert(name).second) return;
     if (name.rfind("webgl_", 0) == 0 || name.rfind("_webgl_", 0) == 0)
       ctx_.error(loc, "'" + name + "': WebGL reserves identifiers beginning with webgl_ and _webgl_; rename it");
-    else if (name.size() > emit::kWebglMaxIdentifierLength)
+    else if (name.size() > ctx_.config.facts->max_identifier_length)
       ctx_.error(loc, "'" + name.substr(0, 32) + "...' has " + std::to_string(name.size()) +
                           " characters: WebGL 2.0 allows identifiers of at most " +
-                          std::to_string(emit::kWebglMaxIdentifierLength) + "; shorten it");
+                          std::to_string(ctx_.config.facts->max_identifier_length) + "; shorten it");
   }
 
   void check_type_name(const ir::Type& t, ir::Loc loc) {
@@ -260,8 +240,8 @@ class WebglChecker {
 
 bool check_target(const ir::Module& module, Context& context) {
   TypeAvailabilityChecker(module, context).run();
-  if (context.options.target == Target::Es100) Es100Checker(module, context).run();
-  if (context.options.target == Target::Webgl2) WebglChecker(module, context).run();
+  if (!context.config.facts->uint_and_bit_ops) Es100Checker(module, context).run();
+  if (context.config.facts->webgl_rules) WebglChecker(module, context).run();
   return !context.failed;
 }
 

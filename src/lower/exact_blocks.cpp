@@ -751,7 +751,7 @@ class BlockWords {
       return out;
     }
     if (auto it = ctx_.helpers.find(n); it != ctx_.helpers.end()) {  // generated: read its parameter list
-      const std::string& text = it->second;
+      const std::string& text = it->second.head;  // the parameter list is in the head
       size_t open = text.find(n + "(");
       if (open == std::string::npos) return out;
       size_t i = 0, pos = open + n.size() + 1;
@@ -1021,7 +1021,7 @@ class BlockWords {
 }  // namespace
 
 bool exact_block_words(ir::Module& module, Context& context) {
-  if (!binary64_words(context.options)) return true;
+  if (!context.config.binary64_words()) return true;
   BlockWords(module, context).run();
   return !context.failed;
 }

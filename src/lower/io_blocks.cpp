@@ -22,7 +22,6 @@ bool is_io_block(const ir::Var& v) {
   return v.type.base == ir::Base::Block && (v.storage == ir::Storage::In || v.storage == ir::Storage::Out);
 }
 
-bool target_has_io_blocks(Target t) { return t == Target::Es320 || t == Target::Glsl330 || t == Target::Glsl450; }
 
 // Locations a member takes: dvec3/dvec4 take two, matrices one per column, arrays one per element.
 int location_slots(const ir::Type& t) {
@@ -93,7 +92,7 @@ class Flattener {
     if (!block.type.is_array()) return true;
     ctx_.error(block.loc, "the " + std::string(block.storage == ir::Storage::In ? "input" : "output") + " block '" +
                               block.type.name + "' is an array, which cannot be flattened into plain varyings for " +
-                              std::string(to_string(ctx_.options.target)) +
+                              std::string(to_string(ctx_.config.target)) +
                               " (it has no in/out blocks); declare one block per element, or target es320 or glsl330+");
     return false;
   }
@@ -107,7 +106,7 @@ class Flattener {
       v->name = block.type.name + "_" + f.name;
       if (!taken.insert(v->name).second)
         ctx_.error(block.loc, "flattening the block '" + block.type.name + "' for " +
-                                  std::string(to_string(ctx_.options.target)) + " needs the name '" + v->name +
+                                  std::string(to_string(ctx_.config.target)) + " needs the name '" + v->name +
                                   "', which the shader already uses; rename it, or target es320 or glsl330+");
       v->type = f.type;
       v->declared_type = f.type;
@@ -137,7 +136,7 @@ class Flattener {
 }  // namespace
 
 bool flatten_io_blocks(ir::Module& module, Context& ctx) {
-  if (target_has_io_blocks(ctx.options.target)) return true;
+  if (ctx.config.facts->io_blocks) return true;
   Flattener(module, ctx).run();
   return !ctx.failed;
 }

@@ -148,7 +148,7 @@ class Lints {
       : module_(module), source_(source), ctx_(ctx) {}
 
   void run() {
-    const auto& disabled = ctx_.options.disabled_lints;
+    const auto& disabled = ctx_.config.disabled_lints;
     for (const std::string& name : disabled)
       if (name != "all" && std::find(kLintNames.begin(), kLintNames.end(), name) == kLintNames.end())
         ctx_.error({}, "unknown lint '" + name + "' (known: float-literal, wasted-double, smooth-double-varying, all)");
@@ -169,7 +169,7 @@ class Lints {
       return std::tie(a.loc.line, a.loc.column) < std::tie(b.loc.line, b.loc.column);
     });
     for (const Finding& f : findings_) {
-      if (ctx_.options.lint_errors)
+      if (ctx_.config.lint_errors)
         ctx_.error(f.loc, f.message);
       else
         ctx_.warning(f.loc, f.message);
@@ -515,7 +515,7 @@ class Lints {
       if (v->storage != ir::Storage::Out || !v->declared_type.contains_double()) continue;
       if (v->interp == ir::Interp::Flat) {
         // ES 1.00 prints no interpolation qualifier: the flat the user asked for is lost.
-        if (ctx_.options.target == Target::Es100)
+        if (ctx_.config.target == Target::Es100)
           report(global_declaration(*v),
                  "'" + v->name + "' is a flat double vertex output, but ES 1.00 has no 'flat': its hi and lo "
                  "are interpolated, which keeps only float precision where the vertices differ; pass the "
@@ -529,7 +529,7 @@ class Lints {
           }))
         continue;  // an output block whose double members are all flat
       // ES 1.00 (source or target) has no `flat`: a uniform is the only way to keep the precision.
-      const bool no_flat = ctx_.options.target == Target::Es100 || (module_.source_es && module_.source_version == 100);
+      const bool no_flat = ctx_.config.target == Target::Es100 || (module_.source_es && module_.source_version == 100);
       report(global_declaration(*v),
              "'" + v->name + "' is a double vertex output without 'flat': its fragment input must be flat "
              "(GLSL allows no smooth double input, and ES 3.00 links only matching qualifiers), and "

@@ -16,17 +16,27 @@
 
 #include "doublet/doublet.hpp"
 #include "ir/ir.hpp"
+#include "pipeline/config.hpp"
 #include "rules/rule_library.hpp"
 
 namespace doublet::passes {
 
+// A function the lowering generates (compound assignments, matrix operations, exact block access):
+// its GLSL, with at most one expression left as IR for the runtime linker to spell in the target's
+// syntax (`head` + expression + `tail`); printed before the user's code in request order.
+struct Helper {
+  std::string head;
+  ir::ExprPtr expression;  // null: `head` is the whole definition
+  std::string tail;
+};
+
 struct Context {
-  const Options& options;
+  const pipeline::Config& config;
   std::vector<Diagnostic>& diagnostics;
   std::vector<rules::RuleRef> rules_used;        // runtime functions called
   std::map<std::string, ir::Loc> rule_first_use; // where each rule is first called (for diagnostics)
   std::vector<std::string> helper_order;         // generated helpers, in dependency order
-  std::map<std::string, std::string> helpers;    // name → GLSL definition
+  std::map<std::string, Helper> helpers;         // name → definition
   std::vector<int> widths_used;                  // df struct widths referenced
   std::vector<std::pair<int, int>> matrices_used;  // df_dmatCxR structs referenced: {cols, rows}
   bool failed = false;
@@ -49,11 +59,10 @@ struct Context {
   void use_matrix(int cols, int rows);
   // Adds a generated helper once; `definition` is its full GLSL text.
   void add_helper(const std::string& name, const std::string& definition);
+  // Adds a generated helper whose body holds `expression`, spelled by the runtime linker.
+  void add_helper(const std::string& name, const std::string& head, const ir::ExprPtr& expression,
+                  const std::string& tail);
 };
-
-// Modes exact and rte-exact store every double as its binary64 words (the df_* structs hold
-// uint words and the runtime is rules/exact.glsl).
-inline bool binary64_words(const Options& o) { return o.mode == Mode::Exact || o.mode == Mode::RteExact; }
 
 // Name of the float-float struct for a vector width: df_double, df_dvec2...
 std::string df_type_name(int width);

@@ -8,7 +8,6 @@
 #include <set>
 
 #include "doublet/split.hpp"
-#include "emit/printer.hpp"
 #include "ir/walk.hpp"
 #include "lower/block_layout.hpp"
 #include "lower/lower.hpp"
@@ -18,11 +17,11 @@
 namespace doublet::passes {
 
 void Context::error(ir::Loc loc, const std::string& message) {
-  diagnostics.push_back({ir::file_of(loc, options.file_name), loc.line, loc.column, Severity::Error, message});
+  diagnostics.push_back({ir::file_of(loc, config.file_name), loc.line, loc.column, Severity::Error, message});
   failed = true;
 }
 void Context::warning(ir::Loc loc, const std::string& message) {
-  diagnostics.push_back({ir::file_of(loc, options.file_name), loc.line, loc.column, Severity::Warning, message});
+  diagnostics.push_back({ir::file_of(loc, config.file_name), loc.line, loc.column, Severity::Warning, message});
 }
 void Context::use_rule(const std::string& name, int width) {
   rules::RuleRef ref{name, width};
@@ -37,8 +36,12 @@ void Context::use_matrix(int cols, int rows) {
   if (std::find(matrices_used.begin(), matrices_used.end(), shape) == matrices_used.end()) matrices_used.push_back(shape);
 }
 void Context::add_helper(const std::string& name, const std::string& definition) {
+  add_helper(name, definition, nullptr, "");
+}
+void Context::add_helper(const std::string& name, const std::string& head, const ir::ExprPtr& expression,
+                         const std::string& tail) {
   if (helpers.count(name)) return;
-  helpers[name] = definition;
+  helpers[name] = Helper{head, expression, tail};
   helper_order.push_back(name);
 }
 
@@ -112,8 +115,8 @@ class DoubleLowering {
   // Mode exact keeps the df_* structs and their hi/lo members, but the members are uint words of
   // the binary64 bit pattern and every rule df_X is rules/exact.glsl's ex_X: the lowering itself
   // (swizzles, components, splats, interfaces) is the same for both representations.
-  bool exact() const { return binary64_words(ctx_.options); }
-  bool rte_exact() const { return ctx_.options.mode == Mode::RteExact; }
+  bool exact() const { return ctx_.config.binary64_words(); }
+  bool rte_exact() const { return ctx_.config.mode == Mode::RteExact; }
   std::string runtime_name(const std::string& name) const {
     return exact() && name.rfind("df_", 0) == 0 ? "ex_" + name.substr(3) : name;
   }
@@ -178,7 +181,7 @@ class DoubleLowering {
   ir::Type lower_type(const ir::Type& t, ir::Loc loc) {
     if (t.base != ir::Base::Double) return t;
     if (t.is_matrix()) {
-      if (t.cols != t.vec && ctx_.options.target == Target::Es100 && reported_.insert(ir::type_name(t)).second)
+      if (t.cols != t.vec && ctx_.config.target == Target::Es100 && reported_.insert(ir::type_name(t)).second)
         ctx_.error(loc, ir::type_name(t) + " is not available on es100: GLSL ES 1.00 has only square matrices; use "
                         "dmat" + std::to_string(std::max(t.cols, t.vec)) + " or target es300 or later");
       ir::Type out = matrix::type(t.cols, t.vec);
@@ -368,7 +371,7 @@ class DoubleLowering {
       std::string message = std::string("the double constant ") + text +
                             " is below float-float range (|x| < 1.2e-38): it becomes " +
                             (static_cast<float>(x) == 0.0f ? "0" : "a subnormal float with little precision left");
-      if (ctx_.options.constant_range_errors) ctx_.error(loc, message);
+      if (ctx_.config.constant_range_errors) ctx_.error(loc, message);
       else ctx_.warning(loc, message);
     }
   }
@@ -493,14 +496,14 @@ class DoubleLowering {
     ExprPtr lhs = e->args[0];
     if (!swizzle_letters(lhs->args[0]).empty()) {  // v.xz[i]: compose_swizzles took the constant indices
       ctx_.error(e->loc, "writing a swizzle of a double vector through a variable index (v.xz[i]) cannot be lowered "
-                         "for " + std::string(to_string(ctx_.options.target)) +
+                         "for " + std::string(to_string(ctx_.config.target)) +
                          ": index the vector itself (v[i]) or use a temporary");
       return e;
     }
     if (e->op != "=" && ir::has_side_effects(lhs)) {  // the compound form reads the vector, then writes it
       ctx_.error(e->loc, "compound assignment to a component of a double vector reached through an expression with "
                          "side effects (a call, ++, an assignment) cannot be lowered for " +
-                         std::string(to_string(ctx_.options.target)) +
+                         std::string(to_string(ctx_.config.target)) +
                          ": copy the vector to a temporary, update it and store it back");
       return e;
     }
@@ -559,8 +562,8 @@ class DoubleLowering {
     static const std::map<std::string, std::string> words{{"+", "add"}, {"-", "sub"}, {"*", "mul"}, {"/", "div"}};
     const std::string x_type = ir::type_name(target->type), y_type = ir::type_name(value->type);
     std::string name = "df_" + words.at(op) + "_assign_" + x_type.substr(3) + "_" + y_type.substr(3) + (fast_ ? "_fast" : "");
-    ctx_.add_helper(name, x_type + " " + name + "(inout " + x_type + " x, " + y_type + " y) {\n  x = " +
-                              emit::expression_text(updated, ctx_.options.target) + ";\n  return x;\n}\n");
+    ctx_.add_helper(name, x_type + " " + name + "(inout " + x_type + " x, " + y_type + " y) {\n  x = ", updated,
+                    ";\n  return x;\n}\n");
     return ir::make_node(Kind::Call, name, target->type, {target, value}, loc);
   }
 
@@ -689,7 +692,7 @@ class DoubleLowering {
       return rule("df_unpack_double2x32", 1, ir::scalar_type(ir::Base::Uint, 2), e->args, e->loc);
     if (n.rfind("atomic", 0) == 0) {
       ctx_.error(e->loc, "atomic operations on doubles (" + n + ") cannot be lowered for " +
-                             std::string(to_string(ctx_.options.target)) +
+                             std::string(to_string(ctx_.config.target)) +
                              ": a double becomes two floats (hi, lo) that no atomic can update together; accumulate "
                              "per invocation and reduce afterwards, or use an integer fixed-point atomicAdd");
       return e;

@@ -52,7 +52,7 @@ std::string from_scalars(const std::string& prefix, int w) {
 int dot_constant(int w) { return w == 1 ? 7 : w == 2 ? 10 : 13; }
 
 // Mode exact and rte-exact store double matrices as binary64 words (matrix_helpers_exact).
-bool exact_mode(const Context& ctx) { return binary64_words(ctx.options); }
+bool exact_mode(const Context& ctx) { return ctx.config.binary64_words(); }
 
 }  // namespace
 

@@ -228,10 +228,17 @@ bool optimize_df(ir::Module& module, Context& ctx, OptimizeStats* stats) {
   for (const auto& fn : module.functions) ir::visit(fn->body, collect);
   static const std::set<std::string> replaceable{"df_mul", "df_div", "df_mul_f", "df_add", "df_sub", "df_from_float"};
   std::string helper_text;
-  for (const auto& [name, text] : ctx.helpers) helper_text += text;
+  std::set<std::pair<std::string, int>> helper_calls;  // in helpers' expressions, not yet spelled
+  const ir::ExprVisitor collect_helper = [&](const ExprPtr& e) { collect_call(e, helper_calls); };
+  for (const auto& [name, helper] : ctx.helpers) {
+    helper_text += helper.head + helper.tail;
+    if (helper.expression) ir::visit(helper.expression, collect_helper);
+  }
   // A call `name(` in the helpers' text, not the tail of a longer name (df_mul in df_mul_pow2( is not
   // a call of df_mul; xdf_mul( is not either).
   const auto in_helpers = [&](const std::string& name) {
+    for (const auto& [called_name, width] : helper_calls)
+      if (called_name == name) return true;
     const std::string call = name + "(";
     for (size_t at = helper_text.find(call); at != std::string::npos; at = helper_text.find(call, at + 1))
       if (at == 0 || !frontend::is_word_char(helper_text[at - 1])) return true;

@@ -11,7 +11,8 @@
 #include <set>
 #include <string>
 
-#include "emit/validate.hpp"
+#include "target/glslang_checks.hpp"
+#include "target/target.hpp"
 #include "ir/walk.hpp"
 #include "lower/lower.hpp"
 
@@ -27,34 +28,10 @@ Stage stage_of(const ir::Module& m) {
   return Stage::Vertex;
 }
 
-// The names in `names` that are built-in functions of `target` for `stage`: glslang reports a
-// prototype of one as "'NAME' : function name is redeclaration of existing name" and stops at the
-// first, so the probe is parsed again without it until it passes (one parse per built-in name found,
-// plus one; there are about 200 built-in names, so this is bounded whatever the shader).
-std::set<std::string> builtin_function_names(std::set<std::string> names, Target target, Stage stage) {
-  const std::string header = emit::version_directive(target) + "\nprecision highp float;\n";
-  const std::string marker = "' : function name is redeclaration of existing name";
-  std::set<std::string> builtins;
-  while (!names.empty()) {
-    std::string probe = header;
-    for (const auto& name : names) probe += "void " + name + "(int doublet_probe, int doublet_probe2, int doublet_probe3);\n";
-    if (stage == Stage::Compute) probe += "layout(local_size_x = 1) in;\n";
-    probe += "void main() {}\n";
-    const std::string log = emit::validate(probe, stage, target);
-    const size_t at = log.find(marker);
-    if (at == std::string::npos) break;
-    const size_t open = log.rfind('\'', at - 1);
-    const std::string name = open == std::string::npos ? "" : log.substr(open + 1, at - open - 1);
-    if (!names.erase(name)) break;  // not one of ours: stop rather than loop
-    builtins.insert(name);
-  }
-  return builtins;
-}
-
 }  // namespace
 
 bool rename_functions_named_like_builtins(ir::Module& module, Context& ctx) {
-  if (!target_is_es(ctx.options.target)) return true;
+  if (ctx.config.facts->overloads_builtin_names) return true;
   std::set<std::string> user_functions, taken;
   for (const auto& f : module.functions)
     if (f->name != "main") user_functions.insert(f->name);
@@ -62,8 +39,8 @@ bool rename_functions_named_like_builtins(ir::Module& module, Context& ctx) {
   // glslang's ES 1.00 accepts an overload of a built-in name (the probe's) and refuses only a
   // redefinition, which fp32's demotion makes of `double exp(double)`: ES 1.00 asks ES 3.00's
   // names (a superset; renaming one more function there is harmless).
-  const Target probe_target = ctx.options.target == Target::Es100 ? Target::Es300 : ctx.options.target;
-  const std::set<std::string> builtins = builtin_function_names(user_functions, probe_target, stage_of(module));
+  const Target probe_target = ctx.config.target == Target::Es100 ? Target::Es300 : ctx.config.target;
+  const std::set<std::string> builtins = target::builtin_function_names(user_functions, probe_target, stage_of(module));
   if (builtins.empty()) return true;
   for (const auto& f : module.functions) taken.insert(f->name);
   for (const auto& g : module.globals) taken.insert(g->name);

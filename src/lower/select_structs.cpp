@@ -202,7 +202,7 @@ class StructSelectRewriter {
 }  // namespace
 
 bool select_structs(ir::Module& module, Context& context) {
-  if (context.options.target != Target::Webgl2) return !context.failed;
+  if (!context.config.facts->webgl_rules) return !context.failed;
   StructSelectRewriter(module, context).run();
   return !context.failed;
 }

@@ -249,7 +249,7 @@ ExprPtr matrix_value(const MatrixSplit& s, int first) {
 }  // namespace
 
 bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
-  const bool es100 = ctx.options.target == Target::Es100;
+  const bool es100 = ctx.config.target == Target::Es100;
   std::set<std::string> names;
   for (const auto& g : module.globals) names.insert(g->name);
   for (const auto& f : module.functions) names.insert(f->name);
@@ -312,7 +312,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
                                                              v->declared_type.array_dims.end(),
                                                              [](int d) { return d <= 0; })) {
         ctx.error(v->loc, "unsized arrays of doubles cannot be split into hi/lo interface variables");
-      } else if (binary64_words(ctx.options) && v->declared_type.is_matrix()) {
+      } else if (ctx.config.binary64_words() && v->declared_type.is_matrix()) {
         // lower_doubles let only loose uniforms through (in/out matrices are diagnosed there).
         matrix_splits.push_back(split_matrix_uniform(v, ctx, names, entry));
         globals.push_back(matrix_splits.back().words);
@@ -320,7 +320,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         manifest.variables.push_back(entry);
         v->storage = ir::Storage::Global;  // the private df_dmat value the shader body uses
         v->layout = {};
-      } else if (binary64_words(ctx.options)) {
+      } else if (ctx.config.binary64_words()) {
         WordSplit s = split_into_words(v, module.stage, ctx, names, entry, locations);
         for (const auto& part : s.parts) {
           globals.push_back(part);
@@ -341,7 +341,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         s.storage = v->storage;
         for (int half = 0; half < 2; ++half) {
           auto part = std::make_shared<ir::Var>(*v);
-          part->name = ir::join_identifier(v->name, half == 0 ? ctx.options.hi_suffix : ctx.options.lo_suffix);
+          part->name = ir::join_identifier(v->name, half == 0 ? ctx.config.hi_suffix : ctx.config.lo_suffix);
           part->type = v->declared_type.with_base(ir::Base::Float);
           part->declared_type = part->type;
           check_generated_name(*v, part->name, half == 0, ctx, names);

@@ -773,11 +773,11 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
       out += "\n";
       for (int w : struct_widths) {
         const std::string f = request.exact_words ? vec_type("uint", "uvec", w) : vec_type("float", "vec", w);
-        out += "struct " + df_type(w) + " { " + f + " hi; " + f + " lo; };\n";
+        out += pair_struct_definition(df_type(w), f + " hi", f + " lo", true);
       }
       for (int w : ff_struct_widths) {
         const std::string f = vec_type("float", "vec", w);
-        out += "struct " + ff_type(w) + " { " + f + " hi; " + f + " lo; };\n";
+        out += pair_struct_definition(ff_type(w), f + " hi", f + " lo", true);
       }
       if (request.guard == GuardStyle::Uniform)
         out += "uniform highp float " + request.guard_uniform + ";  // never set: GL zero-fills it at link\n";
@@ -795,6 +795,11 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     result.error = "rule library: unknown error";
   }
   return result;
+}
+
+std::string pair_struct_definition(const std::string& name, const std::string& hi, const std::string& lo, bool one_line) {
+  return one_line ? "struct " + name + " { " + hi + "; " + lo + "; };\n"
+                  : "struct " + name + " {\n  " + hi + ";\n  " + lo + ";\n};\n";
 }
 
 }  // namespace doublet::rules

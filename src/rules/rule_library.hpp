@@ -38,6 +38,11 @@ struct RuleRef {
   bool operator==(const RuleRef&) const = default;
 };
 
+// `struct NAME { HI; LO; };` — the one spelling of a hi/lo pair type (df_double, ff_dvec2, df_dmat3,
+// ...): `hi` and `lo` are the member declarations ("vec2 hi", "uvec3 hi[3]"). `one_line` is the
+// rule library's compact form; the runtime linker writes the types it adds one member per line.
+std::string pair_struct_definition(const std::string& name, const std::string& hi, const std::string& lo, bool one_line);
+
 struct EmitRequest {
   std::vector<RuleRef> used;        // what the lowered code calls directly
   GuardStyle guard = GuardStyle::Uniform;

@@ -1,5 +1,5 @@
 // doublet_runner: executes GLSL compute shaders on real Mesa drivers, so that tests can see what
-// the drivers' optimizers actually do to float-float code (see /work/shared/NUMERICS.md).
+// the drivers' optimizers actually do to float-float code (see docs/numerics.md#what-optimizers-do).
 //   Backend::Vulkan — glslang → SPIR-V (validated by SPIRV-Tools) → lavapipe.
 //   Backend::Gles   — the text as-is → Mesa's GLES 3.2 compiler (llvmpipe, EGL surfaceless).
 //   Backend::WebGl2 — vertex/fragment only: GLSL ES 1.00/3.00 text in headless Chromium's WebGL2

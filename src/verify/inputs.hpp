@@ -3,7 +3,7 @@
 // one that contains 0 is uniform (linear). Exact values (spec "values") are cycled.
 // Every value is rounded to what both shaders can receive: a float-float pair (hi + lo) for a
 // double input, a float for a float input, so the native and the lowered shader see the same
-// numbers and the measured error is the arithmetic's (NUMERICS.md: separate representation loss).
+// numbers and the measured error is the arithmetic's (docs/numerics.md#representation-loss).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
-// The driver probe printed at the top of every report (NUMERICS.md): does an unprotected TwoSum
-// keep its error term, is fma fused, are fp32 denormals flushed — measured in the stage verified.
+// The driver probe printed at the top of every report (docs/numerics.md#measured-driver-facts):
+// does an unprotected TwoSum keep its error term, is fma fused, are fp32 denormals flushed —
+// measured in the stage verified.
 #pragma once
 
 #include <string>

@@ -1,9 +1,10 @@
 // Per-operation sweeps (`doublet verify --sweep OP|all`): the lowered operation on a real driver
 // against an MPFR reference (256-bit, exact for these inputs), over the input families of
-// NUMERICS.md: a binade grid over both exponents (-126..127), magnitude ratios 2^0..2^-60,
-// cancellation a ≈ -b(1 ± 2^-k) for k = 1..60, the CTS fixed values, the split-overflow region
-// (|x| > FLT_MAX/4097) and sums near FLT_MAX. Error in bits and in u² against the rule's proven
-// bound; a PNG heatmap of min correct bits over (exponent a, exponent b) per op.
+// docs/numerics.md#input-families: a binade grid over both exponents (-126..127), magnitude
+// ratios 2^0..2^-60, cancellation a ≈ -b(1 ± 2^-k) for k = 1..60, the CTS fixed values, the
+// split-overflow region (|x| > FLT_MAX/4097) and sums near FLT_MAX. Error in bits and in u²
+// against the rule's proven bound; a PNG heatmap of min correct bits over (exponent a,
+// exponent b) per op.
 #pragma once
 
 #include <cstdint>

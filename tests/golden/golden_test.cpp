@@ -296,6 +296,7 @@ TEST_P(Golden, Matches) {
   options.stage = stage.stage;
   options.target = target.target;
   options.file_name = "cases/" + p.case_file();
+  options.check_ir = true;  // the IR is checked after every pass (src/ir/check.hpp)
   options.include_dirs = {(kCasesDir / "include").string()};  // engine-style shared headers (#include "x.glsl")
   std::string bad_options = apply_case_options(*source, options);
   ASSERT_EQ(bad_options, "") << "cases/" << p.case_file() << ": bad options line";

@@ -1,4 +1,5 @@
-// The NUMERICS.md probes as assertions: what Mesa's optimizers do to Knuth's TwoSum.
+// The driver probes of docs/numerics.md#measured-driver-facts as assertions: what Mesa's optimizers
+// do to Knuth's TwoSum.
 #include <cmath>
 #include <random>
 
@@ -111,7 +112,7 @@ TEST_P(ProbeTest, UnprotectedTwoSumErrorTermIsDeleted) {
   }
   std::cout << "[ probe ] " << device << ": unprotected TwoSum e==0 for " << zero << "/" << kPairs << "\n";
   EXPECT_EQ(s_exact, kPairs);
-  EXPECT_EQ(zero, kPairs) << "the driver no longer deletes the unprotected TwoSum error term: update NUMERICS.md";
+  EXPECT_EQ(zero, kPairs) << "the driver no longer deletes the unprotected TwoSum error term: update docs/numerics.md#measured-driver-facts";
 }
 
 TEST_P(ProbeTest, ZeroUniformGuardKeepsTwoSumExact) {

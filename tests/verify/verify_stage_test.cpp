@@ -67,7 +67,8 @@ TEST_P(VerifyStage, KeepsItsBitsOnBothBackendsWithTheFtzCaveat) {
   std::printf("%s", format_table(r).c_str());
   EXPECT_TRUE(r.passed()) << format_table(r);
   EXPECT_GE(worst_bits(r), GetParam().expected_bits);
-  // NUMERICS.md: vertex and fragment stages flush denormals; the report must say so.
+  // docs/numerics.md#measured-driver-facts: vertex and fragment stages flush denormals; the report
+  // must say so.
   for (const BackendRun& run : r.runs) EXPECT_TRUE(run.probe.denormals_flushed);
   EXPECT_NE(format_table(r).find("caveat: this stage flushes denormals"), std::string::npos);
 }

@@ -44,6 +44,7 @@ TEST_P(WgslGolden, Matches) {
   options.stage = doublet::parse_stage(stage_name);
   options.target = doublet::Target::Wgsl;
   options.file_name = "cases/" + file;
+  options.check_ir = true;  // the IR is checked after every pass (src/ir/check.hpp)
   doublet::Result result = doublet::lower(read(kDir / "cases" / file), options);
   std::string diagnostics;
   for (const auto& d : result.diagnostics)

@@ -1,4 +1,4 @@
-#include "api/big_stack.hpp"
+#include "support/big_stack.hpp"
 
 #include <pthread.h>
 

@@ -1,0 +1,59 @@
+// The lowering's configuration, resolved once from the public Options (docs/architecture.md,
+// "Config"): every refusal of an option combination happens while it is built, for GLSL and WGSL
+// alike, so that the passes only read decisions already made.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+#include "rules/rule_library.hpp"
+#include "target/target.hpp"
+
+namespace doublet::pipeline {
+
+// How a lowered double is stored.
+enum class Representation {
+  FloatFloat,     // hi + lo floats (fp32, rte, df64-fast, df64, df64-int)
+  Binary64Words,  // the IEEE binary64 pattern in two uint words (exact, rte-exact)
+  Native,         // kept a double (native)
+};
+
+struct Config {
+  Stage stage = Stage::Vertex;
+  Target output = Target::Es300;  // what the user asked for (wgsl included)
+  Target target = Target::Es300;  // the GLSL profile the passes lower for (es310 under wgsl)
+  const target::Facts* facts = nullptr;  // of `target`
+  Mode requested_mode = Mode::Df64;  // --mode as given
+  Mode mode = Mode::Df64;            // what the passes see: df64-int lowers as df64
+  Representation representation = Representation::FloatFloat;
+  bool integer_eft = false;          // df64-int: rules/int.glsl's error-free transformations
+  rules::GuardStyle guard = rules::GuardStyle::Uniform;
+  std::vector<std::string> guard_extensions;  // #extension lines the guard needs (es310 precise)
+  std::string guard_uniform = "df_guard";
+  bool optimize = true;
+  // What the passes read of the user's options.
+  std::string file_name;
+  std::string hi_suffix = "_hi", lo_suffix = "_lo";
+  std::vector<std::pair<std::string, Mode>> mode_for;
+  bool constant_range_errors = false;
+  std::vector<std::string> disabled_lints;
+  bool lint_errors = false;
+  // Pipeline control (Options::stop_after, skip_passes, check_ir).
+  std::string stop_after;
+  std::vector<std::string> skip_passes;
+  bool check_ir = false;
+
+  bool binary64_words() const { return representation == Representation::Binary64Words; }
+  bool native() const { return representation == Representation::Native; }
+};
+
+// The Config of `options`, or nullopt with the refusal in `diags`.
+std::optional<Config> resolve_config(const Options& options, std::vector<Diagnostic>& diags);
+
+// The Options the front end reads for `config` (the GLSL profile under wgsl).
+Options frontend_options(const Options& options, const Config& config);
+
+}  // namespace doublet::pipeline
