@@ -74,6 +74,7 @@ struct LowerArgs {
   std::string color = "auto";
   bool constant_range_errors = false;
   bool no_optimize = false;           // -O0
+  std::string stop_after;             // --stop-after PASS
   std::string mode;                   // --mode (empty: df64)
   std::vector<std::string> mode_for;  // --mode-for NAME=MODE
 };
@@ -137,6 +138,7 @@ Options common_options(const LowerArgs& a, std::string& error) {
   opt.lo_suffix = a.lo_suffix;
   opt.constant_range_errors = a.constant_range_errors;
   opt.optimize = !a.no_optimize;
+  opt.stop_after = a.stop_after;
   opt.guard = a.guard == "precise" ? GuardKind::Precise : a.guard == "uniform" ? GuardKind::Uniform : GuardKind::Auto;
   if (std::string mode_error = apply_mode_args(a.mode, a.mode_for, opt); !mode_error.empty()) problem(mode_error);
   return opt;
@@ -346,6 +348,14 @@ Command add_lower_command(CLI::App& app) {
   cmd->add_flag("--no-optimize", args->no_optimize,
                 "(-O0) Skip the whole-shader optimizer: every double operation gets its general rule "
                 "(docs/performance.md, optimize_df)");
+  {
+    std::string passes;
+    for (std::string_view p : pass_names()) passes += (passes.empty() ? "" : ", ") + std::string(p);
+    cmd->add_option("--stop-after", args->stop_after,
+                    "Stop after this pass and write the IR as it is then, not re-validated (docs/architecture.md); "
+                    "the passes, in order: " + passes)
+        ->type_name("PASS");
+  }
   cmd->add_flag("--constant-range-errors", args->constant_range_errors,
                 "Make double constants too small for float-float (e.g. 1e-300lf) errors, not warnings");
   cmd->add_option("--color", args->color, "Colour diagnostics: auto (terminal, no NO_COLOR), always, never")

@@ -1,0 +1,6 @@
+// target: es300
+#version 450
+uniform double a;
+uniform float brightness;
+out vec4 color;
+void main() { color = vec4(float(a + a) * brightness); }
