@@ -82,7 +82,7 @@ $DF df_split($F a) {
 // (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
 // df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
 // let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
 // @widths 1 2 3 4
 // @per-component
 $DF df_two_prod($F a, $F b) {

@@ -56,10 +56,20 @@ class Printer {
     for (const auto& f : module_.functions)
       if (f->name != "main") out_ << signature(*f) << ";\n";
     for (const auto& f : module_.functions) {
-      out_ << "\n" << signature(*f) << "\n";
+      out_ << "\n";
+      mark(f->loc);
+      out_ << signature(*f) << "\n";
       statement(f->body, 0);
     }
-    return {out_.str(), diags_, builtin_first_use_};
+    PrintResult result{out_.str(), diags_, builtin_first_use_, {}};
+    // Byte offsets → line numbers, in one pass over the text (the marks are in increasing order).
+    int line = 1;
+    size_t at = 0;
+    for (const auto& [offset, loc] : marks_) {
+      for (; at < offset && at < result.text.size(); ++at) line += result.text[at] == '\n';
+      result.source_lines.emplace_back(line, loc);
+    }
+    return result;
   }
 
   // One expression (expression_text).
@@ -281,9 +291,15 @@ class Printer {
     return s;
   }
 
+  // The user's place of what is printed next (PrintResult::source_lines).
+  void mark(const ir::Loc& loc) {
+    if (loc.line > 0) marks_.emplace_back(static_cast<size_t>(out_.tellp()), loc);
+  }
+
   void global(const ir::VarPtr& v, const ir::ExprPtr& init) {
     if (v.get() == frag_output_ || hoisted_.count(v.get())) return;
     if (v->storage == ir::Storage::BuiltIn) return;
+    mark(v->loc);
     if (v->type.base == ir::Base::Block) {
       out_ << qualifiers(*v) << v->type.name << " {\n";
       for (const auto& f : *v->type.fields) out_ << "  " << interpolation(f.interp) << declarator(f.type, f.name) << ";\n";
@@ -333,6 +349,7 @@ class Printer {
   }
 
   void statement(const ir::StmtPtr& s, int depth) {
+    mark(s->loc);
     switch (s->kind) {
       case Stmt::Kind::Block:
         indent(depth);
@@ -559,6 +576,7 @@ class Printer {
   bool frag_data_dynamic_ = false;  // an index is computed: one array instead of one output per slot
   std::set<int> frag_data_slots_;
   std::map<std::string, PrintResult::BuiltinUse> builtin_first_use_;
+  std::vector<std::pair<size_t, ir::Loc>> marks_;  // output byte offset → the user's place
   bool precise_dropped_ = false;  // the warning is given once
 };
 

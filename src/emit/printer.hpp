@@ -35,6 +35,10 @@ struct PrintResult {
     std::string source_name;  // as the user wrote it (texture) where the target spells it otherwise (texture2D)
   };
   std::map<std::string, BuiltinUse> builtin_first_use;
+  // (line of the text, the user's place) for every global, function and statement printed with a
+  // place, in text order: maps a position in the text back to the user's source (the WGSL
+  // printer's diagnostics are positions in this text).
+  std::vector<std::pair<int, ir::Loc>> source_lines;
 };
 
 PrintResult print(const ir::Module& module, const PrintOptions& options, const std::string& file_name);

@@ -108,15 +108,10 @@ std::optional<Config> resolve_config(const Options& o, std::vector<Diagnostic>& 
     c.guard = GuardStyle::None;
     c.guard_extensions.clear();
   }
-  c.guard_uniform = o.guard_uniform_name;
-  c.optimize = o.optimize;
-  c.file_name = o.file_name;
-  c.hi_suffix = o.hi_suffix;
-  c.lo_suffix = o.lo_suffix;
-  c.mode_for = o.mode_for;
-  c.constant_range_errors = o.constant_range_errors;
-  c.disabled_lints = o.disabled_lints;
-  c.lint_errors = o.lint_errors;
+  // What the passes read of the user's options, copied as they are.
+  c.guard_uniform = o.guard_uniform_name, c.optimize = o.optimize, c.file_name = o.file_name;
+  c.hi_suffix = o.hi_suffix, c.lo_suffix = o.lo_suffix, c.mode_for = o.mode_for;
+  c.constant_range_errors = o.constant_range_errors, c.disabled_lints = o.disabled_lints, c.lint_errors = o.lint_errors;
   if (!o.stop_after.empty()) {
     const auto names = pass_names();
     if (std::find(names.begin(), names.end(), o.stop_after) == names.end()) {

@@ -23,6 +23,23 @@ std::string restore_prefix(std::string text) {
   return text;
 }
 
+// A diagnostic of the WGSL printer names a line of the intermediate GLSL: the statement printed
+// on that line (or the last one before it) carries the user's place. Runtime code has none and
+// keeps the intermediate position and its note.
+void place_in_user_source(Diagnostic& d, const std::vector<std::pair<int, ir::Loc>>& source_lines,
+                          const std::string& note) {
+  const ir::Loc* place = nullptr;
+  for (const auto& [line, loc] : source_lines) {
+    if (line > d.line) break;
+    place = &loc;
+  }
+  if (d.line <= 0 || !place) return;
+  d.file = ir::file_of(*place, d.file);
+  d.line = place->line;
+  d.column = place->column;
+  if (const size_t at = d.message.find(note); at != std::string::npos) d.message.erase(at, note.size());
+}
+
 }  // namespace
 
 bool print_wgsl(State& state) {
@@ -49,7 +66,10 @@ bool print_wgsl(State& state) {
   const std::string note = " (position in the intermediate GLSL: see `doublet lower --target es310 --guard uniform " +
                            state.config.file_name + "`)";
   emit::WgslPrintResult printed = emit::print_wgsl(module, state.config.file_name, note);
-  for (auto& d : printed.diagnostics) d.message = restore_prefix(d.message);
+  for (auto& d : printed.diagnostics) {
+    d.message = restore_prefix(d.message);
+    place_in_user_source(d, state.printed.source_lines, note);
+  }
   result.diagnostics.insert(result.diagnostics.end(), printed.diagnostics.begin(), printed.diagnostics.end());
   for (const auto& d : result.diagnostics)
     if (d.severity == Severity::Error) return false;

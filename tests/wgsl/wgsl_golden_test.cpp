@@ -170,3 +170,36 @@ TEST(WgslRefusals, BuiltInVariableWithoutCounterpartIsPositioned) {
 }
 
 }  // namespace
+
+namespace {
+
+// The WGSL printer works on an intermediate ES 3.10 text; its refusals must still name the user's
+// file, line and column (pipeline/wgsl_tail.cpp maps them back), not the intermediate text's.
+TEST(WgslRefusals, NameTheUsersLineAndColumn) {
+  doublet::Options options;
+  options.stage = doublet::Stage::Compute;
+  options.target = doublet::Target::Wgsl;
+  options.file_name = "user.comp";
+  const std::string source =
+      "#version 450\n"
+      "layout(local_size_x = 1) in;\n"
+      "layout(std430, binding = 0) buffer B { double x; float v[]; };\n"
+      "void main() {\n"
+      "  x = x * 2.0lf;\n"
+      "  int i = int(v[0]);\n"
+      "  switch (i) {\n"
+      "    case 0: v[1] = 1.0;\n"
+      "      case 1: v[2] = 2.0; break;\n"  // line 9: the case fallen into, at column 7
+      "  }\n"
+      "}\n";
+  const auto r = doublet::lower(source, options);
+  ASSERT_FALSE(r.ok);
+  ASSERT_FALSE(r.diagnostics.empty());
+  const doublet::Diagnostic& d = r.diagnostics[0];
+  EXPECT_NE(d.message.find("falls through"), std::string::npos) << d.message;
+  EXPECT_EQ(d.file, "user.comp");
+  EXPECT_EQ(d.message.find("intermediate"), std::string::npos) << d.message;
+  EXPECT_EQ(doublet::format_diagnostic(d).substr(0, 15), "user.comp:8:5: ") << doublet::format_diagnostic(d);
+}
+
+}  // namespace

@@ -71,7 +71,7 @@ df_double df_split(float a) {
 // (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
 // df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
 // let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
 df_double df_two_prod(float a, float b) {
   float p = ((a * b) - df_guard);
   float aa = (abs(a));

@@ -59,7 +59,7 @@ df_double df_split(float a) {
 // (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
 // df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
 // let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
 df_double df_two_prod(float a, float b) {
   precise float p = (a * b);
   precise float aa = (abs(a));
@@ -213,7 +213,7 @@ df_double df_scale_pow2(df_double a, float s) {
 // (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
 // df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
 // let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (NUMERICS.md).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
 // (width 3: the width-1 df_two_prod applied to each component)
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
   df_double r0 = df_two_prod(a.x, b.x);
