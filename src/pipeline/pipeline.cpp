@@ -127,7 +127,9 @@ void run(State& s) {
   bool printed = false;
   for (const Pass& pass : pass_table()) {
     const bool wanted = pass.wanted(c);
-    if (!wanted && std::string_view(pass.phase) == pass.name) continue;  // a phase of its own that does not run
+    // Every phase of the GLSL pipeline is reported, even where its passes do not run (native has
+    // no "modes"); the target's tail (wgsl) only when it runs.
+    if (!wanted && &pass == &pass_table().back()) continue;
     if (pass.phase != phase) {
       finish_phase();
       phase = pass.phase;
