@@ -4,6 +4,8 @@
 // original shader on native fp64 (lavapipe), for 2^18 input pairs of the exact_ops_test kinds.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <random>
@@ -69,6 +71,26 @@ const char* kResultNames[kResults] = {"a+b", "a-b*3", "a*b/0.1", "floor", "ceil"
 
 bool is_nan(uint64_t x) { return (x & 0x7FFFFFFFFFFFFFFFull) > 0x7FF0000000000000ull; }
 
+// Native lavapipe is not IEEE for fp64 trunc, roundEven and round on some CPUs: on the AVX2
+// machines of 2026-11-26 it returns x unchanged for 2^24 < |x| < 2^52 and +0 for x in (-1, 0)
+// (docs/extremes.md, "Native fp64 is not the oracle for rounding to an integer"). There the host's
+// IEEE 754 result decides: a difference is excused only where the lowered result is the host's and
+// native's is not. GLSL leaves round's direction at halves to the implementation: either tie rule.
+bool native_rounding_is_not_ieee(uint32_t result, uint64_t a, uint64_t got, uint64_t native) {
+  if (result != 5 && result != 6 && result != 7) return false;
+  const double x = std::bit_cast<double>(a);
+  std::vector<double> ieee;
+  if (result == 5) ieee = {std::trunc(x)};
+  if (result == 6) ieee = {std::nearbyint(x)};  // the default rounding mode: ties to even
+  if (result == 7) ieee = {std::nearbyint(x), std::round(x)};
+  bool got_ieee = false, native_ieee = false;
+  for (double r : ieee) {
+    got_ieee = got_ieee || got == std::bit_cast<uint64_t>(r);
+    native_ieee = native_ieee || native == std::bit_cast<uint64_t>(r);
+  }
+  return got_ieee && !native_ieee;
+}
+
 std::vector<uint64_t> make_pairs() {
   std::mt19937_64 rng(115);
   const uint64_t specials[] = {0, 1, 0x000FFFFFFFFFFFFFull, 0x0010000000000000ull, 0x7FEFFFFFFFFFFFFFull,
@@ -125,12 +147,16 @@ TEST(ExactLowering, WholeShaderBitIdenticalToNativeFp64) {
   for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
     const std::vector<uint64_t> got = run(backend, lowered.output, ab);
     ASSERT_EQ(got.size(), native.size());
-    uint32_t total = 0, nan_payloads = 0;
+    uint32_t total = 0, nan_payloads = 0, native_not_ieee = 0;
     for (uint32_t k = 0; k < kResults; ++k) {
       uint32_t differing = 0, first = 0;
       for (uint32_t i = 0; i < kPairs; ++i) {
         const uint64_t g = got[size_t(i) * kResults + k], n = native[size_t(i) * kResults + k];
         if (g == n) continue;
+        if (native_rounding_is_not_ieee(k, ab[2 * size_t(i)], g, n)) {
+          ++native_not_ieee;
+          continue;
+        }
         if (k != 14 && k != 16 && k != 19 && k != 20 && is_nan(g) && is_nan(n)) {
           ++nan_payloads;  // both NaN: which NaN operand native passes on depends on its instruction order
           continue;
@@ -146,7 +172,8 @@ TEST(ExactLowering, WholeShaderBitIdenticalToNativeFp64) {
     }
     std::cout << "[ exact ] lowered shader on " << backend_name(backend) << ": " << total << " of "
               << kPairs * kResults << " results differ from native fp64; " << nan_payloads
-              << " NaN results carry another NaN's payload or sign\n";
+              << " NaN results carry another NaN's payload or sign; " << native_not_ieee
+              << " trunc/round results are IEEE 754's where native's are not\n";
     EXPECT_EQ(total, 0u) << backend_name(backend);
   }
 }
