@@ -42,8 +42,7 @@ class Printer {
 
   PrintResult run() {
     header();
-    for (const auto& t : module_.structs) struct_definition(t);
-    if (!module_.structs.empty()) out_ << "\n";
+    print_structs();
     if (!options_.after_structs.empty()) out_ << options_.after_structs << "\n";
     fragment_output_rename();
     for (size_t i = 0; i < module_.globals.size(); ++i) global(module_.globals[i], module_.global_inits[i]);
@@ -99,7 +98,14 @@ class Printer {
       out_ << "layout(local_size_x = " << module_.local_size[0] << ", local_size_y = " << module_.local_size[1]
            << ", local_size_z = " << module_.local_size[2] << ") in;\n";
     out_ << "\n";
-    if (!options_.guard_uniform.empty()) hoist_loose_uniforms();
+    if (!options_.guard_uniform.empty()) hoist_loose_uniforms(is_loose_numeric_uniform);
+    out_ << options_.runtime_types;
+    if (!options_.guard_uniform.empty() && std::any_of(module_.globals.begin(), module_.globals.end(), [](const auto& v) {
+          return is_loose_struct_uniform(*v);
+        })) {
+      print_structs();
+      hoist_loose_uniforms(is_loose_struct_uniform);
+    }
     if (!options_.runtime.empty()) out_ << options_.runtime << "\n";
   }
 
@@ -108,18 +114,28 @@ class Printer {
     return v.storage == ir::Storage::Uniform && !v.block &&
            (b == ir::Base::Float || b == ir::Base::Int || b == ir::Base::Uint || b == ir::Base::Bool);
   }
+  static bool is_loose_struct_uniform(const ir::Var& v) {
+    return v.storage == ir::Storage::Uniform && !v.block && v.type.base == ir::Base::Struct;
+  }
 
   // See PrintOptions::guard_uniform.
-  void hoist_loose_uniforms() {
+  void hoist_loose_uniforms(bool (*wanted)(const ir::Var&)) {
     bool any = false;
     for (size_t i = 0; i < module_.globals.size(); ++i) {
       const ir::VarPtr& v = module_.globals[i];
-      if (!is_loose_numeric_uniform(*v) || v->name == options_.guard_uniform) continue;
+      if (!wanted(*v) || v->name == options_.guard_uniform) continue;
       global(v, module_.global_inits[i]);
       hoisted_.insert(v.get());
       any = true;
     }
     if (any) out_ << "\n";
+  }
+
+  void print_structs() {
+    if (structs_printed_) return;
+    structs_printed_ = true;
+    for (const auto& t : module_.structs) struct_definition(t);
+    if (!module_.structs.empty()) out_ << "\n";
   }
 
   void struct_definition(const ir::Type& t) {
@@ -570,6 +586,7 @@ class Printer {
   std::ostringstream out_;
   std::vector<Diagnostic> diags_;
   const ir::Var* frag_output_ = nullptr;
+  bool structs_printed_ = false;
   std::set<const ir::Var*> hoisted_;  // loose uniforms printed before the runtime (hoist_loose_uniforms)
   bool frag_color_declared_ = false;
   int frag_data_size_ = 0;  // elements of df_frag_data, the gl_FragData stand-in (0: not used)

@@ -16,12 +16,15 @@ struct PrintOptions {
   Target target = Target::Es300;
   std::vector<std::string> extensions;  // #extension NAME : require
   std::vector<std::string> user_extensions;  // the shader's own: #extension NAME : enable
+  std::string runtime_types;            // the runtime's pair types (with a guard uniform), then:
   std::string runtime;                  // float-float runtime text, printed before user types
   std::string after_structs;            // helpers over user struct types, printed after them
-  // The runtime's guard uniform, when it declares one. The user's loose numeric uniforms are then
-  // printed before the runtime, so that the guard is never the first uniform: lavapipe, when it
-  // specialises a shader on a uniform used in a branch, replaces a first-declared guard with a
-  // constant and the error terms fold away (docs/accuracy.md, "The guard's place").
+  // The runtime's guard uniform, when it declares one. The user's loose uniforms are then declared
+  // before the guard, so that the guard is never the first uniform: lavapipe, when it specialises
+  // a shader on a uniform used in a branch, replaces a first-declared guard with a constant and
+  // the error terms fold away (docs/accuracy.md, "The guard's place"). Numeric ones go before the
+  // runtime; uniforms of struct type (whose structs may hold pair types) go after runtime_types,
+  // with every user struct definition, and before the guard.
   std::string guard_uniform;
 };
 

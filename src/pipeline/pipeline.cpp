@@ -56,6 +56,7 @@ bool import(State& s) {
 bool link_runtime_pass(State& s) {
   LinkedRuntime linked = link_runtime(s.config, s.ctx, s.result.diagnostics);
   if (!linked.ok) return false;
+  s.print_options.runtime_types = std::move(linked.types);
   s.print_options.runtime = std::move(linked.text);
   s.print_options.after_structs = std::move(linked.after_structs);
   s.print_options.guard_uniform = linked.guard_uniform;

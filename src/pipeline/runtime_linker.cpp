@@ -94,6 +94,12 @@ LinkedRuntime link_runtime(const Config& config, const passes::Context& requests
     if (config.guard == rules::GuardStyle::Uniform) {
       linked.guard_uniform = config.guard_uniform;
       linked.guard = {"uniform", config.guard_uniform, "float", 0};
+      // The rules declare their types, then the guard, then the functions (rules::RuleLibrary::emit).
+      const size_t guard_at = linked.text.find("uniform highp float " + config.guard_uniform + ";");
+      if (guard_at != std::string::npos) {
+        linked.types = linked.text.substr(0, guard_at);
+        linked.text.erase(0, guard_at);
+      }
     }
   }
   return linked;

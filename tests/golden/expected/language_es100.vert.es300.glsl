@@ -6,6 +6,17 @@ precision highp int;
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+struct Frame {
+  df_dvec3 origin;
+  df_double scale;
+};
+struct Camera {
+  Frame frame;
+  df_double weights[3];
+};
+
+uniform Camera camera;
+
 uniform highp float df_guard;  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
@@ -415,16 +426,6 @@ df_dvec2 df_splat_dvec2(df_double s) {
   return df_dvec2(vec2(s.hi), vec2(s.lo));
 }
 
-struct Frame {
-  df_dvec3 origin;
-  df_double scale;
-};
-struct Camera {
-  Frame frame;
-  df_double weights[3];
-};
-
-uniform Camera camera;
 in vec3 position_hi;
 in vec3 position_lo;
 df_dvec3 position;

@@ -11,6 +11,15 @@ uniform mat4 view_projection;
 // doublet float-float runtime: 32 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+struct Orbit {
+  df_double semi_major_axis;
+  df_double eccentricity;
+  df_double mean_motion;
+  df_double epoch;
+};
+
+uniform Orbit orbit;
+
 uniform highp float df_guard;  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
@@ -601,14 +610,6 @@ df_dvec3 df_make_dvec3_1_1_1(df_double a0, df_double a1, df_double a2) {
   return df_dvec3(vec3(a0.hi, a1.hi, a2.hi), vec3(a0.lo, a1.lo, a2.lo));
 }
 
-struct Orbit {
-  df_double semi_major_axis;
-  df_double eccentricity;
-  df_double mean_motion;
-  df_double epoch;
-};
-
-uniform Orbit orbit;
 df_double time_seconds;
 df_dvec3 camera_position;
 in float phase_offset;

@@ -9,6 +9,18 @@ struct df_dmat2 {
 // doublet float-float runtime: 19 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+struct Inner {
+  df_double w;
+  df_dvec2 uv;
+};
+struct Outer {
+  Inner inner;
+  df_double scale[2];
+  df_dmat2 m;
+};
+
+uniform Outer params;
+
 uniform highp float df_guard;  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
@@ -382,21 +394,10 @@ df_dvec2 df_mul_dmat2_dvec2(df_dmat2 m, df_dvec2 v) {
   return df_dvec2(vec2(p0.hi, p1.hi), vec2(p0.lo, p1.lo));
 }
 
-struct Inner {
-  df_double w;
-  df_dvec2 uv;
-};
-struct Outer {
-  Inner inner;
-  df_double scale[2];
-  df_dmat2 m;
-};
-
 flat in float depth_hi;
 flat in float depth_lo;
 df_double depth;
 flat in int k;
-uniform Outer params;
 out vec4 color;
 const df_double kTable[3] = df_double[3](df_double(0.5, 0.0), df_double(0.25, 0.0), df_double(0.125, 0.0));
 

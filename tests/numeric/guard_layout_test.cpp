@@ -1,0 +1,213 @@
+// The default df64 mode must keep float-float accuracy whatever the shader's other uniforms look
+// like (issue 23, docs/accuracy.md "The guard's place"). Lavapipe specialises a shader on the
+// uniforms that decide its branches and loop bounds; where that lets it read the guard uniform as a
+// constant, every guarded step folds and the result silently collapses to float precision.
+//
+// One fragment shader per uniform layout (loose scalars, a struct, an array of structs, a named
+// block, a struct holding a double, an array of scalars, none at all), each with a loop bounded by
+// a uniform where the layout has one, lowered with the uniform guard (es300) and run on lavapipe
+// and Mesa GLES: the result must keep >= 40 bits against the host's doubles. The sabotage
+// (docs/accuracy.md): the guard declared before the shader's uniforms loses them on lavapipe.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "doublet/doublet.hpp"
+#include "runner/runner.hpp"
+
+namespace {
+
+using doublet::runner::Backend;
+using doublet::runner::GraphicsStage;
+
+constexpr uint32_t kCount = 64;
+constexpr int kSteps = 5;
+constexpr float kScale = 1.0625f;
+
+struct Layout {
+  const char* name;
+  // Where the runner can feed this layout. Not on Vulkan: a struct member of a struct uniform
+  // (glslang's reflection gives p.n offset 8 after a df_double member, std140 puts it at 16, so
+  // the runner's bytes miss it; GL sets uniforms by name). The guard's place is the same as for
+  // "struct", which runs on both.
+  bool on_vulkan;
+  const char* declarations;  // declares what `bound` and `scale` read
+  const char* bound;         // an int expression
+  const char* scale;         // a double expression
+  // Sets the uniforms to kSteps and kScale.
+  void (*feed)(doublet::runner::GraphicsJob&);
+};
+
+void set_block(doublet::runner::GraphicsJob& job, const char* block) {
+  std::vector<uint8_t> bytes(16, 0);  // std140: int n at 0, float scale at 4
+  const int32_t n = kSteps;
+  std::memcpy(bytes.data(), &n, 4);
+  std::memcpy(bytes.data() + 4, &kScale, 4);
+  job.uniform_blocks[block] = bytes;
+}
+
+const std::vector<Layout>& layouts() {
+  static const std::vector<Layout> l = {
+      {"loose", true, "uniform int n;\nuniform float scale;\n", "n", "double(scale)",
+       [](auto& job) {
+         job.uniforms["n"] = {kSteps};
+         job.uniforms["scale"] = {kScale};
+       }},
+      {"struct", true, "struct Params { int n; float scale; };\nuniform Params p;\n", "p.n", "double(p.scale)",
+       [](auto& job) {
+         job.uniforms["p.n"] = {kSteps};
+         job.uniforms["p.scale"] = {kScale};
+       }},
+      {"struct_array", true, "struct Params { int n; float scale; };\nuniform Params ps[2];\n", "ps[0].n",
+       "double(ps[0].scale)",
+       [](auto& job) {
+         job.uniforms["ps.n"] = {kSteps};  // Vulkan: glslang reflects element 0 so
+         job.uniforms["ps.scale"] = {kScale};
+         job.uniforms["ps[0].n"] = {kSteps};  // GL (each backend ignores the other's names)
+         job.uniforms["ps[0].scale"] = {kScale};
+       }},
+      {"block", true, "uniform ParamsBlock { int n; float scale; } pb;\n", "pb.n", "double(pb.scale)",
+       [](auto& job) { set_block(job, "ParamsBlock"); }},
+      {"struct_with_double", false, "struct Params { double scale; int n; };\nuniform Params p;\n", "p.n", "p.scale",
+       [](auto& job) {
+         job.uniforms["p.n"] = {kSteps};
+         job.uniforms["p.scale.hi"] = {kScale};
+         job.uniforms["p.scale.lo"] = {0};
+       }},
+      {"scalar_array", true, "uniform int n[2];\nuniform float scale[2];\n", "n[0]", "double(scale[0])",
+       [](auto& job) {
+         job.uniforms["n"] = {kSteps};
+         job.uniforms["scale"] = {kScale};
+       }},
+      {"none", true, "", "5", "1.0625lf", [](auto&) {}},
+  };
+  return l;
+}
+
+std::string shader(const Layout& layout) {
+  return std::string("#version 450\n") + layout.declarations +
+         "flat in dvec2 ab;\n"
+         "layout(location = 0) out vec4 o;\n"
+         "void main() {\n"
+         "  double s = ab.x;\n"
+         "  for (int k = 0; k < " + layout.bound + "; ++k) s = s * ab.y * " + layout.scale + " + ab.x;\n"
+         "  o = vec4(float(s), float(s - double(float(s))), 0.0, 1.0);\n"
+         "}\n";
+}
+
+doublet::Result lowered(const Layout& layout) {
+  doublet::Options options;
+  options.stage = doublet::Stage::Fragment;
+  options.target = doublet::Target::Es300;
+  options.file_name = std::string(layout.name) + ".frag";
+  return doublet::lower(shader(layout), options);
+}
+
+// The worst accuracy, in bits, of the result over kCount inputs a, b in [1, 2); `native`: glsl is
+// the fp64 original (doubles fed as such), else the lowered text (fed as hi/lo pairs).
+double run_bits(Backend backend, const Layout& layout, const std::string& glsl, bool native, std::string* error) {
+  doublet::runner::GraphicsJob job;
+  job.stage = GraphicsStage::Fragment;
+  job.glsl = glsl;
+  job.count = kCount;
+  std::vector<double> a, b;
+  for (uint32_t i = 0; i < kCount; ++i) {
+    const double x = 1.0 + i / double(kCount) + 0x1p-30 * i, y = 1.0 + (kCount - i) / (3.0 * kCount);
+    a.push_back(x);
+    b.push_back(y);
+  }
+  std::vector<double> hi, lo;
+  for (uint32_t i = 0; i < kCount; ++i)
+    for (double v : {a[i], b[i]}) {
+      hi.push_back(static_cast<float>(v));
+      lo.push_back(static_cast<float>(v - static_cast<float>(v)));
+    }
+  if (native) {
+    std::vector<double> ab;
+    for (size_t i = 0; i < hi.size(); ++i) ab.push_back(hi[i] + lo[i]);
+    job.inputs["ab"] = ab;
+  } else {
+    job.inputs["ab_hi"] = hi;
+    job.inputs["ab_lo"] = lo;
+  }
+  layout.feed(job);
+  if (native && job.uniforms.count("p.scale.hi")) {
+    job.uniforms["p.scale"] = {kScale};
+    job.uniforms.erase("p.scale.hi");
+    job.uniforms.erase("p.scale.lo");
+  }
+  const auto result = doublet::runner::run_graphics(backend, job);
+  if (!result.ok) {
+    *error = result.error;
+    return 0;
+  }
+  const std::vector<double>& o = result.outputs.at("o");
+  double worst = 0;
+  for (uint32_t i = 0; i < kCount; ++i) {
+    const double x = hi[2 * i] + lo[2 * i], y = hi[2 * i + 1] + lo[2 * i + 1];
+    double s = x;
+    for (int k = 0; k < kSteps; ++k) s = s * y * double(kScale) + x;
+    const double got = o[4 * i] + o[4 * i + 1];
+    worst = std::fmax(worst, std::fabs(got - s) / std::fabs(s));
+  }
+  return worst == 0 ? 60 : -std::log2(worst);
+}
+
+class GuardLayout : public ::testing::TestWithParam<Layout> {};
+
+TEST_P(GuardLayout, KeepsFloatFloatOnBothDrivers) {
+  const auto result = lowered(GetParam());
+  ASSERT_TRUE(result.ok) << (result.diagnostics.empty() ? "" : doublet::format_diagnostic(result.diagnostics[0]));
+  for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
+    if (backend == Backend::Vulkan && !GetParam().on_vulkan) continue;
+    std::string error;
+    const double bits = run_bits(backend, GetParam(), result.output, false, &error);
+    EXPECT_EQ(error, "") << result.output;
+    std::printf("[ guard ] %-20s %-7s %.1f bits\n", GetParam().name, doublet::runner::backend_name(backend), bits);
+    EXPECT_GE(bits, 40.0) << doublet::runner::backend_name(backend) << "\n" << result.output;
+  }
+}
+
+// The control: the fp64 original on lavapipe, fed the same way, computes the reference (so the
+// uniforms reach the shader and the host reference is right).
+TEST_P(GuardLayout, NativeFp64ComputesTheReference) {
+  if (!GetParam().on_vulkan) GTEST_SKIP() << "the runner cannot feed this layout on Vulkan (Layout::on_vulkan)";
+  std::string error;
+  const double bits = run_bits(Backend::Vulkan, GetParam(), shader(GetParam()), true, &error);
+  EXPECT_EQ(error, "");
+  EXPECT_GE(bits, 48.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Layouts, GuardLayout, ::testing::ValuesIn(layouts()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// The sabotage: doublet's text for the struct layout with the guard declared before the struct
+// uniform again (the order before issue 23). On lavapipe it collapses to float precision.
+TEST(GuardLayoutSabotage, GuardBeforeTheStructUniformLosesTheLowWordsOnLavapipe) {
+  const Layout& layout = layouts()[1];
+  ASSERT_STREQ(layout.name, "struct");
+  const auto result = lowered(layout);
+  ASSERT_TRUE(result.ok);
+  std::string text = result.output;
+  const std::string guard = "uniform highp float df_guard;";
+  const size_t guard_at = text.find(guard), struct_at = text.find("struct Params {"),
+               uniform_at = text.find("uniform Params p;");
+  ASSERT_NE(guard_at, std::string::npos);
+  ASSERT_LT(struct_at, guard_at);
+  ASSERT_LT(uniform_at, guard_at);  // doublet's order: the struct uniform first
+  const size_t line_end = text.find('\n', guard_at) + 1;
+  const std::string line = text.substr(guard_at, line_end - guard_at);
+  text.erase(guard_at, line_end - guard_at);
+  text.insert(struct_at, line);
+  std::string error;
+  const double bits = run_bits(Backend::Vulkan, layout, text, false, &error);
+  EXPECT_EQ(error, "");
+  std::printf("[ guard ] struct, guard first (sabotage) Vulkan %.1f bits\n", bits);
+  EXPECT_LT(bits, 30.0);
+}
+
+}  // namespace
+
