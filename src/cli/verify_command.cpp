@@ -185,6 +185,12 @@ int run_verify(const VerifyArgs& a) {
   std::string source;
   if (std::string e = read_input_file(a.shader, source); !e.empty()) return input_error("cannot read '" + a.shader + "': " + e);
 
+  // With no threshold anywhere, a float-float mode is judged against the shader demoted to float,
+  // so a collapse to float precision cannot pass (docs/verify.md, exit codes).
+  const bool any_threshold = o.min_bits || !a.scene.empty() || o.lower.mode == Mode::Exact ||  // exact: identical bits
+                             std::any_of(o.spec.outputs.begin(), o.spec.outputs.end(),
+                                         [](const auto& out) { return out.second.min_bits.has_value(); });
+  o.judge_against_float = !any_threshold;
   const verify::VerifyReport report = verify::verify(source, o);
   const bool json_to_stdout = a.json == "-";
   (json_to_stdout ? std::cerr : std::cout) << verify::format_table(report);
@@ -195,14 +201,10 @@ int run_verify(const VerifyArgs& a) {
       return input_error("cannot write '" + a.json + "': " + file.error());
   }
   if (!a.scene.empty()) (json_to_stdout ? std::cerr : std::cout) << scene_summary(report, scene);
-  // With no threshold anywhere, PASS only says both versions ran: say so, so that a pipeline
-  // does not take it for an accuracy check (docs/verify.md, exit codes).
-  const bool any_threshold = o.min_bits || !a.scene.empty() || o.lower.mode == Mode::Exact ||  // exact: identical bits
-                             std::any_of(o.spec.outputs.begin(), o.spec.outputs.end(),
-                                         [](const auto& out) { return out.second.min_bits.has_value(); });
   if (report.input_error.empty() && !any_threshold)
     std::cerr << "doublet verify: note: no accuracy threshold (--min-bits B, a spec's min_bits or --scene): "
-                 "the result says only that both versions ran\n";
+                 "each output of a float-float mode must beat the shader demoted to float by "
+              << int(verify::OutputStats::kBeyondFloatBits) << " median bits (docs/verify.md)\n";
   if (!report.input_error.empty()) return kExitInput;
   if (report.driver_failed()) return kExitDriver;
   return report.passed() ? kExitOk : kExitBelowMinBits;

@@ -1,6 +1,8 @@
 // Error statistics of one output component: lowered result `got` against native fp64 `want`.
 #pragma once
 
+#include <cmath>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -32,12 +34,23 @@ struct OutputStats {
   double abs_floor = 0;
   double min_bits_required = -1;  // < 0: no requirement
   double max_abs_err_allowed = -1;  // < 0: no requirement (a scene's abs_error)
+  // Without a threshold a float-float mode is judged against the same shader demoted to float
+  // (VerifyOptions::judge_against_float): its median bits, < 0 where not judged. The output must
+  // keep kBeyondFloatBits more, unless float alone keeps kFloatIsEnoughBits (nothing to tell apart).
+  double float_median_bits = -1;
+  static constexpr double kBeyondFloatBits = 8, kFloatIsEnoughBits = 40;
+  double median_bits() const { return median_rel_err > 0 ? std::fmin(kMaxBits, -std::log2(median_rel_err)) : kMaxBits; }
+  bool beyond_float_passed() const {
+    return float_median_bits < 0 || float_median_bits >= kFloatIsEnoughBits ||
+           median_bits() >= float_median_bits + kBeyondFloatBits;
+  }
   bool abs_passed() const {
     return max_abs_err_allowed < 0 || (class_mismatches == 0 && max_abs_err <= max_abs_err_allowed);
   }
   bool identical_passed() const { return !require_identical || differing == 0; }
   bool passed() const {
-    return (min_bits_required < 0 || min_bits >= min_bits_required) && abs_passed() && identical_passed();
+    return (min_bits_required < 0 || min_bits >= min_bits_required) && abs_passed() && identical_passed() &&
+           beyond_float_passed();
   }
 };
 

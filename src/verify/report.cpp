@@ -54,6 +54,9 @@ std::string format_table(const VerifyReport& r) {
                     o.passed()             ? ""
                     : !o.identical_passed() ? "  FAIL (bits differ)"
                     : !o.abs_passed()       ? ("  FAIL (max_abs > " + fmt("%.3g", o.max_abs_err_allowed) + ")").c_str()
+                    : !o.beyond_float_passed()
+                        ? ("  FAIL (median " + fmt("%.1f", o.median_bits()) + " bits: float alone keeps " +
+                           fmt("%.1f", o.float_median_bits) + ")").c_str()
                                             : ("  FAIL (< " + fmt("%.1f", o.min_bits_required) + ")").c_str());
       s += line;
       if (o.require_identical)

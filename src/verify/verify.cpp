@@ -278,6 +278,38 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
 
 }  // namespace
 
+namespace {
+
+// VerifyOptions::judge_against_float: the same verification of the shader demoted to float (the
+// drop-lo sabotage) gives each output's float median; outputs match by name (the demoted shader
+// names them without the " (hi+lo)" of a split output) and by backend.
+void judge_against_float(std::string_view source, const VerifyOptions& options, VerifyReport* report) {
+  const Mode mode = options.lower.mode;
+  if (!report->input_error.empty()) return;
+  if (mode != Mode::Df64 && mode != Mode::Df64Fast && mode != Mode::Df64Int) return;
+  VerifyOptions demoted = options;
+  demoted.sabotage = Sabotage::DropLo;
+  demoted.judge_against_float = false;
+  const VerifyReport floor = verify(source, demoted);
+  auto base_name = [](const std::string& n) { return n.substr(0, n.find(" (")); };
+  int judged = 0;
+  for (BackendRun& run : report->runs)
+    for (const BackendRun& float_run : floor.runs)
+      if (float_run.backend == run.backend && float_run.error.empty())
+        for (OutputStats& o : run.outputs)
+          for (const OutputStats& f : float_run.outputs)
+            if (base_name(f.name) == base_name(o.name)) {
+              o.float_median_bits = f.median_bits();
+              ++judged;
+            }
+  report->notes.push_back("no threshold: judged against the shader demoted to float (" + std::to_string(judged) +
+                          " outputs): each must keep " + std::to_string(int(OutputStats::kBeyondFloatBits)) +
+                          " more median bits than float alone, where float keeps fewer than " +
+                          std::to_string(int(OutputStats::kFloatIsEnoughBits)));
+}
+
+}  // namespace
+
 VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   VerifyReport report;
   report.shader = options.lower.file_name;
@@ -357,6 +389,7 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
     case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;
     case Stage::Fragment: run_graphics_stage(runner::GraphicsStage::Fragment, native, lowered, options, &report); break;
   }
+  if (options.judge_against_float) judge_against_float(source, options, &report);
   // Mode exact promises native fp64's bits: any output differing is a failure (NaN payloads apart).
   if (options.lower.mode == Mode::Exact)
     for (BackendRun& run : report.runs)

@@ -84,6 +84,32 @@ INSTANTIATE_TEST_SUITE_P(Shaders, VerifyShader,
                          ::testing::Values(Case{"arith_pairs", 2048}, Case{"uniform_pairs", 64}),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// Without a threshold (issue 23) a float-float mode is judged against the shader demoted to float:
+// the guard removed (the drivers then delete the error terms: float precision) or the shader
+// demoted itself must fail; the intact lowering passes. Each as the CLI runs it with no --min-bits.
+TEST_P(VerifyShader, WithoutAThresholdACollapseToFloatFails) {
+  for (Sabotage sabotage : {Sabotage::None, Sabotage::DropGuard, Sabotage::DropLo}) {
+    VerifyOptions o;
+    o.lower.stage = Stage::Compute;
+    o.lower.target = Target::Es310;
+    o.lower.file_name = std::string(GetParam().name) + ".comp";
+    o.samples = GetParam().samples;
+    o.sabotage = sabotage;
+    o.judge_against_float = true;
+    const std::string dir = DOUBLET_VERIFY_SHADERS;
+    EXPECT_EQ(parse_spec(read(dir + "/" + GetParam().name + ".json"), &o.spec), "");
+    const VerifyReport r = verify(read(dir + "/" + GetParam().name + ".comp"), o);
+    expect_ran_on_both_backends(r);
+    int judged = 0;
+    for (const BackendRun& run : r.runs)
+      for (const OutputStats& out : run.outputs) judged += out.float_median_bits >= 0;
+    EXPECT_GT(judged, 0) << format_table(r);
+    std::printf("[ verify ] %s, no threshold, sabotage %s: %s\n", GetParam().name, std::string(to_string(sabotage)).c_str(),
+                r.passed() ? "PASS" : "FAIL");
+    EXPECT_EQ(r.passed(), sabotage == Sabotage::None) << to_string(sabotage) << "\n" << format_table(r);
+  }
+}
+
 // The foundation's golden compute shaders have float outputs: native and lowered must agree on
 // every float (their ~48-bit intermediates round to the same float here).
 TEST(VerifyGolden, FoundationComputeShadersAgree) {
