@@ -100,9 +100,9 @@ class Printer {
     out_ << "\n";
     if (!options_.guard_uniform.empty()) hoist_loose_uniforms(is_loose_numeric_uniform);
     out_ << options_.runtime_types;
-    if (!options_.guard_uniform.empty() && std::any_of(module_.globals.begin(), module_.globals.end(), [](const auto& v) {
-          return is_loose_struct_uniform(*v);
-        })) {
+    const bool struct_uniforms = std::any_of(module_.globals.begin(), module_.globals.end(),
+                                             [](const auto& v) { return is_loose_struct_uniform(*v); });
+    if (!options_.guard_uniform.empty() && !options_.runtime_types.empty() && struct_uniforms) {
       print_structs();
       hoist_loose_uniforms(is_loose_struct_uniform);
     }
