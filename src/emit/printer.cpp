@@ -102,7 +102,7 @@ class Printer {
     out_ << options_.runtime_types;
     const bool struct_uniforms = std::any_of(module_.globals.begin(), module_.globals.end(),
                                              [](const auto& v) { return is_loose_struct_uniform(*v); });
-    if (!options_.guard_uniform.empty() && !options_.runtime_types.empty() && struct_uniforms) {
+    if (!options_.guard_uniform.empty() && struct_uniforms) {
       print_structs();
       hoist_loose_uniforms(is_loose_struct_uniform);
     }

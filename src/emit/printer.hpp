@@ -16,8 +16,8 @@ struct PrintOptions {
   Target target = Target::Es300;
   std::vector<std::string> extensions;  // #extension NAME : require
   std::vector<std::string> user_extensions;  // the shader's own: #extension NAME : enable
-  std::string runtime_types;            // the runtime's pair types (with a guard uniform), then:
-  std::string runtime;                  // float-float runtime text, printed before user types
+  std::string runtime_types;            // the runtime's pair types, then:
+  std::string runtime;                  // its guard and functions; both printed before user types
   std::string after_structs;            // helpers over user struct types, printed after them
   // The runtime's guard uniform, when it declares one. The user's loose uniforms are then declared
   // before the guard, so that the guard is never the first uniform: lavapipe, when it specialises

@@ -16,11 +16,12 @@
 #include "pipeline/wgsl_tail.hpp"
 
 namespace doublet::pipeline {
-namespace {
 
 bool has_error(const std::vector<Diagnostic>& diags) {
   return std::any_of(diags.begin(), diags.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
+
+namespace {
 
 bool always(const Config&) { return true; }
 bool lowers_doubles(const Config& c) { return !c.native(); }

@@ -49,4 +49,7 @@ const std::vector<Pass>& pass_table();
 // Runs every wanted pass in order (up to config.stop_after); fills result.
 void run(State& state);
 
+// Whether any of `diags` is an error.
+bool has_error(const std::vector<Diagnostic>& diags);
+
 }  // namespace doublet::pipeline

@@ -86,20 +86,18 @@ LinkedRuntime link_runtime(const Config& config, const passes::Context& requests
     linked.ok = false;
     return linked;
   }
-  linked.text = missing_pair_types(requests.widths_used, emitted.text, words) +
-                matrix_pair_types(requests.matrices_used, words) + emitted.text + helper_text(requests, config.target);
-  if (config.facts->webgl_rules) linked.text = emit::spell_float_max_for_webgl(linked.text);
+  linked.types = missing_pair_types(requests.widths_used, emitted.text, words) +
+                 matrix_pair_types(requests.matrices_used, words) + emitted.text.substr(0, emitted.types_end);
+  linked.text = emitted.text.substr(emitted.types_end) + helper_text(requests, config.target);
+  if (config.facts->webgl_rules) {
+    linked.types = emit::spell_float_max_for_webgl(linked.types);
+    linked.text = emit::spell_float_max_for_webgl(linked.text);
+  }
   if (!requests.rules_used.empty() && !words) {
     if (config.guard == rules::GuardStyle::Precise) linked.guard.kind = "precise";
     if (config.guard == rules::GuardStyle::Uniform) {
       linked.guard_uniform = config.guard_uniform;
       linked.guard = {"uniform", config.guard_uniform, "float", 0};
-      // The rules declare their types, then the guard, then the functions (rules::RuleLibrary::emit).
-      const size_t guard_at = linked.text.find("uniform highp float " + config.guard_uniform + ";");
-      if (guard_at != std::string::npos) {
-        linked.types = linked.text.substr(0, guard_at);
-        linked.text.erase(0, guard_at);
-      }
     }
   }
   return linked;

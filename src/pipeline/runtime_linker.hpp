@@ -16,10 +16,11 @@ namespace doublet::pipeline {
 
 struct LinkedRuntime {
   bool ok = true;
-  std::string text;           // printed before the user's types
-  // With a guard uniform: the pair types that open the runtime, split from `text` (which then
-  // starts at the guard's declaration), so the user's struct uniforms can go between them.
+  // The runtime in two parts, printed one after the other before the user's types: the pair
+  // types, then the guard (if a uniform) and the functions. The user's struct uniforms may go
+  // between them (emit::PrintOptions::guard_uniform).
   std::string types;
+  std::string text;
   std::string after_structs;  // helpers over user struct types, printed after them
   std::string guard_uniform;  // the uniform the printer must keep from being first; empty: none
   GuardInfo guard;            // for the manifest

@@ -71,8 +71,7 @@ bool print_wgsl(State& state) {
     place_in_user_source(d, state.printed.source_lines, note);
   }
   result.diagnostics.insert(result.diagnostics.end(), printed.diagnostics.begin(), printed.diagnostics.end());
-  for (const auto& d : result.diagnostics)
-    if (d.severity == Severity::Error) return false;
+  if (has_error(result.diagnostics)) return false;
   for (auto& v : result.manifest.variables)
     for (const auto& b : printed.block_bindings)
       if ((v.storage == "uniform" || v.storage == "buffer") && (v.name == b.block || (!b.instance.empty() && v.name == b.instance))) {

@@ -779,6 +779,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         const std::string f = vec_type("float", "vec", w);
         out += pair_struct_definition(ff_type(w), f + " hi", f + " lo", true);
       }
+      result.types_end = out.size();
       if (request.guard == GuardStyle::Uniform)
         out += "uniform highp float " + request.guard_uniform + ";  // never set: GL zero-fills it at link\n";
       for (const auto& f : functions) out += "\n" + f;

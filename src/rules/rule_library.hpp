@@ -62,6 +62,7 @@ struct EmitRequest {
 struct EmitResult {
   bool ok = false;
   std::string text;            // struct definitions, guard uniform, functions: dependency order
+  size_t types_end = 0;        // where in `text` the struct definitions end (the guard or functions begin)
   std::string error;           // e.g. "df_to_uint is not available on ES 1.00"
   std::string error_rule;      // the requested rule the error is about (to place the diagnostic)
 };
