@@ -18,17 +18,11 @@
 #include <vector>
 
 #include "doublet/doublet.hpp"
+#include "file_text.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 const fs::path kDir = DOUBLET_PASS_DIR;
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The value after `key:` on the case's first line, or "".
 std::string header_value(const std::string& source, const std::string& key) {
@@ -57,7 +51,7 @@ std::vector<Case> cases() {
 
 // What a lowering stopped after `pass` records: the text, then every diagnostic.
 std::string record(const Case& c, bool skip_the_pass) {
-  std::string source = read(kDir / "cases" / c.file);
+  std::string source = doublet::test::file_text(kDir / "cases" / c.file);
   doublet::Options o;
   o.stage = doublet::stage_from_path(c.file);
   o.target = *doublet::parse_target(header_value(source, "target"));
@@ -85,14 +79,14 @@ TEST_P(PassTest, StopsAfterThePassWithTheExpectedIr) {
     GTEST_SKIP() << "updated " << expected;
   }
   ASSERT_TRUE(fs::exists(expected)) << "no expected file: run with DOUBLET_UPDATE_GOLDEN=1";
-  EXPECT_EQ(got, read(expected));
+  EXPECT_EQ(got, doublet::test::file_text(expected));
 }
 
 TEST_P(PassTest, WithoutThePassTheResultDiffers) {
   const Case& c = GetParam();
   const fs::path expected = kDir / "expected" / (c.file + ".txt");
   ASSERT_TRUE(fs::exists(expected));
-  EXPECT_NE(record(c, true), read(expected)) << "the case does not exercise pass '" << c.pass << "'";
+  EXPECT_NE(record(c, true), doublet::test::file_text(expected)) << "the case does not exercise pass '" << c.pass << "'";
 }
 
 INSTANTIATE_TEST_SUITE_P(Passes, PassTest, ::testing::ValuesIn(cases()),

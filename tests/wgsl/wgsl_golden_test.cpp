@@ -15,18 +15,12 @@
 #include <vector>
 
 #include "doublet/doublet.hpp"
+#include "file_text.hpp"
 
 namespace {
 namespace fs = std::filesystem;
 
 const fs::path kDir = DOUBLET_WGSL_DIR;
-
-std::string read(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 std::vector<std::string> cases() {
   std::vector<std::string> names;
@@ -45,7 +39,7 @@ TEST_P(WgslGolden, Matches) {
   options.target = doublet::Target::Wgsl;
   options.file_name = "cases/" + file;
   options.check_ir = true;  // the IR is checked after every pass (src/ir/check.hpp)
-  doublet::Result result = doublet::lower(read(kDir / "cases" / file), options);
+  doublet::Result result = doublet::lower(doublet::test::file_text(kDir / "cases" / file), options);
   std::string diagnostics;
   for (const auto& d : result.diagnostics)
     if (d.severity == doublet::Severity::Error) diagnostics += doublet::format_diagnostic(d) + "\n";
@@ -59,7 +53,7 @@ TEST_P(WgslGolden, Matches) {
   }
   if (fs::exists(errors)) {
     EXPECT_FALSE(result.ok) << "expected errors, got WGSL";
-    EXPECT_EQ(read(errors), diagnostics);
+    EXPECT_EQ(doublet::test::file_text(errors), diagnostics);
     // Every refusal is positioned: file:line:col: error:
     std::istringstream lines(diagnostics);
     for (std::string line; std::getline(lines, line);)
@@ -68,7 +62,7 @@ TEST_P(WgslGolden, Matches) {
   }
   ASSERT_TRUE(result.ok) << diagnostics;
   EXPECT_EQ(result.manifest.target, "wgsl");
-  EXPECT_EQ(read(wgsl), result.output) << "update with DOUBLET_UPDATE_GOLDEN=1 and review the diff";
+  EXPECT_EQ(doublet::test::file_text(wgsl), result.output) << "update with DOUBLET_UPDATE_GOLDEN=1 and review the diff";
   // WGSL has no f64 and doublet never prints a double in it.
   EXPECT_EQ(result.output.find("f64"), std::string::npos);
 }
@@ -86,7 +80,7 @@ TEST(WgslManifest, UniformBufferBindingAndOffsets) {
   doublet::Options options;
   options.stage = doublet::Stage::Compute;
   options.target = doublet::Target::Wgsl;
-  doublet::Result result = doublet::lower(read(kDir / "cases" / "add_dvec2.comp"), options);
+  doublet::Result result = doublet::lower(doublet::test::file_text(kDir / "cases" / "add_dvec2.comp"), options);
   ASSERT_TRUE(result.ok);
   const auto& vars = result.manifest.variables;
   auto it = std::find_if(vars.begin(), vars.end(), [](const auto& v) { return v.name == "df_uniforms"; });
