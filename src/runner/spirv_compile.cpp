@@ -223,6 +223,61 @@ void decorate_fp64_no_contraction(std::vector<uint32_t>& words) {
   if (insert_at) words.insert(words.begin() + static_cast<std::ptrdiff_t>(insert_at), decorations.begin(), decorations.end());
 }
 
+namespace {
+
+// The members of the uniform block named `block` as the SPIR-V lays them out: byte offset by
+// reflection name ("p.scale.hi"; element 0 of an array, as glslang's reflection names it: "ps.n").
+// glslang's reflection gives a member that follows a nested struct member its offset without
+// std140's rounding of the struct to 16 bytes (8 where the SPIR-V says 16), so the runner takes
+// the SPIR-V's word for every member. Empty when the module has no such block.
+std::map<std::string, uint32_t> block_member_offsets(const std::vector<uint32_t>& words, const std::string& block) {
+  constexpr uint32_t kOpName = 5, kOpMemberName = 6, kOpTypeArray = 28, kOpTypeStruct = 30, kOpMemberDecorate = 72;
+  constexpr uint32_t kDecorationOffset = 35;
+  auto text = [&](size_t at, size_t end) {
+    std::string s;
+    for (size_t i = at; i < end; ++i)
+      for (int b = 0; b < 4; ++b) {
+        const char c = static_cast<char>((words[i] >> (8 * b)) & 0xff);
+        if (c == '\0') return s;
+        s += c;
+      }
+    return s;
+  };
+  std::map<uint32_t, std::string> names;
+  std::map<uint32_t, std::map<uint32_t, std::string>> member_names;
+  std::map<uint32_t, std::map<uint32_t, uint32_t>> member_offsets;
+  std::map<uint32_t, std::vector<uint32_t>> struct_members;
+  std::map<uint32_t, uint32_t> array_element;
+  for (size_t i = 5; i < words.size();) {
+    const uint32_t count = words[i] >> 16, opcode = words[i] & 0xffff;
+    if (count == 0 || i + count > words.size()) break;  // malformed; the validator reports it
+    if (opcode == kOpName && count > 2) names[words[i + 1]] = text(i + 2, i + count);
+    if (opcode == kOpMemberName && count > 3) member_names[words[i + 1]][words[i + 2]] = text(i + 3, i + count);
+    if (opcode == kOpMemberDecorate && count > 4 && words[i + 3] == kDecorationOffset)
+      member_offsets[words[i + 1]][words[i + 2]] = words[i + 4];
+    if (opcode == kOpTypeStruct && count > 1) struct_members[words[i + 1]].assign(words.begin() + i + 2, words.begin() + i + count);
+    if (opcode == kOpTypeArray && count > 3) array_element[words[i + 1]] = words[i + 2];
+    i += count;
+  }
+  std::map<std::string, uint32_t> offsets;
+  auto walk = [&](auto&& self, uint32_t type, const std::string& prefix, uint32_t base) -> void {
+    const std::vector<uint32_t>& members = struct_members[type];
+    for (uint32_t m = 0; m < members.size(); ++m) {
+      const std::string name = prefix + member_names[type][m];
+      const uint32_t offset = base + member_offsets[type][m];
+      uint32_t member_type = members[m];
+      while (array_element.count(member_type)) member_type = array_element[member_type];
+      if (struct_members.count(member_type)) self(self, member_type, name + ".", offset);
+      else offsets[name] = offset;
+    }
+  };
+  for (const auto& [id, name] : names)
+    if (name == block && struct_members.count(id)) walk(walk, id, "", 0);
+  return offsets;
+}
+
+}  // namespace
+
 bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stages, SpirvProgram* out,
                          std::string* error, ShaderInterface* iface, bool strict_fp64) {
   std::lock_guard<std::mutex> lock(glslang_mutex());
@@ -321,6 +376,16 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
       *error = "invalid SPIR-V: " + v;
       return false;
     }
+  }
+  for (const std::vector<uint32_t>* words : {&result.words, &result.fragment_words}) {
+    const std::map<std::string, uint32_t> offsets = block_member_offsets(*words, kGlobalBlockName);
+    if (offsets.empty()) continue;
+    for (auto& [name, slot] : result.uniforms)
+      if (auto it = offsets.find(name); it != offsets.end()) slot.offset = it->second;
+    // The block ends after its last member; 128 bytes cover any scalar, vector or matrix (dmat4).
+    for (const auto& [name, offset] : offsets)
+      result.uniform_block_size = std::max(result.uniform_block_size, offset + 128);
+    break;
   }
   *out = std::move(result);
   return true;

@@ -29,11 +29,6 @@ constexpr float kScale = 1.0625f;
 
 struct Layout {
   const char* name;
-  // Where the runner can feed this layout. Not on Vulkan: a struct member of a struct uniform
-  // (glslang's reflection gives p.n offset 8 after a df_double member, std140 puts it at 16, so
-  // the runner's bytes miss it; GL sets uniforms by name). The guard's place is the same as for
-  // "struct", which runs on both.
-  bool on_vulkan;
   const char* declarations;  // declares what `bound` and `scale` read
   const char* bound;         // an int expression
   const char* scale;         // a double expression
@@ -51,17 +46,17 @@ void set_block(doublet::runner::GraphicsJob& job, const char* block) {
 
 const std::vector<Layout>& layouts() {
   static const std::vector<Layout> l = {
-      {"loose", true, "uniform int n;\nuniform float scale;\n", "n", "double(scale)",
+      {"loose", "uniform int n;\nuniform float scale;\n", "n", "double(scale)",
        [](auto& job) {
          job.uniforms["n"] = {kSteps};
          job.uniforms["scale"] = {kScale};
        }},
-      {"struct", true, "struct Params { int n; float scale; };\nuniform Params p;\n", "p.n", "double(p.scale)",
+      {"struct", "struct Params { int n; float scale; };\nuniform Params p;\n", "p.n", "double(p.scale)",
        [](auto& job) {
          job.uniforms["p.n"] = {kSteps};
          job.uniforms["p.scale"] = {kScale};
        }},
-      {"struct_array", true, "struct Params { int n; float scale; };\nuniform Params ps[2];\n", "ps[0].n",
+      {"struct_array", "struct Params { int n; float scale; };\nuniform Params ps[2];\n", "ps[0].n",
        "double(ps[0].scale)",
        [](auto& job) {
          job.uniforms["ps.n"] = {kSteps};  // Vulkan: glslang reflects element 0 so
@@ -69,20 +64,20 @@ const std::vector<Layout>& layouts() {
          job.uniforms["ps[0].n"] = {kSteps};  // GL (each backend ignores the other's names)
          job.uniforms["ps[0].scale"] = {kScale};
        }},
-      {"block", true, "uniform ParamsBlock { int n; float scale; } pb;\n", "pb.n", "double(pb.scale)",
+      {"block", "uniform ParamsBlock { int n; float scale; } pb;\n", "pb.n", "double(pb.scale)",
        [](auto& job) { set_block(job, "ParamsBlock"); }},
-      {"struct_with_double", false, "struct Params { double scale; int n; };\nuniform Params p;\n", "p.n", "p.scale",
+      {"struct_with_double", "struct Params { double scale; int n; };\nuniform Params p;\n", "p.n", "p.scale",
        [](auto& job) {
          job.uniforms["p.n"] = {kSteps};
          job.uniforms["p.scale.hi"] = {kScale};
          job.uniforms["p.scale.lo"] = {0};
        }},
-      {"scalar_array", true, "uniform int n[2];\nuniform float scale[2];\n", "n[0]", "double(scale[0])",
+      {"scalar_array", "uniform int n[2];\nuniform float scale[2];\n", "n[0]", "double(scale[0])",
        [](auto& job) {
          job.uniforms["n"] = {kSteps};
          job.uniforms["scale"] = {kScale};
        }},
-      {"none", true, "", "5", "1.0625lf", [](auto&) {}},
+      {"none", "", "5", "1.0625lf", [](auto&) {}},
   };
   return l;
 }
@@ -162,7 +157,6 @@ TEST_P(GuardLayout, KeepsFloatFloatOnBothDrivers) {
   const auto result = lowered(GetParam());
   ASSERT_TRUE(result.ok) << (result.diagnostics.empty() ? "" : doublet::format_diagnostic(result.diagnostics[0]));
   for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
-    if (backend == Backend::Vulkan && !GetParam().on_vulkan) continue;
     std::string error;
     const double bits = run_bits(backend, GetParam(), result.output, false, &error);
     EXPECT_EQ(error, "") << result.output;
@@ -174,7 +168,6 @@ TEST_P(GuardLayout, KeepsFloatFloatOnBothDrivers) {
 // The control: the fp64 original on lavapipe, fed the same way, computes the reference (so the
 // uniforms reach the shader and the host reference is right).
 TEST_P(GuardLayout, NativeFp64ComputesTheReference) {
-  if (!GetParam().on_vulkan) GTEST_SKIP() << "the runner cannot feed this layout on Vulkan (Layout::on_vulkan)";
   std::string error;
   const double bits = run_bits(Backend::Vulkan, GetParam(), shader(GetParam()), true, &error);
   EXPECT_EQ(error, "");

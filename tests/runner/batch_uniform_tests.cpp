@@ -43,6 +43,31 @@ TEST_P(BatchTest, WrongComponentCountIsAnError) {
   EXPECT_NE(r.error.find("component"), std::string::npos) << r.error;
 }
 
+// A struct uniform whose members follow a nested struct: std140 rounds the nested struct to 16
+// bytes, so `n` lies at 16, not 8 (glslang's reflection says 8; the runner takes the SPIR-V's
+// offsets). Every value must arrive where the shader reads it.
+TEST_P(BatchTest, MembersAfterANestedStructArriveWhereTheShaderReadsThem) {
+  REQUIRE_BACKEND(GetParam());
+  ComputeJob job;
+  job.glsl = R"(#version 310 es
+layout(local_size_x = 1) in;
+struct Pair { float hi; float lo; };
+struct Params { Pair scale; int n; Pair bias; float last; };
+uniform Params p;
+uniform float after;
+layout(std430, binding = 0) buffer Io { vec4 x; vec4 y; };
+void main() {
+  x = vec4(p.scale.hi, p.scale.lo, float(p.n), p.last);
+  y = vec4(p.bias.hi, p.bias.lo, after, 0.0);
+}
+)";
+  job.uniforms = {{"p.scale.hi", {1.5}}, {"p.scale.lo", {2.5}}, {"p.n", {7}},      {"p.bias.hi", {3.5}},
+                  {"p.bias.lo", {4.5}},  {"p.last", {5.5}},     {"after", {6.5}}};
+  job.buffers = {std::vector<uint8_t>(32)};
+  RUN_OK(r, GetParam(), job);
+  EXPECT_EQ(from_bytes<float>(r.buffers[0]), (std::vector<float>{1.5f, 2.5f, 7.0f, 5.5f, 3.5f, 4.5f, 6.5f, 0.0f}));
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, BatchTest, ::testing::Values(Backend::Vulkan, Backend::Gles), backend_param_name);
 
 TEST(VulkanDoubleUniform, DvecUniformKeepsAllBits) {
