@@ -43,10 +43,10 @@ $DF df_neg($DF a) {
 // @per-component
 $DF df_finish($DF z, $F f) {
   $PRECISE $F az = $SAFE(abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return $DF(f, $F(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  $PRECISE $F h = $SAFE($SEL(regular, z.hi, f));
+  $PRECISE $F l = $SAFE($SEL(regular, z.lo, 0.0));
+  return $DF(h, l);
 }
 
 // df_add: a + b.

@@ -35,12 +35,12 @@ $DF df_sign($DF a) {
 $DF df_floor($DF a) {
   $PRECISE $F f = $G(floor(a.hi));
   $PRECISE $F af = $SAFE(abs(f));
-  if (f == a.hi && af > 0.0 && af <= 3.40282347e38) {
-    $PRECISE $F g = $G(floor(a.lo));
-    $DF r = df_fast_two_sum(a.hi, g);
-    return r;
-  }
-  return $DF(f, $F(0.0));
+  bool integer = all(bvec3(f == a.hi, af > 0.0, af <= 3.40282347e38));
+  $PRECISE $F g = $G(floor(a.lo));
+  $DF r = df_fast_two_sum(a.hi, g);
+  $PRECISE $F h = $SAFE($SEL(integer, r.hi, f));
+  $PRECISE $F l = $SAFE($SEL(integer, r.lo, 0.0));
+  return $DF(h, l);
 }
 
 // df_ceil: smallest integer >= x, as -floor(-x): negation is exact, and the zero results get
@@ -59,20 +59,22 @@ $DF df_ceil($DF a) {
   return r;
 }
 
-// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
-// Algorithm: df_ceil or df_floor by the sign of hi
+// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise, both computed
+// and one selected. (Selecting the operand instead, floor(x < 0 ? -x : x), is one floor less, but
+// Mesa's GLES compiler folds that select into abs(x), which turns trunc(-0) into +0.)
+// Algorithm: df_ceil and df_floor, selected by the sign of hi
 // Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
 // Bound: exact
-// Flops: 10
+// Flops: 16
 // @widths 1 2 3 4
 // @per-component
+// @uses df_ceil:1 df_floor:1 df_select:1
 $DF df_trunc($DF a) {
-  if (a.hi < 0.0) {
-    $DF c = df_ceil(a);
-    return c;
-  }
+  bool negative = a.hi < 0.0;
+  $DF c = df_ceil(a);
   $DF f = df_floor(a);
-  return f;
+  $DF r = df_select(negative, c, f);
+  return r;
 }
 
 // df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
@@ -83,24 +85,23 @@ $DF df_trunc($DF a) {
 // Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4); df_finish for integers
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 21
+// Flops: 29
 // @widths 1 2 3 4
 // @per-component
-// @uses df_two_sum:1 df_add_f:1 df_finish:1
+// @uses df_two_sum:1 df_add_f:1 df_finish:1 df_select:1
 $DF df_fract($DF a) {
   $PRECISE $F f = $G(floor(a.hi));
-  if (f == a.hi) {
-    $PRECISE $F g = $G(floor(a.lo));
-    $PRECISE $F ng = $G(0.0 - g);
-    $DF r = df_two_sum(a.lo, ng);
-    $PRECISE $F d = $G(a.hi - f);
-    $DF q = df_finish(r, d);
-    return q;
-  }
+  bool integer = f == a.hi;
+  $PRECISE $F g = $G(floor(a.lo));
+  $PRECISE $F ng = $G(0.0 - g);
+  $DF r = df_two_sum(a.lo, ng);
+  $PRECISE $F d = $G(a.hi - f);
+  $DF q = df_finish(r, d);
   $PRECISE $F nf = $G(0.0 - f);
   $DF t = df_two_sum(a.hi, nf);
   $DF s = df_add_f(t, a.lo);
-  return s;
+  $DF z = df_select(integer, q, s);
+  return z;
 }
 
 // df_next_integer: f + 1 for an integer-valued f, with the sign of zero native round gives:
@@ -125,21 +126,20 @@ $DF df_next_integer($DF f) {
 // Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 42
+// Flops: 50
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 // @widths 1 2 3 4
 // @per-component
-// @uses df_floor:1 df_fract:1 df_next_integer:1
+// @uses df_floor:1 df_fract:1 df_next_integer:1 df_select:1
 $DF df_round($DF a) {
   $DF f = df_floor(a);
   $DF d = df_fract(a);
-  bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
-  bool tie = d.hi == 0.5 && d.lo == 0.0;
-  if (above || (tie && a.hi >= 0.0)) {
-    $DF u = df_next_integer(f);
-    return u;
-  }
-  return f;
+  bool above = any(bvec2(d.hi > 0.5, all(bvec2(d.hi == 0.5, d.lo > 0.0))));
+  bool tie = all(bvec2(d.hi == 0.5, d.lo == 0.0));
+  bool up = any(bvec2(above, all(bvec2(tie, a.hi >= 0.0))));
+  $DF u = df_next_integer(f);
+  $DF r = df_select(up, u, f);
+  return r;
 }
 
 // df_round_even: nearest integer, halves to the even neighbour (roundEven). A result of zero
@@ -147,12 +147,12 @@ $DF df_round($DF a) {
 // Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 48
+// Flops: 56
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 // @widths 1 2 3 4
 // @per-component
-// @uses df_floor:1 df_fract:1 df_next_integer:1
+// @uses df_floor:1 df_fract:1 df_next_integer:1 df_select:1
 $DF df_round_even($DF a) {
   $DF f = df_floor(a);
   $DF d = df_fract(a);
@@ -163,13 +163,12 @@ $DF df_round_even($DF a) {
   $PRECISE float fl2 = $G(floor(l2));
   $PRECISE float pl = $G(l2 - fl2);
   $PRECISE float parity = $G(ph + pl);
-  bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
-  bool tie = d.hi == 0.5 && d.lo == 0.0;
-  if (above || (tie && parity == 0.5)) {
-    $DF u = df_next_integer(f);
-    return u;
-  }
-  return f;
+  bool above = any(bvec2(d.hi > 0.5, all(bvec2(d.hi == 0.5, d.lo > 0.0))));
+  bool tie = all(bvec2(d.hi == 0.5, d.lo == 0.0));
+  bool up = any(bvec2(above, all(bvec2(tie, parity == 0.5))));
+  $DF u = df_next_integer(f);
+  $DF r = df_select(up, u, f);
+  return r;
 }
 
 // df_mod: x - y * floor(x / y) (GLSL's definition). Where x / y is within df_div's error of an
@@ -198,17 +197,20 @@ $DF df_mod($DF a, $DF b) {
 // Flops: 25
 // @widths 1 2 3 4
 // @per-component
-// @uses df_sub:1 df_neg:1
+// The branches are selects around one df_sub: its operands are swapped and its result negated
+// for negative x.
+// @uses df_sub:1 df_neg:1 df_select:1
 $DF df_modf_fraction($DF a, $DF i) {
-  if (a.hi < 0.0) {
-    $DF d = df_sub(i, a);
-    $DF n = df_neg(d);
-    return n;
-  }
-  if (a.hi == 0.0) {
-    return $DF(a.hi, $F(0.0));
-  }
-  $DF r = df_sub(a, i);
+  bool negative = a.hi < 0.0;
+  bool zero = a.hi == 0.0;
+  $DF x = df_select(negative, i, a);
+  $DF y = df_select(negative, a, i);
+  $DF d = df_sub(x, y);
+  $DF n = df_neg(d);
+  $DF m = df_select(negative, n, d);
+  $PRECISE $F zh = $SAFE(a.hi);
+  $DF z = $DF(zh, $F(0.0));
+  $DF r = df_select(zero, z, m);
   return r;
 }
 
@@ -217,7 +219,7 @@ $DF df_modf_fraction($DF a, $DF i) {
 // Algorithm: df_trunc, then df_modf_fraction (AccurateDWPlusDW)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 35
+// Flops: 41
 // @widths 1 2 3 4
 // @uses df_trunc:W df_modf_fraction:W
 $DF df_modf($DF a, out $DF i) {
@@ -258,11 +260,10 @@ $DF df_mix($DF x, $DF y, $DF a) {
 // Flops: 0
 // @widths 1 2 3 4
 // @per-component
+// @uses df_select:1
 $DF df_mix_bool($DF x, $DF y, $B a) {
-  if (a) {
-    return y;
-  }
-  return x;
+  $DF r = df_select(a, y, x);
+  return r;
 }
 
 // df_step: 0.0 if x < edge, else 1.0.
@@ -274,10 +275,9 @@ $DF df_mix_bool($DF x, $DF y, $B a) {
 // @per-component
 // @uses df_lt:1
 $DF df_step($DF edge, $DF x) {
-  if (df_lt(x, edge)) {
-    return $DF(0.0, 0.0);
-  }
-  return $DF(1.0, 0.0);
+  bool below = df_lt(x, edge);
+  $PRECISE $F h = $SAFE($SEL(below, 0.0, 1.0));
+  return $DF(h, 0.0);
 }
 
 // df_smoothstep: t = clamp((x - e0) / (e1 - e0), 0, 1); t * t * (3 - 2t). t has relative error
@@ -394,23 +394,25 @@ $DF df_ldexp($DF a, $I e) {
 // Flops: 9 (plus 4 comparisons)
 // @widths 1
 // @min-es 300
-// @uses df_ldexp:1
+// @uses df_ldexp:1 df_select:1
 $DF df_frexp($DF a, out $I e) {
   $PRECISE $F ah = $SAFE(abs(a.hi));
-  if (!(ah > 0.0 && ah <= 3.40282347e38)) {
-    e = ah == 0.0 ? 0 : 1025;
-    return $DF(a.hi, 0.0);
-  }
+  bool regular = all(bvec2(ah > 0.0, ah <= 3.40282347e38));
   bool subnormal = ah < 1.17549435e-38;
-  $PRECISE $F scale = $SAFE(subnormal ? 1.8446744073709552e19 : 1.0);
+  $PRECISE $F scale = $SAFE($SEL(subnormal, 1.8446744073709552e19, 1.0));
   $PRECISE $F h = $SAFE(a.hi * scale);
   int bits = floatBitsToInt(h);
   int k = ((bits >> 23) & 255) - (subnormal ? 190 : 126);
   int mantissa = bits & 8388607;
-  bool below = mantissa == 0 && ((a.hi > 0.0 && a.lo < 0.0) || (a.hi < 0.0 && a.lo > 0.0));
+  bool opposite = any(bvec2(all(bvec2(a.hi > 0.0, a.lo < 0.0)), all(bvec2(a.hi < 0.0, a.lo > 0.0))));
+  bool below = all(bvec2(mantissa == 0, opposite));
   int exponent = below ? k - 1 : k;
-  int undo = 0 - exponent;
-  e = exponent;
+  int special = ah == 0.0 ? 0 : 1025;
+  e = regular ? exponent : special;
+  int undo = regular ? 0 - exponent : 0;
   $DF m = df_ldexp(a, undo);
-  return m;
+  $PRECISE $F sh = $SAFE(a.hi);
+  $DF x = $DF(sh, 0.0);
+  $DF r = df_select(regular, m, x);
+  return r;
 }

@@ -17,7 +17,7 @@
 // Flops: 0 (3 comparisons)
 // @widths 1
 bool df_lt($DF a, $DF b) {
-  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo < b.lo))));
 }
 
 // df_le: a <= b.
@@ -27,7 +27,7 @@ bool df_lt($DF a, $DF b) {
 // Flops: 0 (3 comparisons)
 // @widths 1
 bool df_le($DF a, $DF b) {
-  return a.hi < b.hi || (a.hi == b.hi && a.lo <= b.lo);
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo <= b.lo))));
 }
 
 // df_gt: a > b.
@@ -37,7 +37,7 @@ bool df_le($DF a, $DF b) {
 // Flops: 0 (3 comparisons)
 // @widths 1
 bool df_gt($DF a, $DF b) {
-  return a.hi > b.hi || (a.hi == b.hi && a.lo > b.lo);
+  return any(bvec2(a.hi > b.hi, all(bvec2(a.hi == b.hi, a.lo > b.lo))));
 }
 
 // df_ge: a >= b.
@@ -47,7 +47,7 @@ bool df_gt($DF a, $DF b) {
 // Flops: 0 (3 comparisons)
 // @widths 1
 bool df_ge($DF a, $DF b) {
-  return a.hi > b.hi || (a.hi == b.hi && a.lo >= b.lo);
+  return any(bvec2(a.hi > b.hi, all(bvec2(a.hi == b.hi, a.lo >= b.lo))));
 }
 
 // df_equal: a == b for the whole value (all components), like GLSL == on dvecN.
@@ -57,7 +57,7 @@ bool df_ge($DF a, $DF b) {
 // Flops: 0 (2 vector comparisons)
 // @widths 1 2 3 4
 bool df_equal($DF a, $DF b) {
-  return a.hi == b.hi && a.lo == b.lo;
+  return all(bvec2(a.hi == b.hi, a.lo == b.lo));
 }
 
 // df_not_equal: a != b for the whole value (any component differs), like GLSL != on dvecN.
@@ -67,7 +67,7 @@ bool df_equal($DF a, $DF b) {
 // Flops: 0 (2 vector comparisons)
 // @widths 1 2 3 4
 bool df_not_equal($DF a, $DF b) {
-  return a.hi != b.hi || a.lo != b.lo;
+  return any(bvec2(a.hi != b.hi, a.lo != b.lo));
 }
 
 // df_less_than: lessThan(a, b) per component.
@@ -126,7 +126,7 @@ $B df_greater_than_equal($DF a, $DF b) {
 // @widths 1 2 3 4
 // @per-component
 $B df_equal_components($DF a, $DF b) {
-  return a.hi == b.hi && a.lo == b.lo;
+  return all(bvec2(a.hi == b.hi, a.lo == b.lo));
 }
 
 // df_not_equal_components: notEqual(a, b) per component (word-wise).
@@ -137,5 +137,5 @@ $B df_equal_components($DF a, $DF b) {
 // @widths 1 2 3 4
 // @per-component
 $B df_not_equal_components($DF a, $DF b) {
-  return a.hi != b.hi || a.lo != b.lo;
+  return any(bvec2(a.hi != b.hi, a.lo != b.lo));
 }

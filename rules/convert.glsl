@@ -180,24 +180,18 @@ $B df_to_bool($DF a) {
 // Flops: 28
 // @widths 1
 // @min-es 300
-// @uses df_two_sum:1 df_add_f:1 df_ldexp:1 df_neg:1
+// @uses df_two_sum:1 df_add_f:1 df_ldexp:1 df_neg:1 df_select:1
 df_double df_pack_double2x32(uvec2 v) {
   uint exponent = (v.y >> 20u) & 2047u;
   uint top = (v.y & 1048575u) | 1048576u;
   uint mid = v.x >> 8u;
   uint low = v.x & 255u;
   uint sign_bit = v.y & 2147483648u;
-  if (exponent == 0u) {
-    uint zero_bits = sign_bit;
-    $PRECISE float z = $G(uintBitsToFloat(zero_bits));
-    return df_double(z, 0.0);
-  }
-  if (exponent == 2047u) {
-    bool nan = (v.y & 1048575u) != 0u || v.x != 0u;
-    uint special = nan ? 2143289344u : (sign_bit | 2139095040u);
-    $PRECISE float s = $G(uintBitsToFloat(special));
-    return df_double(s, 0.0);
-  }
+  bool zero = exponent == 0u;
+  bool special = exponent == 2047u;
+  bool nan = any(bvec2((v.y & 1048575u) != 0u, v.x != 0u));
+  uint edge_bits = zero ? sign_bit : (nan ? 2143289344u : (sign_bit | 2139095040u));
+  $PRECISE float eh = $G(uintBitsToFloat(edge_bits));
   $PRECISE float t = $G(float(top));
   $PRECISE float tn = $G(t * 9.5367431640625e-07);
   $PRECISE float m = $G(float(mid));
@@ -208,11 +202,11 @@ df_double df_pack_double2x32(uvec2 v) {
   df_double r = df_add_f(s, ln);
   int scale = int(exponent) - 1023;
   df_double x = df_ldexp(r, scale);
-  if (sign_bit != 0u) {
-    df_double n = df_neg(x);
-    return n;
-  }
-  return x;
+  df_double n = df_neg(x);
+  df_double y = df_select(sign_bit != 0u, n, x);
+  df_double edge = df_double(eh, 0.0);
+  df_double z = df_select(any(bvec2(zero, special)), edge, y);
+  return z;
 }
 
 // df_unpack_double2x32: the IEEE binary64 bits (low word, high word) of the double nearest to a
@@ -227,20 +221,15 @@ df_double df_pack_double2x32(uvec2 v) {
 // @uses df_abs:1 df_ldexp:1
 uvec2 df_unpack_double2x32(df_double a) {
   uint sign_bit = floatBitsToUint(a.hi) & 2147483648u;
-  if (a.hi == 0.0) {
-    return uvec2(0u, sign_bit);
-  }
-  if (isnan(a.hi)) {
-    return uvec2(0u, 2146959360u);
-  }
+  bool zero = a.hi == 0.0;
+  bool nan = isnan(a.hi);
+  bool special = any(bvec3(zero, nan, isinf(a.hi)));
   uint inf_bits = sign_bit | 2146435072u;
-  if (isinf(a.hi)) {
-    return uvec2(0u, inf_bits);
-  }
+  uint edge_high = zero ? sign_bit : (nan ? 2146959360u : inf_bits);
   df_double m = df_abs(a);
   int bits = floatBitsToInt(m.hi);
   int e = ((bits >> 23) & 255) - 127;
-  bool below = (bits & 8388607) == 0 && m.lo < 0.0;
+  bool below = all(bvec2((bits & 8388607) == 0, m.lo < 0.0));
   int k = below ? e - 1 : e;
   int nk = 0 - k;
   df_double x = df_ldexp(m, nk);
@@ -262,5 +251,7 @@ uvec2 df_unpack_double2x32(df_double a) {
   uint significand = overflow ? 1048576u : high_sig;
   int biased = (overflow ? k + 1 : k) + 1023;
   uint high_word = sign_bit | (uint(biased) << 20u) | (significand & 1048575u);
-  return uvec2(low_word, high_word);
+  uint lw = special ? 0u : low_word;
+  uint hw = special ? edge_high : high_word;
+  return uvec2(lw, hw);
 }

@@ -91,8 +91,10 @@ $DF df_two_prod($F a, $F b) {
   $PRECISE $F ab = $SAFE(abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  $PRECISE $F as = $SAFE(a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
-  $PRECISE $F bs = $SAFE(b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  $PRECISE $F ka = $SAFE($SEL(big_a, 1.220703125e-4, $SEL(big_b, 8192.0, 1.0)));
+  $PRECISE $F kb = $SAFE($SEL(big_a, 8192.0, $SEL(big_b, 1.220703125e-4, 1.0)));
+  $PRECISE $F as = $SAFE(a * ka);
+  $PRECISE $F bs = $SAFE(b * kb);
   $DF sa = df_split(as);
   $DF sb = df_split(bs);
   $PRECISE $F hh = $SAFE(sa.hi * sb.hi);

@@ -107,10 +107,10 @@ vec2 df_norm_scale($F h) {
   $PRECISE $F ah = $SAFE(abs(h));
   bool big = any(greaterThan(ah, $F(1.152921504606846976e18)));
   bool small = all(lessThan(ah, $F(1.4551915228366851806640625e-11)));
-  $PRECISE float down = $SAFE(big ? 8.0779356694631608874161005085933746e-28 : 1.0);
-  $PRECISE float s = $SAFE(small ? 1.237940039285380274899124224e27 : down);
-  $PRECISE float up = $SAFE(big ? 1.237940039285380274899124224e27 : 1.0);
-  $PRECISE float back = $SAFE(small ? 8.0779356694631608874161005085933746e-28 : up);
+  $PRECISE float down = $SAFE($SEL(big, 8.0779356694631608874161005085933746e-28, 1.0));
+  $PRECISE float s = $SAFE($SEL(small, 1.237940039285380274899124224e27, down));
+  $PRECISE float up = $SAFE($SEL(big, 1.237940039285380274899124224e27, 1.0));
+  $PRECISE float back = $SAFE($SEL(small, 8.0779356694631608874161005085933746e-28, up));
   return vec2(s, back);
 }
 
@@ -206,11 +206,10 @@ $DF df_normalize($DF a) {
 // @uses df_dot:W df_neg:W
 $DF df_faceforward($DF n, $DF i, $DF nref) {
   df_double d = df_dot(nref, i);
-  if (d.hi < 0.0) {
-    return n;
-  }
+  $B facing = $B(d.hi < 0.0);
   $DF m = df_neg(n);
-  return m;
+  $DF r = df_select(facing, n, m);
+  return r;
 }
 
 // df_reflect: i - 2 dot(n, i) n. With S = sum |n_j i_j|: the dot has 13u^2 S, doubling is exact,
@@ -246,14 +245,13 @@ $DF df_refract($DF i, $DF n, df_double eta) {
   df_double e2 = df_mul(eta, eta);
   df_double ec = df_mul(e2, c);
   df_double k = df_sub(one, ec);
-  if (k.hi < 0.0) {
-    return $DF($F(0.0), $F(0.0));
-  }
+  bool total = k.hi < 0.0;
   df_double s = df_sqrt(k);
   df_double ed = df_mul(eta, d);
   df_double f = df_add(ed, s);
   $DF a = df_mul($DF($F(eta.hi), $F(eta.lo)), i);
   $DF b = df_mul($DF($F(f.hi), $F(f.lo)), n);
-  $DF r = df_sub(a, b);
+  $DF t = df_sub(a, b);
+  $DF r = df_select($B(total), $DF($F(0.0), $F(0.0)), t);
   return r;
 }

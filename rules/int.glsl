@@ -83,7 +83,7 @@ float df_int_scale(int n, int k) {
   $PRECISE float f = $SAFE(float(n));
   $PRECISE float f1 = $SAFE(f * p1);
   $PRECISE float f2 = $SAFE(f1 * p2);
-  $PRECISE float r = $SAFE(k < -252 ? 0.0 : f2);
+  $PRECISE float r = $SAFE($SEL(k < -252, 0.0, f2));
   return r;
 }
 
@@ -108,21 +108,16 @@ float df_int_sum_error(float a, float b, float s) {
   int db = eb - emin;
   int ds = es - emin;
   bool special = ((floatBitsToUint(s) >> 23u) & 255u) == 255u;
-  if (special || ds < 0) {
-    return 0.0;
-  }
-  if (da > 25) {
-    return b;
-  }
-  if (db > 25) {
-    return a;
-  }
-  uint ta = df_int_signed(a) << uint(da);
-  uint tb = df_int_signed(b) << uint(db);
-  uint ts = df_int_signed(s) << uint(ds);
+  bool exact = any(bvec2(special, ds < 0));
+  uint ta = df_int_signed(a) << uint(clamp(da, 0, 31));
+  uint tb = df_int_signed(b) << uint(clamp(db, 0, 31));
+  uint ts = df_int_signed(s) << uint(clamp(ds, 0, 31));
   int n = int(ta + tb - ts);
   $PRECISE float e = $SAFE(df_int_scale(n, emin));
-  return e;
+  $PRECISE float small_b = $SAFE($SEL(db > 25, a, e));
+  $PRECISE float small_a = $SAFE($SEL(da > 25, b, small_b));
+  $PRECISE float r = $SAFE($SEL(exact, 0.0, small_a));
+  return r;
 }
 
 // df_int_prod_error: a*b - p exactly, for p the float product the hardware computed.
@@ -140,21 +135,17 @@ float df_int_sum_error(float a, float b, float s) {
 float df_int_prod_error(float a, float b, float p) {
   uint bp = floatBitsToUint(p);
   uint field = (bp >> 23u) & 255u;
-  if (field == 0u || field == 255u) {
-    return 0.0;
-  }
   int ea = df_int_exponent(a);
   int eb = df_int_exponent(b);
   int k = df_int_exponent(p) - ea - eb;
-  if (k < 0 || k > 31) {
-    return 0.0;
-  }
+  bool none = any(bvec4(field == 0u, field == 255u, k < 0, k > 31));
   uint low = df_int_magnitude(a) * df_int_magnitude(b);
-  uint shifted = df_int_magnitude(p) << uint(k);
+  uint shifted = df_int_magnitude(p) << uint(clamp(k, 0, 31));
   int n = int(low - shifted);
   int sn = (bp >> 31u) != 0u ? -n : n;
   $PRECISE float e = $SAFE(df_int_scale(sn, ea + eb));
-  return e;
+  $PRECISE float r = $SAFE($SEL(none, 0.0, e));
+  return r;
 }
 
 // df_two_sum (df64-int): s + e == a + b exactly, s = RN(a + b); e by integers.

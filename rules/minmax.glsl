@@ -27,10 +27,9 @@ $DF df_abs($DF a) {
 // @widths 1 2 3 4
 // @per-component
 $DF df_min($DF a, $DF b) {
-  if (df_lt(b, a)) {
-    return b;
-  }
-  return a;
+  bool take = df_lt(b, a);
+  $DF r = df_select(take, b, a);
+  return r;
 }
 
 // df_max: component-wise max(a, b) = a < b ? b : a (GLSL definition).
@@ -41,8 +40,7 @@ $DF df_min($DF a, $DF b) {
 // @widths 1 2 3 4
 // @per-component
 $DF df_max($DF a, $DF b) {
-  if (df_lt(a, b)) {
-    return b;
-  }
-  return a;
+  bool take = df_lt(a, b);
+  $DF r = df_select(take, b, a);
+  return r;
 }

@@ -67,19 +67,18 @@ $DF df_expm1_kernel($DF r) {
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
-// @uses df_expm1_kernel:1 df_ldexp:1 df_add_f:1 df_sub:1 df_two_prod:1
+// @uses df_expm1_kernel:1 df_ldexp:1 df_add_f:1 df_sub:1 df_two_prod:1 df_select:1
 $DF df_exp($DF a) {
   $PRECISE $F na = $SAFE(-a.hi);
-  if (na > 104.0) {
-    return $DF($F(0.0), $F(0.0));
-  }
-  if (!(a.hi <= 89.0)) {
-    $PRECISE $F big = $SAFE(a.hi * 1.0e38);
-    return $DF(big, $F(0.0));
-  }
-  $PRECISE $F k = $G(floor(a.hi * 1.44269504 + 0.5));
+  bool zero = na > 104.0;
+  bool over = !(a.hi <= 89.0);
+  bool regular = !any(bvec2(zero, over));
+  $PRECISE $F big = $SAFE(a.hi * 1.0e38);
+  $PRECISE $F eh = $SAFE($SEL(zero, 0.0, big));
+  $DF x = df_select(regular, a, $DF($F(0.0), $F(0.0)));
+  $PRECISE $F k = $G(floor(x.hi * 1.44269504 + 0.5));
   $PRECISE $F nk1 = $G(k * -0.693145752);
-  $DF r1 = df_add_f(a, nk1);
+  $DF r1 = df_add_f(x, nk1);
   $DF k2 = df_two_prod(k, 1.42860677e-06);
   $DF r2 = df_sub(r1, k2);
   $PRECISE $F nk3 = $SAFE(k * -5.49792315e-14);
@@ -88,7 +87,8 @@ $DF df_exp($DF a) {
   $DF p = df_add_f(e, $F(1.0));
   int ki = int(k);
   $DF s = df_ldexp(p, ki);
-  return s;
+  $DF y = df_select(regular, s, $DF(eh, $F(0.0)));
+  return y;
 }
 
 // df_exp2: 2^x = 2^k * e^(f ln 2) with k = round(x), f = x - k exact (|f| <= 1/2), the product
@@ -102,25 +102,25 @@ $DF df_exp($DF a) {
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
-// @uses df_expm1_kernel:1 df_ldexp:1 df_add_f:1 df_mul:1
+// @uses df_expm1_kernel:1 df_ldexp:1 df_add_f:1 df_mul:1 df_select:1
 $DF df_exp2($DF a) {
   $PRECISE $F na = $SAFE(-a.hi);
-  if (na > 150.0) {
-    return $DF($F(0.0), $F(0.0));
-  }
-  if (!(a.hi <= 129.0)) {
-    $PRECISE $F big = $SAFE(a.hi * 1.0e38);
-    return $DF(big, $F(0.0));
-  }
-  $PRECISE $F k = $G(floor(a.hi + 0.5));
+  bool zero = na > 150.0;
+  bool over = !(a.hi <= 129.0);
+  bool regular = !any(bvec2(zero, over));
+  $PRECISE $F big = $SAFE(a.hi * 1.0e38);
+  $PRECISE $F eh = $SAFE($SEL(zero, 0.0, big));
+  $DF x = df_select(regular, a, $DF($F(0.0), $F(0.0)));
+  $PRECISE $F k = $G(floor(x.hi + 0.5));
   $PRECISE $F nk = $SAFE(-k);
-  $DF f = df_add_f(a, nk);
+  $DF f = df_add_f(x, nk);
   $DF r = df_mul(f, $DF($F(0.693147182), $F(-1.90465421e-09)));
   $DF e = df_expm1_kernel(r);
   $DF p = df_add_f(e, $F(1.0));
   int ki = int(k);
   $DF s = df_ldexp(p, ki);
-  return s;
+  $DF y = df_select(regular, s, $DF(eh, $F(0.0)));
+  return y;
 }
 
 // df_log_kernel: log(m) for 0.70 <= m <= 1.42 as 2 atanh(s), s = (m - 1) / (m + 1), |s| <= 0.172:
@@ -161,19 +161,18 @@ $DF df_log_kernel($DF m) {
 // Flops: 11
 // @widths 1
 // @min-es 300
-// @uses df_frexp:1
+// @uses df_frexp:1 df_select:1
 $DF df_log_reduce($DF a, out int e) {
   int e0;
   $DF m0 = df_frexp(a, e0);
-  if (m0.hi < 0.707106781) {
-    $PRECISE $F h = $SAFE(m0.hi * 2.0);
-    $PRECISE $F l = $SAFE(m0.lo * 2.0);
-    int em = e0 - 1;
-    e = em;
-    return $DF(h, l);
-  }
-  e = e0;
-  return m0;
+  bool low = m0.hi < 0.707106781;
+  $PRECISE $F h = $SAFE(m0.hi * 2.0);
+  $PRECISE $F l = $SAFE(m0.lo * 2.0);
+  int em = e0 - 1;
+  e = low ? em : e0;
+  $DF d = $DF(h, l);
+  $DF m = df_select(low, d, m0);
+  return m;
 }
 
 // df_log: natural logarithm: log(x) = e ln 2 + log(m), x = m 2^e (df_log_reduce). |log(m)| <=
@@ -187,19 +186,22 @@ $DF df_log_reduce($DF a, out int e) {
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
-// @uses df_log_reduce:1 df_log_kernel:1 df_mul_f:1 df_add:1
+// @uses df_log_reduce:1 df_log_kernel:1 df_mul_f:1 df_add:1 df_select:1
 $DF df_log($DF a) {
-  if (!(a.hi > 0.0 && a.hi <= 3.40282347e38)) {
-    $PRECISE $F special = $SAFE(a.hi == 0.0 ? -1.0 / abs(a.hi) : (a.hi > 0.0 ? a.hi : sqrt(a.hi)));
-    return $DF(special, $F(0.0));
-  }
+  bool regular = all(bvec2(a.hi > 0.0, a.hi <= 3.40282347e38));
+  $PRECISE $F pole = $SAFE(-1.0 / abs(a.hi));
+  $PRECISE $F root = $SAFE(sqrt(a.hi));
+  $PRECISE $F beyond = $SAFE($SEL(a.hi > 0.0, a.hi, root));
+  $PRECISE $F special = $SAFE($SEL(a.hi == 0.0, pole, beyond));
+  $DF x = df_select(regular, a, $DF($F(1.0), $F(0.0)));
   int e;
-  $DF m = df_log_reduce(a, e);
+  $DF m = df_log_reduce(x, e);
   $DF l = df_log_kernel(m);
   $PRECISE $F fe = $SAFE(float(e));
   $DF el = df_mul_f($DF($F(0.693147182), $F(-1.90465421e-09)), fe);
   $DF r = df_add(el, l);
-  return r;
+  $DF y = df_select(regular, r, $DF(special, $F(0.0)));
+  return y;
 }
 
 // df_log2: log2(x) = e + log(m) log2(e) (log2(e) as a float-float); special values as df_log.
@@ -211,19 +213,22 @@ $DF df_log($DF a) {
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
-// @uses df_log_reduce:1 df_log_kernel:1 df_mul:1 df_add_f:1
+// @uses df_log_reduce:1 df_log_kernel:1 df_mul:1 df_add_f:1 df_select:1
 $DF df_log2($DF a) {
-  if (!(a.hi > 0.0 && a.hi <= 3.40282347e38)) {
-    $PRECISE $F special = $SAFE(a.hi == 0.0 ? -1.0 / abs(a.hi) : (a.hi > 0.0 ? a.hi : sqrt(a.hi)));
-    return $DF(special, $F(0.0));
-  }
+  bool regular = all(bvec2(a.hi > 0.0, a.hi <= 3.40282347e38));
+  $PRECISE $F pole = $SAFE(-1.0 / abs(a.hi));
+  $PRECISE $F root = $SAFE(sqrt(a.hi));
+  $PRECISE $F beyond = $SAFE($SEL(a.hi > 0.0, a.hi, root));
+  $PRECISE $F special = $SAFE($SEL(a.hi == 0.0, pole, beyond));
+  $DF x = df_select(regular, a, $DF($F(1.0), $F(0.0)));
   int e;
-  $DF m = df_log_reduce(a, e);
+  $DF m = df_log_reduce(x, e);
   $DF l = df_log_kernel(m);
   $DF l2 = df_mul(l, $DF($F(1.44269502), $F(1.92596303e-08)));
   $PRECISE $F fe = $SAFE(float(e));
   $DF r = df_add_f(l2, fe);
-  return r;
+  $DF y = df_select(regular, r, $DF(special, $F(0.0)));
+  return y;
 }
 
 // df_pow: x^y = e^(y log x). The absolute error of y log(x) becomes a relative error of the
@@ -238,15 +243,14 @@ $DF df_log2($DF a) {
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
-// @uses df_log:1 df_mul:1 df_exp:1
+// @uses df_log:1 df_mul:1 df_exp:1 df_select:1
 $DF df_pow($DF x, $DF y) {
-  if (y.hi == 0.0 || (x.hi == 1.0 && x.lo == 0.0)) {
-    return $DF($F(1.0), $F(0.0));
-  }
+  bool one = any(bvec2(y.hi == 0.0, all(bvec2(x.hi == 1.0, x.lo == 0.0))));
   $DF l = df_log(x);
   $DF z = df_mul(y, l);
   $DF r = df_exp(z);
-  return r;
+  $DF p = df_select(one, $DF($F(1.0), $F(0.0)), r);
+  return p;
 }
 
 // df_trig_reduce: r = x - k pi/2 with |r| <= pi/4 (plus a few ulp) and q = k mod 4, pi/2 =
@@ -362,11 +366,9 @@ $DF df_sin_quadrant($DF r, int q) {
   } else {
     v = df_cos_kernel(w);
   }
-  if ((q & 2) != 0) {
-    $DF n = df_neg(v);
-    return n;
-  }
-  return v;
+  $DF n = df_neg(v);
+  $DF s = df_select((q & 2) != 0, n, v);
+  return s;
 }
 
 // df_sin: sin(x), |x| < 2^40 (beyond: NaN, as for +-Inf and NaN). sin(+-0) = +-0. Near a zero
@@ -383,17 +385,15 @@ $DF df_sin_quadrant($DF r, int q) {
 // @uses df_trig_reduce:1 df_sin_quadrant:1
 $DF df_sin($DF a) {
   $PRECISE $F ax = $SAFE(abs(a.hi));
-  if (!(ax < 1.09951163e12)) {
-    $PRECISE $F nan = $G((a.hi - a.hi) / (a.hi - a.hi));
-    return $DF(nan, $F(0.0));
-  }
-  if (ax == 0.0) {
-    return a;
-  }
+  bool finite = ax < 1.09951163e12;
+  $PRECISE $F nan = $G((a.hi - a.hi) / (a.hi - a.hi));
+  $DF x = df_select(finite, a, $DF($F(0.0), $F(0.0)));
   int q;
-  $DF r = df_trig_reduce(a, q);
+  $DF r = df_trig_reduce(x, q);
   $DF s = df_sin_quadrant(r, q);
-  return s;
+  $DF z = df_select(ax == 0.0, a, s);
+  $DF y = df_select(finite, z, $DF(nan, $F(0.0)));
+  return y;
 }
 
 // df_cos: cos(x) = sin(x + pi/2): the quadrant of df_sin plus one. |x| < 2^40 (beyond: NaN).
@@ -408,15 +408,15 @@ $DF df_sin($DF a) {
 // @uses df_trig_reduce:1 df_sin_quadrant:1
 $DF df_cos($DF a) {
   $PRECISE $F ax = $SAFE(abs(a.hi));
-  if (!(ax < 1.09951163e12)) {
-    $PRECISE $F nan = $G((a.hi - a.hi) / (a.hi - a.hi));
-    return $DF(nan, $F(0.0));
-  }
+  bool finite = ax < 1.09951163e12;
+  $PRECISE $F nan = $G((a.hi - a.hi) / (a.hi - a.hi));
+  $DF x = df_select(finite, a, $DF($F(0.0), $F(0.0)));
   int q;
-  $DF r = df_trig_reduce(a, q);
+  $DF r = df_trig_reduce(x, q);
   int q1 = (q + 1) & 3;
   $DF c = df_sin_quadrant(r, q1);
-  return c;
+  $DF y = df_select(finite, c, $DF(nan, $F(0.0)));
+  return y;
 }
 
 // df_tan: sin(r) / cos(r) in quadrants 0 and 2, -cos(r) / sin(r) in 1 and 3. tan(+-0) = +-0.
@@ -431,25 +431,23 @@ $DF df_cos($DF a) {
 // @uses df_trig_reduce:1 df_mul:1 df_sin_kernel:1 df_cos_kernel:1 df_div:1 df_neg:1
 $DF df_tan($DF a) {
   $PRECISE $F ax = $SAFE(abs(a.hi));
-  if (!(ax < 1.09951163e12)) {
-    $PRECISE $F nan = $G((a.hi - a.hi) / (a.hi - a.hi));
-    return $DF(nan, $F(0.0));
-  }
-  if (ax == 0.0) {
-    return a;
-  }
+  bool finite = ax < 1.09951163e12;
+  $PRECISE $F nan = $G((a.hi - a.hi) / (a.hi - a.hi));
+  $DF x = df_select(finite, a, $DF($F(0.0), $F(0.0)));
   int q;
-  $DF r = df_trig_reduce(a, q);
+  $DF r = df_trig_reduce(x, q);
   $DF w = df_mul(r, r);
   $DF s = df_sin_kernel(r, w);
   $DF c = df_cos_kernel(w);
-  if ((q & 1) == 0) {
-    $DF t = df_div(s, c);
-    return t;
-  }
-  $DF u = df_div(c, s);
-  $DF v = df_neg(u);
-  return v;
+  bool even = (q & 1) == 0;
+  $DF num = df_select(even, s, c);
+  $DF den = df_select(even, c, s);
+  $DF t = df_div(num, den);
+  $DF u = df_neg(t);
+  $DF v = df_select(even, t, u);
+  $DF z = df_select(ax == 0.0, a, v);
+  $DF y = df_select(finite, z, $DF(nan, $F(0.0)));
+  return y;
 }
 
 // df_atan_halve: t / (1 + sqrt(1 + t^2)) = tan(atan(t) / 2) for t >= 0.
@@ -504,17 +502,16 @@ $DF df_atan_kernel($DF t) {
 // Bound: 70u^2
 // Flops: 614 (on the path taken)
 // @widths 1
-// @uses df_lt:1 df_div:1 df_atan_kernel:1 df_sub:1
+// @uses df_lt:1 df_div:1 df_atan_kernel:1 df_sub:1 df_select:1
 $DF df_atan2_unit($DF ay, $DF ax) {
-  if (df_lt(ax, ay)) {
-    $DF t = df_div(ax, ay);
-    $DF a = df_atan_kernel(t);
-    $DF r = df_sub($DF($F(1.57079637), $F(-4.37113883e-08)), a);
-    return r;
-  }
-  $DF u = df_div(ay, ax);
-  $DF b = df_atan_kernel(u);
-  return b;
+  bool steep = df_lt(ax, ay);
+  $DF num = df_select(steep, ax, ay);
+  $DF den = df_select(steep, ay, ax);
+  $DF t = df_div(num, den);
+  $DF a = df_atan_kernel(t);
+  $DF r = df_sub($DF($F(1.57079637), $F(-4.37113883e-08)), a);
+  $DF y = df_select(steep, r, a);
+  return y;
 }
 
 // df_atan: arctangent, in (-pi/2, pi/2). atan(+-0) = +-0, atan(+-Inf) = +-pi/2, NaN -> NaN.
@@ -524,18 +521,14 @@ $DF df_atan2_unit($DF ay, $DF ax) {
 // Flops: 620 (on the path taken)
 // @widths 1 2 3 4
 // @per-component
-// @uses df_abs:1 df_atan2_unit:1 df_neg:1
+// @uses df_abs:1 df_atan2_unit:1 df_neg:1 df_select:1
 $DF df_atan($DF a) {
-  if (a.hi == 0.0) {
-    return a;
-  }
   $DF t = df_abs(a);
   $DF r = df_atan2_unit(t, $DF($F(1.0), $F(0.0)));
-  if (a.hi < 0.0) {
-    $DF n = df_neg(r);
-    return n;
-  }
-  return r;
+  $DF n = df_neg(r);
+  $DF s = df_select(a.hi < 0.0, n, r);
+  $DF y = df_select(a.hi == 0.0, a, s);
+  return y;
 }
 
 // df_atan2: atan(y, x), the angle of (x, y) in [-pi, pi]: df_atan2_unit on |y|, |x|, then
@@ -548,24 +541,20 @@ $DF df_atan($DF a) {
 // Flops: 646 (on the path taken)
 // @widths 1 2 3 4
 // @per-component
-// @uses df_abs:1 df_atan2_unit:1 df_sub:1 df_neg:1
+// @uses df_abs:1 df_atan2_unit:1 df_sub:1 df_neg:1 df_select:1
 $DF df_atan2($DF y, $DF x) {
-  if (x.hi == 0.0 && y.hi == 0.0) {
-    return y;
-  }
+  bool origin = all(bvec2(x.hi == 0.0, y.hi == 0.0));
   $DF ay = df_abs(y);
   $DF ax = df_abs(x);
   $DF a = df_atan2_unit(ay, ax);
-  $DF b = a;
-  if (x.hi < 0.0) {
-    b = df_sub($DF($F(3.14159274), $F(-8.74227766e-08)), a);
-  }
-  $PRECISE $F ys = $SAFE(y.hi == 0.0 ? 1.0 / y.hi : y.hi);
-  if (ys < 0.0) {
-    $DF n = df_neg(b);
-    return n;
-  }
-  return b;
+  $DF c = df_sub($DF($F(3.14159274), $F(-8.74227766e-08)), a);
+  $DF b = df_select(x.hi < 0.0, c, a);
+  $PRECISE $F iy = $SAFE(1.0 / y.hi);
+  $PRECISE $F ys = $SAFE($SEL(y.hi == 0.0, iy, y.hi));
+  $DF n = df_neg(b);
+  $DF s = df_select(ys < 0.0, n, b);
+  $DF r = df_select(origin, y, s);
+  return r;
 }
 
 // df_asin: atan(x, sqrt((1 - x)(1 + x))): 1 - x is exact near |x| = 1, so the cosine keeps its
@@ -577,18 +566,16 @@ $DF df_atan2($DF y, $DF x) {
 // Range: |x| <= 1.
 // @widths 1 2 3 4
 // @per-component
-// @uses df_neg:1 df_add_f:1 df_mul:1 df_sqrt:1 df_atan2:1
+// @uses df_neg:1 df_add_f:1 df_mul:1 df_sqrt:1 df_atan2:1 df_select:1
 $DF df_asin($DF a) {
-  if (a.hi == 0.0) {
-    return a;
-  }
   $DF n = df_neg(a);
   $DF om = df_add_f(n, $F(1.0));
   $DF op = df_add_f(a, $F(1.0));
   $DF p = df_mul(om, op);
   $DF c = df_sqrt(p);
   $DF r = df_atan2(a, c);
-  return r;
+  $DF y = df_select(a.hi == 0.0, a, r);
+  return y;
 }
 
 // df_acos: atan(sqrt((1 - x)(1 + x)), x), in [0, pi]. |x| > 1 gives NaN.
@@ -621,12 +608,13 @@ $DF df_acos($DF a) {
 // @uses df_expm1_kernel:1 df_exp:1 df_add_f:1
 $DF df_expm1($DF a) {
   $PRECISE $F ax = $SAFE(abs(a.hi));
+  $DF r;
   if (ax < 0.3465) {
-    $DF k = df_expm1_kernel(a);
-    return k;
+    r = df_expm1_kernel(a);
+  } else {
+    $DF e = df_exp(a);
+    r = df_add_f(e, $F(-1.0));
   }
-  $DF e = df_exp(a);
-  $DF r = df_add_f(e, $F(-1.0));
   return r;
 }
 
@@ -641,29 +629,28 @@ $DF df_expm1($DF a) {
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
-// @uses df_abs:1 df_expm1:1 df_add_f:1 df_div:1 df_add:1 df_neg:1
+// @uses df_abs:1 df_expm1:1 df_add_f:1 df_div:1 df_add:1 df_neg:1 df_select:1
 $DF df_sinh($DF a) {
   $PRECISE $F ax = $SAFE(abs(a.hi));
-  if (ax == 0.0) {
-    return a;
-  }
-  if (!(ax <= 88.72)) {
-    $PRECISE $F big = $SAFE(a.hi * 1.0e38);
-    return $DF(big, $F(0.0));
-  }
-  $DF t = df_abs(a);
+  bool over = !(ax <= 88.72);
+  $PRECISE $F big = $SAFE(a.hi * 1.0e38);
+  $DF x = df_select(over, $DF($F(0.0), $F(0.0)), a);
+  $DF t = df_abs(x);
   $DF e = df_expm1(t);
   $DF e1 = df_add_f(e, $F(1.0));
   $DF q = df_div(e, e1);
   $DF s = df_add(e, q);
   $PRECISE $F h = $SAFE(s.hi * 0.5);
   $PRECISE $F l = $SAFE(s.lo * 0.5);
-  if (a.hi < 0.0) {
-    $PRECISE $F nh = $SAFE(-h);
-    $PRECISE $F nl = $SAFE(-l);
-    return $DF(nh, nl);
-  }
-  return $DF(h, l);
+  $PRECISE $F nh = $SAFE(-h);
+  $PRECISE $F nl = $SAFE(-l);
+  bool negative = a.hi < 0.0;
+  $PRECISE $F sh = $SAFE($SEL(negative, nh, h));
+  $PRECISE $F sl = $SAFE($SEL(negative, nl, l));
+  $DF v = $DF(sh, sl);
+  $DF w = df_select(over, $DF(big, $F(0.0)), v);
+  $DF y = df_select(ax == 0.0, a, w);
+  return y;
 }
 
 // df_cosh: (e^|x| + 1/e^|x|) / 2 (no cancellation: both terms positive). |x| > 88.72 gives
@@ -696,22 +683,22 @@ $DF df_cosh($DF a) {
 // @widths 1 2 3 4
 // @per-component
 // @min-es 300
-// @uses df_expm1:1 df_add_f:1 df_div:1
+// @uses df_expm1:1 df_add_f:1 df_div:1 df_select:1
 $DF df_tanh($DF a) {
   $PRECISE $F ax = $SAFE(abs(a.hi));
-  if (ax == 0.0) {
-    return a;
-  }
-  $PRECISE $F one = $SAFE(a.hi < 0.0 ? -1.0 : 1.0);
-  if (ax > 22.0) {
-    return $DF(one, $F(0.0));
-  }
-  $PRECISE $F th = $SAFE(ax * 2.0);
-  $PRECISE $F tl = $SAFE(a.lo * one * 2.0);
+  $PRECISE $F one = $SAFE($SEL(a.hi < 0.0, -1.0, 1.0));
+  bool saturated = ax > 22.0;
+  $DF x = df_select(saturated, $DF($F(0.0), $F(0.0)), a);
+  $PRECISE $F xh = $SAFE(abs(x.hi));
+  $PRECISE $F th = $SAFE(xh * 2.0);
+  $PRECISE $F tl = $SAFE(x.lo * one * 2.0);
   $DF e = df_expm1($DF(th, tl));
   $DF d = df_add_f(e, $F(2.0));
   $DF q = df_div(e, d);
   $PRECISE $F h = $SAFE(q.hi * one);
   $PRECISE $F l = $SAFE(q.lo * one);
-  return $DF(h, l);
+  $DF v = $DF(h, l);
+  $DF w = df_select(saturated, $DF(one, $F(0.0)), v);
+  $DF y = df_select(ax == 0.0, a, w);
+  return y;
 }

@@ -75,6 +75,9 @@ bool lower_doubles(ir::Module& module, Context& context);
 bool flatten_io_blocks(ir::Module& module, Context& context);
 // Global initialisers that are not constant expressions become assignments at the top of main.
 bool move_global_initialisers(ir::Module& module, Context& context);
+// GLSL ES 3.00+ and WGSL: several fragment outputs each need a location; the missing ones are given
+// in declaration order, with a warning.
+bool assign_fragment_output_locations(ir::Module& module, Context& context);
 bool split_interfaces(ir::Module& module, Context& context, Manifest& manifest);
 // Mode exact: uniform, storage and in/out blocks hold each double as its binary64 words (low word
 // first) at the original block's offsets; accesses load and store through helpers (exact_blocks.cpp).

@@ -137,7 +137,27 @@ struct Subst {
   GuardStyle guard = GuardStyle::None;
   std::string guard_uniform = "df_guard";
   bool exact_words = false;  // EmitRequest::exact_words: uint words in the df_* structs
+  int es_version = 300;      // EmitRequest::es_version: $SEL is mix() from ES 3.00 on
 };
+
+// The arguments of a placeholder call whose '(' is at in[open]: split at the commas of depth 1.
+// Returns the index of the closing ')' (npos when unbalanced).
+size_t placeholder_arguments(std::string_view in, size_t open, std::vector<std::string_view>& args) {
+  int depth = 0;
+  size_t start = open + 1;
+  for (size_t k = open; k < in.size(); ++k) {
+    if (in[k] == '(') ++depth;
+    if (in[k] == ',' && depth == 1) {
+      args.push_back(in.substr(start, k - start));
+      start = k + 1;
+    }
+    if (in[k] == ')' && --depth == 0) {
+      args.push_back(in.substr(start, k - start));
+      return k;
+    }
+  }
+  return std::string_view::npos;
+}
 
 // Replaces the placeholders of docs/rules-format.md. Returns false (and sets *error) on an
 // unknown placeholder or an unbalanced $G( or $SAFE(.
@@ -150,18 +170,35 @@ bool substitute(std::string_view in, const Subst& s, std::string& out, std::stri
     size_t j = i + 1;
     while (j < in.size() && std::isupper(static_cast<unsigned char>(in[j]))) ++j;
     std::string key(in.substr(i + 1, j - i - 1));
+    if (key == "SEL") {
+      // $SEL(c, a, b): c ? a : b without a branch (docs/rules-format.md): mix(b, a, c) where GLSL
+      // has mix on a boolean selector (ES 3.00, GLSL 1.30; WGSL prints select), a ternary on ES 1.00.
+      std::vector<std::string_view> args;
+      const size_t k = j < in.size() && in[j] == '(' ? placeholder_arguments(in, j, args) : std::string_view::npos;
+      if (k == std::string_view::npos || args.size() != 3) {
+        *error = "$SEL must be followed by (condition, if_true, if_false)";
+        return false;
+      }
+      std::string c, a, b;
+      if (!substitute(args[0], s, c, error) || !substitute(args[1], s, a, error) || !substitute(args[2], s, b, error))
+        return false;
+      auto trim = [](std::string& t) {
+        t.erase(0, t.find_first_not_of(' '));
+        t.erase(t.find_last_not_of(' ') + 1);
+      };
+      trim(c), trim(a), trim(b);
+      out += s.es_version >= 300 ? "mix(" + b + ", " + a + ", " + c + ")" : "(" + c + " ? " + a + " : " + b + ")";
+      i = k;
+      continue;
+    }
     if (key == "G" || key == "SAFE") {
+      std::vector<std::string_view> args;
+      const size_t k = j < in.size() && in[j] == '(' ? placeholder_arguments(in, j, args) : std::string_view::npos;
       if (j >= in.size() || in[j] != '(') {
         *error = "$" + key + " must be followed by '('";
         return false;
       }
-      int depth = 0;
-      size_t k = j;
-      for (; k < in.size(); ++k) {
-        if (in[k] == '(') ++depth;
-        if (in[k] == ')' && --depth == 0) break;
-      }
-      if (k >= in.size()) {
+      if (k == std::string_view::npos) {
         *error = "unbalanced parentheses in $" + key + "(...)";
         return false;
       }
@@ -731,6 +768,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     s.guard = request.guard;
     s.guard_uniform = request.guard_uniform;
     s.exact_words = request.exact_words;
+    s.es_version = request.es_version;
     std::vector<std::string> functions;
     std::set<int> struct_widths, ff_struct_widths;
     for (const auto& r : order) {

@@ -8,8 +8,7 @@
 // 2 no browser here (chromium or playwright-core missing): callers treat 2 as "skip", not as failure.
 // playwright-core drives the system browser at $CHROMIUM (default /usr/bin/chromium): nothing is downloaded.
 import fs from 'fs';
-import http from 'http';
-import path from 'path';
+import { findChromium, launch, pageOutcome, serve } from './session.mjs';
 
 const usage = 'usage: node run-page.mjs DIR [--page index.html] [--timeout-ms N] [--screenshot FILE] [--viewport WxH]';
 const args = process.argv.slice(2);
@@ -29,43 +28,9 @@ if (!dir || args.length !== 1 || !fs.existsSync(dir)) {
   console.error(usage);
   process.exit(1);
 }
-const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
-let chromium;
-try {
-  ({ chromium } = await import('playwright-core'));
-} catch (e) {
-  console.error(`run-page: playwright-core is not installed (npm ci in ${path.dirname(new URL(import.meta.url).pathname)}): ${e.message}`);
-  process.exit(2);
-}
-if (!fs.existsSync(executablePath)) {
-  console.error(`run-page: no browser at ${executablePath} (apt-get install chromium)`);
-  process.exit(2);
-}
-
-const contentTypes = {
-  '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.json': 'application/json',
-  '.png': 'image/png', '.css': 'text/css',
-};
-const root = path.resolve(dir);
-const server = http.createServer((request, response) => {
-  const file = path.resolve(root, '.' + decodeURIComponent(new URL(request.url, 'http://x').pathname));
-  if (!file.startsWith(root + path.sep) && file !== root) {
-    response.writeHead(403).end();
-    return;
-  }
-  if (file === path.join(root, 'favicon.ico')) {
-    response.writeHead(204).end();  // browsers ask for it; a 404 would be logged as a page error
-    return;
-  }
-  fs.readFile(file, (error, data) => {
-    if (error) {
-      response.writeHead(404).end();
-      return;
-    }
-    response.writeHead(200, { 'Content-Type': contentTypes[path.extname(file)] || 'text/plain' }).end(data);
-  });
-});
-await new Promise(resolve => server.listen(0, '127.0.0.1', resolve));
+const chromium = await findChromium('run-page');
+if (!chromium) process.exit(2);
+const server = await serve(dir);
 
 let browser;
 const finish = async (status) => {
@@ -74,16 +39,9 @@ const finish = async (status) => {
   process.exit(status);
 };
 try {
-  browser = await chromium.launch({
-    executablePath,
-    // WebGL2 and WebGPU on the CPU (SwiftShader): no GPU on these machines. --enable-unsafe-webgpu is
-    // what makes navigator.gpu.requestAdapter() answer headless (docs/web.md).
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-           '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           '--enable-unsafe-swiftshader', '--enable-unsafe-webgpu'],
-  });
+  browser = await launch(chromium);
 } catch (e) {
-  console.error(`run-page: cannot start ${executablePath}: ${e.message}`);
+  console.error(`run-page: cannot start the browser: ${e.message}`);
   await finish(2);
 }
 try {
@@ -92,16 +50,7 @@ try {
   page.on('pageerror', error => { console.error(`[page error] ${error.message}`); });
   const port = server.address().port;
   await page.goto(`http://127.0.0.1:${port}/${pageName}`, { timeout: timeoutMs });
-  await page.waitForFunction(() => window.doubletResult !== undefined || window.doubletError !== undefined,
-                             null, { timeout: timeoutMs, polling: 50 });
-  const outcome = await page.evaluate(async () => {
-    if (window.doubletError !== undefined) return { error: String(window.doubletError) };
-    try {
-      return { result: await window.doubletResult };
-    } catch (e) {
-      return { error: String(e && e.stack || e) };
-    }
-  });
+  const outcome = await pageOutcome(page, timeoutMs);
   if (screenshot) await page.screenshot({ path: screenshot, fullPage: true });
   if (outcome.error !== undefined) {
     console.error(`run-page: the page failed: ${outcome.error}`);

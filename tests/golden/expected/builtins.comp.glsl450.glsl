@@ -3,7 +3,7 @@ precision highp float;
 precision highp int;
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
 
-// doublet float-float runtime: 95 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 97 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 
@@ -54,12 +54,12 @@ df_double df_fast_two_sum(float a, float b) {
 df_double df_floor(df_double a) {
   precise float f = (floor(a.hi));
   precise float af = (abs(f));
-  if (f == a.hi && af > 0.0 && af <= 3.40282347e38) {
-    precise float g = (floor(a.lo));
-    df_double r = df_fast_two_sum(a.hi, g);
-    return r;
-  }
-  return df_double(f, float(0.0));
+  bool integer = all(bvec3(f == a.hi, af > 0.0, af <= 3.40282347e38));
+  precise float g = (floor(a.lo));
+  df_double r = df_fast_two_sum(a.hi, g);
+  precise float h = (mix(f, r.hi, integer));
+  precise float l = (mix(0.0, r.lo, integer));
+  return df_double(h, l);
 }
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
@@ -88,10 +88,10 @@ df_double df_two_sum(float a, float b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   precise float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  precise float h = (mix(f, z.hi, regular));
+  precise float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_add: a + b.
@@ -128,18 +128,34 @@ df_double df_ceil(df_double a) {
   return r;
 }
 
-// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
-// Algorithm: df_ceil or df_floor by the sign of hi
+// df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
+// ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
+// early return or a short-circuit inside a rule that is inlined into a loop body multiplies the
+// control flow the browser's shader compilers have to handle (docs/performance.md, "Compile time in
+// the browser").
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBType)
+// Bound: exact
+// Flops: 0
+df_double df_select(bool c, df_double a, df_double b) {
+  precise float h = (mix(b.hi, a.hi, c));
+  precise float l = (mix(b.lo, a.lo, c));
+  return df_double(h, l);
+}
+
+// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise, both computed
+// and one selected. (Selecting the operand instead, floor(x < 0 ? -x : x), is one floor less, but
+// Mesa's GLES compiler folds that select into abs(x), which turns trunc(-0) into +0.)
+// Algorithm: df_ceil and df_floor, selected by the sign of hi
 // Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
 // Bound: exact
-// Flops: 10
+// Flops: 16
 df_double df_trunc(df_double a) {
-  if (a.hi < 0.0) {
-    df_double c = df_ceil(a);
-    return c;
-  }
+  bool negative = a.hi < 0.0;
+  df_double c = df_ceil(a);
   df_double f = df_floor(a);
-  return f;
+  df_double r = df_select(negative, c, f);
+  return r;
 }
 
 // df_add_f: a + b with b a plain float (b need not be a double-word).
@@ -164,21 +180,20 @@ df_double df_add_f(df_double a, float b) {
 // Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4); df_finish for integers
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 21
+// Flops: 29
 df_double df_fract(df_double a) {
   precise float f = (floor(a.hi));
-  if (f == a.hi) {
-    precise float g = (floor(a.lo));
-    precise float ng = (0.0 - g);
-    df_double r = df_two_sum(a.lo, ng);
-    precise float d = (a.hi - f);
-    df_double q = df_finish(r, d);
-    return q;
-  }
+  bool integer = f == a.hi;
+  precise float g = (floor(a.lo));
+  precise float ng = (0.0 - g);
+  df_double r = df_two_sum(a.lo, ng);
+  precise float d = (a.hi - f);
+  df_double q = df_finish(r, d);
   precise float nf = (0.0 - f);
   df_double t = df_two_sum(a.hi, nf);
   df_double s = df_add_f(t, a.lo);
-  return s;
+  df_double z = df_select(integer, q, s);
+  return z;
 }
 
 // df_next_integer: f + 1 for an integer-valued f, with the sign of zero native round gives:
@@ -201,18 +216,17 @@ df_double df_next_integer(df_double f) {
 // Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2 (>= 1/2 for x >= 0)
 // Source: GLSL 4.60 (2019) section 8.3 (round); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 42
+// Flops: 50
 // Range: the decision uses df_fract (2u^2): exact for x >= 0 or |x| >= 1.
 df_double df_round(df_double a) {
   df_double f = df_floor(a);
   df_double d = df_fract(a);
-  bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
-  bool tie = d.hi == 0.5 && d.lo == 0.0;
-  if (above || (tie && a.hi >= 0.0)) {
-    df_double u = df_next_integer(f);
-    return u;
-  }
-  return f;
+  bool above = any(bvec2(d.hi > 0.5, all(bvec2(d.hi == 0.5, d.lo > 0.0))));
+  bool tie = all(bvec2(d.hi == 0.5, d.lo == 0.0));
+  bool up = any(bvec2(above, all(bvec2(tie, a.hi >= 0.0))));
+  df_double u = df_next_integer(f);
+  df_double r = df_select(up, u, f);
+  return r;
 }
 
 // df_round_even: nearest integer, halves to the even neighbour (roundEven). A result of zero
@@ -220,7 +234,7 @@ df_double df_round(df_double a) {
 // Algorithm: floor(x) plus 1 (df_next_integer) when fract(x) > 1/2, or = 1/2 and floor(x) is odd
 // Source: GLSL 4.60 (2019) section 8.3 (roundEven); JMP 2017, Definition 1.4
 // Bound: exact
-// Flops: 48
+// Flops: 56
 // Range: the parity of floor(x) = fh + fl is the parity of fh + fl taken word by word
 // (one of them is even: fl != 0 only when ulp(fh) >= 2).
 df_double df_round_even(df_double a) {
@@ -233,13 +247,12 @@ df_double df_round_even(df_double a) {
   precise float fl2 = (floor(l2));
   precise float pl = (l2 - fl2);
   precise float parity = (ph + pl);
-  bool above = d.hi > 0.5 || (d.hi == 0.5 && d.lo > 0.0);
-  bool tie = d.hi == 0.5 && d.lo == 0.0;
-  if (above || (tie && parity == 0.5)) {
-    df_double u = df_next_integer(f);
-    return u;
-  }
-  return f;
+  bool above = any(bvec2(d.hi > 0.5, all(bvec2(d.hi == 0.5, d.lo > 0.0))));
+  bool tie = all(bvec2(d.hi == 0.5, d.lo == 0.0));
+  bool up = any(bvec2(above, all(bvec2(tie, parity == 0.5))));
+  df_double u = df_next_integer(f);
+  df_double r = df_select(up, u, f);
+  return r;
 }
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
@@ -281,8 +294,10 @@ df_double df_two_prod(float a, float b) {
   precise float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  precise float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
-  precise float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  precise float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  precise float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  precise float as = (a * ka);
+  precise float bs = (b * kb);
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
   precise float hh = (sa.hi * sb.hi);
@@ -393,16 +408,19 @@ df_double df_mod(df_double a, df_double b) {
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1; GLSL 4.60 (2019) section 8.3 (modf); IEEE 754-2008 section 6.3
 // Bound: 3u^2
 // Flops: 25
+// The branches are selects around one df_sub: its operands are swapped and its result negated
+// for negative x.
 df_double df_modf_fraction(df_double a, df_double i) {
-  if (a.hi < 0.0) {
-    df_double d = df_sub(i, a);
-    df_double n = df_neg(d);
-    return n;
-  }
-  if (a.hi == 0.0) {
-    return df_double(a.hi, float(0.0));
-  }
-  df_double r = df_sub(a, i);
+  bool negative = a.hi < 0.0;
+  bool zero = a.hi == 0.0;
+  df_double x = df_select(negative, i, a);
+  df_double y = df_select(negative, a, i);
+  df_double d = df_sub(x, y);
+  df_double n = df_neg(d);
+  df_double m = df_select(negative, n, d);
+  precise float zh = (a.hi);
+  df_double z = df_double(zh, float(0.0));
+  df_double r = df_select(zero, z, m);
   return r;
 }
 
@@ -411,7 +429,7 @@ df_double df_modf_fraction(df_double a, df_double i) {
 // Algorithm: df_trunc, then df_modf_fraction (AccurateDWPlusDW)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 35
+// Flops: 41
 df_double df_modf(df_double a, out df_double i) {
   i = df_trunc(a);
   df_double r = df_modf_fraction(a, i);
@@ -424,7 +442,7 @@ df_double df_modf(df_double a, out df_double i) {
 // Bound: exact
 // Flops: 0 (3 comparisons)
 bool df_lt(df_double a, df_double b) {
-  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo < b.lo))));
 }
 
 // df_min: component-wise min(a, b) = b < a ? b : a (GLSL definition).
@@ -433,10 +451,9 @@ bool df_lt(df_double a, df_double b) {
 // Bound: exact
 // Flops: 0 (3 comparisons per component)
 df_double df_min(df_double a, df_double b) {
-  if (df_lt(b, a)) {
-    return b;
-  }
-  return a;
+  bool take = df_lt(b, a);
+  df_double r = df_select(take, b, a);
+  return r;
 }
 
 // df_max: component-wise max(a, b) = a < b ? b : a (GLSL definition).
@@ -445,10 +462,9 @@ df_double df_min(df_double a, df_double b) {
 // Bound: exact
 // Flops: 0 (3 comparisons per component)
 df_double df_max(df_double a, df_double b) {
-  if (df_lt(a, b)) {
-    return b;
-  }
-  return a;
+  bool take = df_lt(a, b);
+  df_double r = df_select(take, b, a);
+  return r;
 }
 
 // df_clamp: min(max(x, lo), hi).
@@ -480,10 +496,8 @@ df_double df_mix(df_double x, df_double y, df_double a) {
 // Bound: exact
 // Flops: 0
 df_double df_mix_bool(df_double x, df_double y, bool a) {
-  if (a) {
-    return y;
-  }
-  return x;
+  df_double r = df_select(a, y, x);
+  return r;
 }
 
 // df_step: 0.0 if x < edge, else 1.0.
@@ -492,10 +506,9 @@ df_double df_mix_bool(df_double x, df_double y, bool a) {
 // Bound: exact
 // Flops: 0 (3 comparisons)
 df_double df_step(df_double edge, df_double x) {
-  if (df_lt(x, edge)) {
-    return df_double(0.0, 0.0);
-  }
-  return df_double(1.0, 0.0);
+  bool below = df_lt(x, edge);
+  precise float h = (mix(1.0, 0.0, below));
+  return df_double(h, 0.0);
 }
 
 // df_smoothstep: t = clamp((x - e0) / (e1 - e0), 0, 1); t * t * (3 - 2t). t has relative error
@@ -582,22 +595,24 @@ df_double df_ldexp(df_double a, int e) {
 // Flops: 9 (plus 4 comparisons)
 df_double df_frexp(df_double a, out int e) {
   precise float ah = (abs(a.hi));
-  if (!(ah > 0.0 && ah <= 3.40282347e38)) {
-    e = ah == 0.0 ? 0 : 1025;
-    return df_double(a.hi, 0.0);
-  }
+  bool regular = all(bvec2(ah > 0.0, ah <= 3.40282347e38));
   bool subnormal = ah < 1.17549435e-38;
-  precise float scale = (subnormal ? 1.8446744073709552e19 : 1.0);
+  precise float scale = (mix(1.0, 1.8446744073709552e19, subnormal));
   precise float h = (a.hi * scale);
   int bits = floatBitsToInt(h);
   int k = ((bits >> 23) & 255) - (subnormal ? 190 : 126);
   int mantissa = bits & 8388607;
-  bool below = mantissa == 0 && ((a.hi > 0.0 && a.lo < 0.0) || (a.hi < 0.0 && a.lo > 0.0));
+  bool opposite = any(bvec2(all(bvec2(a.hi > 0.0, a.lo < 0.0)), all(bvec2(a.hi < 0.0, a.lo > 0.0))));
+  bool below = all(bvec2(mantissa == 0, opposite));
   int exponent = below ? k - 1 : k;
-  int undo = 0 - exponent;
-  e = exponent;
+  int special = ah == 0.0 ? 0 : 1025;
+  e = regular ? exponent : special;
+  int undo = regular ? 0 - exponent : 0;
   df_double m = df_ldexp(a, undo);
-  return m;
+  precise float sh = (a.hi);
+  df_double x = df_double(sh, 0.0);
+  df_double r = df_select(regular, m, x);
+  return r;
 }
 
 // df_abs: |a|. Both words are multiplied by sign(hi) (exactly -1, 0 or +1).
@@ -671,10 +686,10 @@ vec2 df_norm_scale(vec3 h) {
   precise vec3 ah = (abs(h));
   bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
   bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
-  precise float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
-  precise float s = (small ? 1.237940039285380274899124224e27 : down);
-  precise float up = (big ? 1.237940039285380274899124224e27 : 1.0);
-  precise float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  precise float down = (mix(1.0, 8.0779356694631608874161005085933746e-28, big));
+  precise float s = (mix(down, 1.237940039285380274899124224e27, small));
+  precise float up = (mix(1.0, 1.237940039285380274899124224e27, big));
+  precise float back = (mix(up, 8.0779356694631608874161005085933746e-28, small));
   return vec2(s, back);
 }
 
@@ -955,6 +970,23 @@ df_dvec3 df_normalize(df_dvec3 a) {
   return r;
 }
 
+// df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
+// ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
+// early return or a short-circuit inside a rule that is inlined into a loop body multiplies the
+// control flow the browser's shader compilers have to handle (docs/performance.md, "Compile time in
+// the browser").
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBType)
+// Bound: exact
+// Flops: 0
+// (width 3: the width-1 df_select applied to each component)
+df_dvec3 df_select(bvec3 c, df_dvec3 a, df_dvec3 b) {
+  df_double r0 = df_select(c.x, df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
+  df_double r1 = df_select(c.y, df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
+  df_double r2 = df_select(c.z, df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
 // df_faceforward: dot(nref, i) < 0 ? n : -n. The selection is exact; the sign of the dot
 // product carries df_dot's error (wrong only where |dot| is below that bound).
 // Algorithm: df_dot, then selection
@@ -963,11 +995,10 @@ df_dvec3 df_normalize(df_dvec3 a) {
 // Flops: 181 (W = 4)
 df_dvec3 df_faceforward(df_dvec3 n, df_dvec3 i, df_dvec3 nref) {
   df_double d = df_dot(nref, i);
-  if (d.hi < 0.0) {
-    return n;
-  }
+  bvec3 facing = bvec3(d.hi < 0.0);
   df_dvec3 m = df_neg(n);
-  return m;
+  df_dvec3 r = df_select(facing, n, m);
+  return r;
 }
 
 // df_reflect: i - 2 dot(n, i) n. With S = sum |n_j i_j|: the dot has 13u^2 S, doubling is exact,
@@ -999,15 +1030,14 @@ df_dvec3 df_refract(df_dvec3 i, df_dvec3 n, df_double eta) {
   df_double e2 = df_mul(eta, eta);
   df_double ec = df_mul(e2, c);
   df_double k = df_sub(one, ec);
-  if (k.hi < 0.0) {
-    return df_dvec3(vec3(0.0), vec3(0.0));
-  }
+  bool total = k.hi < 0.0;
   df_double s = df_sqrt(k);
   df_double ed = df_mul(eta, d);
   df_double f = df_add(ed, s);
   df_dvec3 a = df_mul(df_dvec3(vec3(eta.hi), vec3(eta.lo)), i);
   df_dvec3 b = df_mul(df_dvec3(vec3(f.hi), vec3(f.lo)), n);
-  df_dvec3 r = df_sub(a, b);
+  df_dvec3 t = df_sub(a, b);
+  df_dvec3 r = df_select(bvec3(total), df_dvec3(vec3(0.0), vec3(0.0)), t);
   return r;
 }
 
@@ -1044,11 +1074,13 @@ df_dvec3 df_mod(df_dvec3 a, df_dvec3 b) {
   return r;
 }
 
-// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise.
-// Algorithm: df_ceil or df_floor by the sign of hi
+// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise, both computed
+// and one selected. (Selecting the operand instead, floor(x < 0 ? -x : x), is one floor less, but
+// Mesa's GLES compiler folds that select into abs(x), which turns trunc(-0) into +0.)
+// Algorithm: df_ceil and df_floor, selected by the sign of hi
 // Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
 // Bound: exact
-// Flops: 10
+// Flops: 16
 // (width 3: the width-1 df_trunc applied to each component)
 df_dvec3 df_trunc(df_dvec3 a) {
   df_double r0 = df_trunc(df_double(a.hi.x, a.lo.x));
@@ -1064,6 +1096,8 @@ df_dvec3 df_trunc(df_dvec3 a) {
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1; GLSL 4.60 (2019) section 8.3 (modf); IEEE 754-2008 section 6.3
 // Bound: 3u^2
 // Flops: 25
+// The branches are selects around one df_sub: its operands are swapped and its result negated
+// for negative x.
 // (width 3: the width-1 df_modf_fraction applied to each component)
 df_dvec3 df_modf_fraction(df_dvec3 a, df_dvec3 i) {
   df_double r0 = df_modf_fraction(df_double(a.hi.x, a.lo.x), df_double(i.hi.x, i.lo.x));
@@ -1077,7 +1111,7 @@ df_dvec3 df_modf_fraction(df_dvec3 a, df_dvec3 i) {
 // Algorithm: df_trunc, then df_modf_fraction (AccurateDWPlusDW)
 // Source: GLSL 4.60 (2019) section 8.3 (modf); Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
 // Bound: 3u^2
-// Flops: 35
+// Flops: 41
 df_dvec3 df_modf(df_dvec3 a, out df_dvec3 i) {
   i = df_trunc(a);
   df_dvec3 r = df_modf_fraction(a, i);
@@ -1184,7 +1218,7 @@ df_dvec3 df_abs(df_dvec3 a) {
 // Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4); df_finish for integers
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 21
+// Flops: 29
 // (width 3: the width-1 df_fract applied to each component)
 df_dvec3 df_fract(df_dvec3 a) {
   df_double r0 = df_fract(df_double(a.hi.x, a.lo.x));
@@ -1231,7 +1265,7 @@ bvec3 df_less_than(df_dvec3 a, df_dvec3 b) {
 // Bound: exact
 // Flops: 0 (3 comparisons)
 bool df_le(df_double a, df_double b) {
-  return a.hi < b.hi || (a.hi == b.hi && a.lo <= b.lo);
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo <= b.lo))));
 }
 
 // df_less_than_equal: lessThanEqual(a, b) per component.
@@ -1262,7 +1296,7 @@ bvec3 df_less_than_equal(df_dvec3 a, df_dvec3 b) {
 // Bound: exact
 // Flops: 0 (3 comparisons)
 bool df_gt(df_double a, df_double b) {
-  return a.hi > b.hi || (a.hi == b.hi && a.lo > b.lo);
+  return any(bvec2(a.hi > b.hi, all(bvec2(a.hi == b.hi, a.lo > b.lo))));
 }
 
 // df_greater_than: greaterThan(a, b) per component.
@@ -1293,7 +1327,7 @@ bvec3 df_greater_than(df_dvec3 a, df_dvec3 b) {
 // Bound: exact
 // Flops: 0 (3 comparisons)
 bool df_ge(df_double a, df_double b) {
-  return a.hi > b.hi || (a.hi == b.hi && a.lo >= b.lo);
+  return any(bvec2(a.hi > b.hi, all(bvec2(a.hi == b.hi, a.lo >= b.lo))));
 }
 
 // df_greater_than_equal: greaterThanEqual(a, b) per component.
@@ -1324,7 +1358,7 @@ bvec3 df_greater_than_equal(df_dvec3 a, df_dvec3 b) {
 // Bound: exact
 // Flops: 0 (2 comparisons per component)
 bool df_equal_components(df_double a, df_double b) {
-  return a.hi == b.hi && a.lo == b.lo;
+  return all(bvec2(a.hi == b.hi, a.lo == b.lo));
 }
 
 // df_equal_components: equal(a, b) per component (word-wise).
@@ -1346,7 +1380,7 @@ bvec3 df_equal_components(df_dvec3 a, df_dvec3 b) {
 // Bound: exact
 // Flops: 0 (2 comparisons per component)
 bool df_not_equal_components(df_double a, df_double b) {
-  return a.hi != b.hi || a.lo != b.lo;
+  return any(bvec2(a.hi != b.hi, a.lo != b.lo));
 }
 
 // df_not_equal_components: notEqual(a, b) per component (word-wise).
@@ -1407,20 +1441,15 @@ bvec3 df_isinf(df_dvec3 a) {
 // Flops: 8
 uvec2 df_unpack_double2x32(df_double a) {
   uint sign_bit = floatBitsToUint(a.hi) & 2147483648u;
-  if (a.hi == 0.0) {
-    return uvec2(0u, sign_bit);
-  }
-  if (isnan(a.hi)) {
-    return uvec2(0u, 2146959360u);
-  }
+  bool zero = a.hi == 0.0;
+  bool nan = isnan(a.hi);
+  bool special = any(bvec3(zero, nan, isinf(a.hi)));
   uint inf_bits = sign_bit | 2146435072u;
-  if (isinf(a.hi)) {
-    return uvec2(0u, inf_bits);
-  }
+  uint edge_high = zero ? sign_bit : (nan ? 2146959360u : inf_bits);
   df_double m = df_abs(a);
   int bits = floatBitsToInt(m.hi);
   int e = ((bits >> 23) & 255) - 127;
-  bool below = (bits & 8388607) == 0 && m.lo < 0.0;
+  bool below = all(bvec2((bits & 8388607) == 0, m.lo < 0.0));
   int k = below ? e - 1 : e;
   int nk = 0 - k;
   df_double x = df_ldexp(m, nk);
@@ -1442,7 +1471,9 @@ uvec2 df_unpack_double2x32(df_double a) {
   uint significand = overflow ? 1048576u : high_sig;
   int biased = (overflow ? k + 1 : k) + 1023;
   uint high_word = sign_bit | (uint(biased) << 20u) | (significand & 1048575u);
-  return uvec2(low_word, high_word);
+  uint lw = special ? 0u : low_word;
+  uint hw = special ? edge_high : high_word;
+  return uvec2(lw, hw);
 }
 
 // df_pack_double2x32: the double whose IEEE binary64 bits are (v.x = low word, v.y = high word),
@@ -1460,17 +1491,11 @@ df_double df_pack_double2x32(uvec2 v) {
   uint mid = v.x >> 8u;
   uint low = v.x & 255u;
   uint sign_bit = v.y & 2147483648u;
-  if (exponent == 0u) {
-    uint zero_bits = sign_bit;
-    precise float z = (uintBitsToFloat(zero_bits));
-    return df_double(z, 0.0);
-  }
-  if (exponent == 2047u) {
-    bool nan = (v.y & 1048575u) != 0u || v.x != 0u;
-    uint special = nan ? 2143289344u : (sign_bit | 2139095040u);
-    precise float s = (uintBitsToFloat(special));
-    return df_double(s, 0.0);
-  }
+  bool zero = exponent == 0u;
+  bool special = exponent == 2047u;
+  bool nan = any(bvec2((v.y & 1048575u) != 0u, v.x != 0u));
+  uint edge_bits = zero ? sign_bit : (nan ? 2143289344u : (sign_bit | 2139095040u));
+  precise float eh = (uintBitsToFloat(edge_bits));
   precise float t = (float(top));
   precise float tn = (t * 9.5367431640625e-07);
   precise float m = (float(mid));
@@ -1481,11 +1506,11 @@ df_double df_pack_double2x32(uvec2 v) {
   df_double r = df_add_f(s, ln);
   int scale = int(exponent) - 1023;
   df_double x = df_ldexp(r, scale);
-  if (sign_bit != 0u) {
-    df_double n = df_neg(x);
-    return n;
-  }
-  return x;
+  df_double n = df_neg(x);
+  df_double y = df_select(sign_bit != 0u, n, x);
+  df_double edge = df_double(eh, 0.0);
+  df_double z = df_select(any(bvec2(zero, special)), edge, y);
+  return z;
 }
 
 // df_add_f: a + b with b a plain float (b need not be a double-word).

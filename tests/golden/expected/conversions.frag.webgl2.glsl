@@ -11,7 +11,7 @@ struct df_dvec4 {
   vec4 hi;
   vec4 lo;
 };
-// doublet float-float runtime: 35 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 36 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -91,10 +91,10 @@ df_double df_fast_two_sum(float a, float b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.4028234663852886e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.4028234663852886e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_add: a + b.
@@ -359,10 +359,10 @@ vec2 df_norm_scale(vec3 h) {
   vec3 ah = (abs(h));
   bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
   bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
-  float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
-  float s = (small ? 1.237940039285380274899124224e27 : down);
-  float up = (big ? 1.237940039285380274899124224e27 : 1.0);
-  float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  float down = (mix(1.0, 8.0779356694631608874161005085933746e-28, big));
+  float s = (mix(down, 1.237940039285380274899124224e27, small));
+  float up = (mix(1.0, 1.237940039285380274899124224e27, big));
+  float back = (mix(up, 8.0779356694631608874161005085933746e-28, small));
   return vec2(s, back);
 }
 
@@ -429,8 +429,10 @@ df_double df_two_prod(float a, float b) {
   float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
-  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  float as = (a * ka);
+  float bs = (b * kb);
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
   float hh = (sa.hi * sb.hi);
@@ -596,7 +598,22 @@ df_double df_length(df_dvec3 a) {
 // Bound: exact
 // Flops: 0 (3 comparisons)
 bool df_lt(df_double a, df_double b) {
-  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo < b.lo))));
+}
+
+// df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
+// ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
+// early return or a short-circuit inside a rule that is inlined into a loop body multiplies the
+// control flow the browser's shader compilers have to handle (docs/performance.md, "Compile time in
+// the browser").
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBType)
+// Bound: exact
+// Flops: 0
+df_double df_select(bool c, df_double a, df_double b) {
+  float h = (mix(b.hi, a.hi, c));
+  float l = (mix(b.lo, a.lo, c));
+  return df_double(h, l);
 }
 
 // df_min: component-wise min(a, b) = b < a ? b : a (GLSL definition).
@@ -605,10 +622,9 @@ bool df_lt(df_double a, df_double b) {
 // Bound: exact
 // Flops: 0 (3 comparisons per component)
 df_double df_min(df_double a, df_double b) {
-  if (df_lt(b, a)) {
-    return b;
-  }
-  return a;
+  bool take = df_lt(b, a);
+  df_double r = df_select(take, b, a);
+  return r;
 }
 
 // df_max: component-wise max(a, b) = a < b ? b : a (GLSL definition).
@@ -617,10 +633,9 @@ df_double df_min(df_double a, df_double b) {
 // Bound: exact
 // Flops: 0 (3 comparisons per component)
 df_double df_max(df_double a, df_double b) {
-  if (df_lt(a, b)) {
-    return b;
-  }
-  return a;
+  bool take = df_lt(a, b);
+  df_double r = df_select(take, b, a);
+  return r;
 }
 
 // df_max: component-wise max(a, b) = a < b ? b : a (GLSL definition).

@@ -12,7 +12,7 @@ struct df_dmat4 {
   mat4 hi;
   mat4 lo;
 };
-// doublet float-float runtime: 28 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 29 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
@@ -69,10 +69,10 @@ df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
@@ -162,8 +162,10 @@ df_double df_two_prod(float a, float b) {
   float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
-  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  float as = (a * ka);
+  float bs = (b * kb);
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
   float hh = (sa.hi * sb.hi);
@@ -336,10 +338,10 @@ vec2 df_norm_scale(vec3 h) {
   vec3 ah = (abs(h));
   bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
   bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
-  float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
-  float s = (small ? 1.237940039285380274899124224e27 : down);
-  float up = (big ? 1.237940039285380274899124224e27 : 1.0);
-  float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  float down = (mix(1.0, 8.0779356694631608874161005085933746e-28, big));
+  float s = (mix(down, 1.237940039285380274899124224e27, small));
+  float up = (mix(1.0, 1.237940039285380274899124224e27, big));
+  float back = (mix(up, 8.0779356694631608874161005085933746e-28, small));
   return vec2(s, back);
 }
 
@@ -497,6 +499,21 @@ df_double df_add_f(df_double a, float b) {
   return r;
 }
 
+// df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
+// ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
+// early return or a short-circuit inside a rule that is inlined into a loop body multiplies the
+// control flow the browser's shader compilers have to handle (docs/performance.md, "Compile time in
+// the browser").
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBType)
+// Bound: exact
+// Flops: 0
+df_double df_select(bool c, df_double a, df_double b) {
+  float h = (mix(b.hi, a.hi, c));
+  float l = (mix(b.lo, a.lo, c));
+  return df_double(h, l);
+}
+
 // df_fract: x - floor(x). hi an integer: lo - floor(lo), exact by TwoSum. Otherwise
 // TwoSum(hi, -floor(hi)) is exact and lo is added with DWPlusFP (exact when hi >= 0 or
 // |hi| >= 1, where hi - floor(hi) is a float). Special values: for +-Inf, hi is an "integer"
@@ -505,21 +522,20 @@ df_double df_add_f(df_double a, float b) {
 // Algorithm: TwoSum of the fractional words, then DWPlusFP (JMP Algorithm 4); df_finish for integers
 // Source: Knuth TAOCP vol. 2, 1998, 4.2.2 Theorem B; Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
 // Bound: 2u^2
-// Flops: 21
+// Flops: 29
 df_double df_fract(df_double a) {
   float f = ((floor(a.hi)) - df_guard);
-  if (f == a.hi) {
-    float g = ((floor(a.lo)) - df_guard);
-    float ng = ((0.0 - g) - df_guard);
-    df_double r = df_two_sum(a.lo, ng);
-    float d = ((a.hi - f) - df_guard);
-    df_double q = df_finish(r, d);
-    return q;
-  }
+  bool integer = f == a.hi;
+  float g = ((floor(a.lo)) - df_guard);
+  float ng = ((0.0 - g) - df_guard);
+  df_double r = df_two_sum(a.lo, ng);
+  float d = ((a.hi - f) - df_guard);
+  df_double q = df_finish(r, d);
   float nf = ((0.0 - f) - df_guard);
   df_double t = df_two_sum(a.hi, nf);
   df_double s = df_add_f(t, a.lo);
-  return s;
+  df_double z = df_select(integer, q, s);
+  return z;
 }
 
 // df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a

@@ -13,7 +13,7 @@ struct df_dvec2 { vec2 hi; vec2 lo; };
 // Bound: exact
 // Flops: 0 (3 comparisons)
 bool df_lt(df_double a, df_double b) {
-  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo < b.lo))));
 }
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
@@ -56,10 +56,10 @@ df_double df_fast_two_sum(float a, float b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   precise float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  precise float h = (mix(f, z.hi, regular));
+  precise float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_add: a + b.

@@ -60,7 +60,7 @@ float df_int_scale(int n, int k) {
   float f = (float(n));
   float f1 = (f * p1);
   float f2 = (f1 * p2);
-  float r = (k < -252 ? 0.0 : f2);
+  float r = (mix(f2, 0.0, k < -252));
   return r;
 }
 
@@ -84,21 +84,16 @@ float df_int_sum_error(float a, float b, float s) {
   int db = eb - emin;
   int ds = es - emin;
   bool special = ((floatBitsToUint(s) >> 23u) & 255u) == 255u;
-  if (special || ds < 0) {
-    return 0.0;
-  }
-  if (da > 25) {
-    return b;
-  }
-  if (db > 25) {
-    return a;
-  }
-  uint ta = df_int_signed(a) << uint(da);
-  uint tb = df_int_signed(b) << uint(db);
-  uint ts = df_int_signed(s) << uint(ds);
+  bool exact = any(bvec2(special, ds < 0));
+  uint ta = df_int_signed(a) << uint(clamp(da, 0, 31));
+  uint tb = df_int_signed(b) << uint(clamp(db, 0, 31));
+  uint ts = df_int_signed(s) << uint(clamp(ds, 0, 31));
   int n = int(ta + tb - ts);
   float e = (df_int_scale(n, emin));
-  return e;
+  float small_b = (mix(e, a, db > 25));
+  float small_a = (mix(small_b, b, da > 25));
+  float r = (mix(small_a, 0.0, exact));
+  return r;
 }
 
 // df_two_sum (df64-int): s + e == a + b exactly, s = RN(a + b); e by integers.
@@ -134,10 +129,10 @@ df_double df_fast_two_sum(float a, float b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_add: a + b.
@@ -197,21 +192,17 @@ df_double df_sub(df_double a, df_double b) {
 float df_int_prod_error(float a, float b, float p) {
   uint bp = floatBitsToUint(p);
   uint field = (bp >> 23u) & 255u;
-  if (field == 0u || field == 255u) {
-    return 0.0;
-  }
   int ea = df_int_exponent(a);
   int eb = df_int_exponent(b);
   int k = df_int_exponent(p) - ea - eb;
-  if (k < 0 || k > 31) {
-    return 0.0;
-  }
+  bool none = any(bvec4(field == 0u, field == 255u, k < 0, k > 31));
   uint low = df_int_magnitude(a) * df_int_magnitude(b);
-  uint shifted = df_int_magnitude(p) << uint(k);
+  uint shifted = df_int_magnitude(p) << uint(clamp(k, 0, 31));
   int n = int(low - shifted);
   int sn = (bp >> 31u) != 0u ? -n : n;
   float e = (df_int_scale(sn, ea + eb));
-  return e;
+  float r = (mix(e, 0.0, none));
+  return r;
 }
 
 // df_two_prod (df64-int): p + e == a * b exactly, p = RN(a * b); e by integers (no split,

@@ -62,10 +62,10 @@ df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.4028234663852886e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.4028234663852886e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is

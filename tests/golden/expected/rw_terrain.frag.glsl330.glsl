@@ -5,7 +5,7 @@ precision highp int;
 uniform float sea_level_hi;
 uniform float sea_level_lo;
 
-// doublet float-float runtime: 24 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 25 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -16,7 +16,22 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 // Bound: exact
 // Flops: 0 (3 comparisons)
 bool df_lt(df_double a, df_double b) {
-  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo < b.lo))));
+}
+
+// df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
+// ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
+// early return or a short-circuit inside a rule that is inlined into a loop body multiplies the
+// control flow the browser's shader compilers have to handle (docs/performance.md, "Compile time in
+// the browser").
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBType)
+// Bound: exact
+// Flops: 0
+df_double df_select(bool c, df_double a, df_double b) {
+  float h = (mix(b.hi, a.hi, c));
+  float l = (mix(b.lo, a.lo, c));
+  return df_double(h, l);
 }
 
 // df_max: component-wise max(a, b) = a < b ? b : a (GLSL definition).
@@ -25,10 +40,9 @@ bool df_lt(df_double a, df_double b) {
 // Bound: exact
 // Flops: 0 (3 comparisons per component)
 df_double df_max(df_double a, df_double b) {
-  if (df_lt(a, b)) {
-    return b;
-  }
-  return a;
+  bool take = df_lt(a, b);
+  df_double r = df_select(take, b, a);
+  return r;
 }
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
@@ -70,8 +84,10 @@ df_double df_two_prod(float a, float b) {
   float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
-  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  float as = (a * ka);
+  float bs = (b * kb);
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
   float hh = (sa.hi * sb.hi);
@@ -109,10 +125,10 @@ df_double df_fast_two_sum(float a, float b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_mul_f: a * b with b a plain float.
@@ -171,10 +187,10 @@ vec2 df_norm_scale(vec3 h) {
   vec3 ah = (abs(h));
   bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
   bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
-  float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
-  float s = (small ? 1.237940039285380274899124224e27 : down);
-  float up = (big ? 1.237940039285380274899124224e27 : 1.0);
-  float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  float down = (mix(1.0, 8.0779356694631608874161005085933746e-28, big));
+  float s = (mix(down, 1.237940039285380274899124224e27, small));
+  float up = (mix(1.0, 1.237940039285380274899124224e27, big));
+  float back = (mix(up, 8.0779356694631608874161005085933746e-28, small));
   return vec2(s, back);
 }
 

@@ -57,8 +57,10 @@ df_double df_two_prod(float a, float b) {
   float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
-  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  float as = (a * ka);
+  float bs = (b * kb);
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
   float hh = (sa.hi * sb.hi);
@@ -96,10 +98,10 @@ df_double df_fast_two_sum(float a, float b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_mul_f: a * b with b a plain float.
@@ -432,10 +434,10 @@ vec2 df_norm_scale(vec3 h) {
   vec3 ah = (abs(h));
   bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
   bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
-  float down = (big ? 8.0779356694631608874161005085933746e-28 : 1.0);
-  float s = (small ? 1.237940039285380274899124224e27 : down);
-  float up = (big ? 1.237940039285380274899124224e27 : 1.0);
-  float back = (small ? 8.0779356694631608874161005085933746e-28 : up);
+  float down = (mix(1.0, 8.0779356694631608874161005085933746e-28, big));
+  float s = (mix(down, 1.237940039285380274899124224e27, small));
+  float up = (mix(1.0, 1.237940039285380274899124224e27, big));
+  float back = (mix(up, 8.0779356694631608874161005085933746e-28, small));
   return vec2(s, back);
 }
 

@@ -15,10 +15,10 @@ struct df_double { float hi; float lo; };
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   precise float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  precise float h = (mix(f, z.hi, regular));
+  precise float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a

@@ -12,11 +12,26 @@ uniform float eccentricity_hi;
 uniform float eccentricity_lo;
 uniform mat4 view_projection;
 
-// doublet float-float runtime: 59 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 60 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
+
+// df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
+// ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
+// early return or a short-circuit inside a rule that is inlined into a loop body multiplies the
+// control flow the browser's shader compilers have to handle (docs/performance.md, "Compile time in
+// the browser").
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBType)
+// Bound: exact
+// Flops: 0
+df_double df_select(bool c, df_double a, df_double b) {
+  float h = (mix(b.hi, a.hi, c));
+  float l = (mix(b.lo, a.lo, c));
+  return df_double(h, l);
+}
 
 // df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
 // of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
@@ -57,8 +72,10 @@ df_double df_two_prod(float a, float b) {
   float ab = (abs(b));
   bool big_a = aa > 1.0e34;
   bool big_b = ab > 1.0e34;
-  float as = (a * (big_a ? 1.220703125e-4 : (big_b ? 8192.0 : 1.0)));
-  float bs = (b * (big_a ? 8192.0 : (big_b ? 1.220703125e-4 : 1.0)));
+  float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  float as = (a * ka);
+  float bs = (b * kb);
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
   float hh = (sa.hi * sb.hi);
@@ -96,10 +113,10 @@ df_double df_fast_two_sum(float a, float b) {
 // Flops: 1 (plus 2 comparisons)
 df_double df_finish(df_double z, float f) {
   float az = (abs(z.hi));
-  if (az > 0.0 && az <= 3.40282347e38) {
-    return z;
-  }
-  return df_double(f, float(0.0));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
 }
 
 // df_mul: a * b.
@@ -291,11 +308,9 @@ df_double df_sin_quadrant(df_double r, int q) {
   } else {
     v = df_cos_kernel(w);
   }
-  if ((q & 2) != 0) {
-    df_double n = df_neg(v);
-    return n;
-  }
-  return v;
+  df_double n = df_neg(v);
+  df_double s = df_select((q & 2) != 0, n, v);
+  return s;
 }
 
 // df_sin: sin(x), |x| < 2^40 (beyond: NaN, as for +-Inf and NaN). sin(+-0) = +-0. Near a zero
@@ -308,17 +323,15 @@ df_double df_sin_quadrant(df_double r, int q) {
 // Range: |x| < 2^40.
 df_double df_sin(df_double a) {
   float ax = (abs(a.hi));
-  if (!(ax < 1.09951163e12)) {
-    float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
-    return df_double(nan, float(0.0));
-  }
-  if (ax == 0.0) {
-    return a;
-  }
+  bool finite = ax < 1.09951163e12;
+  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
+  df_double x = df_select(finite, a, df_double(float(0.0), float(0.0)));
   int q;
-  df_double r = df_trig_reduce(a, q);
+  df_double r = df_trig_reduce(x, q);
   df_double s = df_sin_quadrant(r, q);
-  return s;
+  df_double z = df_select(ax == 0.0, a, s);
+  df_double y = df_select(finite, z, df_double(nan, float(0.0)));
+  return y;
 }
 
 // df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
@@ -416,15 +429,15 @@ df_double df_div(df_double a, df_double b) {
 // Range: |x| < 2^40.
 df_double df_cos(df_double a) {
   float ax = (abs(a.hi));
-  if (!(ax < 1.09951163e12)) {
-    float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
-    return df_double(nan, float(0.0));
-  }
+  bool finite = ax < 1.09951163e12;
+  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
+  df_double x = df_select(finite, a, df_double(float(0.0), float(0.0)));
   int q;
-  df_double r = df_trig_reduce(a, q);
+  df_double r = df_trig_reduce(x, q);
   int q1 = (q + 1) & 3;
   df_double c = df_sin_quadrant(r, q1);
-  return c;
+  df_double y = df_select(finite, c, df_double(nan, float(0.0)));
+  return y;
 }
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
@@ -534,7 +547,7 @@ df_double df_abs(df_double a) {
 // Bound: exact
 // Flops: 0 (3 comparisons)
 bool df_lt(df_double a, df_double b) {
-  return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo);
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo < b.lo))));
 }
 
 // df_atan_halve: t / (1 + sqrt(1 + t^2)) = tan(atan(t) / 2) for t >= 0.
@@ -587,15 +600,14 @@ df_double df_atan_kernel(df_double t) {
 // Bound: 70u^2
 // Flops: 614 (on the path taken)
 df_double df_atan2_unit(df_double ay, df_double ax) {
-  if (df_lt(ax, ay)) {
-    df_double t = df_div(ax, ay);
-    df_double a = df_atan_kernel(t);
-    df_double r = df_sub(df_double(float(1.57079637), float(-4.37113883e-08)), a);
-    return r;
-  }
-  df_double u = df_div(ay, ax);
-  df_double b = df_atan_kernel(u);
-  return b;
+  bool steep = df_lt(ax, ay);
+  df_double num = df_select(steep, ax, ay);
+  df_double den = df_select(steep, ay, ax);
+  df_double t = df_div(num, den);
+  df_double a = df_atan_kernel(t);
+  df_double r = df_sub(df_double(float(1.57079637), float(-4.37113883e-08)), a);
+  df_double y = df_select(steep, r, a);
+  return y;
 }
 
 // df_atan2: atan(y, x), the angle of (x, y) in [-pi, pi]: df_atan2_unit on |y|, |x|, then
@@ -607,22 +619,18 @@ df_double df_atan2_unit(df_double ay, df_double ax) {
 // Bound: 70u^2
 // Flops: 646 (on the path taken)
 df_double df_atan2(df_double y, df_double x) {
-  if (x.hi == 0.0 && y.hi == 0.0) {
-    return y;
-  }
+  bool origin = all(bvec2(x.hi == 0.0, y.hi == 0.0));
   df_double ay = df_abs(y);
   df_double ax = df_abs(x);
   df_double a = df_atan2_unit(ay, ax);
-  df_double b = a;
-  if (x.hi < 0.0) {
-    b = df_sub(df_double(float(3.14159274), float(-8.74227766e-08)), a);
-  }
-  float ys = (y.hi == 0.0 ? 1.0 / y.hi : y.hi);
-  if (ys < 0.0) {
-    df_double n = df_neg(b);
-    return n;
-  }
-  return b;
+  df_double c = df_sub(df_double(float(3.14159274), float(-8.74227766e-08)), a);
+  df_double b = df_select(x.hi < 0.0, c, a);
+  float iy = (1.0 / y.hi);
+  float ys = (mix(y.hi, iy, y.hi == 0.0));
+  df_double n = df_neg(b);
+  df_double s = df_select(ys < 0.0, n, b);
+  df_double r = df_select(origin, y, s);
+  return r;
 }
 
 // df_expm1_kernel: exp(r) - 1 for |r| <= 0.36 (the range left by the ln 2 reduction).
@@ -714,16 +722,15 @@ df_double df_ldexp(df_double a, int e) {
 // Range: normal results for -70.7 <= x <= 88.72; float-float overflows above ln(FLT_MAX).
 df_double df_exp(df_double a) {
   float na = (-a.hi);
-  if (na > 104.0) {
-    return df_double(float(0.0), float(0.0));
-  }
-  if (!(a.hi <= 89.0)) {
-    float big = (a.hi * 1.0e38);
-    return df_double(big, float(0.0));
-  }
-  float k = ((floor(a.hi * 1.44269504 + 0.5)) - df_guard);
+  bool zero = na > 104.0;
+  bool over = !(a.hi <= 89.0);
+  bool regular = !any(bvec2(zero, over));
+  float big = (a.hi * 1.0e38);
+  float eh = (mix(big, 0.0, zero));
+  df_double x = df_select(regular, a, df_double(float(0.0), float(0.0)));
+  float k = ((floor(x.hi * 1.44269504 + 0.5)) - df_guard);
   float nk1 = ((k * -0.693145752) - df_guard);
-  df_double r1 = df_add_f(a, nk1);
+  df_double r1 = df_add_f(x, nk1);
   df_double k2 = df_two_prod(k, 1.42860677e-06);
   df_double r2 = df_sub(r1, k2);
   float nk3 = (k * -5.49792315e-14);
@@ -732,7 +739,8 @@ df_double df_exp(df_double a) {
   df_double p = df_add_f(e, float(1.0));
   int ki = int(k);
   df_double s = df_ldexp(p, ki);
-  return s;
+  df_double y = df_select(regular, s, df_double(eh, float(0.0)));
+  return y;
 }
 
 // df_frexp: x = m * 2^e with 0.5 <= |m| < 1. The exponent is hi's; when hi = +-2^k and lo has
@@ -745,22 +753,24 @@ df_double df_exp(df_double a) {
 // Flops: 9 (plus 4 comparisons)
 df_double df_frexp(df_double a, out int e) {
   float ah = (abs(a.hi));
-  if (!(ah > 0.0 && ah <= 3.40282347e38)) {
-    e = ah == 0.0 ? 0 : 1025;
-    return df_double(a.hi, 0.0);
-  }
+  bool regular = all(bvec2(ah > 0.0, ah <= 3.40282347e38));
   bool subnormal = ah < 1.17549435e-38;
-  float scale = (subnormal ? 1.8446744073709552e19 : 1.0);
+  float scale = (mix(1.0, 1.8446744073709552e19, subnormal));
   float h = (a.hi * scale);
   int bits = floatBitsToInt(h);
   int k = ((bits >> 23) & 255) - (subnormal ? 190 : 126);
   int mantissa = bits & 8388607;
-  bool below = mantissa == 0 && ((a.hi > 0.0 && a.lo < 0.0) || (a.hi < 0.0 && a.lo > 0.0));
+  bool opposite = any(bvec2(all(bvec2(a.hi > 0.0, a.lo < 0.0)), all(bvec2(a.hi < 0.0, a.lo > 0.0))));
+  bool below = all(bvec2(mantissa == 0, opposite));
   int exponent = below ? k - 1 : k;
-  int undo = 0 - exponent;
-  e = exponent;
+  int special = ah == 0.0 ? 0 : 1025;
+  e = regular ? exponent : special;
+  int undo = regular ? 0 - exponent : 0;
   df_double m = df_ldexp(a, undo);
-  return m;
+  float sh = (a.hi);
+  df_double x = df_double(sh, 0.0);
+  df_double r = df_select(regular, m, x);
+  return r;
 }
 
 // df_log_reduce: x = m * 2^e with m in [sqrt(1/2), sqrt(2)) (df_frexp, then m doubled and e
@@ -772,15 +782,14 @@ df_double df_frexp(df_double a, out int e) {
 df_double df_log_reduce(df_double a, out int e) {
   int e0;
   df_double m0 = df_frexp(a, e0);
-  if (m0.hi < 0.707106781) {
-    float h = (m0.hi * 2.0);
-    float l = (m0.lo * 2.0);
-    int em = e0 - 1;
-    e = em;
-    return df_double(h, l);
-  }
-  e = e0;
-  return m0;
+  bool low = m0.hi < 0.707106781;
+  float h = (m0.hi * 2.0);
+  float l = (m0.lo * 2.0);
+  int em = e0 - 1;
+  e = low ? em : e0;
+  df_double d = df_double(h, l);
+  df_double m = df_select(low, d, m0);
+  return m;
 }
 
 // df_log_kernel: log(m) for 0.70 <= m <= 1.42 as 2 atanh(s), s = (m - 1) / (m + 1), |s| <= 0.172:
@@ -821,17 +830,20 @@ df_double df_log_kernel(df_double m) {
 // Flops: 435
 // Range: every finite x > 0 (subnormal hi included: df_frexp scales it).
 df_double df_log(df_double a) {
-  if (!(a.hi > 0.0 && a.hi <= 3.40282347e38)) {
-    float special = (a.hi == 0.0 ? -1.0 / abs(a.hi) : (a.hi > 0.0 ? a.hi : sqrt(a.hi)));
-    return df_double(special, float(0.0));
-  }
+  bool regular = all(bvec2(a.hi > 0.0, a.hi <= 3.40282347e38));
+  float pole = (-1.0 / abs(a.hi));
+  float root = (sqrt(a.hi));
+  float beyond = (mix(root, a.hi, a.hi > 0.0));
+  float special = (mix(beyond, pole, a.hi == 0.0));
+  df_double x = df_select(regular, a, df_double(float(1.0), float(0.0)));
   int e;
-  df_double m = df_log_reduce(a, e);
+  df_double m = df_log_reduce(x, e);
   df_double l = df_log_kernel(m);
   float fe = (float(e));
   df_double el = df_mul_f(df_double(float(0.693147182), float(-1.90465421e-09)), fe);
   df_double r = df_add(el, l);
-  return r;
+  df_double y = df_select(regular, r, df_double(special, float(0.0)));
+  return y;
 }
 
 // df_exp2: 2^x = 2^k * e^(f ln 2) with k = round(x), f = x - k exact (|f| <= 1/2), the product
@@ -844,22 +856,22 @@ df_double df_log(df_double a) {
 // Range: normal results for -102 <= x <= 127.99.
 df_double df_exp2(df_double a) {
   float na = (-a.hi);
-  if (na > 150.0) {
-    return df_double(float(0.0), float(0.0));
-  }
-  if (!(a.hi <= 129.0)) {
-    float big = (a.hi * 1.0e38);
-    return df_double(big, float(0.0));
-  }
-  float k = ((floor(a.hi + 0.5)) - df_guard);
+  bool zero = na > 150.0;
+  bool over = !(a.hi <= 129.0);
+  bool regular = !any(bvec2(zero, over));
+  float big = (a.hi * 1.0e38);
+  float eh = (mix(big, 0.0, zero));
+  df_double x = df_select(regular, a, df_double(float(0.0), float(0.0)));
+  float k = ((floor(x.hi + 0.5)) - df_guard);
   float nk = (-k);
-  df_double f = df_add_f(a, nk);
+  df_double f = df_add_f(x, nk);
   df_double r = df_mul(f, df_double(float(0.693147182), float(-1.90465421e-09)));
   df_double e = df_expm1_kernel(r);
   df_double p = df_add_f(e, float(1.0));
   int ki = int(k);
   df_double s = df_ldexp(p, ki);
-  return s;
+  df_double y = df_select(regular, s, df_double(eh, float(0.0)));
+  return y;
 }
 
 // df_log2: log2(x) = e + log(m) log2(e) (log2(e) as a float-float); special values as df_log.
@@ -869,17 +881,20 @@ df_double df_exp2(df_double a) {
 // Flops: 424
 // Range: every finite x > 0.
 df_double df_log2(df_double a) {
-  if (!(a.hi > 0.0 && a.hi <= 3.40282347e38)) {
-    float special = (a.hi == 0.0 ? -1.0 / abs(a.hi) : (a.hi > 0.0 ? a.hi : sqrt(a.hi)));
-    return df_double(special, float(0.0));
-  }
+  bool regular = all(bvec2(a.hi > 0.0, a.hi <= 3.40282347e38));
+  float pole = (-1.0 / abs(a.hi));
+  float root = (sqrt(a.hi));
+  float beyond = (mix(root, a.hi, a.hi > 0.0));
+  float special = (mix(beyond, pole, a.hi == 0.0));
+  df_double x = df_select(regular, a, df_double(float(1.0), float(0.0)));
   int e;
-  df_double m = df_log_reduce(a, e);
+  df_double m = df_log_reduce(x, e);
   df_double l = df_log_kernel(m);
   df_double l2 = df_mul(l, df_double(float(1.44269502), float(1.92596303e-08)));
   float fe = (float(e));
   df_double r = df_add_f(l2, fe);
-  return r;
+  df_double y = df_select(regular, r, df_double(special, float(0.0)));
+  return y;
 }
 
 // df_pow: x^y = e^(y log x). The absolute error of y log(x) becomes a relative error of the
@@ -892,13 +907,12 @@ df_double df_log2(df_double a) {
 // Bound: 40u^2 + 31u^2 * abs(y * log(x)) (relative)
 // Flops: 1021
 df_double df_pow(df_double x, df_double y) {
-  if (y.hi == 0.0 || (x.hi == 1.0 && x.lo == 0.0)) {
-    return df_double(float(1.0), float(0.0));
-  }
+  bool one = any(bvec2(y.hi == 0.0, all(bvec2(x.hi == 1.0, x.lo == 0.0))));
   df_double l = df_log(x);
   df_double z = df_mul(y, l);
   df_double r = df_exp(z);
-  return r;
+  df_double p = df_select(one, df_double(float(1.0), float(0.0)), r);
+  return p;
 }
 
 // df_tan: sin(r) / cos(r) in quadrants 0 and 2, -cos(r) / sin(r) in 1 and 3. tan(+-0) = +-0.
@@ -909,25 +923,23 @@ df_double df_pow(df_double x, df_double y) {
 // Range: |x| < 2^40.
 df_double df_tan(df_double a) {
   float ax = (abs(a.hi));
-  if (!(ax < 1.09951163e12)) {
-    float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
-    return df_double(nan, float(0.0));
-  }
-  if (ax == 0.0) {
-    return a;
-  }
+  bool finite = ax < 1.09951163e12;
+  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
+  df_double x = df_select(finite, a, df_double(float(0.0), float(0.0)));
   int q;
-  df_double r = df_trig_reduce(a, q);
+  df_double r = df_trig_reduce(x, q);
   df_double w = df_mul(r, r);
   df_double s = df_sin_kernel(r, w);
   df_double c = df_cos_kernel(w);
-  if ((q & 1) == 0) {
-    df_double t = df_div(s, c);
-    return t;
-  }
-  df_double u = df_div(c, s);
-  df_double v = df_neg(u);
-  return v;
+  bool even = (q & 1) == 0;
+  df_double num = df_select(even, s, c);
+  df_double den = df_select(even, c, s);
+  df_double t = df_div(num, den);
+  df_double u = df_neg(t);
+  df_double v = df_select(even, t, u);
+  df_double z = df_select(ax == 0.0, a, v);
+  df_double y = df_select(finite, z, df_double(nan, float(0.0)));
+  return y;
 }
 
 // df_asin: atan(x, sqrt((1 - x)(1 + x))): 1 - x is exact near |x| = 1, so the cosine keeps its
@@ -938,16 +950,14 @@ df_double df_tan(df_double a) {
 // Flops: 729 (on the path taken)
 // Range: |x| <= 1.
 df_double df_asin(df_double a) {
-  if (a.hi == 0.0) {
-    return a;
-  }
   df_double n = df_neg(a);
   df_double om = df_add_f(n, float(1.0));
   df_double op = df_add_f(a, float(1.0));
   df_double p = df_mul(om, op);
   df_double c = df_sqrt(p);
   df_double r = df_atan2(a, c);
-  return r;
+  df_double y = df_select(a.hi == 0.0, a, r);
+  return y;
 }
 
 // df_acos: atan(sqrt((1 - x)(1 + x)), x), in [0, pi]. |x| > 1 gives NaN.
@@ -972,16 +982,12 @@ df_double df_acos(df_double a) {
 // Bound: 70u^2
 // Flops: 620 (on the path taken)
 df_double df_atan(df_double a) {
-  if (a.hi == 0.0) {
-    return a;
-  }
   df_double t = df_abs(a);
   df_double r = df_atan2_unit(t, df_double(float(1.0), float(0.0)));
-  if (a.hi < 0.0) {
-    df_double n = df_neg(r);
-    return n;
-  }
-  return r;
+  df_double n = df_neg(r);
+  df_double s = df_select(a.hi < 0.0, n, r);
+  df_double y = df_select(a.hi == 0.0, a, s);
+  return y;
 }
 
 // df_expm1: e^x - 1: df_expm1_kernel for |x| < 0.3465 (relative accuracy near 0), else
@@ -992,12 +998,13 @@ df_double df_atan(df_double a) {
 // Flops: 568 (on the path taken)
 df_double df_expm1(df_double a) {
   float ax = (abs(a.hi));
+  df_double r;
   if (ax < 0.3465) {
-    df_double k = df_expm1_kernel(a);
-    return k;
+    r = df_expm1_kernel(a);
+  } else {
+    df_double e = df_exp(a);
+    r = df_add_f(e, float(-1.0));
   }
-  df_double e = df_exp(a);
-  df_double r = df_add_f(e, float(-1.0));
   return r;
 }
 
@@ -1011,26 +1018,25 @@ df_double df_expm1(df_double a) {
 // Range: |x| <= 88.72.
 df_double df_sinh(df_double a) {
   float ax = (abs(a.hi));
-  if (ax == 0.0) {
-    return a;
-  }
-  if (!(ax <= 88.72)) {
-    float big = (a.hi * 1.0e38);
-    return df_double(big, float(0.0));
-  }
-  df_double t = df_abs(a);
+  bool over = !(ax <= 88.72);
+  float big = (a.hi * 1.0e38);
+  df_double x = df_select(over, df_double(float(0.0), float(0.0)), a);
+  df_double t = df_abs(x);
   df_double e = df_expm1(t);
   df_double e1 = df_add_f(e, float(1.0));
   df_double q = df_div(e, e1);
   df_double s = df_add(e, q);
   float h = (s.hi * 0.5);
   float l = (s.lo * 0.5);
-  if (a.hi < 0.0) {
-    float nh = (-h);
-    float nl = (-l);
-    return df_double(nh, nl);
-  }
-  return df_double(h, l);
+  float nh = (-h);
+  float nl = (-l);
+  bool negative = a.hi < 0.0;
+  float sh = (mix(h, nh, negative));
+  float sl = (mix(l, nl, negative));
+  df_double v = df_double(sh, sl);
+  df_double w = df_select(over, df_double(big, float(0.0)), v);
+  df_double y = df_select(ax == 0.0, a, w);
+  return y;
 }
 
 // df_cosh: (e^|x| + 1/e^|x|) / 2 (no cancellation: both terms positive). |x| > 88.72 gives
@@ -1058,21 +1064,21 @@ df_double df_cosh(df_double a) {
 // Flops: 625 (on the path taken)
 df_double df_tanh(df_double a) {
   float ax = (abs(a.hi));
-  if (ax == 0.0) {
-    return a;
-  }
-  float one = (a.hi < 0.0 ? -1.0 : 1.0);
-  if (ax > 22.0) {
-    return df_double(one, float(0.0));
-  }
-  float th = (ax * 2.0);
-  float tl = (a.lo * one * 2.0);
+  float one = (mix(1.0, -1.0, a.hi < 0.0));
+  bool saturated = ax > 22.0;
+  df_double x = df_select(saturated, df_double(float(0.0), float(0.0)), a);
+  float xh = (abs(x.hi));
+  float th = (xh * 2.0);
+  float tl = (x.lo * one * 2.0);
   df_double e = df_expm1(df_double(th, tl));
   df_double d = df_add_f(e, float(2.0));
   df_double q = df_div(e, d);
   float h = (q.hi * one);
   float l = (q.lo * one);
-  return df_double(h, l);
+  df_double v = df_double(h, l);
+  df_double w = df_select(saturated, df_double(one, float(0.0)), v);
+  df_double y = df_select(ax == 0.0, a, w);
+  return y;
 }
 
 // df_exp: e^x. k = round(x / ln 2); r = x - k ln 2 with ln 2 = L1 + L2 + L3 (L1 has 16 bits, so

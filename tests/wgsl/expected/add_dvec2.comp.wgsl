@@ -43,10 +43,10 @@ fn df_fast_two_sum(a_1: vec2<f32>, b_1: vec2<f32>) -> df_dvec2 {
 
 fn df_finish_df_double_float(z: df_double, f: f32) -> df_double {
   var az: f32 = abs(z.hi);
-  if (((az > 0.0f) && (az <= 0x1.fffffep+127f))) {
-    return z;
-  }
-  return df_double(f, 0.0f);
+  var regular: bool = all(vec2<bool>((az > 0.0f), (az <= 0x1.fffffep+127f)));
+  var h: f32 = select(f, z.hi, regular);
+  var l: f32 = select(0.0f, z.lo, regular);
+  return df_double(h, l);
 }
 
 fn df_finish_df_dvec2_vec2(z: df_dvec2, f: vec2<f32>) -> df_dvec2 {

@@ -39,10 +39,10 @@ fn df_fast_two_sum(a: f32, b: f32) -> df_double {
 
 fn df_finish(z: df_double, f: f32) -> df_double {
   var az: f32 = abs(z.hi);
-  if (((az > 0.0f) && (az <= 0x1.fffffep+127f))) {
-    return z;
-  }
-  return df_double(f, 0.0f);
+  var regular: bool = all(vec2<bool>((az > 0.0f), (az <= 0x1.fffffep+127f)));
+  var h: f32 = select(f, z.hi, regular);
+  var l: f32 = select(0.0f, z.lo, regular);
+  return df_double(h, l);
 }
 
 fn df_add(a: df_double, b: df_double) -> df_double {
@@ -82,8 +82,10 @@ fn df_two_prod(a: f32, b: f32) -> df_double {
   var ab: f32 = abs(b);
   var big_a: bool = (aa > 0x1.ed09bep+112f);
   var big_b: bool = (ab > 0x1.ed09bep+112f);
-  var as_: f32 = (a * select(select(1.0f, 8192.0f, big_b), 0x1p-13f, big_a));
-  var bs: f32 = (b * select(select(1.0f, 0x1p-13f, big_b), 8192.0f, big_a));
+  var ka: f32 = select(select(1.0f, 8192.0f, big_b), 0x1p-13f, big_a);
+  var kb: f32 = select(select(1.0f, 0x1p-13f, big_b), 8192.0f, big_a);
+  var as_: f32 = (a * ka);
+  var bs: f32 = (b * kb);
   var sa: df_double = df_split(as_);
   var sb: df_double = df_split(bs);
   var hh: f32 = (sa.hi * sb.hi);
