@@ -249,6 +249,11 @@ class Printer {
     if (!v.layout.packing.empty() && block) {
       if (options_.target == Target::Es100)
         error(v.loc, "interface blocks need GLSL ES 3.00 or later");
+      else if (target::facts(options_.target).webgl_rules && v.storage == ir::Storage::Uniform &&
+               (v.layout.packing == "shared" || v.layout.packing == "packed"))
+        // WebGL 2.0 allows only std140 (ANGLE: "Only std140 layout is allowed in WebGL"); shared and
+        // packed (glslang's default) leave the layout to the implementation, which may choose std140.
+        parts.push_back("std140");
       else
         parts.push_back(v.layout.packing);
     }
@@ -552,6 +557,8 @@ class Printer {
         return operand(e->args[0], 4, false) + " ? " + operand(e->args[1], 4, false) + " : " + operand(e->args[2], 4, false);
       case Expr::Kind::Call: return call(e->name, e->args);
       case Expr::Kind::Builtin:
+        if (e->name == "length" && e->args.size() == 1 && e->args[0]->type.is_array())
+          return operand(e->args[0], 17, false) + ".length()";  // a runtime-sized array's length
         builtin_first_use_.emplace(builtin_name(*e), PrintResult::BuiltinUse{e->loc, e->name});
         return call(builtin_name(*e), e->args);
       case Expr::Kind::Construct: return call(ir::type_name(e->type) + ir::array_suffix(e->type), e->args);

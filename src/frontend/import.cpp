@@ -459,7 +459,7 @@ class Importer {
     }
     const char* spelling = binary_operator_spelling(op);
     if (!spelling) {
-      error(b->getLoc(), "unsupported binary operation");
+      error(b->getLoc(), "unsupported binary operation (glslang operator " + std::to_string(static_cast<int>(op)) + ")");
       return make(ir::Expr::Kind::Const, b);
     }
     auto e = make(op == EOpComma ? ir::Expr::Kind::Comma : ir::Expr::Kind::Binary, b);
@@ -499,7 +499,16 @@ class Importer {
       e->args = {expr(u->getOperand())};
       return e;
     }
-    error(u->getLoc(), unsupported_call_message(u->getLoc(), "unsupported operation"));
+    if (op == EOpArrayLength) {
+      // `.length()` of a runtime-sized array (glslang folds the sized ones to constants): the IR's
+      // "length" built-in on an array, printed as a.length() (GLSL) and arrayLength (WGSL).
+      auto e = make(ir::Expr::Kind::Builtin, u);
+      e->name = "length";
+      e->args = {expr(u->getOperand())};
+      return e;
+    }
+    error(u->getLoc(), unsupported_call_message(u->getLoc(), (std::string("unsupported operation (glslang operator ") +
+                                                              std::to_string(static_cast<int>(op)) + ")").c_str()));
     return make(ir::Expr::Kind::Const, u);
   }
 

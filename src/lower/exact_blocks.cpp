@@ -847,6 +847,12 @@ class BlockWords {
   ExprPtr rw(const ExprPtr& e, bool used = true) {
     if (!e) return e;
     if (std::optional<Place> p = place(e)) return p->doubles ? load(*p, e->loc) : p->parts[0];
+    // `.length()` of a block's array of doubles: the length of its word array (one element each).
+    if (e->kind == Kind::Builtin && e->name == "length" && e->args.size() == 1 && e->args[0]->type.is_array())
+      if (std::optional<Place> p = place(e->args[0]); p && !p->parts.empty()) {  // dvec3/4: the xy words' array
+        e->args[0] = p->parts[0];
+        return e;
+      }
     if (e->kind == Kind::Binary && e->op == "=") {
       if (std::optional<Place> p = place(e->args[0])) {
         if (p->doubles) return store(*p, rw(e->args[1]), e->loc, used);

@@ -640,6 +640,8 @@ class DoubleLowering {
   }
 
   ExprPtr lower_builtin(const ExprPtr& e) {
+    // `.length()` of a (runtime-sized) array of doubles counts elements, whatever they became.
+    if (e->name == "length" && e->args.size() == 1 && e->args[0]->type.is_array()) return e;
     if (e->name == "packDouble2x32") return rule("df_pack_double2x32", 1, df_type(1), e->args, e->loc);
     bool any_df = std::any_of(e->args.begin(), e->args.end(),
                               [](const ExprPtr& a) { return is_df(a->type) || matrix::is_matrix(a->type); });

@@ -1,0 +1,249 @@
+#version 310 es
+precision highp float;
+precision highp int;
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+struct df_dvec3 {
+  uvec3 hi;
+  uvec3 lo;
+};
+// doublet exact binary64 runtime (mode exact): 17 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+struct df_double { uint hi; uint lo; };
+
+// ex_from_bits: the mode-exact double of a binary64 pattern uvec2(low word, high word).
+// Algorithm: member reorder
+// Source: GLSL 4.60 specification, 2017, 8.4 (packDouble2x32 word order)
+// Bound: exact
+// Flops: 0
+df_double ex_from_bits(uvec2 w) {
+  return df_double(w.y, w.x);
+}
+
+// ex_is_nan: true when the bit pattern is a NaN.
+// Algorithm: exponent field all ones and a nonzero significand
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+bool ex_is_nan(uvec2 a) {
+  return (a.y & 0x7FFFFFFFu) > 0x7FF00000u || ((a.y & 0x7FFFFFFFu) == 0x7FF00000u && a.x != 0u);
+}
+
+// ex_pick_nan: the NaN result of an operation with a NaN operand: a if it is a NaN, else b, made quiet.
+// Algorithm: set the quiet bit (significand bit 51) of a if it is a NaN, else of b. Native fp64 on lavapipe (LLVM, x86 SSE) returns the first source operand's NaN, and LLVM passes a commutative operation's operands swapped: ex_add_bits and ex_mul_bits call ex_pick_nan(b, a), ex_sub_bits and ex_div_bits ex_pick_nan(a, b) (measured by tests/exact)
+// Source: IEEE 754-2019, 6.2.3 (NaN propagation); Intel SDM vol. 1, 2016, 4.8.3.5 (first source)
+// Bound: exact
+// Flops: 0
+uvec2 ex_pick_nan(uvec2 a, uvec2 b) {
+  uvec2 n = ex_is_nan(a) ? a : b;
+  return uvec2(n.x, n.y | 0x00080000u);
+}
+
+// ex_sig: the 53-bit integer significand (implicit bit set for normal numbers), as (lo, hi).
+// Algorithm: low 52 bits of the pattern, bit 52 set when the exponent field is nonzero
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+uvec2 ex_sig(uvec2 a) {
+  uint hi = a.y & 0x000FFFFFu;
+  if ((a.y & 0x7FF00000u) != 0u) hi |= 0x00100000u;
+  return uvec2(a.x, hi);
+}
+
+// ex_exponent: the exponent of the integer significand, max(field, 1) (so value = ex_sig * 2^(ex_exponent - 1075)).
+// Algorithm: exponent field, subnormals and zero counted as field 1
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+int ex_exponent(uvec2 a) {
+  return max(int((a.y >> 20) & 0x7FFu), 1);
+}
+
+// ex_lt64: unsigned a < b on 64-bit words.
+// Algorithm: compare high words, then low words
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword comparison)
+// Bound: exact
+// Flops: 0 (3 integer comparisons)
+bool ex_lt64(uvec2 a, uvec2 b) {
+  return a.y < b.y || (a.y == b.y && a.x < b.x);
+}
+
+// ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: split by case).
+// Algorithm: word shift by case n == 0, n < 32, n >= 32
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
+// Bound: exact
+// Flops: 0 (up to 6 integer operations)
+uvec2 ex_shl64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 32) return uvec2(0u, a.x << uint(n - 32));
+  return uvec2(a.x << uint(n), (a.y << uint(n)) | (a.x >> uint(32 - n)));
+}
+
+// ex_shr_jam64: a >> n for n >= 0, the shifted-out bits ORed into bit 0 (the sticky bit).
+// Algorithm: word shift by case; any nonzero bit shifted out sets bit 0 ("jamming")
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (shiftRightJam64 semantics)
+// Bound: exact
+// Flops: 0 (up to 10 integer operations)
+uvec2 ex_shr_jam64(uvec2 a, int n) {
+  if (n == 0) return a;
+  if (n >= 64) return uvec2((a.x | a.y) != 0u ? 1u : 0u, 0u);
+  uvec2 r;
+  uint lost;
+  if (n >= 32) {
+    r = uvec2(n == 32 ? a.y : a.y >> uint(n - 32), 0u);
+    lost = a.x | (n == 32 ? 0u : a.y << uint(64 - n));
+  } else {
+    r = uvec2((a.x >> uint(n)) | (a.y << uint(32 - n)), a.y >> uint(n));
+    lost = a.x << uint(32 - n);
+  }
+  r.x |= lost != 0u ? 1u : 0u;
+  return r;
+}
+
+// ex_clz32: ex_clz32 by findMSB, where the target has GLSL's integer functions.
+// Algorithm: 31 - findMSB(x); findMSB(0) is -1, so 0 gives 32
+// Source: Khronos, The OpenGL ES Shading Language 3.10, 2014, 8.8 (findMSB)
+// Bound: exact
+// Flops: 0 (2 integer operations)
+int ex_clz32(uint x) {
+  return 31 - findMSB(x);
+}
+
+// ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
+// Algorithm: ex_clz32 of the high word, else 32 + ex_clz32 of the low word
+// Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3
+// Bound: exact
+// Flops: 0
+int ex_clz64(uvec2 a) {
+  return a.y != 0u ? ex_clz32(a.y) : 32 + ex_clz32(a.x);
+}
+
+// ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
+// Algorithm: word sums with the carry of the low word (a.x + b.x < a.x)
+// Source: two's-complement multiword addition (Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm A)
+// Bound: exact
+// Flops: 0 (4 integer operations)
+uvec2 ex_add64(uvec2 a, uvec2 b) {
+  uint lo = a.x + b.x;
+  return uvec2(lo, a.y + b.y + (lo < a.x ? 1u : 0u));
+}
+
+// ex_round_pack: the binary64 nearest (ties to even) to sig * 2^(e - 1084), sign s. sig < 2^63; if e > 0 its top bit must be bit 62.
+// Algorithm: e < 0: jamming shift to e = 0 (subnormal); keep 53 bits, 10 round bits; add half, clear the last bit on an exact tie; the significand's carry runs into the exponent field (up to infinity)
+// Source: IEEE 754-2019, 4.3.1; Hauser, Berkeley SoftFloat 3e, 2018 (roundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (about 30 integer operations)
+uvec2 ex_round_pack(bool s, int e, uvec2 sig) {
+  uint signWord = s ? 0x80000000u : 0u;
+  if (e > 0x7FD) return uvec2(0u, signWord | 0x7FF00000u);
+  if (e < 0) {
+    sig = ex_shr_jam64(sig, -e);
+    e = 0;
+  }
+  uint roundBits = sig.x & 0x3FFu;
+  sig = ex_add64(sig, uvec2(0x200u, 0u));
+  sig = uvec2((sig.x >> 10) | (sig.y << 22), sig.y >> 10);
+  if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;
+  return ex_add64(uvec2(0u, signWord | (uint(e) << 20)), sig);
+}
+
+// ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
+// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
+// Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
+  int z = ex_clz64(sig);
+  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
+  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
+}
+
+// ex_sub64: 64-bit difference, modulo 2^64.
+// Algorithm: word differences with the borrow of the low word (a.x < b.x)
+// Source: two's-complement multiword subtraction (Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm S)
+// Bound: exact
+// Flops: 0 (4 integer operations)
+uvec2 ex_sub64(uvec2 a, uvec2 b) {
+  return uvec2(a.x - b.x, a.y - b.y - (a.x < b.x ? 1u : 0u));
+}
+
+// ex_add_bits: a + b in binary64, correctly rounded (ties to even).
+// Algorithm: order by magnitude; significands << 10; the smaller jam-shifted by the exponent difference; add or subtract; normalize and round once. Exact cancellation gives +0; (-0) + (-0) = -0
+// Source: IEEE 754-2019, 5.4.1, 6.3; Hauser, Berkeley SoftFloat 3e, 2018 (addMagsF64/subMagsF64 scheme)
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (about 60 integer operations)
+uvec2 ex_add_bits(uvec2 a, uvec2 b) {
+  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
+  bool sa = a.y >= 0x80000000u, sb = b.y >= 0x80000000u;
+  bool infA = (a.y & 0x7FFFFFFFu) == 0x7FF00000u, infB = (b.y & 0x7FFFFFFFu) == 0x7FF00000u;
+  if (infA || infB) {
+    if (infA && infB && sa != sb) return uvec2(0u, 0xFFF80000u);
+    return infA ? a : b;
+  }
+  uvec2 ma = ex_sig(a), mb = ex_sig(b);
+  int xa = ex_exponent(a), xb = ex_exponent(b);
+  if ((ma.x | ma.y | mb.x | mb.y) == 0u) return uvec2(0u, (sa && sb) ? 0x80000000u : 0u);
+  if (xb > xa || (xb == xa && ex_lt64(ma, mb))) {
+    uvec2 tm = ma; ma = mb; mb = tm;
+    int tx = xa; xa = xb; xb = tx;
+    bool ts = sa; sa = sb; sb = ts;
+  }
+  uvec2 big = ex_shl64(ma, 10);
+  uvec2 small = ex_shr_jam64(ex_shl64(mb, 10), xa - xb);
+  if (sa == sb) return ex_norm_round_pack(sa, xa - 1, ex_add64(big, small));
+  uvec2 d = ex_sub64(big, small);
+  if ((d.x | d.y) == 0u) return uvec2(0u, 0u);
+  return ex_norm_round_pack(sa, xa - 1, d);
+}
+
+// ex_bits: the binary64 pattern of a mode-exact double as uvec2(low word, high word), the order of unpackDouble2x32.
+// Algorithm: member reorder
+// Source: GLSL 4.60 specification, 2017, 8.4 (unpackDouble2x32 word order)
+// Bound: exact
+// Flops: 0
+uvec2 ex_bits(df_double a) {
+  return uvec2(a.lo, a.hi);
+}
+
+// ex_add: a + b (mode exact), correctly rounded.
+// Algorithm: ex_add_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+df_double ex_add(df_double a, df_double b) {
+  return ex_from_bits(ex_add_bits(ex_bits(a), ex_bits(b)));
+}
+
+struct ex_dvec3_words {
+  uvec4 xy;
+  uvec2 z;
+};
+
+df_dvec3 ex_load_dvec3(uvec4 xy, uvec2 z) {
+  return df_dvec3(uvec3(xy.yw, z.y), uvec3(xy.xz, z.x));
+}
+df_dvec3 ex_load_dvec3(ex_dvec3_words w) {
+  return ex_load_dvec3(w.xy, w.z);
+}
+
+uvec2 ex_words_double(df_double v) {
+  return uvec2(v.lo, v.hi);
+}
+
+
+layout(std430, binding = 1) buffer Values {
+  uvec2 total;
+  uvec2 ex_pad0;
+  uvec4 ex_pad1;
+  ex_dvec3_words points[];
+};
+
+
+void main()
+{
+  df_double s = df_double(0u, 0u);
+  for (int i = 0; i < points.length(); ++i)
+  {
+    s = ex_add(s, df_double(ex_load_dvec3(points[i]).hi.x, ex_load_dvec3(points[i]).lo.x));
+  }
+  total = ex_words_double(s);
+}

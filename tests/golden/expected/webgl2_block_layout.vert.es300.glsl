@@ -1,0 +1,115 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+// doublet float-float runtime: 6 functions from rules/*.glsl, guard: uniform df_guard
+struct df_double { float hi; float lo; };
+struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard;  // never set: GL zero-fills it at link
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  float az = (abs(z.hi));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 3: the width-1 df_finish applied to each component)
+df_dvec3 df_finish(df_dvec3 z, vec3 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  df_double r2 = df_finish(df_double(z.hi.z, z.lo.z), f.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
+// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
+// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 2
+vec3 df_to_float(df_dvec3 a) {
+  vec3 f = ((a.hi + a.lo) - df_guard);
+  df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
+  return r.hi;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec3 df_two_sum(vec3 a, vec3 b) {
+  vec3 s = ((a + b) - df_guard);
+  vec3 bb = ((s - a) - df_guard);
+  vec3 ab = (s - bb);
+  vec3 da = (a - ab);
+  vec3 db = (b - bb);
+  vec3 e = (da + db);
+  return df_dvec3(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
+  vec3 s = ((a + b) - df_guard);
+  vec3 z = ((s - a) - df_guard);
+  vec3 e = (b - z);
+  return df_dvec3(s, e);
+}
+
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_dvec3 df_add_f(df_dvec3 a, vec3 b) {
+  df_dvec3 s = df_two_sum(a.hi, b);
+  vec3 v = (a.lo + s.lo);
+  df_dvec3 z = df_fast_two_sum(s.hi, v);
+  df_dvec3 r = df_finish(z, s.hi);
+  return r;
+}
+
+layout(shared) uniform Transforms {
+  mat4 model;
+  mat4 view_projection;
+};
+in vec3 position;
+in vec3 offset_hi;
+in vec3 offset_lo;
+df_dvec3 offset;
+
+
+void main()
+{
+  offset = df_dvec3(offset_hi, offset_lo);
+  df_dvec3 p = df_add_f(offset, position);
+  gl_Position = view_projection * model * vec4(df_to_float(p), 1.0);
+}
