@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -93,10 +94,10 @@ std::string shader(const Layout& layout) {
          "}\n";
 }
 
-doublet::Result lowered(const Layout& layout) {
+doublet::Result lowered(const Layout& layout, doublet::Target target = doublet::Target::Es300) {
   doublet::Options options;
   options.stage = doublet::Stage::Fragment;
-  options.target = doublet::Target::Es300;
+  options.target = target;
   options.file_name = std::string(layout.name) + ".frag";
   return doublet::lower(shader(layout), options);
 }
@@ -163,6 +164,23 @@ TEST_P(GuardLayout, KeepsFloatFloatOnBothDrivers) {
     std::printf("[ guard ] %-20s %-7s %.1f bits\n", GetParam().name, doublet::runner::backend_name(backend), bits);
     EXPECT_GE(bits, 40.0) << doublet::runner::backend_name(backend) << "\n" << result.output;
   }
+}
+
+// The same layouts lowered for webgl2 in Chromium (ANGLE → SwiftShader), where the browser is
+// installed (skipped otherwise, failed under DOUBLET_REQUIRE_BROWSER=1 as in CI).
+TEST_P(GuardLayout, KeepsFloatFloatInChromiumWebGl2) {
+  if (const std::string why = doublet::runner::backend_unavailable_reason(Backend::WebGl2); !why.empty()) {
+    if (const char* required = std::getenv("DOUBLET_REQUIRE_BROWSER"); required && std::string(required) == "1")
+      FAIL() << "DOUBLET_REQUIRE_BROWSER=1 and no browser: " << why;
+    GTEST_SKIP() << "no browser: " << why;
+  }
+  const auto result = lowered(GetParam(), doublet::Target::Webgl2);
+  ASSERT_TRUE(result.ok) << (result.diagnostics.empty() ? "" : doublet::format_diagnostic(result.diagnostics[0]));
+  std::string error;
+  const double bits = run_bits(Backend::WebGl2, GetParam(), result.output, false, &error);
+  EXPECT_EQ(error, "") << result.output;
+  std::printf("[ guard ] %-20s %-7s %.1f bits\n", GetParam().name, doublet::runner::backend_name(Backend::WebGl2), bits);
+  EXPECT_GE(bits, 40.0) << result.output;
 }
 
 // The control: the fp64 original on lavapipe, fed the same way, computes the reference (so the

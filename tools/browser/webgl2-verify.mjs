@@ -78,23 +78,25 @@ function setUniform(gl, program, name, values) {
   const ints = { [gl.INT]: 1, [gl.INT_VEC2]: 2, [gl.INT_VEC3]: 3, [gl.INT_VEC4]: 4, [gl.BOOL]: 1, [gl.BOOL_VEC2]: 2,
     [gl.BOOL_VEC3]: 3, [gl.BOOL_VEC4]: 4 };
   const uints = { [gl.UNSIGNED_INT]: 1, [gl.UNSIGNED_INT_VEC2]: 2, [gl.UNSIGNED_INT_VEC3]: 3, [gl.UNSIGNED_INT_VEC4]: 4 };
-  const wrongCount = (n) => new Error(`uniform '${name}' has ${n} component(s), job gives ${values.length}`);
-  if (info.size !== 1) throw new Error(`uniform '${name}' is an array (not fed)`);
+  // An array uniform takes its first elements from the values, as glUniform*v does on the other
+  // backends (runner.hpp): a whole number of elements, at most the array's size.
+  const wrongCount = (n) => new Error(`uniform '${name}' has ${n} component(s)${info.size > 1 ? ` per element, ${info.size} elements` : ''}, job gives ${values.length}`);
+  const fits = (n) => values.length > 0 && values.length % n === 0 && values.length <= n * info.size;
   if (floats[info.type]) {
     const n = floats[info.type];
-    if (values.length !== n) throw wrongCount(n);
+    if (!fits(n)) throw wrongCount(n);
     gl[`uniform${n}fv`](location, f);
   } else if (matrices[info.type]) {
     const [setter, n] = matrices[info.type];
-    if (values.length !== n) throw wrongCount(n);
+    if (!fits(n)) throw wrongCount(n);
     gl[setter](location, false, f);
   } else if (ints[info.type]) {
     const n = ints[info.type], isBool = info.type >= gl.BOOL && info.type <= gl.BOOL_VEC4;
-    if (values.length !== n) throw wrongCount(n);
+    if (!fits(n)) throw wrongCount(n);
     gl[`uniform${n}iv`](location, Int32Array.from(values, v => isBool ? (v !== 0 ? 1 : 0) : Math.trunc(v)));
   } else if (uints[info.type]) {
     const n = uints[info.type];
-    if (values.length !== n) throw wrongCount(n);
+    if (!fits(n)) throw wrongCount(n);
     gl[`uniform${n}uiv`](location, Uint32Array.from(values, v => Math.trunc(v)));
   } else {
     throw new Error(`uniform '${name}' is not a float scalar, vector or matrix`);
