@@ -1,0 +1,67 @@
+// Hand-written declarations for src/index.mjs (@doublet/host).
+
+/** A double as the float pair a lowered (df64) shader takes: hi = float(x), lo = float(x - hi). */
+export interface FloatPair {
+  hi: number;
+  lo: number;
+}
+export function split(x: number): FloatPair;
+export function splitArray(values: ArrayLike<number>): { hi: Float32Array; lo: Float32Array };
+/** hi + lo; a zero keeps hi's sign. */
+export function join(hi: number, lo: number): number;
+
+/** Mode exact: the 2 binary64 words of x, low word first. */
+export function exactWords(x: number): Uint32Array;
+export function exactWordsArray(values: ArrayLike<number>): Uint32Array;
+export function fromExactWords(words: ArrayLike<number>, offset?: number): number;
+
+export type Mode = 'df64' | 'exact';
+export function writeDouble(view: DataView, byteOffset: number, x: number, mode: Mode): void;
+
+/** A block member as `doublet lower --manifest` lists it. */
+export interface ManifestMember {
+  name: string;
+  type: string;
+  lowered_type: string;
+  offset: number;
+  size: number;
+  hi_offset?: number;
+  lo_offset?: number;
+  array_stride?: number;
+  matrix_stride?: number;
+  encoding?: 'binary64-words';
+}
+export interface ManifestVariable {
+  name: string;
+  storage: string;
+  type: string;
+  split: boolean;
+  lowered_type: string;
+  lowered_names: string[];
+  lowered_types?: string[];
+  locations?: number[];
+  encoding?: 'binary64-words';
+  layout?: 'std140' | 'std430';
+  members?: ManifestMember[];
+}
+export interface Manifest {
+  stage: string;
+  target: string;
+  mode?: string;
+  variables: ManifestVariable[];
+  guard?: { kind: string; uniform?: string };
+}
+
+export function writeBlockMember(view: DataView, member: ManifestMember, value: number | ArrayLike<number>,
+                                 blockOffset?: number): void;
+
+export interface LoweredUniform {
+  name: string;
+  /** The lowered GLSL type, e.g. "vec3", "float[2]", "uvec4". */
+  type: string;
+  /** The WebGL2RenderingContext method to call, e.g. "uniform3fv", "uniform2uiv". */
+  setter: string;
+  data: Float32Array | Uint32Array;
+}
+export function setUniformsFromManifest(manifest: Manifest,
+                                        values: Record<string, number | ArrayLike<number>>): LoweredUniform[];

@@ -1,0 +1,175 @@
+// @doublet/host: the JavaScript twin of include/doublet/split.hpp and the uniform/block parts of
+// include/doublet/pack.hpp. A shader lowered by `doublet lower` takes each double as a float pair
+// (hi = float(x), lo = float(x - hi); docs/verify.md) or, in mode exact, as the two uint32 words of
+// its binary64 pattern, low word first (docs/modes.md). This module computes both, bit for bit as
+// the C++ helpers do (tests/js checks it against them), and fills uniforms and block members from
+// the manifest that `doublet lower --manifest` writes. No dependencies.
+
+const LITTLE_ENDIAN = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1;
+const scratch = new DataView(new ArrayBuffer(8));
+
+/** hi = float(x), lo = float(x - hi); lo = 0 where hi is ±Inf or NaN (x - Inf would be NaN). */
+export function split(x) {
+  const hi = Math.fround(x);
+  // Math.fround rounds to nearest-even like C++'s static_cast<float>; x - hi is the same double
+  // subtraction, so the pair matches doublet::split bit for bit (-0 gives hi = -0, lo = +0).
+  const lo = Number.isFinite(hi) ? Math.fround(x - hi) : 0;
+  return { hi, lo };
+}
+
+/** split() of every element: two Float32Arrays of values.length. */
+export function splitArray(values) {
+  const n = values.length;
+  const hi = new Float32Array(n);
+  const lo = new Float32Array(n);
+  for (let i = 0; i < n; ++i) {
+    const p = split(values[i]);
+    hi[i] = p.hi;
+    lo[i] = p.lo;
+  }
+  return { hi, lo };
+}
+
+/** hi + lo in double, except that a zero keeps hi's sign ((-0, +0) is -0), as doublet::join. */
+export function join(hi, lo) {
+  if (hi === 0 && lo === 0) return hi;
+  return hi + lo;
+}
+
+/** Mode exact: the binary64 words of x, low word first (a shader's uvec2.x, .y). */
+export function exactWords(x) {
+  scratch.setFloat64(0, x, true);
+  return new Uint32Array([scratch.getUint32(0, true), scratch.getUint32(4, true)]);
+}
+
+/** exactWords() of every element: 2 × values.length words, element after element. */
+export function exactWordsArray(values) {
+  const n = values.length;
+  // On a little-endian host the bytes of a Float64Array already are the words, low first.
+  if (LITTLE_ENDIAN) return new Uint32Array(Float64Array.from(values).buffer);
+  const words = new Uint32Array(2 * n);
+  for (let i = 0; i < n; ++i) {
+    scratch.setFloat64(0, values[i], true);
+    words[2 * i] = scratch.getUint32(0, true);
+    words[2 * i + 1] = scratch.getUint32(4, true);
+  }
+  return words;
+}
+
+/** The double whose words (low first) are words[offset], words[offset + 1]. */
+export function fromExactWords(words, offset = 0) {
+  scratch.setUint32(0, words[offset] >>> 0, true);
+  scratch.setUint32(4, words[offset + 1] >>> 0, true);
+  return scratch.getFloat64(0, true);
+}
+
+/**
+ * Writes one double into block memory (std140/std430, little-endian as WebGL/WebGPU buffers are).
+ * 'df64': a lowered `df_double { float hi; float lo; }`, hi at byteOffset and lo at byteOffset + 4
+ * (the manifest's hi_offset 0 / lo_offset 4 for a double member). 'exact': the two words.
+ */
+export function writeDouble(view, byteOffset, x, mode) {
+  if (mode === 'df64') {
+    const p = split(x);
+    view.setFloat32(byteOffset, p.hi, true);
+    view.setFloat32(byteOffset + 4, p.lo, true);
+  } else if (mode === 'exact') {
+    const w = exactWords(x);
+    view.setUint32(byteOffset, w[0], true);
+    view.setUint32(byteOffset + 4, w[1], true);
+  } else {
+    throw new Error(`writeDouble: mode must be 'df64' or 'exact', not '${mode}'`);
+  }
+}
+
+// "double" -> 1, "dvec3" -> 3, "double[2]" -> 1; 0 for anything else (matrices included).
+function doubleComponents(type) {
+  if (/^double(\[|$)/.test(type)) return 1;
+  const m = /^dvec([234])(\[|$)/.exec(type);
+  return m ? Number(m[1]) : 0;
+}
+// "T[N]" -> N, "T" -> 1.
+function arrayElements(type) {
+  const m = /\[(\d+)\]$/.exec(type);
+  return m ? Number(m[1]) : 1;
+}
+function asList(name, value, count) {
+  const list = typeof value === 'number' ? [value] : Array.from(value);
+  if (list.length !== count) throw new Error(`'${name}': expected ${count} value(s), got ${list.length}`);
+  return list;
+}
+const isExact = (v) => v.encoding === 'binary64-words';
+
+/**
+ * Writes a double/dvecN member of a block the manifest lists (`members` of a uniform or buffer
+ * block) into `view`, the block's memory starting at `blockOffset`. df64: component c's hi at
+ * offset + hi_offset + 4c, lo at offset + lo_offset + 4c; exact: the doubles' words at the
+ * member's original std140/std430 offset, 8 bytes apart. Matrices and arrays are not handled yet.
+ */
+export function writeBlockMember(view, member, value, blockOffset = 0) {
+  const n = doubleComponents(member.type);
+  if (n === 0 || member.type.includes('['))
+    throw new Error(`writeBlockMember: '${member.name}' has type ${member.type}; only double/dvecN members are supported`);
+  const list = asList(member.name, value, n);
+  const base = blockOffset + member.offset;
+  for (let c = 0; c < n; ++c) {
+    if (isExact(member)) {
+      writeDouble(view, base + 8 * c, list[c], 'exact');
+    } else {
+      const p = split(list[c]);
+      view.setFloat32(base + member.hi_offset + 4 * c, p.hi, true);
+      view.setFloat32(base + member.lo_offset + 4 * c, p.lo, true);
+    }
+  }
+}
+
+// gl.uniform{N}fv / gl.uniform{N}uiv for a lowered type ("vec3", "float[2]", "uvec4", "uvec2[2]").
+function setterFor(loweredType) {
+  const base = loweredType.replace(/\[\d+\]$/, '');
+  const m = /^(float|vec([234])|uvec([24]))$/.exec(base);
+  if (!m) throw new Error(`no uniform setter for lowered type ${loweredType}`);
+  if (m[3]) return { setter: `uniform${m[3]}uiv`, components: Number(m[3]) };
+  const components = m[2] ? Number(m[2]) : 1;
+  return { setter: `uniform${components}fv`, components };
+}
+
+/**
+ * For each double uniform named in `values` (a number, or components × elements numbers), the
+ * lowered uniforms a WebGL2 host sets: [{name, type, setter, data}], e.g.
+ *   {name: 'eye_hi', type: 'vec3', setter: 'uniform3fv', data: Float32Array[3]}
+ *   gl[u.setter](gl.getUniformLocation(program, u.name), u.data)
+ * df64: NAME_hi / NAME_lo (the manifest's lowered_names). Mode exact: the words, dvec3/dvec4 as
+ * NAME_xy + NAME_z/NAME_zw. The guard uniform is never listed: GL zero-fills it (docs/web.md).
+ * Throws for a name that is not a double uniform of the manifest, and for matrices (not done yet).
+ */
+export function setUniformsFromManifest(manifest, values) {
+  const out = [];
+  for (const [name, value] of Object.entries(values)) {
+    const v = manifest.variables.find((e) => e.name === name);
+    const n = v && v.storage === 'uniform' && v.split ? doubleComponents(v.type) : 0;
+    if (n === 0) throw new Error(`'${name}' is not a double/dvecN uniform in the manifest`);
+    const elements = arrayElements(v.type);
+    const list = asList(name, value, n * elements);
+    if (isExact(v)) {
+      // Each lowered variable holds the next components/2 doubles of every element.
+      let first = 0;
+      v.lowered_names.forEach((lowered, part) => {
+        const type = v.lowered_types[part];
+        const { setter, components } = setterFor(type);
+        const doubles = components / 2;
+        const picked = [];
+        for (let e = 0; e < elements; ++e)
+          for (let c = first; c < first + doubles; ++c) picked.push(list[e * n + c]);
+        out.push({ name: lowered, type, setter, data: exactWordsArray(picked) });
+        first += doubles;
+      });
+    } else {
+      if (v.lowered_names.length !== 2) throw new Error(`'${name}': expected lowered names hi and lo`);
+      const { setter } = setterFor(v.lowered_type);
+      const { hi, lo } = splitArray(list);
+      out.push({ name: v.lowered_names[0], type: v.lowered_type, setter, data: hi });
+      out.push({ name: v.lowered_names[1], type: v.lowered_type, setter, data: lo });
+    }
+  }
+  return out;
+}
