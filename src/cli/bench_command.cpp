@@ -11,6 +11,7 @@
 
 #include "atomic_file.hpp"
 #include "bench/bench.hpp"
+#include "bench/compile_time.hpp"
 #include "bench/compiler.hpp"
 #include "bench/handwritten.hpp"
 #include "bench/plot.hpp"
@@ -27,7 +28,7 @@ struct BenchArgs {
   std::vector<std::string> include_dirs;
   std::string shader, ops = "all", modes = "all", backend = "both", target = "es320", json, plot;
   int elements = 16384, steps = 0, warmup = 2, reps = 7;
-  bool handwritten = false, compiler = false, transcendentals = false, peer_luma = false;
+  bool handwritten = false, compiler = false, transcendentals = false, peer_luma = false, compile_time = false;
   int lines = 5000;
   std::string scaling;  // --compiler: comma list of further sizes
   int mandelbrot_size = 128, mandelbrot_iterations = 1000;
@@ -149,7 +150,38 @@ int run_transcendental_command(const CLI::App& cmd, const BenchArgs& a, const st
   return kExitOk;
 }
 
+int run_compile_time_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  bench::CompileTimeOptions o;
+  if (a.ops != "all") {
+    o.ops.clear();
+    for (const std::string& n : split_commas(a.ops)) {
+      const int ops = std::atoi(n.c_str());
+      if (ops < 1 || ops > 4096) return usage_error(cmd, "--compile-time: --ops is a list of operation counts, 1 to 4096");
+      o.ops.push_back(ops);
+    }
+  }
+  if (a.modes != "all") {
+    o.modes = split_commas(a.modes);
+    for (const std::string& m : o.modes)
+      if (m != "native" && !parse_mode(m)) return usage_error(cmd, "unknown mode '" + m + "'");
+  }
+  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
+  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
+  const std::optional<Target> target = parse_target(a.target);
+  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
+    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  o.target = *target;
+  o.rounds = cmd.count("--reps") ? std::max(1, a.reps) : 3;
+  std::string devices;
+  const std::vector<bench::CompileTimeRow> rows = bench::run_compile_time_bench(o, &devices);
+  std::cout << bench::format_compile_time_markdown(o, rows, command_line, devices) << std::flush;
+  for (const bench::CompileTimeRow& r : rows)
+    if (!r.ok && !r.not_applicable) return 3;
+  return kExitOk;
+}
+
 int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
+  if (a.compile_time) return run_compile_time_command(cmd, a, command_line);
   if (a.compiler) return run_compiler_command(cmd, a, command_line);
   if (a.transcendentals) return run_transcendental_command(cmd, a, command_line);
   if (a.handwritten) return run_handwritten_command(cmd, a, command_line);
@@ -252,11 +284,20 @@ Command add_bench_command(CLI::App& app) {
                 "time per call and bits (docs/transcendentals.md)");
   cmd->add_flag("--peer-luma", args->peer_luma,
                 "--transcendentals: also luma.gl's fp64 module (npm @luma.gl/shadertools, tools/peers)");
+  cmd->add_flag("--compile-time", args->compile_time,
+                "time from shader text to first result on lavapipe and Mesa GLES per mode, for a loop series of "
+                "--ops N,... double operations per iteration (default 1,2,4,...,64; --reps rounds, default 3 here; "
+                "docs/performance.md; the browser's share: tools/browser/compile-time-suite.mjs)");
   cmd->add_option("--mandelbrot-size", args->mandelbrot_size, "--handwritten: pixels per side (default 128)");
   cmd->add_option("--mandelbrot-iterations", args->mandelbrot_iterations, "--handwritten: iteration limit (default 1000)");
   return {cmd, [cmd, args] {
             // The full command with every default spelled out, so the docs can quote it as run.
             const BenchArgs& a = *args;
+            if (a.compile_time)
+              return run_bench_command(*cmd, a,
+                                       "doublet bench --compile-time --ops " + a.ops + " --modes " + a.modes +
+                                           " --backend " + a.backend + " --target " + a.target + " --reps " +
+                                           std::to_string(cmd->count("--reps") ? a.reps : 3));
             if (a.compiler)
               return run_bench_command(*cmd, a,
                                        "doublet bench --compiler --lines " + std::to_string(a.lines) + " --reps " +

@@ -1,10 +1,13 @@
 #include "runner/timed_compute.hpp"
 
+#include <chrono>
+
 #include "runner/internal.hpp"
 
 namespace doublet::runner {
 namespace detail {
-TimedResult vulkan_run_timed(const SpirvProgram& program, const ComputeJob& job, int warmup, int repetitions);
+TimedResult vulkan_run_timed(const SpirvProgram& program, const ComputeJob& job, int warmup, int repetitions,
+                             std::chrono::steady_clock::time_point start);
 TimedResult gles_run_timed(const ComputeJob& job, int warmup, int repetitions);
 }  // namespace detail
 
@@ -15,10 +18,11 @@ TimedResult run_compute_timed(Backend backend, const ComputeJob& job, int warmup
     return r;
   }
   if (backend == Backend::Gles) return detail::gles_run_timed(job, warmup, repetitions);
+  const auto start = std::chrono::steady_clock::now();  // first_result_seconds counts the SPIR-V compile
   detail::SpirvProgram program;
   TimedResult r;
   if (!detail::compile_glsl(job.glsl, &program, &r.error)) return r;
-  return detail::vulkan_run_timed(program, job, warmup, repetitions);
+  return detail::vulkan_run_timed(program, job, warmup, repetitions, start);
 }
 
 }  // namespace doublet::runner

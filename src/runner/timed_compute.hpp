@@ -18,6 +18,11 @@ struct TimedResult {
   // "glFinish-bracketed CPU time".
   std::string clock;
   std::vector<double> seconds;                // one per repetition; warm-up runs are not included
+  // Wall-clock seconds from the GLSL text to the end of the first dispatch (warm-up or not): the
+  // compile (glslang to SPIR-V and the pipeline on Vulkan; glCompileShader/glLinkProgram on GLES),
+  // the driver's code generation (llvmpipe may defer it to the first dispatch), uploads and that
+  // dispatch. `doublet bench --compile-time` subtracts a dispatch from it.
+  double first_result_seconds = 0;
   std::vector<std::vector<uint8_t>> buffers;  // read back after the last repetition
 };
 

@@ -43,6 +43,7 @@ struct GlTimedObjects {
 };
 
 std::string run(const ComputeJob& job, int warmup, int reps, const std::string& device, TimedResult* out) {
+  const auto start = std::chrono::steady_clock::now();
   glGetError();
   GlTimedObjects gl;
   gl.shader = glCreateShader(GL_COMPUTE_SHADER);
@@ -82,7 +83,10 @@ std::string run(const ComputeJob& job, int warmup, int reps, const std::string& 
     glDispatchCompute(job.groups_x, job.groups_y, job.groups_z);
     if (gl.query) glEndQuery(kTimeElapsed);
     glFinish();
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const auto done = std::chrono::steady_clock::now();
+    double seconds = std::chrono::duration<double>(done - t0).count();
+    if (rep == 0 && out->first_result_seconds == 0)
+      out->first_result_seconds = std::chrono::duration<double>(done - start).count();
     if (gl.query) {
       GLuint64 ns = 0;
       timer.get_ui64(gl.query, GL_QUERY_RESULT, &ns);

@@ -28,7 +28,7 @@ double timestamp_tick(VulkanDevice& d) {
 }
 
 std::string run(VulkanDevice& d, const SpirvProgram& program, const ComputeJob& job, int warmup, int reps,
-                TimedResult* out) {
+                std::chrono::steady_clock::time_point start, TimedResult* out) {
   JobObjects objs(d.device);
   const auto n = static_cast<uint32_t>(job.buffers.size());
   for (int b : program.ssbo_bindings)  // an unbound SSBO would be read through a null descriptor
@@ -160,7 +160,9 @@ std::string run(VulkanDevice& d, const SpirvProgram& program, const ComputeJob& 
       vkQueueWaitIdle(d.queue);  // never free objects the queue may still use
       return vk_failed("vkWaitForFences (300 s)", r);
     }
-    const double cpu = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const auto done = std::chrono::steady_clock::now();
+    const double cpu = std::chrono::duration<double>(done - t0).count();
+    if (rep == 0) out->first_result_seconds = std::chrono::duration<double>(done - start).count();
     DOUBLET_VK(vkResetFences(d.device, 1, &fence));
     double seconds = cpu;
     if (queries) {
@@ -181,7 +183,8 @@ std::string run(VulkanDevice& d, const SpirvProgram& program, const ComputeJob& 
 
 }  // namespace
 
-TimedResult vulkan_run_timed(const SpirvProgram& program, const ComputeJob& job, int warmup, int repetitions) {
+TimedResult vulkan_run_timed(const SpirvProgram& program, const ComputeJob& job, int warmup, int repetitions,
+                             std::chrono::steady_clock::time_point start) {
   VulkanDevice& d = shared_device();
   TimedResult r;
   r.device = d.name;
@@ -194,7 +197,7 @@ TimedResult vulkan_run_timed(const SpirvProgram& program, const ComputeJob& job,
     return r;
   }
   std::lock_guard<std::mutex> lock(d.mu);
-  r.error = run(d, program, job, warmup, repetitions, &r);
+  r.error = run(d, program, job, warmup, repetitions, start, &r);
   r.ok = r.error.empty();
   return r;
 }
