@@ -69,6 +69,19 @@ int run_handwritten_command(const CLI::App& cmd, const BenchArgs& a, const std::
   return kExitOk;
 }
 
+// --backend vulkan or gles narrows the options' default (both).
+void narrow_backends(const BenchArgs& a, std::vector<runner::Backend>* backends) {
+  if (a.backend == "vulkan") *backends = {runner::Backend::Vulkan};
+  else if (a.backend == "gles") *backends = {runner::Backend::Gles};
+}
+
+// --target for the compute kernels: es310, es320 or glsl450 (nullopt otherwise).
+std::optional<Target> compute_target(const BenchArgs& a) {
+  const std::optional<Target> t = parse_target(a.target);
+  if (!t || (*t != Target::Es310 && *t != Target::Es320 && *t != Target::Glsl450)) return std::nullopt;
+  return t;
+}
+
 int run_peer_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
   bench::PeerOptions o;
   o.peer_path = a.peer_mesa_fp64;
@@ -76,8 +89,7 @@ int run_peer_command(const CLI::App& cmd, const BenchArgs& a, const std::string&
   for (const std::string& op : o.ops)
     if (std::find(bench::peer_ops().begin(), bench::peer_ops().end(), op) == bench::peer_ops().end())
       return usage_error(cmd, "unknown op '" + op + "' for --peer-mesa-fp64 (add,sub,mul,div,sqrt)");
-  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
-  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
+  narrow_backends(a, &o.backends);
   const std::optional<Target> target = parse_target(a.target);
   if (!target || (*target != Target::Es310 && *target != Target::Es320))
     return usage_error(cmd, "--target must be es310 or es320 with --peer-mesa-fp64 (both backends run it)");
@@ -108,9 +120,8 @@ int run_compiler_command(const CLI::App& cmd, const BenchArgs& a, const std::str
   bench::CompilerOptions o;
   o.lines = a.lines;
   o.repetitions = a.reps;
-  const std::optional<Target> target = parse_target(a.target);
-  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
-    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  const std::optional<Target> target = compute_target(a);
+  if (!target) return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
   if (o.lines < 100) return usage_error(cmd, "--lines must be at least 100");
   for (const std::string& size : split_commas(a.scaling)) {
     const int lines = std::atoi(size.c_str());
@@ -128,11 +139,9 @@ int run_compiler_command(const CLI::App& cmd, const BenchArgs& a, const std::str
 int run_transcendental_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
   bench::TranscendentalOptions o;
   if (a.ops != "all") o.functions = split_commas(a.ops);
-  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
-  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
-  const std::optional<Target> target = parse_target(a.target);
-  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
-    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  narrow_backends(a, &o.backends);
+  const std::optional<Target> target = compute_target(a);
+  if (!target) return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
   o.target = *target;
   o.elements = a.elements;
   if (a.steps) o.steps = a.steps;
@@ -165,11 +174,9 @@ int run_compile_time_command(const CLI::App& cmd, const BenchArgs& a, const std:
     for (const std::string& m : o.modes)
       if (m != "native" && !parse_mode(m)) return usage_error(cmd, "unknown mode '" + m + "'");
   }
-  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
-  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
-  const std::optional<Target> target = parse_target(a.target);
-  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
-    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  narrow_backends(a, &o.backends);
+  const std::optional<Target> target = compute_target(a);
+  if (!target) return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
   o.target = *target;
   o.rounds = cmd.count("--reps") ? std::max(1, a.reps) : 3;
   std::string devices;
@@ -204,11 +211,9 @@ int run_bench_command(const CLI::App& cmd, const BenchArgs& a, const std::string
       o.modes.push_back(*mode);
     }
   }
-  if (a.backend == "vulkan") o.backends = {runner::Backend::Vulkan};
-  else if (a.backend == "gles") o.backends = {runner::Backend::Gles};
-  const std::optional<Target> target = parse_target(a.target);
-  if (!target || (*target != Target::Es310 && *target != Target::Es320 && *target != Target::Glsl450))
-    return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
+  narrow_backends(a, &o.backends);
+  const std::optional<Target> target = compute_target(a);
+  if (!target) return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
   o.target = *target;
   o.elements = a.elements;
   o.steps = a.steps;

@@ -7,20 +7,15 @@
 //        [--json FILE]
 // Exit 0 when every shader compiled within the limit, 1 when one did not (the table says which),
 // 2 when there is no browser here; with DOUBLET_REQUIRE_BROWSER=1 a missing browser is 1.
-import { execFileSync, spawnSync } from 'child_process';
+import { spawnSync } from 'child_process';
 import fs from 'fs';
 import os from 'os';
 import path from 'path';
+import { takeOption } from './session.mjs';
 
 const here = path.dirname(new URL(import.meta.url).pathname);
 const args = process.argv.slice(2);
-const option = (name, fallback) => {
-  const i = args.indexOf(name);
-  if (i < 0) return fallback;
-  const value = args[i + 1];
-  args.splice(i, 2);
-  return value;
-};
+const option = (name, fallback) => takeOption(args, name, fallback);
 const doublet = option('--doublet', '');
 const modes = option('--modes', 'df64,df64-fast,df64-int').split(',');
 const ops = option('--ops', '1,2,4,8,16,32,64').split(',').filter((x) => x).map(Number);

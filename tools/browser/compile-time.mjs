@@ -11,17 +11,11 @@
 import fs from 'fs';
 import os from 'os';
 import path from 'path';
-import { findChromium, launchKillable, pageOutcome, serve } from './session.mjs';
+import { findChromium, launchKillable, pageOutcome, serve, takeOption } from './session.mjs';
 
 const here = path.dirname(new URL(import.meta.url).pathname);
 const args = process.argv.slice(2);
-const option = (name, fallback) => {
-  const i = args.indexOf(name);
-  if (i < 0) return fallback;
-  const value = args[i + 1];
-  args.splice(i, 2);
-  return value;
-};
+const option = (name, fallback) => takeOption(args, name, fallback);
 const limitMs = Number(option('--limit-ms', '10000'));
 const rounds = Number(option('--rounds', '1'));
 if (!args.length || args.some((f) => !fs.existsSync(f))) {

@@ -8,17 +8,11 @@
 // 2 no browser here (chromium or playwright-core missing): callers treat 2 as "skip", not as failure.
 // playwright-core drives the system browser at $CHROMIUM (default /usr/bin/chromium): nothing is downloaded.
 import fs from 'fs';
-import { findChromium, launch, pageOutcome, serve } from './session.mjs';
+import { findChromium, launch, pageOutcome, serve, takeOption } from './session.mjs';
 
 const usage = 'usage: node run-page.mjs DIR [--page index.html] [--timeout-ms N] [--screenshot FILE] [--viewport WxH]';
 const args = process.argv.slice(2);
-const option = (name, fallback) => {
-  const i = args.indexOf(name);
-  if (i < 0) return fallback;
-  const value = args[i + 1];
-  args.splice(i, 2);
-  return value;
-};
+const option = (name, fallback) => takeOption(args, name, fallback);
 const pageName = option('--page', 'index.html');
 const timeoutMs = Number(option('--timeout-ms', '120000'));
 const screenshot = option('--screenshot', '');

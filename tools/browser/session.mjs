@@ -7,6 +7,15 @@ import path from 'path';
 
 export const executablePath = process.env.CHROMIUM || '/usr/bin/chromium';
 
+// Removes `name VALUE` from args and returns VALUE (fallback when absent): the scripts' option parser.
+export function takeOption(args, name, fallback) {
+  const i = args.indexOf(name);
+  if (i < 0) return fallback;
+  const value = args[i + 1];
+  args.splice(i, 2);
+  return value;
+}
+
 // Resolves to playwright-core's chromium, or null with the reason printed (callers exit 2: "no browser").
 export async function findChromium(who) {
   let chromium;
