@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -33,6 +34,7 @@ struct Helper {
 struct Context {
   const pipeline::Config& config;
   std::vector<Diagnostic>& diagnostics;
+  std::string_view source;  // the main shader text as given (to read a literal's spelling at a Loc)
   std::vector<rules::RuleRef> rules_used;        // runtime functions called
   std::map<std::string, ir::Loc> rule_first_use; // where each rule is first called (for diagnostics)
   std::vector<std::string> helper_order;         // generated helpers, in dependency order

@@ -2,7 +2,9 @@
 // float-float runtime (rules/*.glsl). A double literal is split exactly into
 // hi = float(x), lo = float(x - hi) at compile time.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <set>
@@ -358,10 +360,29 @@ class DoubleLowering {
     return rule("df_sub_to_float", width, ir::scalar_type(ir::Base::Float, width), {a, b}, e->loc);
   }
 
+  // Whether the numeric literal written at `loc` (in the main source) is itself finite: then an
+  // infinite constant there was folded from an expression such as 1.0 / 0.0, which native fp64
+  // computes as the same infinity, and (+-Inf, 0) carries it exactly.
+  bool literal_at_is_finite(ir::Loc loc) const {
+    if (loc.file || loc.line <= 0 || loc.column <= 0) return false;
+    size_t at = 0;
+    for (int line = 1; line < loc.line && at != std::string_view::npos; ++line) {
+      at = ctx_.source.find('\n', at);
+      if (at != std::string_view::npos) ++at;
+    }
+    if (at == std::string_view::npos) return false;
+    at += static_cast<size_t>(loc.column - 1);
+    if (at >= ctx_.source.size()) return false;
+    const std::string token(ctx_.source.substr(at, std::min<size_t>(64, ctx_.source.size() - at)));
+    if (token.empty() || !(std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.')) return false;
+    return std::isfinite(std::strtod(token.c_str(), nullptr));
+  }
+
   // A double constant float-float cannot hold is diagnosed, never silently Inf or 0.
   void check_range(double x, SplitStatus status, ir::Loc loc) {
     char text[32];
     std::snprintf(text, sizeof text, "%.17g", x);
+    if (std::isinf(x) && literal_at_is_finite(loc)) return;  // a deliberate infinity (1.0 / 0.0)
     if (std::isinf(x)) {
       ctx_.error(loc, std::string("the double constant overflows even double precision (") + text + ")");
     } else if (status == SplitStatus::Overflow) {

@@ -20,7 +20,7 @@ namespace doublet::pipeline {
 // Everything the passes hand on to each other.
 struct State {
   State(const Config& c, const Options& o, std::string_view s, Result& r)
-      : config(c), frontend_options(pipeline::frontend_options(o, c)), source(s), result(r), ctx{c, r.diagnostics} {}
+      : config(c), frontend_options(pipeline::frontend_options(o, c)), source(s), result(r), ctx{c, r.diagnostics, s} {}
 
   const Config& config;
   const Options frontend_options;  // what the front end reads (the GLSL profile under wgsl)
