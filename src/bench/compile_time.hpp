@@ -28,7 +28,6 @@ struct CompileTimeRow {
   bool ok = false, not_applicable = false;
   std::string error;
   double compile_seconds = 0;  // time to the first result minus one dispatch, the fastest round
-  int glsl_lines = 0;
 };
 
 // The series' compute shader with `ops` double operations per iteration.

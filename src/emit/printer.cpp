@@ -557,8 +557,7 @@ class Printer {
         return operand(e->args[0], 4, false) + " ? " + operand(e->args[1], 4, false) + " : " + operand(e->args[2], 4, false);
       case Expr::Kind::Call: return call(e->name, e->args);
       case Expr::Kind::Builtin:
-        if (e->name == "length" && e->args.size() == 1 && e->args[0]->type.is_array())
-          return operand(e->args[0], 17, false) + ".length()";  // a runtime-sized array's length
+        if (ir::is_array_length(*e)) return operand(e->args[0], 17, false) + ".length()";
         builtin_first_use_.emplace(builtin_name(*e), PrintResult::BuiltinUse{e->loc, e->name});
         return call(builtin_name(*e), e->args);
       case Expr::Kind::Construct: return call(ir::type_name(e->type) + ir::array_suffix(e->type), e->args);

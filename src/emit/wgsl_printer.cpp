@@ -963,7 +963,7 @@ class WgslPrinter {
     static const std::map<std::string, std::string> comparisons = {
         {"lessThan", "<"}, {"lessThanEqual", "<="}, {"greaterThan", ">"}, {"greaterThanEqual", ">="},
         {"equal", "=="}, {"notEqual", "!="}};
-    if (n == "length" && a.size() == 1 && a[0]->type.is_array()) {
+    if (ir::is_array_length(e)) {
       if (a[0]->type.array_dims[0] > 0) return std::to_string(a[0]->type.array_dims[0]) + "i";
       return "i32(arrayLength(&" + expr(a[0]) + "))";
     }

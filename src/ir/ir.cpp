@@ -57,6 +57,10 @@ ExprPtr make_node(Expr::Kind k, const std::string& name, Type type, std::vector<
   return e;
 }
 
+bool is_array_length(const Expr& e) {
+  return e.kind == Expr::Kind::Builtin && e.name == "length" && e.args.size() == 1 && e.args[0]->type.is_array();
+}
+
 bool is_pure(const ExprPtr& e) {
   switch (e->kind) {
     case Expr::Kind::Sym:

@@ -142,6 +142,9 @@ struct Expr {
 ExprPtr make_node(Expr::Kind k, const std::string& name, Type type, std::vector<ExprPtr> args, Loc loc);
 // True for an access with no side effects: a variable, a constant, members and indices of those.
 bool is_pure(const ExprPtr& e);
+// `a.length()` of an array (the importer's "length" built-in on an array; glslang folds sized ones,
+// so in practice a runtime-sized buffer array): an int, whatever the elements are lowered to.
+bool is_array_length(const Expr& e);
 // True when evaluating `e` changes state: an assignment, ++/--, a call of a user function (it may
 // write globals or out parameters), a built-in with out parameters or memory effects (modf,
 // atomicAdd, imageStore, barrier, ...). Such an expression must be evaluated exactly once.

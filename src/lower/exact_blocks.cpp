@@ -848,7 +848,7 @@ class BlockWords {
     if (!e) return e;
     if (std::optional<Place> p = place(e)) return p->doubles ? load(*p, e->loc) : p->parts[0];
     // `.length()` of a block's array of doubles: the length of its word array (one element each).
-    if (e->kind == Kind::Builtin && e->name == "length" && e->args.size() == 1 && e->args[0]->type.is_array())
+    if (ir::is_array_length(*e))
       if (std::optional<Place> p = place(e->args[0]); p && !p->parts.empty()) {  // dvec3/4: the xy words' array
         e->args[0] = p->parts[0];
         return e;

@@ -2,14 +2,15 @@
 // float-float runtime (rules/*.glsl). A double literal is split exactly into
 // hi = float(x), lo = float(x - hi) at compile time.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "doublet/split.hpp"
+#include "frontend/text_scan.hpp"
 #include "ir/walk.hpp"
 #include "lower/block_layout.hpp"
 #include "lower/lower.hpp"
@@ -363,18 +364,13 @@ class DoubleLowering {
   // Whether the numeric literal written at `loc` (in the main source) is itself finite: then an
   // infinite constant there was folded from an expression such as 1.0 / 0.0, which native fp64
   // computes as the same infinity, and (+-Inf, 0) carries it exactly.
-  bool literal_at_is_finite(ir::Loc loc) const {
-    if (loc.file || loc.line <= 0 || loc.column <= 0) return false;
-    size_t at = 0;
-    for (int line = 1; line < loc.line && at != std::string_view::npos; ++line) {
-      at = ctx_.source.find('\n', at);
-      if (at != std::string_view::npos) ++at;
-    }
-    if (at == std::string_view::npos) return false;
-    at += static_cast<size_t>(loc.column - 1);
-    if (at >= ctx_.source.size()) return false;
-    const std::string token(ctx_.source.substr(at, std::min<size_t>(64, ctx_.source.size() - at)));
-    if (token.empty() || !(std::isdigit(static_cast<unsigned char>(token[0])) || token[0] == '.')) return false;
+  bool literal_at_is_finite(ir::Loc loc) {
+    if (loc.file || loc.column <= 0) return false;
+    if (!source_lines_) source_lines_.emplace(ctx_.source);
+    const std::string_view row = source_lines_->line(loc.line);
+    if (static_cast<size_t>(loc.column) > row.size()) return false;
+    const std::string token(row.substr(static_cast<size_t>(loc.column - 1)));
+    if (!frontend::is_digit(token[0]) && token[0] != '.') return false;
     return std::isfinite(std::strtod(token.c_str(), nullptr));
   }
 
@@ -662,7 +658,7 @@ class DoubleLowering {
 
   ExprPtr lower_builtin(const ExprPtr& e) {
     // `.length()` of a (runtime-sized) array of doubles counts elements, whatever they became.
-    if (e->name == "length" && e->args.size() == 1 && e->args[0]->type.is_array()) return e;
+    if (ir::is_array_length(*e)) return e;
     if (e->name == "packDouble2x32") return rule("df_pack_double2x32", 1, df_type(1), e->args, e->loc);
     bool any_df = std::any_of(e->args.begin(), e->args.end(),
                               [](const ExprPtr& a) { return is_df(a->type) || matrix::is_matrix(a->type); });
@@ -999,6 +995,7 @@ class DoubleLowering {
   Context& ctx_;
   std::set<std::string> reported_;  // unsupported types already diagnosed
   bool fast_ = false;  // the current function's arithmetic is df64-fast (rules/fast.glsl)
+  std::optional<frontend::LineIndex> source_lines_;  // built on the first infinite constant
 };
 
 }  // namespace
