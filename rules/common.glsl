@@ -392,7 +392,8 @@ $DF df_ldexp($DF a, $I e) {
 // Source: IEEE 754-2008 section 5.3.3 (logB); JMP 2017, Definition 1.4
 // Bound: exact
 // Flops: 9 (plus 4 comparisons)
-// @widths 1
+// @widths 1 2 3 4
+// @per-component
 // @min-es 300
 // @uses df_ldexp:1 df_select:1
 $DF df_frexp($DF a, out $I e) {

@@ -145,7 +145,9 @@ Options common_options(const LowerArgs& a, std::string& error) {
 }
 
 // The stage for `input`: -S, else from the file name. Empty string on success.
-std::string resolve_stage(const std::string& input, Options& opt) {
+// A stage doublet does not lower is not a usage error: it goes to `refusal`, which the job reports
+// as the file's diagnostic (exit 2).
+std::string resolve_stage(const std::string& input, Options& opt, std::string& refusal) {
   if (opt.stage) return {};
   if (input == "-") return "reading the shader from stdin requires -S vert|frag|comp";
   opt.stage = stage_from_path(input);
@@ -163,8 +165,10 @@ std::string resolve_stage(const std::string& input, Options& opt) {
   if (name.size() > 5 && name.compare(name.size() - 5, 5, ".glsl") == 0) name.resize(name.size() - 5);
   for (const auto& [ext, what] : kOtherStages) {
     const size_t len = std::char_traits<char>::length(ext);
-    if (name.size() > len && name.compare(name.size() - len, len, ext) == 0)
-      return "'" + input + "' is " + what + ": doublet lowers vertex, fragment and compute shaders only";
+    if (name.size() > len && name.compare(name.size() - len, len, ext) == 0) {
+      refusal = std::string("this is ") + what + ": doublet lowers vertex, fragment and compute shaders only";
+      return {};
+    }
   }
   return "cannot tell the shader stage from the file name '" + input +
          "' (expected .vert, .frag, .comp, optionally followed by .glsl); use -S";
@@ -175,7 +179,7 @@ std::string plan_single(const LowerArgs& a, const Options& common, std::vector<L
   LowerJob job;
   job.input = a.inputs.front();
   job.options = common;
-  if (std::string e = resolve_stage(job.input, job.options); !e.empty()) return e;
+  if (std::string e = resolve_stage(job.input, job.options, job.refusal); !e.empty()) return e;
   job.options.file_name = job.input == "-" ? "<stdin>" : job.input;
   job.output = a.output == "-" ? std::string() : a.output;
   job.manifest = a.manifest;
@@ -204,7 +208,7 @@ std::string plan_batch(const LowerArgs& a, const Options& common, std::vector<Lo
     job.input = input;
     job.options = common;
     job.options.file_name = input;
-    if (std::string e = resolve_stage(input, job.options); !e.empty()) return e;
+    if (std::string e = resolve_stage(input, job.options, job.refusal); !e.empty()) return e;
     std::string name = fs::path(input).filename().string();
     job.output = (fs::path(a.out_dir) / name).string();
     job.manifest = job.output + ".json";

@@ -47,6 +47,11 @@ JobOutcome run_lower_job(const LowerJob& job) {
     return outcome;
   };
 
+  if (!job.refusal.empty()) {
+    outcome.diagnostics.push_back({job.options.file_name, 1, 1, Severity::Error, job.refusal});
+    outcome.exit_code = kExitInput;
+    return outcome;
+  }
   std::string source;
   if (frontend::ReadResult read = read_input(job.input, source); read.status != frontend::ReadStatus::Ok) {
     const bool too_large = read.status == frontend::ReadStatus::TooLarge;

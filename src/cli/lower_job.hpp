@@ -17,6 +17,9 @@ struct LowerJob {
   std::string manifest;         // empty: none; "-": stdout (output must be a file)
   std::string depfile;          // empty: none
   std::string depfile_target;   // the rule's target in the depfile
+  // Non-empty: the input is a stage doublet does not lower (named by its extension); the job reports
+  // this as the file's diagnostic (exit 2, like any shader it cannot lower) and writes nothing.
+  std::string refusal;
 };
 
 struct JobOutcome {

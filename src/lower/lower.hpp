@@ -72,6 +72,9 @@ ir::Type df_type(int width);
 bool is_df(const ir::Type& t);  // a df_double/df_dvecN struct (not an array of them, not a matrix)
 int df_width(const ir::Type& t);
 
+// A component of a double vector or matrix passed to an out/inout parameter goes through a
+// temporary (after lowering it is no longer an lvalue); runs before lower_doubles.
+bool out_argument_temporaries(ir::Module& module, Context& context);
 bool lower_doubles(ir::Module& module, Context& context);
 // In/out blocks become plain in/out variables (BLOCK_MEMBER) on targets without I/O blocks.
 bool flatten_io_blocks(ir::Module& module, Context& context);

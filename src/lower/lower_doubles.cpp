@@ -737,10 +737,6 @@ class DoubleLowering {
     // normalize(x) = x / |x| is sign(x) for float-float; mode exact repeats native's x / sqrt(x * x).
     if (n == "normalize" && width == 1 && !exact()) rule_name = "df_sign";
     if (n == "atan" && args.size() == 2) rule_name = "df_atan2";
-    if (n == "frexp" && width > 1 && !exact()) {  // rules/exact.glsl has ex_frexp on vectors
-      ctx_.error(e->loc, "frexp on double vectors is not supported yet; call it per component");
-      return e;
-    }
     for (auto& a : args) {
       if (a->type.base == ir::Base::Bool || a->type.base == ir::Base::Int) continue;
       if (!is_df(a->type)) a = to_df(a);

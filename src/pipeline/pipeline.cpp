@@ -90,6 +90,7 @@ const std::vector<Pass>& pass_table() {
       // On the IR as imported, before any pass rewrites it.
       IR_PASS("lints", "lints", always, (passes::run_lints(s.module, s.source, s.ctx), true)),
       IR_PASS("modes", "modes", lowers_doubles, passes::apply_modes(s.module, s.ctx, s.pragmas)),
+      IR_PASS("out-argument-temporaries", "lower", lowers_doubles, passes::out_argument_temporaries(s.module, s.ctx)),
       IR_PASS("lower-doubles", "lower", lowers_doubles, passes::lower_doubles(s.module, s.ctx)),
       // Rewrites float-float rule calls; binary64 words have none.
       IR_PASS("optimize", "optimize", [](const Config& c) { return c.optimize && !c.binary64_words() && !c.native(); },

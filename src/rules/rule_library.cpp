@@ -245,6 +245,12 @@ bool is_width_placeholder(const std::string& t) {
   return t == "$DF" || t == "$F" || t == "$B" || t == "$I" || t == "$U";
 }
 
+// "out $I" → "$I" (an out parameter of a @per-component rule); anything else → "".
+std::string_view out_param_type(std::string_view t) {
+  constexpr std::string_view kOut = "out ";
+  return t.substr(0, kOut.size()) == kOut ? t.substr(kOut.size()) : std::string_view();
+}
+
 }  // namespace
 
 struct RuleLibrary::Impl {
@@ -330,12 +336,27 @@ struct RuleLibrary::Impl {
     for (size_t i = 0; i < c.params.size(); ++i)
       out += (i ? ", " : "") + subst_or_empty(c.params[i].type, sw) + " " + c.params[i].name;
     out += ") {\n";
+    // An `out $I e` parameter: one width-1 local per component, gathered into e at the end.
+    std::string gather;
+    for (const auto& p : c.params) {
+      const std::string_view type = out_param_type(p.type);
+      if (type.empty()) continue;
+      std::string parts;
+      for (int k = 0; k < width; ++k) {
+        const std::string local = p.name + "_" + std::to_string(k);
+        out += "  " + subst_or_empty(std::string(type), s1) + " " + local + ";\n";
+        parts += (k ? ", " : "") + local;
+      }
+      gather += "  " + p.name + " = " + subst_or_empty(std::string(type), sw) + "(" + parts + ");\n";
+    }
     for (int k = 0; k < width; ++k) {
       out += "  " + ret_1 + " r" + std::to_string(k) + " = " + c.name + "(";
       for (size_t i = 0; i < c.params.size(); ++i) {
         const auto& p = c.params[i];
         out += i ? ", " : "";
-        if (p.type == "$DF")
+        if (!out_param_type(p.type).empty())
+          out += p.name + "_" + std::to_string(k);
+        else if (p.type == "$DF")
           out += "df_double(" + p.name + ".hi." + kComponents[k] + ", " + p.name + ".lo." + kComponents[k] + ")";
         else if (is_width_placeholder(p.type))
           out += p.name + "." + kComponents[k];
@@ -344,6 +365,7 @@ struct RuleLibrary::Impl {
       }
       out += ");\n";
     }
+    out += gather;
     auto list = [&](const std::string& suffix) {
       std::string l;
       for (int k = 0; k < width; ++k) l += (k ? ", r" : "r") + std::to_string(k) + suffix;
@@ -524,7 +546,8 @@ bool parse_file(const std::string& file, const std::string& text, std::vector<Ch
       if (!is_width_placeholder(c.ret_type))
         return fail(start, c.name + ": @per-component needs a $DF/$F/$B/$I/$U return type");
       for (const auto& p : c.params)
-        if (p.type.find('$') != std::string::npos && !is_width_placeholder(p.type))
+        if (p.type.find('$') != std::string::npos && !is_width_placeholder(p.type) &&
+            !(is_width_placeholder(std::string(out_param_type(p.type))) && out_param_type(p.type) != "$DF"))
           return fail(start, c.name + ": @per-component parameter type '" + p.type + "' is not supported");
     }
     out.push_back(std::move(c));

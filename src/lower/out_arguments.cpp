@@ -1,0 +1,210 @@
+// out_argument_temporaries: a component of a double vector or matrix passed to an out/inout
+// parameter (`f(v.y)`, `f(m[1])`, `f(m[1][2])`) goes through a temporary the pass declares. After
+// lowering, such a component is a value built from two words (df_double(v.hi.y, v.lo.y)), which
+// GLSL cannot pass as an lvalue; a whole double variable can. GLSL's own semantics are copy-in,
+// copy-out (GLSL 4.60 §6.1.1), so the temporary changes nothing:
+//
+//   f(v.y);              →   { df_out1 = v.y; f(df_out1); v.y = df_out1; }
+//   x = g(v.y) + 1.0;    →   x = (df_out1 = v.y, df_out2 = g(df_out1), v.y = df_out1, df_out2) + 1.0;
+//
+// The first form where the call is a whole statement, the second anywhere else (it stays one
+// expression, so it is right inside a loop condition or a && operand). The temporaries are declared,
+// uninitialised, at the top of the enclosing function. The argument is written back through the
+// same access, so it is rewritten only when evaluating that access twice reads the same place: its
+// indices are constants or local variables that the call cannot write. Others keep the lowering's
+// diagnostic ("use a temporary").
+#include <algorithm>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ir/walk.hpp"
+#include "lower/lower.hpp"
+
+namespace doublet::passes {
+namespace {
+
+using ir::Expr;
+using Kind = ir::Expr::Kind;
+
+bool writes(const ir::VarPtr& param) {
+  return param->storage == ir::Storage::ParamOut || param->storage == ir::Storage::ParamInOut;
+}
+
+bool same_type(const ir::Type& a, const ir::Type& b) {
+  return a.base == b.base && a.vec == b.vec && a.cols == b.cols && a.array_dims == b.array_dims && a.name == b.name;
+}
+
+// A swizzle or index of a double vector or matrix (not of an array or a struct: those are lvalues
+// after lowering too).
+bool is_double_component(const ir::ExprPtr& e) {
+  if (e->kind != Kind::Member && e->kind != Kind::Index) return false;
+  const ir::Type& base = e->args[0]->type;
+  return base.is_double() && !base.is_array() && (base.vec > 1 || base.is_matrix());
+}
+
+ir::ExprPtr sym(const ir::VarPtr& v, ir::Loc loc) {
+  auto e = Expr::make(Kind::Sym, v->type, loc);
+  e->var = v;
+  return e;
+}
+
+ir::ExprPtr assign(const ir::ExprPtr& target, const ir::ExprPtr& value) {
+  auto e = ir::make_node(Kind::Binary, "", target->type, {target, value}, value->loc);
+  e->op = "=";
+  return e;
+}
+
+class OutArgumentRewriter {
+ public:
+  explicit OutArgumentRewriter(ir::Module& m) : module_(m) {}
+
+  void run() {
+    for (const auto& f : module_.functions) {
+      temporaries_.clear();
+      rewrite_block(f->body);
+      auto& body = f->body->body;
+      body.insert(body.begin(), temporaries_.begin(), temporaries_.end());
+    }
+  }
+
+ private:
+  const ir::Function* callee(const ir::ExprPtr& call) const {
+    for (const auto& f : module_.functions) {
+      if (f->name != call->name || f->params.size() != call->args.size()) continue;
+      bool match = true;
+      for (size_t i = 0; i < f->params.size() && match; ++i)
+        match = same_type(f->params[i]->declared_type, call->args[i]->type);
+      if (match) return f.get();
+    }
+    return nullptr;
+  }
+
+  // Evaluating `arg` again after the call reads the same place: every index in it is a constant or
+  // a local variable that is not itself an argument of the call (an out argument could change it).
+  static bool stable(const ir::ExprPtr& arg, const ir::ExprPtr& call) {
+    if (!ir::is_pure(arg)) return false;
+    bool ok = true;
+    std::vector<const ir::Var*> passed;
+    for (const auto& a : call->args) ir::visit(a, [&](const ir::ExprPtr& e) {
+        if (e->kind == Kind::Sym && a != arg) passed.push_back(e->var.get());
+      });
+    std::function<void(const ir::ExprPtr&)> check = [&](const ir::ExprPtr& e) {
+      if (e->kind == Kind::Index) {
+        ir::visit(e->args[1], [&](const ir::ExprPtr& i) {
+          if (i->kind != Kind::Sym) return;
+          const ir::Storage s = i->var->storage;
+          const bool local = s == ir::Storage::Local || s == ir::Storage::ParamIn || s == ir::Storage::ParamOut ||
+                             s == ir::Storage::ParamInOut || s == ir::Storage::Const;
+          if (!local || std::find(passed.begin(), passed.end(), i->var.get()) != passed.end()) ok = false;
+        });
+      }
+      if (e->kind == Kind::Index || e->kind == Kind::Member) check(e->args[0]);
+    };
+    check(arg);
+    return ok;
+  }
+
+  ir::VarPtr temporary(const ir::Type& type, ir::Loc loc) {
+    auto tmp = std::make_shared<ir::Var>();
+    tmp->name = "df_out" + std::to_string(++counter_);
+    tmp->type = type;
+    tmp->declared_type = type;
+    tmp->storage = ir::Storage::Local;
+    tmp->loc = loc;
+    auto decl = ir::Stmt::make(ir::Stmt::Kind::Decl, loc);
+    decl->var = tmp;
+    temporaries_.push_back(decl);
+    return tmp;
+  }
+
+  // The copy-in assignments, the call on the temporaries and the copy-out assignments; empty when
+  // the call passes no double component to an out/inout parameter (or one it cannot rewrite).
+  struct Parts {
+    std::vector<ir::ExprPtr> before, after;
+    ir::ExprPtr call;
+  };
+  bool split(const ir::ExprPtr& call, Parts& parts) {
+    if (call->kind != Kind::Call) return false;
+    const ir::Function* f = callee(call);
+    if (!f) return false;
+    ir::ExprPtr rewritten = ir::make_node(Kind::Call, call->name, call->type, call->args, call->loc);
+    for (size_t i = 0; i < f->params.size(); ++i) {
+      const ir::ExprPtr& arg = call->args[i];
+      if (!writes(f->params[i]) || !is_double_component(arg) || !stable(arg, call)) continue;
+      ir::VarPtr tmp = temporary(arg->type, arg->loc);
+      if (f->params[i]->storage == ir::Storage::ParamInOut) parts.before.push_back(assign(sym(tmp, arg->loc), ir::clone(arg)));
+      parts.after.push_back(assign(ir::clone(arg), sym(tmp, arg->loc)));
+      rewritten->args[i] = sym(tmp, arg->loc);
+    }
+    parts.call = rewritten;
+    return !parts.after.empty();
+  }
+
+  void rewrite_block(const ir::StmtPtr& s) {
+    if (!s) return;
+    for (size_t i = 0; i < s->body.size(); ++i) {
+      const ir::StmtPtr child = s->body[i];
+      if (!child) continue;
+      Parts parts;
+      // A call that is a whole statement: the copies become statements around it.
+      if (s->kind == ir::Stmt::Kind::Block && child->kind == ir::Stmt::Kind::Expr && child->expr &&
+          child->expr->kind == Kind::Call && !has_nested_call(child->expr->args) && split(child->expr, parts)) {
+        auto block = ir::Stmt::make(ir::Stmt::Kind::Block, child->loc);
+        auto statement = [&](const ir::ExprPtr& e) {
+          auto st = ir::Stmt::make(ir::Stmt::Kind::Expr, e->loc);
+          st->expr = e;
+          block->body.push_back(st);
+        };
+        for (const auto& e : parts.before) statement(e);
+        statement(parts.call);
+        for (const auto& e : parts.after) statement(e);
+        s->body[i] = block;
+        continue;
+      }
+      rewrite_block(child);
+    }
+    if (s->expr) s->expr = rewrite_expr(s->expr);
+    if (s->step) s->step = rewrite_expr(s->step);
+  }
+
+  // A call nested in an argument is left to rewrite_expr (post-order), so the statement form
+  // only handles calls whose arguments hold no such call.
+  bool has_nested_call(const std::vector<ir::ExprPtr>& args) const {
+    bool found = false;
+    for (const auto& a : args)
+      ir::visit(a, [&](const ir::ExprPtr& e) { found |= e->kind == Kind::Call; });
+    return found;
+  }
+
+  ir::ExprPtr rewrite_expr(const ir::ExprPtr& root) {
+    return ir::rewrite(root, [&](const ir::ExprPtr& e) -> ir::ExprPtr {
+      Parts parts;
+      if (!split(e, parts)) return nullptr;
+      std::vector<ir::ExprPtr> sequence = parts.before;
+      ir::VarPtr result;
+      if (e->type.base == ir::Base::Void) {
+        sequence.push_back(parts.call);
+      } else {
+        result = temporary(e->type, e->loc);
+        sequence.push_back(assign(sym(result, e->loc), parts.call));
+      }
+      sequence.insert(sequence.end(), parts.after.begin(), parts.after.end());
+      if (result) sequence.push_back(sym(result, e->loc));
+      return ir::make_node(Kind::Comma, "", sequence.back()->type, sequence, e->loc);
+    });
+  }
+
+  ir::Module& module_;
+  std::vector<ir::StmtPtr> temporaries_;
+  int counter_ = 0;
+};
+
+}  // namespace
+
+bool out_argument_temporaries(ir::Module& module, Context& context) {
+  OutArgumentRewriter(module).run();
+  return !context.failed;
+}
+
+}  // namespace doublet::passes

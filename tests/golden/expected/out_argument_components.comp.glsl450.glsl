@@ -1,0 +1,375 @@
+#version 450 core
+precision highp float;
+precision highp int;
+layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;
+
+struct df_dvec2 {
+  vec2 hi;
+  vec2 lo;
+};
+struct df_dvec4 {
+  vec4 hi;
+  vec4 lo;
+};
+struct df_dmat2 {
+  mat2 hi;
+  mat2 lo;
+};
+// doublet float-float runtime: 12 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
+df_double df_split(float a) {
+  precise float g = (a * 4097.0);
+  precise float d = (a - g);
+  precise float hi = (g + d);
+  precise float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
+df_double df_two_prod(float a, float b) {
+  precise float p = (a * b);
+  precise float aa = (abs(a));
+  precise float ab = (abs(b));
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  precise float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  precise float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  precise float as = (a * ka);
+  precise float bs = (b * kb);
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  precise float az = (abs(z.hi));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  precise float h = (mix(f, z.hi, regular));
+  precise float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_double df_mul(df_double a, df_double b) {
+  df_double c = df_two_prod(a.hi, b.hi);
+  precise float tl = (a.hi * b.lo);
+  precise float th = (a.lo * b.hi);
+  precise float cl2 = (th + tl);
+  precise float cl3 = (c.lo + cl2);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  precise float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  precise float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 30
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+df_double df_mul_f(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  precise float cl2 = (a.lo * b);
+  df_double t = df_fast_two_sum(c.hi, cl2);
+  precise float tl2 = (t.lo + c.lo);
+  df_double z = df_fast_two_sum(t.hi, tl2);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 39
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
+df_double df_div(df_double a, df_double b) {
+  precise float th = (a.hi / b.hi);
+  df_double r = df_mul_f(b, th);
+  precise float pih = (a.hi - r.hi);
+  precise float dl = (a.lo - r.lo);
+  precise float d = (pih + dl);
+  precise float tl = (d / b.hi);
+  df_double z = df_fast_two_sum(th, tl);
+  df_double q = df_finish(z, th);
+  return q;
+}
+
+// df_gt: a > b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_gt(df_double a, df_double b) {
+  return any(bvec2(a.hi > b.hi, all(bvec2(a.hi == b.hi, a.lo > b.lo))));
+}
+
+// df_add_f: a + b with b a plain float (b need not be a double-word).
+// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
+// Bound: 2u^2
+// Flops: 11
+// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
+df_double df_add_f(df_double a, float b) {
+  df_double s = df_two_sum(a.hi, b);
+  precise float v = (a.lo + s.lo);
+  df_double z = df_fast_two_sum(s.hi, v);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_sqr: a * a. Dekker's mul12 with both operands equal needs one Veltkamp split instead of
+// two and its two cross products are equal (one product, doubled exactly), and DWTimesDW1's two
+// terms ah*al and al*ah are equal too. Every rounding is the one df_mul(a, a) performs, so the
+// result is bit-identical to df_mul(a, a) (wherever a*a is finite) with 10 fewer operations.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with a = b, Dekker's TwoProd specialised to a square, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2); Dekker 1971
+// Bound: 7u^2
+// Flops: 19
+// Steps: p = RN(ah*ah); (sh,sl) = split(ah); t1 = RN(sh*sh - p); t2 = RN(t1 + 2*(sh*sl));
+//        e = RN(t2 + sl*sl) (exact: the partial sums of mul12); c = RN(ah*al);
+//        cl3 = RN(e + 2c); (zh,zl) = Fast2Sum(p, cl3); df_finish(z, p).
+// Range and special values: as df_mul. The split is not scaled: whenever a*a is finite,
+// |a| < 1.9e19 is far below the split's limit (8.3e34); when it overflows, p is Inf and
+// df_finish returns (Inf, 0) as df_mul does.
+df_double df_sqr(df_double a) {
+  precise float p = (a.hi * a.hi);
+  df_double s = df_split(a.hi);
+  precise float hh = (s.hi * s.hi);
+  precise float hl = (s.hi * s.lo);
+  precise float hl2 = (hl + hl);
+  precise float ll = (s.lo * s.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl2);
+  precise float e = (t2 + ll);
+  precise float c = (a.hi * a.lo);
+  precise float c2 = (c + c);
+  precise float cl3 = (e + c2);
+  df_double z = df_fast_two_sum(p, cl3);
+  df_double r = df_finish(z, p);
+  return r;
+}
+
+df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
+  return df_dvec2(vec2(a0.hi, a1.hi), vec2(a0.lo, a1.lo));
+}
+
+df_dmat2 df_make_dmat2_1_1_1_1(df_double a0, df_double a1, df_double a2, df_double a3) {
+  return df_dmat2(mat2(a0.hi, a1.hi, a2.hi, a3.hi), mat2(a0.lo, a1.lo, a2.lo, a3.lo));
+}
+
+df_double df_assign_component_dvec4(inout df_dvec4 v, int i, df_double x) {
+  v.hi[i] = x.hi;
+  v.lo[i] = x.lo;
+  return x;
+}
+
+df_double df_component_dvec4(df_dvec4 v, int i) {
+  return df_double(v.hi[i], v.lo[i]);
+}
+
+df_double df_swizzle_dvec2_x(df_dvec2 v) {
+  return df_double(v.hi.x, v.lo.x);
+}
+
+df_double df_assign_element_dmat2(inout df_dmat2 m, int j, int i, df_double x) {
+  m.hi[j][i] = x.hi;
+  m.lo[j][i] = x.lo;
+  return x;
+}
+
+df_dvec2 df_assign_column_dmat2(inout df_dmat2 m, int j, df_dvec2 v) {
+  m.hi[j] = v.hi;
+  m.lo[j] = v.lo;
+  return v;
+}
+
+df_double df_swizzle_dvec2_y(df_dvec2 v) {
+  return df_double(v.hi.y, v.lo.y);
+}
+
+df_dvec4 df_make_dvec4_1_1_1_1(df_double a0, df_double a1, df_double a2, df_double a3) {
+  return df_dvec4(vec4(a0.hi, a1.hi, a2.hi, a3.hi), vec4(a0.lo, a1.lo, a2.lo, a3.lo));
+}
+
+layout(std430, binding = 0) buffer Data {
+  df_dvec4 x[];
+};
+layout(std430, binding = 1) buffer Results {
+  df_dvec4 r[];
+};
+
+void scale(inout df_double x_1, df_double by);
+void column(out df_dvec2 c, df_double a);
+df_double take(inout df_double x_1);
+
+void scale(inout df_double x_1, df_double by)
+{
+  x_1 = df_add_f(df_mul(x_1, by), 0.25);
+}
+
+void column(out df_dvec2 c, df_double a)
+{
+  c = df_make_dvec2_1_1(a, df_sqr(a));
+}
+
+df_double take(inout df_double x_1)
+{
+  df_double old = x_1;
+  x_1 = df_div(x_1, df_double(3.0, 0.0));
+  return old;
+}
+
+void main()
+{
+  df_double df_out1;
+  df_double df_out2;
+  df_double df_out3;
+  df_dvec2 df_out4;
+  df_double df_out5;
+  df_double df_out6;
+  df_double df_out7;
+  df_double df_out8;
+  df_double df_out9;
+  df_double df_out10;
+  uint n = gl_GlobalInvocationID.x;
+  df_dvec4 v = x[n];
+  df_dvec4 w = v;
+  df_dmat2 m = df_make_dmat2_1_1_1_1(df_double(v.hi.x, v.lo.x), df_double(v.hi.y, v.lo.y), df_double(v.hi.z, v.lo.z), df_double(v.hi.w, v.lo.w));
+  int i = int(n) & 3;
+  {
+    df_out1 = df_double(w.hi.y, w.lo.y);
+    scale(df_out1, df_double(w.hi.x, w.lo.x));
+    df_assign_component_dvec4(w, 1, df_out1);
+  }
+  {
+    df_out2 = df_component_dvec4(w, i);
+    scale(df_out2, df_double(1.5, 0.0));
+    df_assign_component_dvec4(w, i, df_out2);
+  }
+  {
+    df_out3 = df_swizzle_dvec2_x(df_dvec2(m.hi[1], m.lo[1]));
+    scale(df_out3, df_double(w.hi.z, w.lo.z));
+    df_assign_element_dmat2(m, 1, 0, df_out3);
+  }
+  {
+    column(df_out4, df_double(w.hi.w, w.lo.w));
+    df_assign_column_dmat2(m, 0, df_out4);
+  }
+  df_double s = df_add((df_out5 = df_double(w.hi.z, w.lo.z), df_out6 = take(df_out5), df_assign_component_dvec4(w, 2, df_out5), df_out6), (df_out7 = df_double(w.hi.x, w.lo.x), df_out8 = take(df_out7), df_assign_component_dvec4(w, 0, df_out7), df_out8));
+  for (int j = 0; (j < 2) && df_gt((df_out9 = df_double(w.hi.w, w.lo.w), df_out10 = take(df_out9), df_assign_component_dvec4(w, 3, df_out9), df_out10), df_double(0.0, 0.0)); ++j)
+  {
+    s = df_add(s, df_double(w.hi.w, w.lo.w));
+  }
+  r[2u * n] = w;
+  r[2u * n + 1u] = df_make_dvec4_1_1_1_1(s, df_swizzle_dvec2_y(df_dvec2(m.hi[0], m.lo[0])), df_swizzle_dvec2_x(df_dvec2(m.hi[1], m.lo[1])), df_swizzle_dvec2_x(df_dvec2(m.hi[0], m.lo[0])));
+}
