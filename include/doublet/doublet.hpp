@@ -157,6 +157,11 @@ struct InterfaceVariable {
   // Blocks only: the packing emitted ("std140"/"std430") and every member's new place.
   std::string layout;
   std::vector<BlockMember> members;
+  // A uniform declared with an initializer (`uniform double zoom = 1.0lf;`): its value, every
+  // component in GLSL's order (column-major for matrices, elements in order for arrays; ints and
+  // bools as numbers). Targets without uniform initializers (GLSL ES, WGSL) and mode exact declare
+  // the uniform without one: the application sets this value (README, `--manifest`).
+  std::vector<double> default_value;
   // WGSL buffers (target wgsl): @group and @binding; -1 elsewhere.
   int group = -1;
   int binding = -1;

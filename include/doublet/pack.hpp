@@ -52,6 +52,9 @@ struct Variable {
   std::vector<int> locations;  // explicit locations of lowered_names, when the shader has them
   std::string encoding;        // "binary64-words" (mode exact), else empty
   std::vector<std::string> lowered_types;  // mode exact: one per lowered name ("uvec4", "uvec2[3]")
+  // A uniform declared with an initializer: its value, every component (the manifest's "default").
+  // GLSL ES has no uniform initializers, so the host sets it: uniform_values(v, v.default_value).
+  std::vector<double> default_value;
 
   // Floats per lowered variable: 1 for float, N for vecN; 0 for other types.
   int components() const {
@@ -255,6 +258,8 @@ inline std::optional<Manifest> parse_manifest(std::string_view json, std::string
     if (const Json* locs = e.get("locations"); locs && locs->kind == Json::Kind::Array)
       for (const Json& n : locs->items) v.locations.push_back(static_cast<int>(n.number));
     v.encoding = e.string_at("encoding");
+    if (const Json* d = e.get("default"); d && d->kind == Json::Kind::Array)
+      for (const Json& x : d->items) v.default_value.push_back(x.number);
     if (const Json* types = e.get("lowered_types"); types && types->kind == Json::Kind::Array)
       for (const Json& t : types->items) v.lowered_types.push_back(t.string);
     const bool words = v.encoding == "binary64-words";

@@ -61,7 +61,7 @@ export interface LoweredUniform {
   type: string;
   /** The WebGL2RenderingContext method to call, e.g. "uniform3fv", "uniform2uiv". */
   setter: string;
-  data: Float32Array | Uint32Array;
+  data: Float32Array | Uint32Array | Int32Array;
 }
 export function setUniformsFromManifest(manifest: Manifest,
                                         values: Record<string, number | ArrayLike<number>>): LoweredUniform[];

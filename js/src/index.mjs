@@ -124,6 +124,19 @@ export function writeBlockMember(view, member, value, blockOffset = 0) {
 }
 
 // gl.uniform{N}fv / gl.uniform{N}uiv for a lowered type ("vec3", "float[2]", "uvec4", "uvec2[2]").
+// A uniform that holds no double, at its manifest default: {name, type, setter, data}.
+function plainUniform(v) {
+  const base = v.lowered_type.replace(/\[\d+\]$/, '');
+  const m = /^(?:(float|int|uint|bool)|(vec|ivec|uvec|bvec)([234]))$/.exec(base);
+  if (!m) throw new Error(`'${v.name}': no uniform setter for its default (type ${v.lowered_type})`);
+  const kind = m[1] || { vec: 'float', ivec: 'int', uvec: 'uint', bvec: 'bool' }[m[2]];
+  const components = m[3] ? Number(m[3]) : 1;
+  const [suffix, Array_] = { float: ['fv', Float32Array], int: ['iv', Int32Array], bool: ['iv', Int32Array],
+                             uint: ['uiv', Uint32Array] }[kind];
+  return { name: v.lowered_names[0], type: v.lowered_type, setter: `uniform${components}${suffix}`,
+           data: Array_.from(v.default) };
+}
+
 function setterFor(loweredType) {
   const base = loweredType.replace(/\[\d+\]$/, '');
   const m = /^(float|vec([234])|uvec([24]))$/.exec(base);
@@ -140,11 +153,20 @@ function setterFor(loweredType) {
  *   gl[u.setter](gl.getUniformLocation(program, u.name), u.data)
  * df64: NAME_hi / NAME_lo (the manifest's lowered_names). Mode exact: the words, dvec3/dvec4 as
  * NAME_xy + NAME_z/NAME_zw. The guard uniform is never listed: GL zero-fills it (docs/web.md).
+ * A uniform declared with an initializer has its value in the manifest ("default"; GLSL ES has no
+ * uniform initializers, so the host sets it): every such uniform not named in `values` is listed at
+ * that value, plain ones (int n = 3) too, with their setter (uniform1iv, ...).
  * Throws for a name that is not a double uniform of the manifest, and for matrices (not done yet).
  */
 export function setUniformsFromManifest(manifest, values) {
   const out = [];
-  for (const [name, value] of Object.entries(values)) {
+  const given = { ...values };
+  for (const v of manifest.variables) {
+    if (v.storage !== 'uniform' || !v.default || v.name in given) continue;
+    if (v.split) given[v.name] = v.default;
+    else out.push(plainUniform(v));
+  }
+  for (const [name, value] of Object.entries(given)) {
     const v = manifest.variables.find((e) => e.name === name);
     const n = v && v.storage === 'uniform' && v.split ? doubleComponents(v.type) : 0;
     if (n === 0) throw new Error(`'${name}' is not a double/dvecN uniform in the manifest`);

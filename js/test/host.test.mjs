@@ -130,9 +130,12 @@ test('writeBlockMember at the std140 offsets of a real manifest (df64 and exact)
 test('setUniformsFromManifest: df64 gives NAME_hi/NAME_lo floats, never the guard', () => {
   const m = fixture('uniforms.df64.json');
   const x = 1 + 2 ** -30;
-  const u = setUniformsFromManifest(m, { scale: x, eye: [x, 2, -x], weights: [x, 0.5] });
+  const u = setUniformsFromManifest(m, { scale: x, eye: [x, 2, -x], weights: [x, 0.5], zoom: 2 });
   const byName = Object.fromEntries(u.map((e) => [e.name, e]));
-  assert.deepEqual(u.map((e) => e.name), ['scale_hi', 'scale_lo', 'eye_hi', 'eye_lo', 'weights_hi', 'weights_lo']);
+  // steps is listed at its initializer's value (the manifest's default); zoom's default is overridden.
+  assert.deepEqual(u.map((e) => e.name), ['steps', 'scale_hi', 'scale_lo', 'eye_hi', 'eye_lo', 'weights_hi',
+    'weights_lo', 'zoom_hi', 'zoom_lo']);
+  assert.deepEqual(Array.from(byName.zoom_hi.data), [2]);
   assert.deepEqual(Array.from(byName.scale_hi.data), [1]);
   assert.deepEqual(Array.from(byName.scale_lo.data), [2 ** -30]);
   assert.equal(byName.scale_hi.setter, 'uniform1fv');
@@ -149,12 +152,29 @@ test('setUniformsFromManifest: df64 gives NAME_hi/NAME_lo floats, never the guar
   assert.throws(() => setUniformsFromManifest(m, { nosuch: 1 }), /not a double/);
 });
 
+test('setUniformsFromManifest: uniforms declared with an initializer get the manifest default', () => {
+  for (const file of ['uniforms.df64.json', 'uniforms.exact.json']) {
+    const m = fixture(file);
+    const u = setUniformsFromManifest(m, {});
+    const byName = Object.fromEntries(u.map((e) => [e.name, e]));
+    assert.deepEqual([byName.steps.setter, Array.from(byName.steps.data)], ['uniform1iv', [3]]);
+    assert.ok(byName.steps.data instanceof Int32Array);
+    if (file.includes('exact')) {
+      assert.deepEqual(Array.from(byName.zoom.data), [0x00400000, 0x3ff00000]);  // 1 + 2^-30's words
+    } else {
+      assert.deepEqual(Array.from(byName.zoom_hi.data), [1]);
+      assert.deepEqual(Array.from(byName.zoom_lo.data), [2 ** -30]);
+    }
+    assert.equal(u.length, file.includes('exact') ? 2 : 3);
+  }
+});
+
 test('setUniformsFromManifest: mode exact gives the words, dvec3 as NAME_xy + NAME_z', () => {
   const m = fixture('uniforms.exact.json');
   const x = 1 + 2 ** -30;
   const u = setUniformsFromManifest(m, { scale: x, eye: [1, 2, 3], weights: [4, x] });
   const byName = Object.fromEntries(u.map((e) => [e.name, e]));
-  assert.deepEqual(u.map((e) => e.name), ['scale', 'eye_xy', 'eye_z', 'weights']);
+  assert.deepEqual(u.map((e) => e.name), ['steps', 'scale', 'eye_xy', 'eye_z', 'weights', 'zoom']);
   assert.deepEqual(Array.from(byName.scale.data), [0x00400000, 0x3ff00000]);
   assert.equal(byName.scale.setter, 'uniform2uiv');
   assert.ok(byName.eye_xy.data instanceof Uint32Array);

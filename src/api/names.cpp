@@ -89,6 +89,7 @@ std::string Manifest::to_json() const {
     if (!v.lowered_types.empty()) e["lowered_types"] = v.lowered_types;
     if (!v.encoding.empty()) e["encoding"] = v.encoding;
     if (!v.locations.empty()) e["locations"] = v.locations;
+    if (!v.default_value.empty()) e["default"] = v.default_value;
     if (!v.block.empty()) e["block"] = v.block;
     if (!v.layout.empty()) e["layout"] = v.layout;
     if (v.group >= 0) e["group"] = v.group;

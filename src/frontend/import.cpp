@@ -701,18 +701,6 @@ class Importer {
     if (name.rfind("gl_", 0) == 0) return;
     if (sym->getBasicType() == EbtBlock && std::string(sym->getType().getTypeName().c_str()).rfind("gl_", 0) == 0)
       return;  // built-in blocks (gl_PerVertex)
-    // A uniform's initializer (desktop 4.30+: its value until the application sets one) lives in
-    // the symbol's constant, not in the tree, and was silently dropped: the lowered shader read 0
-    // (spv.uniformInitializerStruct.frag). Refused until it is carried.
-    if (sym->getQualifier().storage == EvqUniform && sym->getConstArray().size() > 0 &&
-        reported_.insert("uniform initializer " + name).second) {
-      const ir::Loc at = sym->getLoc().line ? loc_of(sym->getLoc()) : global_declaration(name);  // linker objects carry no place
-      diags_.push_back({options_.file_name, at.line, at.column, Severity::Error,
-            "uniform '" + name + "' has an initializer (its value until the application sets one): doublet does "
-            "not carry uniform initializers, and the lowered uniform would start at 0; remove the initializer "
-            "and set the value from the application"});
-      failed_ = true;
-    }
     // Per-vertex and per-primitive qualifiers (barycentric and mesh extensions) are not in the IR:
     // dropped, `pervertexNV in float a[3]` became an ordinary input whose three locations overlapped
     // the next one's (spv.fragmentShaderBarycentric2.frag), a different shader.
@@ -737,7 +725,12 @@ class Importer {
     if (!global_index_.emplace(v.get(), module_.globals.size()).second) return;
     if (v->storage == ir::Storage::Local) v->storage = ir::Storage::Global;  // a global `const` with a run-time value
     module_.globals.push_back(v);
-    module_.global_inits.push_back(nullptr);
+    // A uniform's initializer (its value until the application sets one) lives in the symbol's
+    // constant, not in the tree (it was silently dropped once: spv.uniformInitializerStruct.frag);
+    // the uniform-defaults pass decides what becomes of it.
+    const bool initialised_uniform = sym->getQualifier().storage == EvqUniform && sym->getConstArray().size() > 0;
+    module_.global_inits.push_back(initialised_uniform ? constant(sym->getConstArray(), sym->getType(), sym->getLoc())
+                                                       : nullptr);
   }
 
   void global_initializer(TIntermBinary* assign) {

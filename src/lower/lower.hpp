@@ -53,6 +53,9 @@ struct Context {
   std::map<const ir::Var*, std::vector<BlockMember>> exact_block_members;
   std::string struct_helpers;
   std::set<const ir::Var*> exact_struct_uniforms;  // loose uniforms of a STRUCT_words twin type
+  // uniform_defaults: each uniform declared with an initializer → its value (Manifest's
+  // default_value); split_interfaces initialises X_hi and X_lo from it where the target keeps it.
+  std::map<const ir::Var*, std::vector<double>> uniform_defaults;
 
   void error(ir::Loc loc, const std::string& message);
   void warning(ir::Loc loc, const std::string& message);
@@ -76,6 +79,9 @@ int df_width(const ir::Type& t);
 // temporary (after lowering it is no longer an lvalue); runs before lower_doubles.
 bool out_argument_temporaries(ir::Module& module, Context& context);
 bool lower_doubles(ir::Module& module, Context& context);
+// Uniform initializers: recorded for the manifest; kept in the text where the target has them
+// (desktop), dropped with one warning where it has not (ES, WGSL, and mode exact's words).
+bool uniform_defaults(ir::Module& module, Context& context);
 // In/out blocks become plain in/out variables (BLOCK_MEMBER) on targets without I/O blocks.
 bool flatten_io_blocks(ir::Module& module, Context& context);
 // Global initialisers that are not constant expressions become assignments at the top of main.

@@ -3,6 +3,7 @@
 // global: inputs are joined into it at the start of main, outputs are split
 // out of it before every return from main. Runs after lower_doubles.
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <set>
@@ -248,6 +249,21 @@ ExprPtr matrix_value(const MatrixSplit& s, int first) {
 
 }  // namespace
 
+// The hi (half 0) or lo (half 1) words of a double constant, as a float constant of `type`:
+// hi = float(x), lo = float(x - hi) (x - hi is exact in binary64), lo = 0 where hi is not finite:
+// the split the host helpers make (doublet::split).
+static ExprPtr split_constant(const std::vector<double>& values, const ir::Type& type, int half, ir::Loc loc) {
+  auto e = ir::Expr::make(Kind::Const, type, loc);
+  for (double x : values) {
+    const float hi = static_cast<float>(x);
+    ir::Scalar s;
+    s.base = ir::Base::Float;
+    s.d = half == 0 ? hi : std::isfinite(hi) ? static_cast<float>(x - static_cast<double>(hi)) : 0.0f;
+    e->values.push_back(s);
+  }
+  return e;
+}
+
 bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   const bool es100 = ctx.config.target == Target::Es100;
   std::set<std::string> names;
@@ -280,6 +296,8 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       if (auto it = ctx.flattened_blocks.find(v.get()); it != ctx.flattened_blocks.end()) entry.block = it->second;
       entry.storage = storage_name(v->storage, module.stage, es100);
       entry.type = ir::type_name(v->declared_type) + ir::array_suffix(v->declared_type);
+      const auto default_value = ctx.uniform_defaults.find(v.get());
+      if (default_value != ctx.uniform_defaults.end()) entry.default_value = default_value->second;
       if (ctx.exact_struct_uniforms.count(v.get())) {
         // Mode exact: a struct uniform's twin (exact_blocks.cpp): every double member a uvec2/uvec4
         // word leaf, "s.m", "s.v_xy", "s.q[1].zw"; padding members are not listed.
@@ -352,7 +370,10 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
           }
           (half == 0 ? s.hi : s.lo) = part;
           globals.push_back(part);
-          inits.push_back(nullptr);
+          // A kept initializer (uniform_defaults: desktop targets) initialises both words.
+          inits.push_back(module.global_inits[i] && default_value != ctx.uniform_defaults.end()
+                              ? split_constant(default_value->second, part->type, half, v->loc)
+                              : nullptr);
           entry.lowered_names.push_back(part->name);
           if (part->layout.location >= 0) entry.locations.push_back(part->layout.location);
         }

@@ -87,6 +87,7 @@ const std::vector<Pass>& pass_table() {
       {"import", "import", always, import, true},
       IR_PASS("flatten-io-blocks", "import", [](const Config& c) { return !c.facts->io_blocks; },
               passes::flatten_io_blocks(s.module, s.ctx)),
+      IR_PASS("uniform-defaults", "import", always, passes::uniform_defaults(s.module, s.ctx)),
       // On the IR as imported, before any pass rewrites it.
       IR_PASS("lints", "lints", always, (passes::run_lints(s.module, s.source, s.ctx), true)),
       IR_PASS("modes", "modes", lowers_doubles, passes::apply_modes(s.module, s.ctx, s.pragmas)),

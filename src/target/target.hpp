@@ -35,6 +35,8 @@ struct Facts {
   bool webgl_rules;            // WebGL 2.0's rules on top of ES 3.00 (docs/web.md)
   bool wgsl;                   // WebGPU Shading Language, printed from an ES 3.10 intermediate
   bool carries_extensions;     // `#extension` lines may appear in the shader (not WebGL)
+  // `uniform T x = value;` (desktop GLSL 1.20+); GLSL ES and WGSL have no uniform initializers.
+  bool uniform_initializers() const { return !es && !wgsl; }
   std::size_t max_identifier_length;  // 0: no limit doublet knows of
   std::vector<std::string> reserved_prefixes;  // identifiers the target forbids
 };

@@ -137,18 +137,34 @@ bool VerifyReport::passed() const {
 
 namespace {
 
+// A uniform declared with an initializer runs at that value in both shaders (the manifest's
+// "default", which the lowered shader does not carry on ES targets: the application sets it, and so
+// does verify), unless --range or a spec names it.
+Spec with_uniform_defaults(const Spec& spec, const Manifest& manifest, std::vector<std::string>* notes) {
+  Spec out = spec;
+  for (const InterfaceVariable& v : manifest.variables) {
+    if (v.storage != "uniform" || v.default_value.empty() || out.inputs.count(v.name)) continue;
+    out.inputs[v.name].values = v.default_value;
+    notes->push_back("uniform '" + v.name + "' runs at its initializer's value (the manifest's default; --range " +
+                     v.name + "=LO:HI samples it instead)");
+  }
+  return out;
+}
+
 // Compute: every sample a dispatch or an invocation (compute_harness.hpp).
 // `wgsl`: the WGSL lowering for --backend webgpu (null when WebGPU was not asked for or cannot run).
 void run_compute_stage(const std::string& native_glsl, const Result& lowered, const Result* wgsl,
                        const VerifyOptions& options, VerifyReport* report) {
   ComputeHarness harness;
-  if (std::string e = harness.plan(native_glsl, lowered.output, lowered.manifest, options.spec, options.samples);
-      !e.empty()) {
+  std::vector<std::string> default_notes;
+  const Spec spec = with_uniform_defaults(options.spec, lowered.manifest, &default_notes);
+  if (std::string e = harness.plan(native_glsl, lowered.output, lowered.manifest, spec, options.samples); !e.empty()) {
     report->input_error = e;
     return;
   }
   harness.generate(options.seed);
   report->notes = harness.notes();
+  report->notes.insert(report->notes.end(), default_notes.begin(), default_notes.end());
   report->inputs_beyond_float_range = harness.inputs_beyond_float_range();
   report->inputs = harness.describe_inputs();
   report->dispatches = harness.dispatches();
@@ -216,13 +232,16 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
                         const VerifyOptions& options, VerifyReport* report) {
   const Target t = options.lower.target;
   GraphicsHarness harness;
-  if (std::string e = harness.plan(stage, native_glsl, lowered.output, lowered.manifest, options.spec, options.samples);
+  std::vector<std::string> default_notes;
+  const Spec spec = with_uniform_defaults(options.spec, lowered.manifest, &default_notes);
+  if (std::string e = harness.plan(stage, native_glsl, lowered.output, lowered.manifest, spec, options.samples);
       !e.empty()) {
     report->input_error = e;
     return;
   }
   harness.generate(options.seed);
   report->notes = harness.notes();
+  report->notes.insert(report->notes.end(), default_notes.begin(), default_notes.end());
   report->inputs_beyond_float_range = harness.inputs_beyond_float_range();
   const bool storage_capture = std::any_of(options.backends.begin(), options.backends.end(),
                                            [](runner::Backend b) { return b != runner::Backend::WebGl2; });

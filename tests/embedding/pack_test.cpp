@@ -2,6 +2,8 @@
 // vertex data, float-float arrays in blocks, and malformed manifests.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "doublet/doublet.hpp"
@@ -68,6 +70,71 @@ TEST(Pack, UniformValuesSplitEachComponent) {
   }
   EXPECT_EQ(uniform_values(*m.find("scale"), {0.1}).size(), 2u);
   EXPECT_TRUE(uniform_values(*m.find("scale"), {0.1, 0.2}).empty()) << "wrong component count";
+}
+
+// A uniform declared with an initializer: on ES the lowered shader declares it without one (a
+// warning says so) and the manifest carries the value; on desktop GLSL both words are initialised
+// to doublet::split of it. The values below are the shader's own literals.
+const char* kInitialised = R"(#version 450
+uniform double zoom = 6378137.123456789lf;
+uniform dvec2 center = dvec2(-0.333333333333333314829616256247lf, 42.0lf);
+uniform int steps = 3;
+flat in dvec2 p;
+layout(location = 0) out vec4 o;
+void main() {
+  dvec2 z = p;
+  for (int k = 0; k < steps; ++k) z = z * zoom + center;
+  o = vec4(vec2(z), 0.0, 1.0);
+}
+)";
+
+doublet::Result lower_initialised(doublet::Target target) {
+  doublet::Options o;
+  o.stage = doublet::Stage::Fragment;
+  o.target = target;
+  o.file_name = "zoom.frag";
+  return doublet::lower(kInitialised, o);
+}
+
+TEST(Pack, UniformDefaultsReachTheManifestOnEs) {
+  doublet::Result r = lower_initialised(doublet::Target::Es300);
+  ASSERT_TRUE(r.ok);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].severity, doublet::Severity::Warning);
+  EXPECT_NE(r.diagnostics[0].message.find("'zoom', 'center', 'steps'"), std::string::npos) << r.diagnostics[0].message;
+  EXPECT_EQ(r.output.find("= 6378137"), std::string::npos) << "ES has no uniform initializers";
+  std::string error;
+  auto m = parse_manifest(r.manifest.to_json(), &error);
+  ASSERT_TRUE(m.has_value()) << error;
+  EXPECT_EQ(m->find("zoom")->default_value, (std::vector<double>{6378137.123456789}));
+  EXPECT_EQ(m->find("center")->default_value, (std::vector<double>{-0.333333333333333314829616256247, 42.0}));
+  EXPECT_EQ(m->find("steps")->default_value, (std::vector<double>{3.0}));
+  auto values = uniform_values(*m->find("zoom"), m->find("zoom")->default_value);
+  ASSERT_EQ(values.size(), 2u);
+  EXPECT_EQ(values[0].value[0], doublet::split(6378137.123456789).hi);
+  EXPECT_EQ(values[1].value[0], doublet::split(6378137.123456789).lo);
+}
+
+TEST(Pack, UniformInitializersAreSplitOnDesktop) {
+  for (doublet::Target t : {doublet::Target::Glsl330, doublet::Target::Glsl450}) {
+    doublet::Result r = lower_initialised(t);
+    ASSERT_TRUE(r.ok);
+    EXPECT_TRUE(r.diagnostics.empty());
+    // The printed literals, read back as floats, are split()'s words.
+    auto literal = [&](const std::string& declaration) {
+      const size_t at = r.output.find(declaration);
+      EXPECT_NE(at, std::string::npos) << declaration;
+      return at == std::string::npos ? 0.0f : std::strtof(r.output.c_str() + at + declaration.size(), nullptr);
+    };
+    const doublet::FloatPair zoom = doublet::split(6378137.123456789);
+    EXPECT_EQ(literal("uniform float zoom_hi = "), zoom.hi);
+    EXPECT_EQ(literal("uniform float zoom_lo = "), zoom.lo);
+    EXPECT_NE(zoom.lo, 0.0f);
+    const doublet::FloatPair cx = doublet::split(-0.333333333333333314829616256247);
+    EXPECT_EQ(literal("uniform vec2 center_hi = vec2("), cx.hi);
+    EXPECT_EQ(literal("uniform vec2 center_lo = vec2("), cx.lo);
+    EXPECT_NE(r.output.find("uniform int steps = 3;"), std::string::npos);
+  }
 }
 
 TEST(Pack, VertexLayoutInterleavesHiLoAndFloats) {
