@@ -468,20 +468,8 @@ class Importer {
     return e;
   }
 
-  // Subgroup operations on doubles have no float-float form: a subgroup reduction would have to
-  // reduce hi and lo together, which no target's subgroup built-ins can do.
-  bool refuse_double_subgroup_op(TOperator op, TIntermTyped* node, TIntermTyped* operand) {
-    if (op <= EOpSubgroupGuardStart || op >= EOpSubgroupGuardStop) return false;
-    if (operand->getBasicType() != EbtDouble && node->getBasicType() != EbtDouble) return false;
-    error(node->getLoc(), "subgroup operations on doubles cannot be lowered for " + std::string(to_string(options_.target)) +
-                              ": a double is two floats (hi, lo) and subgroup built-ins move or combine one value; "
-                              "reduce through shared memory with the lowered double arithmetic instead");
-    return true;
-  }
-
   ir::ExprPtr unary(TIntermUnary* u) {
     TOperator op = u->getOp();
-    if (refuse_double_subgroup_op(op, u, u->getOperand())) return make(ir::Expr::Kind::Const, u);
     if (is_conversion(op) || op == EOpCopyObject) {
       auto e = make(ir::Expr::Kind::Construct, u);
       e->args = {expr(u->getOperand())};
@@ -514,9 +502,6 @@ class Importer {
 
   ir::ExprPtr aggregate(TIntermAggregate* a) {
     TOperator op = a->getOp();
-    if (!a->getSequence().empty() && a->getSequence()[0]->getAsTyped() &&
-        refuse_double_subgroup_op(op, a, a->getSequence()[0]->getAsTyped()))
-      return make(ir::Expr::Kind::Const, a);
     std::vector<ir::ExprPtr> args;
     for (TIntermNode* n : a->getSequence()) args.push_back(expr(n));
     if (op == EOpFunctionCall) {

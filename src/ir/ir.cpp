@@ -80,7 +80,7 @@ bool is_assignment_operator(const std::string& op) {
 // Built-ins that write an out parameter or memory, or synchronise.
 bool builtin_has_side_effects(const std::string& name) {
   static const char* const kPrefixes[] = {"atomic", "imageAtomic", "imageStore", "memoryBarrier", "EmitVertex",
-                                          "EndPrimitive"};
+                                          "EndPrimitive", "subgroupBarrier", "subgroupMemoryBarrier"};
   for (const char* p : kPrefixes)
     if (name.rfind(p, 0) == 0) return true;
   static const char* const kNames[] = {"modf", "frexp", "uaddCarry", "usubBorrow", "umulExtended", "imulExtended",

@@ -664,8 +664,65 @@ class DoubleLowering {
                               [](const ExprPtr& a) { return is_df(a->type) || matrix::is_matrix(a->type); });
     if (!any_df) return e;
     const std::string& n = e->name;
+    if (n.rfind("subgroup", 0) == 0) return lower_subgroup(e);
     if (ExprPtr m = lower_matrix_builtin(e)) return m;
     return lower_common_builtin(e);
+  }
+
+  // Subgroup operations on a double (GL_KHR_shader_subgroup_*): the ones that move a value between
+  // invocations move both words, through a generated helper (the value is evaluated once):
+  //   df_dvec3 df_subgroupShuffle_3(df_dvec3 v, uint id)
+  //     { return df_dvec3(subgroupShuffle(v.hi, id), subgroupShuffle(v.lo, id)); }
+  // In mode exact the words are the binary64 bits, so the move is exact there too. The reductions
+  // and scans (subgroupAdd, ...) need the pair arithmetic in a tree of shuffles: refused by name.
+  ExprPtr lower_subgroup(const ExprPtr& e) {
+    static const std::set<std::string> kMoves = {
+        "subgroupBroadcast", "subgroupBroadcastFirst", "subgroupShuffle", "subgroupShuffleXor",
+        "subgroupShuffleUp", "subgroupShuffleDown", "subgroupQuadBroadcast", "subgroupQuadSwapHorizontal",
+        "subgroupQuadSwapVertical", "subgroupQuadSwapDiagonal"};
+    const std::string& n = e->name;
+    const ExprPtr& value = e->args[0];
+    const bool all_equal = n == "subgroupAllEqual" && !exact();  // words: +0 and -0 would differ
+    if ((!kMoves.count(n) && !all_equal) || !is_df(value->type)) {
+      ctx_.error(e->loc, n + " on doubles is not lowered yet: doublet lowers the subgroup operations that move a "
+                             "value (subgroupBroadcast, subgroupShuffle, ...; subgroupAllEqual outside mode exact); "
+                             "for a reduction, reduce in a loop over subgroupShuffleXor with double addition");
+      return e;
+    }
+    const int width = df_width(value->type);
+    const std::string df = df_type_name(width);
+    std::string name = "df_" + n + "_" + std::to_string(width), params = df + " v", extra;
+    std::vector<ExprPtr> args = {value};
+    // subgroupBroadcast's and subgroupQuadBroadcast's id must be a constant expression: it is
+    // written into the helper (df_subgroupBroadcast_3_5u), not passed.
+    const bool constant_id = n == "subgroupBroadcast" || n == "subgroupQuadBroadcast";
+    for (size_t i = 1; i < e->args.size(); ++i) {
+      const ExprPtr& a = e->args[i];
+      if (constant_id) {
+        if (a->kind != Kind::Const || a->values.size() != 1) {
+          ctx_.error(a->loc, n + ": the invocation id must be a constant expression");
+          return e;
+        }
+        const std::string literal = std::to_string(a->values[0].i) + (a->type.base == ir::Base::Uint ? "u" : "");
+        extra += ", " + literal;
+        name += "_" + literal;
+        continue;
+      }
+      const std::string p = "a" + std::to_string(i);
+      params += ", " + ir::type_name(a->type) + " " + p;
+      extra += ", " + p;
+      name += "_" + ir::type_name(a->type);
+      args.push_back(a);
+    }
+    ctx_.use_width(width);
+    if (all_equal) {
+      ctx_.add_helper(name, "bool " + name + "(" + params + ") {\n  return all(bvec2(" + n + "(v.hi" + extra + "), " + n +
+                                "(v.lo" + extra + ")));\n}\n");
+      return ir::make_node(Kind::Call, name, ir::scalar_type(ir::Base::Bool), args, e->loc);
+    }
+    ctx_.add_helper(name, df + " " + name + "(" + params + ") {\n  return " + df + "(" + n + "(v.hi" + extra + "), " + n +
+                              "(v.lo" + extra + "));\n}\n");
+    return ir::make_node(Kind::Call, name, df_type(width), args, e->loc);
   }
 
   // Built-ins of GLSL 4.60 sections 8.3-8.7 on doubles: each is one rule of rules/*.glsl at the

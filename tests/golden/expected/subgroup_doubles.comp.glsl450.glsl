@@ -1,0 +1,447 @@
+#version 450 core
+#extension GL_KHR_shader_subgroup_ballot : enable
+#extension GL_KHR_shader_subgroup_basic : enable
+#extension GL_KHR_shader_subgroup_quad : enable
+#extension GL_KHR_shader_subgroup_shuffle : enable
+#extension GL_KHR_shader_subgroup_shuffle_relative : enable
+#extension GL_KHR_shader_subgroup_vote : enable
+precision highp float;
+precision highp int;
+layout(local_size_x = 16, local_size_y = 1, local_size_z = 1) in;
+
+// doublet float-float runtime: 21 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+struct df_dvec2 { vec2 hi; vec2 lo; };
+struct df_dvec4 { vec4 hi; vec4 lo; };
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec4 df_two_sum(vec4 a, vec4 b) {
+  precise vec4 s = (a + b);
+  precise vec4 bb = (s - a);
+  precise vec4 ab = (s - bb);
+  precise vec4 da = (a - ab);
+  precise vec4 db = (b - bb);
+  precise vec4 e = (da + db);
+  return df_dvec4(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
+  precise vec4 s = (a + b);
+  precise vec4 z = (s - a);
+  precise vec4 e = (b - z);
+  return df_dvec4(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  precise float az = (abs(z.hi));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  precise float h = (mix(f, z.hi, regular));
+  precise float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 4: the width-1 df_finish applied to each component)
+df_dvec4 df_finish(df_dvec4 z, vec4 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  df_double r2 = df_finish(df_double(z.hi.z, z.lo.z), f.z);
+  df_double r3 = df_finish(df_double(z.hi.w, z.lo.w), f.w);
+  return df_dvec4(vec4(r0.hi, r1.hi, r2.hi, r3.hi), vec4(r0.lo, r1.lo, r2.lo, r3.lo));
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_dvec4 df_add(df_dvec4 a, df_dvec4 b) {
+  df_dvec4 s = df_two_sum(a.hi, b.hi);
+  df_dvec4 t = df_two_sum(a.lo, b.lo);
+  precise vec4 c = (s.lo + t.hi);
+  df_dvec4 v = df_fast_two_sum(s.hi, c);
+  precise vec4 w = (t.lo + v.lo);
+  df_dvec4 z = df_fast_two_sum(v.hi, w);
+  df_dvec4 r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_double df_neg(df_double a) {
+  precise float h = (-a.hi);
+  precise float l = (-a.lo);
+  return df_double(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  precise float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  precise float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 23
+df_double df_sub(df_double a, df_double b) {
+  df_double nb = df_neg(b);
+  df_double z = df_add(a, nb);
+  return z;
+}
+
+// df_gt: a > b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_gt(df_double a, df_double b) {
+  return any(bvec2(a.hi > b.hi, all(bvec2(a.hi == b.hi, a.lo > b.lo))));
+}
+
+// df_from_uint: exact for every 32-bit uint.
+// Algorithm: 16-bit split of the integer, then TwoSum
+// Steps: u = q*65536 + r (unsigned integer ops, exact); float(q)*65536 and float(r) are
+//   exact; TwoSum gives the exact double-word (at most 32 significant bits).
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B (TwoSum)
+// Bound: exact
+// Flops: 7 (plus 2 integer ops and 2 conversions)
+df_double df_from_uint(uint u) {
+  uint q = u / 65536u;
+  uint r = u - q * 65536u;
+  precise float qf = (float(q) * 65536.0);
+  precise float rf = (float(r));
+  df_double z = df_two_sum(qf, rf);
+  return z;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
+df_double df_split(float a) {
+  precise float g = (a * 4097.0);
+  precise float d = (a - g);
+  precise float hi = (g + d);
+  precise float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
+df_double df_two_prod(float a, float b) {
+  precise float p = (a * b);
+  precise float aa = (abs(a));
+  precise float ab = (abs(b));
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  precise float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  precise float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  precise float as = (a * ka);
+  precise float bs = (b * kb);
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
+// (width 2: the width-1 df_two_prod applied to each component)
+df_dvec2 df_two_prod(vec2 a, vec2 b) {
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
+  precise vec2 s = (a + b);
+  precise vec2 z = (s - a);
+  precise vec2 e = (b - z);
+  return df_dvec2(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 c = df_two_prod(a.hi, b.hi);
+  precise vec2 tl = (a.hi * b.lo);
+  precise vec2 th = (a.lo * b.hi);
+  precise vec2 cl2 = (th + tl);
+  precise vec2 cl3 = (c.lo + cl2);
+  df_dvec2 z = df_fast_two_sum(c.hi, cl3);
+  df_dvec2 r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_mul_f2: a * b with b a plain float (the lo word of the double operand known to be zero).
+// Cheaper than df_mul (29) and more accurate (3u^2 against 7u^2).
+// Algorithm: DWTimesFP2 (JMP Algorithm 8) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, section 4
+// Bound: 3u^2
+// Flops: 27
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3);
+//        df_finish(z, ch).
+// Range and special values: as df_mul (the same TwoProd, the same df_finish).
+df_double df_mul_f2(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  precise float cl2 = (a.lo * b);
+  precise float cl3 = (c.lo + cl2);
+  df_double z = df_fast_two_sum(c.hi, cl3);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
+// (width 4: the width-1 df_two_prod applied to each component)
+df_dvec4 df_two_prod(vec4 a, vec4 b) {
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  df_double r2 = df_two_prod(a.z, b.z);
+  df_double r3 = df_two_prod(a.w, b.w);
+  return df_dvec4(vec4(r0.hi, r1.hi, r2.hi, r3.hi), vec4(r0.lo, r1.lo, r2.lo, r3.lo));
+}
+
+// df_mul_f2: a * b with b a plain float (the lo word of the double operand known to be zero).
+// Cheaper than df_mul (29) and more accurate (3u^2 against 7u^2).
+// Algorithm: DWTimesFP2 (JMP Algorithm 8) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, section 4
+// Bound: 3u^2
+// Flops: 27
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3);
+//        df_finish(z, ch).
+// Range and special values: as df_mul (the same TwoProd, the same df_finish).
+df_dvec4 df_mul_f2(df_dvec4 a, vec4 b) {
+  df_dvec4 c = df_two_prod(a.hi, b);
+  precise vec4 cl2 = (a.lo * b);
+  precise vec4 cl3 = (c.lo + cl2);
+  df_dvec4 z = df_fast_two_sum(c.hi, cl3);
+  df_dvec4 r = df_finish(z, c.hi);
+  return r;
+}
+
+df_dvec4 df_splat_dvec4(df_double s) {
+  return df_dvec4(vec4(s.hi), vec4(s.lo));
+}
+
+df_dvec4 df_subgroupShuffleXor_4_uint(df_dvec4 v, uint a1) {
+  return df_dvec4(subgroupShuffleXor(v.hi, a1), subgroupShuffleXor(v.lo, a1));
+}
+
+df_dvec4 df_subgroupBroadcast_4_2u(df_dvec4 v) {
+  return df_dvec4(subgroupBroadcast(v.hi, 2u), subgroupBroadcast(v.lo, 2u));
+}
+
+df_double df_subgroupShuffle_1_uint(df_double v, uint a1) {
+  return df_double(subgroupShuffle(v.hi, a1), subgroupShuffle(v.lo, a1));
+}
+
+df_double df_subgroupBroadcastFirst_1(df_double v) {
+  return df_double(subgroupBroadcastFirst(v.hi), subgroupBroadcastFirst(v.lo));
+}
+
+df_double df_subgroupQuadSwapHorizontal_1(df_double v) {
+  return df_double(subgroupQuadSwapHorizontal(v.hi), subgroupQuadSwapHorizontal(v.lo));
+}
+
+df_dvec2 df_subgroupQuadBroadcast_2_1u(df_dvec2 v) {
+  return df_dvec2(subgroupQuadBroadcast(v.hi, 1u), subgroupQuadBroadcast(v.lo, 1u));
+}
+
+df_dvec2 df_splat_dvec2(df_double s) {
+  return df_dvec2(vec2(s.hi), vec2(s.lo));
+}
+
+bool df_subgroupAllEqual_1(df_double v) {
+  return all(bvec2(subgroupAllEqual(v.hi), subgroupAllEqual(v.lo)));
+}
+
+df_dvec4 df_make_dvec4_1_2_1(df_double a0, df_dvec2 a1, df_double a2) {
+  return df_dvec4(vec4(a0.hi, a1.hi.x, a1.hi.y, a2.hi), vec4(a0.lo, a1.lo.x, a1.lo.y, a2.lo));
+}
+
+layout(std430, binding = 0) buffer Data {
+  df_dvec4 x[];
+};
+layout(std430, binding = 1) buffer Results {
+  df_dvec4 r[];
+};
+
+
+void main()
+{
+  uint i = gl_GlobalInvocationID.x;
+  df_dvec4 v = df_mul_f2(x[i], vec4(3.0));
+  uint lane = gl_SubgroupInvocationID;
+  df_dvec4 a = df_add(df_subgroupShuffleXor_4_uint(v, 1u), df_subgroupBroadcast_4_2u(v));
+  df_double b = df_add(df_sub(df_subgroupShuffle_1_uint(df_double(v.hi.y, v.lo.y), lane ^ 3u), df_subgroupBroadcastFirst_1(df_double(v.hi.z, v.lo.z))), df_subgroupQuadSwapHorizontal_1(df_double(v.hi.w, v.lo.w)));
+  df_dvec2 c = df_mul(df_subgroupQuadBroadcast_2_1u(df_dvec2(v.hi.xy, v.lo.xy)), df_splat_dvec2(df_from_uint(subgroupBallotBitCount(subgroupBallot(df_gt(df_double(v.hi.x, v.lo.x), df_double(0.0, 0.0)))))));
+  bool same = df_subgroupAllEqual_1(df_mul_f2(df_double(v.hi.x, v.lo.x), 0.0));
+  r[i] = df_add(a, df_make_dvec4_1_2_1(b, c, same ? df_double(1.0, 0.0) : df_double(-1.0, 0.0)));
+}
