@@ -49,7 +49,8 @@ class MacroBudget::Weigher {
         pastes = budget_.pastes_in(item.value);
         if (pastes && !budget_.is_function_like(item.value)) repeat = std::max(repeat, budget_.paste_repeat_);
         break;
-      case Item::Paste:  // joins two tokens into a name that may be any macro's
+      case Item::Paste:  // joins two tokens into a name that may be any macro's (value 1), or no macro's
+        if (item.value == 0) break;
         add(budget_.paste_size_, multiplier_);
         repeat = budget_.paste_repeat_;
         break;
@@ -127,7 +128,7 @@ void MacroBudget::tokenize(std::string_view text, std::vector<Item>& out, bool i
         plain();  // named by no definition: cannot expand
       }
     } else if (c == '#' && text.size() > 1 && text[1] == '#') {
-      out.push_back({Item::Paste, 0});
+      out.push_back({Item::Paste, 1});  // may make any macro's name, until mark_pastes() knows better
       has_paste_ = true;
       text.remove_prefix(2);
     } else {
@@ -222,6 +223,62 @@ void MacroBudget::measure_definitions(int id) {
   repeat_[id] = repeat;
 }
 
+// A paste chain (a ## b ## c) makes one token whose name holds the chain's spelled fragments (the
+// tokens that are not parameters) in order: `u_##n` starts with u_, `y##_to_##x` contains _to_.
+// When no macro's name holds them, the result names no macro: its pastes weigh nothing more
+// (value 0). Chains of parameters only, or with a number, may still make any name (value 1).
+// glslang's constantUnaryConversion.comp was refused as 10^15 tokens before; it expands to a few
+// hundred.
+void MacroBudget::mark_pastes() {
+  std::vector<const std::string*> macro_names;
+  for (size_t id = 0; id < definitions_.size(); ++id)
+    if (!definitions_[id].empty()) macro_names.push_back(&names_[id]);
+  auto names_a_macro = [&](const std::vector<std::string_view>& fragments) {
+    for (const std::string* name : macro_names) {
+      size_t at = 0;
+      bool holds = true;
+      for (std::string_view f : fragments) {
+        const size_t found = name->find(f, at);
+        if (found == std::string::npos) {
+          holds = false;
+          break;
+        }
+        at = found + f.size();
+      }
+      if (holds) return true;
+    }
+    return false;
+  };
+  for (size_t id = 0; id < definitions_.size(); ++id) {
+    bool any = false;
+    for (Definition& d : definitions_[id]) {
+      std::vector<Item>& body = d.body;
+      for (size_t i = 0; i < body.size(); ++i) {
+        if (body[i].kind != Item::Paste || i == 0) continue;
+        // The chain: operands body[start], body[start+2], ... joined by pastes.
+        const size_t start = i - 1;
+        size_t end = i + 1;
+        while (end + 1 < body.size() && body[end + 1].kind == Item::Paste) end += 2;
+        std::vector<std::string_view> fragments;
+        bool open = false;  // a number or a token the scan cannot spell: may make any name
+        for (size_t k = start; k <= end && k < body.size(); k += 2) {
+          const Item& operand = body[k];
+          if (operand.kind != Item::Ident) {
+            open = true;
+          } else if (std::find(d.params.begin(), d.params.end(), operand.value) == d.params.end()) {
+            fragments.push_back(names_[static_cast<size_t>(operand.value)]);
+          }
+        }
+        const int may_name = open || fragments.empty() || names_a_macro(fragments) ? 1 : 0;
+        for (size_t k = start + 1; k <= end && k < body.size(); k += 2) body[k].value = may_name;
+        any = any || may_name;
+        i = end;
+      }
+    }
+    if (id < pastes_.size()) pastes_[id] = any;
+  }
+}
+
 // Each round weighs every macro with a paste counting as the largest macro of the round before,
 // so round k follows pastes that make pasting macros' names k deep; it stops when nothing grows.
 void MacroBudget::settle_pastes() {
@@ -230,6 +287,7 @@ void MacroBudget::settle_pastes() {
   paste_size_ = 1;
   paste_repeat_ = 0;
   if (!has_paste_) return;
+  mark_pastes();
   for (int round = 0; round < kPasteRounds; ++round) {
     state_.assign(names_.size(), State::Unknown);
     size_tables();

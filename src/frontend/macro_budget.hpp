@@ -83,6 +83,8 @@ class MacroBudget {
   void measure_definitions(int id);
   // Fixes paste_size_/paste_repeat_ once the definitions are known (see the header comment).
   void settle_pastes();
+  // Marks each ## whose chain can name no macro (Paste value 0; see macro_budget.cpp).
+  void mark_pastes();
   static constexpr int kPasteRounds = 8;
 
   struct NameHash {

@@ -204,6 +204,39 @@ TEST(MacroBudgetScan, PastedNamesCountAsTheLargestMacro) {
   EXPECT_GE(d.weigh("CAT(TWI,CE)(B,26)").expanded, std::pow(2.0, 28));
 }
 
+// A paste whose spelled fragments no macro's name holds makes no macro: `uniform t u_##n` through
+// two more levels was refused as "about 5,941,909 tokens", glslang's constantUnaryConversion.comp
+// (`y##_to_##x` in a 12-line macro used 12 times) as 10^15. Each bound stays within an order of
+// magnitude of the real expansion (counted by hand in the comments).
+TEST(MacroBudgetScan, PastesThatNameNoMacroWeighWhatTheyMake) {
+  MacroBudget nested;
+  nested.add_definitions("#define DECL(t, n) uniform t u_##n\n#define DECL2(t, a, b) DECL(t, a); DECL(t, b)\n"
+                         "#define DECL4(t, a, b, c, d) DECL2(t, a, b); DECL2(t, c, d)\n", "t");
+  // Real: DECL is 3 tokens, DECL2 7, DECL4 15, and the ';': 16.
+  EXPECT_LT(nested.weigh("DECL4(double, w, x, y, z);").expanded, 10 * 16);
+  std::string types = "#define TYPE_TO_TYPE(x, y) const x y##_to_##x = x(y##_init)\n#define TYPE_TO(x) ";
+  std::string uses;
+  for (int i = 0; i < 12; ++i) {
+    types += std::string(i ? "; " : "") + "TYPE_TO_TYPE(x, t" + std::to_string(i) + ")";
+    uses += "TYPE_TO(t" + std::to_string(i) + ");\n";
+  }
+  MacroBudget conversions;
+  conversions.add_definitions(types + "\n", "t");
+  // Real: TYPE_TO_TYPE is 8 tokens (const x y_to_x = x ( y_init )), TYPE_TO 12 * 8 + 11 ';' = 107,
+  // twelve uses and their ';': 1296.
+  EXPECT_LT(conversions.weigh(uses).expanded, 10 * 1296);
+  // A macro whose name does hold the fragments keeps the paste at its full weight.
+  MacroBudget named;
+  named.add_definitions("#define GET(n) u_##n\n#define u_big B B B B B B B B B B\n", "t");
+  EXPECT_GE(named.weigh("GET(x)").expanded, 10);
+  // And the shader lowers.
+  auto r = doublet::lower("#version 300 es\n#define DECL(t, n) uniform t u_##n\n#define DECL2(t, a, b) DECL(t, a); "
+                          "DECL(t, b)\n#define DECL4(t, a, b, c, d) DECL2(t, a, b); DECL2(t, c, d)\n"
+                          "DECL4(float, w, x, y, z);\nvoid main() { gl_Position = vec4(u_w + u_x + u_y + u_z); }\n",
+                          vertex_options());
+  EXPECT_TRUE(r.ok) << first_error(r);
+}
+
 TEST(FrontendBounds, PasteBombIsRefusedQuickly) {
   std::string s = "#version 300 es\n#define CAT(a,b) a##b\n#define B0 1.0+\n";
   for (int i = 1; i <= 30; ++i) s += "#define B" + std::to_string(i) + " B" + std::to_string(i - 1) + " B" + std::to_string(i - 1) + "\n";
