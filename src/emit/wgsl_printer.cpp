@@ -106,6 +106,30 @@ class WgslPrinter {
   std::map<std::string, std::string> helpers_;  // name -> WGSL text, emitted before the module
   std::map<std::string, ir::Loc> builtins_used_;  // gl_* variables the functions name, first use
 
+  // Where the shader first writes block `block` (an assignment, ++/--, an atomic or other built-in
+  // with side effects whose first argument is in it); false when it only reads it.
+  bool block_written(const ir::Var* block, ir::Loc& where) const {
+    auto in_block = [&](ir::ExprPtr e) {
+      while (e && (e->kind == ir::Expr::Kind::Member || e->kind == ir::Expr::Kind::Index) && !e->args.empty())
+        e = e->args[0];
+      return e && e->kind == ir::Expr::Kind::Sym && e->var && (e->var.get() == block || e->var->block.get() == block);
+    };
+    bool written = false;
+    for (const auto& f : m_.functions)
+      ir::visit(f->body, [&](const ir::ExprPtr& e) {
+        if (written || e->args.empty()) return;
+        const bool writes = (e->kind == ir::Expr::Kind::Binary && ir::is_assignment_operator(e->op)) ||
+                            (e->kind == ir::Expr::Kind::Unary &&
+                             (e->op.find("++") != std::string::npos || e->op.find("--") != std::string::npos)) ||
+                            (e->kind == ir::Expr::Kind::Builtin && ir::has_side_effects(e));
+        if (writes && in_block(e->args[0])) {
+          written = true;
+          where = e->loc;
+        }
+      });
+    return written;
+  }
+
   void error(ir::Loc loc, const std::string& msg) {
     if (!diags_.empty() && diags_.back().line == loc.line && diags_.back().message.rfind(msg, 0) == 0) return;
     diags_.push_back({file_, loc.line, loc.column, Severity::Error, msg + note_});
@@ -249,8 +273,18 @@ class WgslPrinter {
           struct_definition(v->type, uniform);
           const std::string var_name = anonymous_name(*v).empty() ? "df_block_" + v->type.name : name;
           block_var_names_[v.get()] = var_name;
+          // WebGPU has no writable storage buffers in vertex shaders: one the shader only reads is
+          // declared read; one it writes is refused (it was printed read_write, which Dawn rejects).
+          bool read_only = v->readonly;
+          if (!uniform && !read_only && m_.stage == ir::StageKind::Vertex) {
+            if (ir::Loc at; block_written(v.get(), at))
+              error(at, "WebGPU has no writable storage buffers in vertex shaders, and this writes '" +
+                            (anonymous_name(*v).empty() ? v->type.name : v->name) +
+                            "'; write it from a compute shader, or use --target glsl450/es310");
+            read_only = true;
+          }
           out_ << "@group(0) @binding(" << binding << ") var<"
-               << (uniform ? "uniform" : v->readonly ? "storage, read" : "storage, read_write") << "> " << var_name
+               << (uniform ? "uniform" : read_only ? "storage, read" : "storage, read_write") << "> " << var_name
                << ": " << ident(v->type.name) << ";\n";
           break;
         }

@@ -71,11 +71,11 @@ bool is_pure(const ExprPtr& e) {
   }
 }
 
-namespace {
-// "=", "+=", "<<=", ...: every operator ending in '=' except the comparisons.
 bool is_assignment_operator(const std::string& op) {
   return !op.empty() && op.back() == '=' && op != "==" && op != "!=" && op != "<=" && op != ">=";
 }
+
+namespace {
 
 // Built-ins that write an out parameter or memory, or synchronise.
 bool builtin_has_side_effects(const std::string& name) {

@@ -153,6 +153,8 @@ bool has_side_effects(const ExprPtr& e);
 ExprPtr clone(const ExprPtr& e);
 // "+=", "-=", "*=", "/=".
 bool is_compound_arithmetic(const std::string& op);
+// "=", "+=", "<<=", ...: every operator ending in '=' except the comparisons.
+bool is_assignment_operator(const std::string& op);
 
 struct Stmt;
 using StmtPtr = std::shared_ptr<Stmt>;

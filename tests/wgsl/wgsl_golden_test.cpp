@@ -197,3 +197,32 @@ TEST(WgslRefusals, NameTheUsersLineAndColumn) {
 }
 
 }  // namespace
+
+namespace {
+
+// WebGPU has no writable storage buffers in vertex shaders: a buffer the vertex shader only reads is
+// declared `var<storage, read>` (it was printed read_write, which Dawn rejects, with exit 0), and one
+// it writes is refused at the write.
+TEST(WgslRefusals, VertexStorageBuffersAreReadOnlyOrRefused) {
+  doublet::Options options;
+  options.stage = doublet::Stage::Vertex;
+  options.target = doublet::Target::Wgsl;
+  options.file_name = "p.vert";
+  const std::string head = "#version 450\nlayout(std430, binding = 0) buffer Pos { uint count; dvec4 p[]; };\n"
+                           "layout(location = 0) out vec4 c;\nvoid main() {\n  dvec4 q = p[gl_VertexID];\n";
+  auto reads = doublet::lower(head + "  gl_Position = vec4(q);\n  c = vec4(1.0);\n}\n", options);
+  ASSERT_TRUE(reads.ok) << (reads.diagnostics.empty() ? "" : reads.diagnostics[0].message);
+  EXPECT_NE(reads.output.find("var<storage, read> "), std::string::npos) << reads.output;
+  EXPECT_EQ(reads.output.find("read_write"), std::string::npos) << reads.output;
+  auto writes = doublet::lower(head + "  gl_Position = vec4(q);\n  c = vec4(1.0);\n  p[gl_VertexID] = q * 2.0lf;\n}\n",
+                               options);
+  ASSERT_FALSE(writes.ok) << writes.output;
+  ASSERT_FALSE(writes.diagnostics.empty());
+  EXPECT_NE(writes.diagnostics[0].message.find("WebGPU has no writable storage buffers in vertex shaders"),
+            std::string::npos) << writes.diagnostics[0].message;
+  EXPECT_EQ(writes.diagnostics[0].line, 8);
+  auto counts = doublet::lower(head + "  gl_Position = vec4(q);\n  c = vec4(1.0);\n  atomicAdd(count, 1u);\n}\n", options);
+  EXPECT_FALSE(counts.ok) << counts.output;
+}
+
+}  // namespace
