@@ -62,6 +62,8 @@ void StatsBuilder::add(double got, double want, uint64_t sample) {
     stats_.worst_want = want;
   }
   ++stats_.samples;
+  stats_.got_values.push_back(got);
+  stats_.want_values.push_back(want);
   rel_.push_back(rel);
   bits_.push_back(bits);
 }

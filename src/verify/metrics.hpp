@@ -32,6 +32,9 @@ struct OutputStats {
   double worst_got = 0, worst_want = 0;
   std::string worst_input;        // filled by the caller from worst_sample
   double abs_floor = 0;
+  // Every sample's lowered and native value, in sample order: the differential tester compares two
+  // lowerings of one program bit for bit (docs/robustness.md, "Differential testing").
+  std::vector<double> got_values, want_values;
   double min_bits_required = -1;  // < 0: no requirement
   double max_abs_err_allowed = -1;  // < 0: no requirement (a scene's abs_error)
   // Without a threshold a float-float mode is judged against the same shader demoted to float

@@ -1,0 +1,205 @@
+// Runs the oracles of oracles.hpp through doublet::verify, which feeds native and lowered shaders the
+// same inputs and hands back every sample's values (OutputStats::got_values / want_values).
+#include "difftest/oracles.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "runner/runner.hpp"
+#include "verify/verify.hpp"
+
+namespace doublet::difftest {
+namespace {
+
+// Float-float's range: beyond this a df64 pair overflows where native does not (docs/accuracy.md).
+constexpr double kPairRange = 1e30;
+
+uint64_t bits_of(double x) {
+  uint64_t b;
+  std::memcpy(&b, &x, 8);
+  return b;
+}
+
+std::string show(double x) {
+  std::ostringstream s;
+  s.precision(17);
+  s << x << " (" << verify::hex(x) << ")";
+  return s.str();
+}
+
+verify::VerifyReport run_verify(const std::string& glsl, const verify::Spec& spec, Stage stage, Mode mode, Target target,
+                                std::vector<runner::Backend> backends, const CheckOptions& options, CheckResult* result,
+                                bool gpu_shader5 = false, GuardKind guard = GuardKind::Auto, bool sabotaged = false) {
+  const auto start = std::chrono::steady_clock::now();
+  verify::VerifyOptions o;
+  o.lower.stage = stage;
+  o.lower.target = target;
+  o.lower.mode = mode;
+  o.lower.allow_gpu_shader5 = gpu_shader5;
+  o.lower.guard = guard;
+  o.lower.skip_passes = options.skip_passes;
+  if (sabotaged) o.sabotage = verify::parse_sabotage(options.sabotage).value_or(verify::Sabotage::None);
+  o.lower.file_name = "program." + std::string(to_string(stage));
+  o.samples = options.samples;
+  o.seed = 1;
+  o.spec = spec;
+  o.backends = std::move(backends);
+  verify::VerifyReport report = verify::verify(glsl, o);
+  result->seconds.emplace_back(std::string(to_string(mode)) + " " + std::string(to_string(target)) +
+                                   (o.backends.size() == 1 ? std::string(" ") + runner::backend_name(o.backends[0]) : ""),
+                               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return report;
+}
+
+std::string label(Mode mode, Target target) { return std::string(to_string(mode)) + " " + std::string(to_string(target)); }
+
+// A lowering or driver failure of a valid program, as a finding; true when there was one (or when
+// verify refused the program itself, which makes it invalid).
+bool failed(const verify::VerifyReport& r, const std::string& what, CheckResult* result) {
+  std::vector<Finding>* findings = &result->findings;
+  if (r.input_error.rfind("lowering failed", 0) == 0) {
+    findings->push_back({"lowering", what + ": " + r.input_error});
+    return true;
+  }
+  if (!r.input_error.empty()) {
+    if (result->invalid.empty()) result->invalid = what + ": " + r.input_error;
+    return true;
+  }
+  for (const verify::BackendRun& run : r.runs)
+    if (!run.error.empty()) {
+      findings->push_back({"lowering", what + " on " + runner::backend_name(run.backend) + ": " + run.error});
+      return true;
+    }
+  return false;
+}
+
+// Two runs' values of every output, sample by sample; `skip` says which samples do not count.
+template <class Skip>
+void compare_runs(const verify::BackendRun& a, const verify::BackendRun& b, const std::string& oracle,
+                  const std::string& what, Skip skip, std::vector<Finding>* findings) {
+  for (size_t o = 0; o < a.outputs.size() && o < b.outputs.size(); ++o) {
+    const verify::OutputStats& x = a.outputs[o];
+    const verify::OutputStats& y = b.outputs[o];
+    uint64_t differ = 0, first = 0;
+    for (size_t s = 0; s < x.got_values.size() && s < y.got_values.size(); ++s) {
+      if (skip(x.want_values[s], x.got_values[s], y.got_values[s])) continue;
+      if (bits_of(x.got_values[s]) != bits_of(y.got_values[s]) && !(std::isnan(x.got_values[s]) && std::isnan(y.got_values[s])))
+        if (differ++ == 0) first = s;
+    }
+    if (differ)
+      findings->push_back({oracle, what + ": output " + x.name + ": " + std::to_string(differ) + " of " +
+                                       std::to_string(x.got_values.size()) + " samples differ; sample " +
+                                       std::to_string(first) + ": " + show(x.got_values[first]) + " against " +
+                                       show(y.got_values[first]) + ", native " + show(x.want_values[first])});
+  }
+}
+
+// Samples where native is not finite or beyond float-float's range make no claim about pairs.
+bool outside_pair_range(double want, double, double) { return !std::isfinite(want) || std::fabs(want) > kPairRange; }
+
+}  // namespace
+
+CheckResult check(const std::string& glsl, const std::string& spec_json, const std::string& stage_name,
+                  const CheckOptions& options) {
+  CheckResult result;
+  const Stage stage = stage_name == "vert" ? Stage::Vertex : stage_name == "frag" ? Stage::Fragment : Stage::Compute;
+  std::vector<uint32_t> spirv;
+  std::string error;
+  runner::GraphicsInterface graphics;
+  const bool valid = stage == Stage::Compute
+                         ? runner::compile_compute_to_spirv(glsl, &spirv, &error)
+                         : runner::reflect_graphics(stage == Stage::Vertex ? runner::GraphicsStage::Vertex
+                                                                           : runner::GraphicsStage::Fragment,
+                                                    glsl, &graphics, &error);
+  if (!valid) {
+    result.invalid = error;
+    return result;
+  }
+  verify::Spec spec;
+  if (std::string e = verify::parse_spec(spec_json, &spec); !e.empty()) {
+    result.invalid = "spec: " + e;
+    return result;
+  }
+  auto wants = [&](const char* oracle) {
+    return std::find(options.oracles.begin(), options.oracles.end(), oracle) != options.oracles.end();
+  };
+  const std::vector<runner::Backend> drivers{runner::Backend::Vulkan, runner::Backend::Gles};
+
+  if (wants("exact") && !options.skip_exact) {
+    const verify::VerifyReport r = run_verify(glsl, spec, stage, Mode::Exact, Target::Es310, drivers, options, &result, false, GuardKind::Auto, true);
+    if (!failed(r, label(Mode::Exact, Target::Es310), &result)) {
+      result.checked.push_back("exact");
+      for (const verify::BackendRun& run : r.runs)
+        for (const verify::OutputStats& o : run.outputs) {
+          // Zeros of opposite sign are excused: lavapipe's NIR rewrites mix(0, b, t) as b * t even
+          // under NoContraction, so native's sign of a zero depends on what it could fold
+          // (docs/robustness.md, "Differential testing"); mode exact follows the written formula.
+          uint64_t differ = 0, first = 0;
+          for (size_t s = 0; s < o.got_values.size(); ++s) {
+            const double got = o.got_values[s], want = o.want_values[s];
+            if (bits_of(got) == bits_of(want) || (std::isnan(got) && std::isnan(want))) continue;
+            if (got == 0 && want == 0) {
+              ++result.excused_zero_signs;
+              continue;
+            }
+            if (differ++ == 0) first = s;
+          }
+          if (differ)
+            result.findings.push_back(
+                {"exact", std::string("mode exact on ") + runner::backend_name(run.backend) + ": output " + o.name + ": " +
+                              std::to_string(differ) + " of " + std::to_string(o.samples) +
+                              " samples differ from native; sample " + std::to_string(first) + ": " +
+                              show(o.got_values[first]) + ", native " + show(o.want_values[first])});
+        }
+    }
+  }
+
+  if (wants("int") || wants("targets")) {
+    // es320 declares the runtime `precise`, so no driver contracts a*b + c anywhere in it: two
+    // lowerings then differ only where their rules do. es310's uniform guard, and df64-int's
+    // default guard (none), leave contracting the parts that are not error-free transformations to
+    // the driver, which changes the last bits (docs/robustness.md, "Differential testing").
+    const verify::VerifyReport df64 = run_verify(glsl, spec, stage, Mode::Df64, Target::Es320, drivers, options, &result);
+    if (!failed(df64, label(Mode::Df64, Target::Es320), &result)) {
+      if (wants("int")) {
+        const verify::VerifyReport with_int = run_verify(glsl, spec, stage, Mode::Df64Int, Target::Es320, drivers, options, &result, false, GuardKind::Precise, true);
+        if (!failed(with_int, label(Mode::Df64Int, Target::Es320), &result)) {
+          result.checked.push_back("int");
+          for (size_t b = 0; b < df64.runs.size() && b < with_int.runs.size(); ++b)
+            compare_runs(with_int.runs[b], df64.runs[b], "int",
+                         std::string("df64-int against df64 on ") + runner::backend_name(df64.runs[b].backend),
+                         outside_pair_range, &result.findings);
+        }
+      }
+      if (wants("targets")) {
+        bool all_ran = true;
+        for (Target t : {Target::Glsl450, Target::Es310}) {
+          const bool es310 = t == Target::Es310;  // with GL_EXT_gpu_shader5's precise
+          const verify::VerifyReport other =
+              run_verify(glsl, spec, stage, Mode::Df64, t, {runner::Backend::Vulkan}, options, &result, es310);
+          const std::string what = "df64 " + std::string(to_string(t)) + (es310 ? " (gpu_shader5)" : "");
+          if (failed(other, what, &result)) {
+            all_ran = false;
+            continue;
+          }
+          compare_runs(other.runs[0], df64.runs[0], "targets", what + " against es320 on lavapipe", outside_pair_range,
+                       &result.findings);
+        }
+        if (options.webgpu) {
+          const verify::VerifyReport web = run_verify(glsl, spec, stage, Mode::Df64, Target::Es320, {runner::Backend::WebGpu}, options, &result);
+          if (failed(web, "df64 wgsl in WebGPU", &result)) all_ran = false;
+          else
+            compare_runs(web.runs[0], df64.runs[0], "targets", "df64 wgsl in WebGPU against es320 on lavapipe",
+                         outside_pair_range, &result.findings);
+        }
+        if (all_ran) result.checked.push_back("targets");
+      }
+    }
+  }
+  return result;
+}
+
+}  // namespace doublet::difftest

@@ -1,0 +1,49 @@
+// The differential tester's oracles (docs/robustness.md, "Differential testing"): relations between
+// runs of one program that need no expected output.
+//   exact   — --mode exact is bit-identical to native fp64 built with NoContraction (lavapipe and
+//             Mesa GLES, through doublet::verify), NaN payloads and the signs of zeros apart;
+//   int     — --mode df64-int returns the same pairs as df64 on every sample where native's value
+//             is finite and within float-float's range (the integer and the guarded float
+//             error-free transformations are the same functions);
+//   targets — the df64 lowerings for es310, es320 and glsl450 give the same pairs on lavapipe, and
+//             (with webgpu) the wgsl lowering the same pairs in Chromium's WebGPU.
+// Every lowering must succeed: the programs are valid GLSL 4.50, so a refusal is a finding too.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace doublet::difftest {
+
+struct Finding {
+  std::string oracle;  // "exact", "int", "targets", "lowering"
+  std::string detail;  // one paragraph: what differs, where, one sample's values
+};
+
+struct CheckOptions {
+  uint64_t samples = 256;
+  std::vector<std::string> oracles{"exact", "int", "targets"};
+  bool skip_exact = false;  // the program uses a built-in native does not compute as IEEE
+  bool webgpu = false;      // also run the wgsl lowering in Chromium (targets)
+  // Passes left out of every lowering (Options::skip_passes): a bug put back on purpose, to show
+  // that the oracles find it (docs/robustness.md, "Differential testing").
+  std::vector<std::string> skip_passes;
+  // verify's sabotage, applied to the mode exact and df64-int runs only (the others are their
+  // references): each oracle must then report a finding.
+  std::string sabotage = "none";
+};
+
+struct CheckResult {
+  std::string invalid;                // non-empty: the program itself does not compile natively
+  std::vector<std::string> checked;   // oracles that ran to a verdict
+  std::vector<Finding> findings;
+  std::vector<std::pair<std::string, double>> seconds;
+  uint64_t excused_zero_signs = 0;  // exact: +0 against native's -0 or the reverse (oracles.cpp)  // wall time per verify run ("exact es310", ...)
+};
+
+// `stage`: "comp", "vert" or "frag".
+CheckResult check(const std::string& glsl, const std::string& spec_json, const std::string& stage,
+                  const CheckOptions& options);
+
+}  // namespace doublet::difftest
