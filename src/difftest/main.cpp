@@ -54,7 +54,7 @@ void print_findings(const std::vector<Finding>& findings) {
 }
 
 struct RunArgs {
-  double seconds = 60, reduce_seconds = 600;
+  double seconds = 60, reduce_seconds = 600, program_seconds = 180;
   uint64_t seed = 1, samples = 256;
   std::string out = "build/difftest";
   bool reduce = true, webgpu = false;
@@ -66,7 +66,7 @@ int run(const RunArgs& a) {
   fs::create_directories(a.out);
   std::map<std::string, uint64_t> checked;
   std::set<std::string> covered;
-  uint64_t programs = 0, failures = 0, invalid = 0, excused = 0;
+  uint64_t programs = 0, failures = 0, invalid = 0, excused = 0, timeouts = 0;
   for (uint64_t seed = a.seed; seconds_since(start) < a.seconds; ++seed) {
     const Program p = generate(seed);
     CheckOptions options;
@@ -74,8 +74,15 @@ int run(const RunArgs& a) {
     options.skip_exact = uses_native_non_ieee(p);
     options.webgpu = a.webgpu;
     options.skip_passes = a.skip_passes;
-    const CheckResult r = check(p.glsl, p.spec_json, p.stage, options);
+    bool timed_out = false;
+    const CheckResult r = check_in_child(p.glsl, p.spec_json, p.stage, options, a.program_seconds, &timed_out);
     ++programs;
+    if (timed_out) {
+      // A driver that does not finish compiling is not doublet's finding; it is counted and shown.
+      ++timeouts;
+      std::cout << "seed " << seed << ": no result within " << a.program_seconds << " s (a driver's compiler, or a crash); skipped\n";
+      continue;
+    }
     covered.insert(p.features.begin(), p.features.end());
     for (const std::string& o : r.checked) ++checked[o];
     excused += r.excused_zero_signs;
@@ -121,6 +128,7 @@ int run(const RunArgs& a) {
   if (!missing.empty()) std::cout << "; not reached:" << missing;
   std::cout << "\nthroughput: " << static_cast<double>(programs) / std::max(minutes, 1e-9) << " programs per minute\n";
   if (invalid) std::cout << "invalid programs (generator bugs): " << invalid << "\n";
+  if (timeouts) std::cout << "programs without a result in time (skipped): " << timeouts << "\n";
   if (excused) std::cout << "exact: " << excused << " result(s) were zeros of the other sign than native's (excused)\n";
   std::cout << "programs: " << programs << ", failures: " << failures + invalid << ", oracles: exact=" << checked["exact"]
             << " int=" << checked["int"] << " bound=0 targets=" << checked["targets"] << std::endl;
@@ -138,7 +146,13 @@ int check_files(const std::vector<std::string>& files, uint64_t samples, bool we
     CheckOptions options;
     options.samples = samples;
     options.webgpu = webgpu;
-    const CheckResult r = check(glsl, spec, stage_of(file), options);
+    bool timed_out = false;
+    const CheckResult r = check_in_child(glsl, spec, stage_of(file), options, 600, &timed_out);
+    if (timed_out) {
+      std::cout << file << ": no result within 600 s\n";
+      status = std::max(status, 1);
+      continue;
+    }
     if (!r.invalid.empty()) {
       std::cout << file << ": invalid program: " << r.invalid << "\n";
       status = std::max(status, 2);
@@ -167,6 +181,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--samples", run_args.samples, "inputs per program");
   run_cmd->add_option("--out", run_args.out, "where findings are written");
   run_cmd->add_option("--reduce-seconds", run_args.reduce_seconds, "time for reducing one finding");
+  run_cmd->add_option("--program-seconds", run_args.program_seconds, "time one program's checks may take");
   bool no_reduce = false;
   run_cmd->add_flag("--no-reduce", no_reduce, "keep findings as generated");
   run_cmd->add_flag("--webgpu", run_args.webgpu, "also compare the wgsl lowering in Chromium's WebGPU");

@@ -8,6 +8,11 @@
 #include <cstring>
 #include <sstream>
 
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "runner/runner.hpp"
 #include "verify/verify.hpp"
 
@@ -200,6 +205,94 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
     }
   }
   return result;
+}
+
+namespace {
+
+// One field per line, newlines inside a field escaped: the child's result through a pipe.
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '\n' ? std::string("\\n") : c == '\\' ? std::string("\\\\") : std::string(1, c);
+  return out;
+}
+std::string unescape(const std::string& s) {
+  std::string out;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\\' && i + 1 < s.size()) {
+      out += s[i + 1] == 'n' ? '\n' : s[i + 1];
+      ++i;
+    } else {
+      out += s[i];
+    }
+  }
+  return out;
+}
+
+std::string serialize(const CheckResult& r) {
+  std::string out = "invalid\t" + escape(r.invalid) + "\nexcused\t" + std::to_string(r.excused_zero_signs) + "\n";
+  for (const std::string& c : r.checked) out += "checked\t" + c + "\n";
+  for (const Finding& f : r.findings) out += "finding\t" + f.oracle + "\t" + escape(f.detail) + "\n";
+  for (const auto& [what, s] : r.seconds) out += "seconds\t" + what + "\t" + std::to_string(s) + "\n";
+  return out;
+}
+
+CheckResult deserialize(const std::string& text) {
+  CheckResult r;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    const size_t a = line.find('\t'), b = line.find('\t', a + 1);
+    const std::string key = line.substr(0, a), first = line.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
+    const std::string second = b == std::string::npos ? "" : line.substr(b + 1);
+    if (key == "invalid") r.invalid = unescape(first);
+    else if (key == "excused") r.excused_zero_signs = std::stoull(first);
+    else if (key == "checked") r.checked.push_back(first);
+    else if (key == "finding") r.findings.push_back({first, unescape(second)});
+    else if (key == "seconds") r.seconds.emplace_back(first, std::stod(second));
+  }
+  return r;
+}
+
+}  // namespace
+
+CheckResult check_in_child(const std::string& glsl, const std::string& spec_json, const std::string& stage,
+                           const CheckOptions& options, double seconds, bool* timed_out) {
+  *timed_out = false;
+  int fds[2];
+  if (pipe(fds) != 0) return check(glsl, spec_json, stage, options);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fds[0]);
+    const std::string text = serialize(check(glsl, spec_json, stage, options));
+    for (size_t done = 0; done < text.size();) {
+      const ssize_t n = write(fds[1], text.data() + done, text.size() - done);
+      if (n <= 0) break;
+      done += static_cast<size_t>(n);
+    }
+    _exit(0);  // no static destructors: the drivers' threads are not ours to join
+  }
+  close(fds[1]);
+  std::string text;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) {
+      *timed_out = true;
+      break;
+    }
+    pollfd p{fds[0], POLLIN, 0};
+    if (poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000))) <= 0) continue;
+    char buf[4096];
+    const ssize_t n = read(fds[0], buf, sizeof buf);
+    if (n <= 0) break;  // the child finished (or died)
+    text.append(buf, static_cast<size_t>(n));
+  }
+  close(fds[0]);
+  if (*timed_out) kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!*timed_out && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) *timed_out = true;
+  return *timed_out ? CheckResult{} : deserialize(text);
 }
 
 }  // namespace doublet::difftest

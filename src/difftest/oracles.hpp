@@ -46,4 +46,11 @@ struct CheckResult {
 CheckResult check(const std::string& glsl, const std::string& spec_json, const std::string& stage,
                   const CheckOptions& options);
 
+// check() in a forked child that is killed after `seconds`: a driver whose compiler never ends on a
+// program (LLVM's loop analysis in llvmpipe has taken over 15 minutes on a generated vertex shader)
+// or crashes costs that program, not the run. `timed_out` says it was killed or died; the result
+// is then empty. The calling process must not have started a driver (fork keeps one thread).
+CheckResult check_in_child(const std::string& glsl, const std::string& spec_json, const std::string& stage,
+                           const CheckOptions& options, double seconds, bool* timed_out);
+
 }  // namespace doublet::difftest

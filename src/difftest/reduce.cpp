@@ -48,8 +48,9 @@ Reduction reduce(const std::string& glsl, const std::string& spec_json, const st
   auto interesting = [&](const std::vector<std::string>& candidate) {
     if (std::chrono::steady_clock::now() > deadline && !r.finding.oracle.empty()) return false;
     ++r.checks;
-    const CheckResult c = check(join_lines(candidate), spec_json, stage, options);
-    if (!c.invalid.empty()) return false;
+    bool timed_out = false;
+    const CheckResult c = check_in_child(join_lines(candidate), spec_json, stage, options, 120, &timed_out);
+    if (timed_out || !c.invalid.empty()) return false;
     for (const Finding& f : c.findings)
       if (f.oracle == oracle) {
         r.finding = f;
