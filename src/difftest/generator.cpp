@@ -464,9 +464,12 @@ class Generator {
             return true;
           }
           default:
+            // eta from the program's values, not a literal: lavapipe reassociates its expansion of
+            // refract when eta is a compile-time constant, so native's last bit then depends on
+            // what it could fold (docs/robustness.md, "Differential testing").
             feature("fn:refract");
-            *out = {"refract(" + a.s + ", normalize(abs(" + b.s + ") + " + type_name(t) + "(0.5lf)), " +
-                        literal(pick(1, 7) / 4.0) + ")", 4 * a.b + 4};
+            *out = {"refract(" + a.s + ", normalize(abs(" + b.s + ") + " + type_name(t) + "(0.5lf)), clamp(" +
+                        gen(Ty::D, d).s + ", 0.25lf, 2.0lf))", 4 * a.b + 4};
             return true;
         }
       }

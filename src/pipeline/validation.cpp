@@ -6,6 +6,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 
@@ -101,6 +102,29 @@ std::vector<std::pair<int, std::string>> main_string_errors(std::string_view log
   return errors;
 }
 
+// `1.5lf` read as the float `1.5` (the prelude reads `double` as float; the suffix has no macro).
+std::string without_double_suffixes(std::string_view line) {
+  std::string out;
+  for (size_t i = 0; i < line.size(); ++i) {
+    // The token before: a number when it starts with a digit or a point (not the identifier x1lf).
+    size_t start = i;
+    while (start > 0 && (std::isalnum(static_cast<unsigned char>(line[start - 1])) || line[start - 1] == '_' ||
+                         line[start - 1] == '.' ||
+                         ((line[start - 1] == '+' || line[start - 1] == '-') && start > 1 &&
+                          (line[start - 2] == 'e' || line[start - 2] == 'E'))))
+      --start;
+    const bool after_number = start < i && (std::isdigit(static_cast<unsigned char>(line[start])) || line[start] == '.');
+    const bool suffix = i + 1 < line.size() && (line[i] == 'l' || line[i] == 'L') && (line[i + 1] == 'f' || line[i + 1] == 'F');
+    const bool ends = i + 2 >= line.size() || !(std::isalnum(static_cast<unsigned char>(line[i + 2])) || line[i + 2] == '_');
+    if (after_number && suffix && ends) {
+      ++i;
+      continue;
+    }
+    out += line[i];
+  }
+  return out;
+}
+
 // When the lowered text fails re-validation, the construct may be the user's: a desktop shader's
 // vertex input array or non-flat `out int`, a built-in of an extension, for an ES target. glslang
 // compiling the user's own text as the target (its #version line replaced, doubles read as floats,
@@ -152,10 +176,13 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
     if (n == version_line)
       text += target::version_directive(options.target) + "\n";
     else
-      text += extension_lines.count(n) ? "\n" : std::string(index.line(n)) + "\n";
+      text += extension_lines.count(n) ? "\n" : without_double_suffixes(index.line(n)) + "\n";
     if (n == prelude_after) text += prelude;
   }
-  const auto original = main_string_errors(target::validate(text, *options.stage, options.target));
+  auto original = main_string_errors(target::validate(text, *options.stage, options.target));
+  // What doublet lowers is not the user's to change: a uniform's initializer goes to the manifest
+  // on targets without them (uniform-defaults).
+  std::erase_if(original, [](const auto& e) { return e.second.find("cannot initialize this type of qualifier") != std::string::npos; });
   std::set<std::string> original_messages;
   for (const auto& e : original) original_messages.insert(e.second);
   // glslang stops at some errors, in either text, so the lists need not be equal; the first
