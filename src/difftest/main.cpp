@@ -54,7 +54,7 @@ void print_findings(const std::vector<Finding>& findings) {
 }
 
 struct RunArgs {
-  double seconds = 60, reduce_seconds = 600, program_seconds = 180;
+  double seconds = 60, reduce_seconds = 600, program_seconds = 90;
   uint64_t seed = 1, samples = 256;
   std::string out = "build/difftest";
   bool reduce = true, webgpu = false;
@@ -211,7 +211,9 @@ int main(int argc, char** argv) {
   if (run_cmd->parsed()) return run(run_args);
   if (print_cmd->parsed()) {
     const Program p = generate(print_seed);
-    std::cout << "// stage: " << p.stage << "\n" << p.glsl << "// spec:\n" << p.spec_json;
+    std::cout << "// stage: " << p.stage << "\n// features:";
+    for (const std::string& f : p.features) std::cout << " " << f;
+    std::cout << "\n" << p.glsl << "// spec:\n" << p.spec_json;
     return 0;
   }
   if (check_cmd->parsed()) return check_files(files, samples, webgpu);

@@ -212,6 +212,7 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
 
   for (const auto& [name, in] : spec.inputs) {
     auto it = std::find_if(inputs_.begin(), inputs_.end(), [&](const Variable& v) { return v.name == name; });
+    if (it == inputs_.end() && in.from_initializer) continue;
     if (it == inputs_.end()) {
       std::string known;
       for (const auto& v : inputs_) known += " " + v.name;

@@ -15,6 +15,9 @@ struct InputSpec {
   std::vector<double> values;    // exact values, cycled over samples and components (wins over a range)
   unsigned elements_per_invocation = 1;  // runtime-sized arrays: elements each invocation reads
   std::vector<std::pair<double, double>> component_ranges;  // per component (scene files); wins over lo/hi
+  // A uniform's initializer, not the user's entry: nothing to feed when the compiler removed the
+  // uniform (unused), where a name the user gives must exist.
+  bool from_initializer = false;
   InputSpec component(size_t c) const;  // this spec with component c's range as lo/hi
 };
 

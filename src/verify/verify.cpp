@@ -145,6 +145,7 @@ Spec with_uniform_defaults(const Spec& spec, const Manifest& manifest, std::vect
   for (const InterfaceVariable& v : manifest.variables) {
     if (v.storage != "uniform" || v.default_value.empty() || out.inputs.count(v.name)) continue;
     out.inputs[v.name].values = v.default_value;
+    out.inputs[v.name].from_initializer = true;
     notes->push_back("uniform '" + v.name + "' runs at its initializer's value (the manifest's default; --range " +
                      v.name + "=LO:HI samples it instead)");
   }
