@@ -1039,6 +1039,13 @@ class Generator {
       line(std::string(type_name(in.ty)) + " " + name + " = " + in.name + (stage_ == "comp" ? "[gid];" : ";"));
       scope_.push_back({name, in.ty, 4});
     }
+    // Every block member is read once, so none is inactive (verify refuses a range for a uniform the
+    // compiler removed).
+    for (const Var& m : block_members_) {
+      const std::string name = "y" + m.name;
+      line(std::string(type_name(m.ty)) + " " + name + " = " + m.name + ";");
+      scope_.push_back({name, m.ty, m.b});
+    }
     block(pick(3, 8), 0);
     write_outputs();
     --indent_;
