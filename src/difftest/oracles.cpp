@@ -35,31 +35,40 @@ std::string show(double x) {
   return s.str();
 }
 
-verify::VerifyReport run_verify(const std::string& glsl, const verify::Spec& spec, Stage stage, Mode mode, Target target,
-                                std::vector<runner::Backend> backends, const CheckOptions& options, CheckResult* result,
-                                bool gpu_shader5 = false, GuardKind guard = GuardKind::Auto, bool sabotaged = false) {
+// One lowering an oracle runs: its mode and target, and what differs from the defaults.
+struct Lowering {
+  Mode mode;
+  Target target;
+  bool gpu_shader5 = false;          // es310's `precise` through GL_EXT_gpu_shader5
+  GuardKind guard = GuardKind::Auto;
+  bool sabotaged = false;            // CheckOptions::sabotage applies to this run
+  std::string label() const {
+    return std::string(to_string(mode)) + " " + std::string(to_string(target)) + (gpu_shader5 ? " (gpu_shader5)" : "");
+  }
+};
+
+verify::VerifyReport run_verify(const std::string& glsl, const verify::Spec& spec, Stage stage, const Lowering& lowering,
+                                std::vector<runner::Backend> backends, const CheckOptions& options, CheckResult* result) {
   const auto start = std::chrono::steady_clock::now();
   verify::VerifyOptions o;
   o.lower.stage = stage;
-  o.lower.target = target;
-  o.lower.mode = mode;
-  o.lower.allow_gpu_shader5 = gpu_shader5;
-  o.lower.guard = guard;
+  o.lower.target = lowering.target;
+  o.lower.mode = lowering.mode;
+  o.lower.allow_gpu_shader5 = lowering.gpu_shader5;
+  o.lower.guard = lowering.guard;
   o.lower.skip_passes = options.skip_passes;
-  if (sabotaged) o.sabotage = verify::parse_sabotage(options.sabotage).value_or(verify::Sabotage::None);
+  if (lowering.sabotaged) o.sabotage = verify::parse_sabotage(options.sabotage).value_or(verify::Sabotage::None);
   o.lower.file_name = "program." + std::string(to_string(stage));
   o.samples = options.samples;
   o.seed = 1;
   o.spec = spec;
   o.backends = std::move(backends);
   verify::VerifyReport report = verify::verify(glsl, o);
-  result->seconds.emplace_back(std::string(to_string(mode)) + " " + std::string(to_string(target)) +
-                                   (o.backends.size() == 1 ? std::string(" ") + runner::backend_name(o.backends[0]) : ""),
-                               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  result->seconds.emplace_back(
+      lowering.label() + (o.backends.size() == 1 ? std::string(" ") + runner::backend_name(o.backends[0]) : ""),
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return report;
 }
-
-std::string label(Mode mode, Target target) { return std::string(to_string(mode)) + " " + std::string(to_string(target)); }
 
 // A lowering or driver failure of a valid program, as a finding; true when there was one (or when
 // verify refused the program itself, which makes it invalid).
@@ -81,6 +90,21 @@ bool failed(const verify::VerifyReport& r, const std::string& what, CheckResult*
   return false;
 }
 
+// Samples whose bits differ between `a` and `b` (NaN against NaN is no difference), less those
+// `excused(s)` leaves out; the first of them.
+struct Differences {
+  uint64_t count = 0, first = 0;
+};
+template <class Excused>
+Differences differences(const std::vector<double>& a, const std::vector<double>& b, Excused excused) {
+  Differences d;
+  for (size_t s = 0; s < a.size() && s < b.size(); ++s) {
+    if (bits_of(a[s]) == bits_of(b[s]) || (std::isnan(a[s]) && std::isnan(b[s])) || excused(s)) continue;
+    if (d.count++ == 0) d.first = s;
+  }
+  return d;
+}
+
 // Two runs' values of every output, sample by sample; `skip` says which samples do not count.
 template <class Skip>
 void compare_runs(const verify::BackendRun& a, const verify::BackendRun& b, const std::string& oracle,
@@ -88,17 +112,14 @@ void compare_runs(const verify::BackendRun& a, const verify::BackendRun& b, cons
   for (size_t o = 0; o < a.outputs.size() && o < b.outputs.size(); ++o) {
     const verify::OutputStats& x = a.outputs[o];
     const verify::OutputStats& y = b.outputs[o];
-    uint64_t differ = 0, first = 0;
-    for (size_t s = 0; s < x.got_values.size() && s < y.got_values.size(); ++s) {
-      if (skip(x.want_values[s], x.got_values[s], y.got_values[s])) continue;
-      if (bits_of(x.got_values[s]) != bits_of(y.got_values[s]) && !(std::isnan(x.got_values[s]) && std::isnan(y.got_values[s])))
-        if (differ++ == 0) first = s;
-    }
-    if (differ)
-      findings->push_back({oracle, what + ": output " + x.name + ": " + std::to_string(differ) + " of " +
+    const Differences d = differences(x.got_values, y.got_values, [&](size_t s) {
+      return skip(x.want_values[s], x.got_values[s], y.got_values[s]);
+    });
+    if (d.count)
+      findings->push_back({oracle, what + ": output " + x.name + ": " + std::to_string(d.count) + " of " +
                                        std::to_string(x.got_values.size()) + " samples differ; sample " +
-                                       std::to_string(first) + ": " + show(x.got_values[first]) + " against " +
-                                       show(y.got_values[first]) + ", native " + show(x.want_values[first])});
+                                       std::to_string(d.first) + ": " + show(x.got_values[d.first]) + " against " +
+                                       show(y.got_values[d.first]) + ", native " + show(x.want_values[d.first])});
   }
 }
 
@@ -107,22 +128,21 @@ bool outside_pair_range(double want, double, double) { return !std::isfinite(wan
 
 }  // namespace
 
+bool compiles_natively(const std::string& glsl, const std::string& stage, std::string* error) {
+  if (stage == "comp") {
+    std::vector<uint32_t> spirv;
+    return runner::compile_compute_to_spirv(glsl, &spirv, error);
+  }
+  runner::GraphicsInterface graphics;
+  return runner::reflect_graphics(stage == "vert" ? runner::GraphicsStage::Vertex : runner::GraphicsStage::Fragment, glsl,
+                                  &graphics, error);
+}
+
 CheckResult check(const std::string& glsl, const std::string& spec_json, const std::string& stage_name,
                   const CheckOptions& options) {
   CheckResult result;
+  if (!compiles_natively(glsl, stage_name, &result.invalid)) return result;
   const Stage stage = stage_name == "vert" ? Stage::Vertex : stage_name == "frag" ? Stage::Fragment : Stage::Compute;
-  std::vector<uint32_t> spirv;
-  std::string error;
-  runner::GraphicsInterface graphics;
-  const bool valid = stage == Stage::Compute
-                         ? runner::compile_compute_to_spirv(glsl, &spirv, &error)
-                         : runner::reflect_graphics(stage == Stage::Vertex ? runner::GraphicsStage::Vertex
-                                                                           : runner::GraphicsStage::Fragment,
-                                                    glsl, &graphics, &error);
-  if (!valid) {
-    result.invalid = error;
-    return result;
-  }
   verify::Spec spec;
   if (std::string e = verify::parse_spec(spec_json, &spec); !e.empty()) {
     result.invalid = "spec: " + e;
@@ -134,30 +154,26 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
   const std::vector<runner::Backend> drivers{runner::Backend::Vulkan, runner::Backend::Gles};
 
   if (wants("exact") && !options.skip_exact) {
-    const verify::VerifyReport r = run_verify(glsl, spec, stage, Mode::Exact, Target::Es310, drivers, options, &result, false, GuardKind::Auto, true);
-    if (!failed(r, label(Mode::Exact, Target::Es310), &result)) {
+    const Lowering exact{.mode = Mode::Exact, .target = Target::Es310, .sabotaged = true};
+    const verify::VerifyReport r = run_verify(glsl, spec, stage, exact, drivers, options, &result);
+    if (!failed(r, exact.label(), &result)) {
       result.checked.push_back("exact");
       for (const verify::BackendRun& run : r.runs)
         for (const verify::OutputStats& o : run.outputs) {
           // Zeros of opposite sign are excused: lavapipe's NIR rewrites mix(0, b, t) as b * t even
           // under NoContraction, so native's sign of a zero depends on what it could fold
           // (docs/robustness.md, "Differential testing"); mode exact follows the written formula.
-          uint64_t differ = 0, first = 0;
-          for (size_t s = 0; s < o.got_values.size(); ++s) {
-            const double got = o.got_values[s], want = o.want_values[s];
-            if (bits_of(got) == bits_of(want) || (std::isnan(got) && std::isnan(want))) continue;
-            if (got == 0 && want == 0) {
-              ++result.excused_zero_signs;
-              continue;
-            }
-            if (differ++ == 0) first = s;
-          }
-          if (differ)
+          const Differences d = differences(o.got_values, o.want_values, [&](size_t s) {
+            const bool zeros = o.got_values[s] == 0 && o.want_values[s] == 0;
+            result.excused_zero_signs += zeros;
+            return zeros;
+          });
+          if (d.count)
             result.findings.push_back(
                 {"exact", std::string("mode exact on ") + runner::backend_name(run.backend) + ": output " + o.name + ": " +
-                              std::to_string(differ) + " of " + std::to_string(o.samples) +
-                              " samples differ from native; sample " + std::to_string(first) + ": " +
-                              show(o.got_values[first]) + ", native " + show(o.want_values[first])});
+                              std::to_string(d.count) + " of " + std::to_string(o.samples) +
+                              " samples differ from native; sample " + std::to_string(d.first) + ": " +
+                              show(o.got_values[d.first]) + ", native " + show(o.want_values[d.first])});
         }
     }
   }
@@ -167,11 +183,13 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
     // lowerings then differ only where their rules do. es310's uniform guard, and df64-int's
     // default guard (none), leave contracting the parts that are not error-free transformations to
     // the driver, which changes the last bits (docs/robustness.md, "Differential testing").
-    const verify::VerifyReport df64 = run_verify(glsl, spec, stage, Mode::Df64, Target::Es320, drivers, options, &result);
-    if (!failed(df64, label(Mode::Df64, Target::Es320), &result)) {
+    const Lowering base{.mode = Mode::Df64, .target = Target::Es320};
+    const verify::VerifyReport df64 = run_verify(glsl, spec, stage, base, drivers, options, &result);
+    if (!failed(df64, base.label(), &result)) {
       if (wants("int")) {
-        const verify::VerifyReport with_int = run_verify(glsl, spec, stage, Mode::Df64Int, Target::Es320, drivers, options, &result, false, GuardKind::Precise, true);
-        if (!failed(with_int, label(Mode::Df64Int, Target::Es320), &result)) {
+        const Lowering int_eft{.mode = Mode::Df64Int, .target = Target::Es320, .guard = GuardKind::Precise, .sabotaged = true};
+        const verify::VerifyReport with_int = run_verify(glsl, spec, stage, int_eft, drivers, options, &result);
+        if (!failed(with_int, int_eft.label(), &result)) {
           result.checked.push_back("int");
           for (size_t b = 0; b < df64.runs.size() && b < with_int.runs.size(); ++b)
             compare_runs(with_int.runs[b], df64.runs[b], "int",
@@ -181,11 +199,11 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
       }
       if (wants("targets")) {
         bool all_ran = true;
-        for (Target t : {Target::Glsl450, Target::Es310}) {
-          const bool es310 = t == Target::Es310;  // with GL_EXT_gpu_shader5's precise
+        for (const Lowering& other_target : {Lowering{.mode = Mode::Df64, .target = Target::Glsl450},
+                                             Lowering{.mode = Mode::Df64, .target = Target::Es310, .gpu_shader5 = true}}) {
           const verify::VerifyReport other =
-              run_verify(glsl, spec, stage, Mode::Df64, t, {runner::Backend::Vulkan}, options, &result, es310);
-          const std::string what = "df64 " + std::string(to_string(t)) + (es310 ? " (gpu_shader5)" : "");
+              run_verify(glsl, spec, stage, other_target, {runner::Backend::Vulkan}, options, &result);
+          const std::string what = other_target.label();
           if (failed(other, what, &result)) {
             all_ran = false;
             continue;
@@ -194,7 +212,7 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
                        &result.findings);
         }
         if (options.webgpu) {
-          const verify::VerifyReport web = run_verify(glsl, spec, stage, Mode::Df64, Target::Es320, {runner::Backend::WebGpu}, options, &result);
+          const verify::VerifyReport web = run_verify(glsl, spec, stage, base, {runner::Backend::WebGpu}, options, &result);
           if (failed(web, "df64 wgsl in WebGPU", &result)) all_ran = false;
           else
             compare_runs(web.runs[0], df64.runs[0], "targets", "df64 wgsl in WebGPU against es320 on lavapipe",

@@ -42,6 +42,10 @@ struct CheckResult {
   uint64_t excused_zero_signs = 0;  // exact: +0 against native's -0 or the reverse (oracles.cpp)  // wall time per verify run ("exact es310", ...)
 };
 
+// The program compiles as native fp64 GLSL 4.50 the way verify runs it (stage "comp", "vert" or
+// "frag"); else *error says why.
+bool compiles_natively(const std::string& glsl, const std::string& stage, std::string* error);
+
 // `stage`: "comp", "vert" or "frag".
 CheckResult check(const std::string& glsl, const std::string& spec_json, const std::string& stage,
                   const CheckOptions& options);

@@ -6,11 +6,11 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <set>
 
 #include "emit/webgl_rules.hpp"
+#include "frontend/demote.hpp"
 #include "frontend/read_limited.hpp"
 #include "frontend/text_scan.hpp"
 #include "target/glslang_checks.hpp"
@@ -102,29 +102,6 @@ std::vector<std::pair<int, std::string>> main_string_errors(std::string_view log
   return errors;
 }
 
-// `1.5lf` read as the float `1.5` (the prelude reads `double` as float; the suffix has no macro).
-std::string without_double_suffixes(std::string_view line) {
-  std::string out;
-  for (size_t i = 0; i < line.size(); ++i) {
-    // The token before: a number when it starts with a digit or a point (not the identifier x1lf).
-    size_t start = i;
-    while (start > 0 && (std::isalnum(static_cast<unsigned char>(line[start - 1])) || line[start - 1] == '_' ||
-                         line[start - 1] == '.' ||
-                         ((line[start - 1] == '+' || line[start - 1] == '-') && start > 1 &&
-                          (line[start - 2] == 'e' || line[start - 2] == 'E'))))
-      --start;
-    const bool after_number = start < i && (std::isdigit(static_cast<unsigned char>(line[start])) || line[start] == '.');
-    const bool suffix = i + 1 < line.size() && (line[i] == 'l' || line[i] == 'L') && (line[i + 1] == 'f' || line[i + 1] == 'F');
-    const bool ends = i + 2 >= line.size() || !(std::isalnum(static_cast<unsigned char>(line[i + 2])) || line[i + 2] == '_');
-    if (after_number && suffix && ends) {
-      ++i;
-      continue;
-    }
-    out += line[i];
-  }
-  return out;
-}
-
 // When the lowered text fails re-validation, the construct may be the user's: a desktop shader's
 // vertex input array or non-flat `out int`, a built-in of an extension, for an ES target. glslang
 // compiling the user's own text as the target (its #version line replaced, doubles read as floats,
@@ -155,12 +132,8 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
   // must come first), then `#line` so that the user's line numbers stay (ES and 3.30+: #line N
   // numbers the next line N).
   const int prelude_after = std::max(version_line, last_extension_line);
-  std::string prelude = "#define double float\n";  // ES stops at the reserved word `double`
-  for (const char* n : {"2", "3", "4"}) {
-    prelude += std::string("#define dvec") + n + " vec" + n + "\n#define dmat" + n + " mat" + n + "\n";
-    for (const char* m : {"2", "3", "4"}) prelude += std::string("#define dmat") + n + "x" + m + " mat" + n + "x" + m + "\n";
-  }
-  for (const auto& [name, value] : options.defines) prelude += "#define " + name + " " + value + "\n";
+  std::string prelude;
+  for (const auto& [name, value] : options.defines) prelude += "#define " + name + " " + frontend::demote_doubles(value) + "\n";
   if (target_is_es(options.target)) {
     prelude += "precision highp float;\nprecision highp int;\n";  // desktop shaders declare none
     if (target_version(options.target) >= 300)
@@ -171,12 +144,16 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
   }
   prelude += "#line " + std::to_string(prelude_after + 1) + "\n";
   const frontend::LineIndex index(source);
+  // The user's text with doubles read as floats, line for line (ES stops at the reserved word
+  // `double`; `1.5lf` becomes `1.5`): frontend::demote_doubles, as verify's drop-lo uses it.
+  const std::string demoted = frontend::demote_doubles(source);
+  const frontend::LineIndex demoted_index(demoted);
   std::string text;
   for (int n = 1; n <= index.line_count(); ++n) {
     if (n == version_line)
       text += target::version_directive(options.target) + "\n";
     else
-      text += extension_lines.count(n) ? "\n" : without_double_suffixes(index.line(n)) + "\n";
+      text += extension_lines.count(n) ? "\n" : std::string(demoted_index.line(n)) + "\n";
     if (n == prelude_after) text += prelude;
   }
   auto original = main_string_errors(target::validate(text, *options.stage, options.target));
