@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <span>
 
@@ -96,13 +97,29 @@ struct ExactWords {
 };
 static_assert(sizeof(ExactWords) == sizeof(double));
 
+namespace detail {
+// std::bit_cast where the standard library has it; memcpy (the same bits) where it does not
+// (Emscripten's libc++ 14, for the WebAssembly build).
+template <class To, class From>
+inline To bits_as(const From& from) {
+#if defined(__cpp_lib_bit_cast)
+  return std::bit_cast<To>(from);
+#else
+  static_assert(sizeof(To) == sizeof(From));
+  To to;
+  std::memcpy(&to, &from, sizeof(To));
+  return to;
+#endif
+}
+}  // namespace detail
+
 inline ExactWords exact_words(double x) {
-  const auto bits = std::bit_cast<std::uint64_t>(x);
+  const auto bits = detail::bits_as<std::uint64_t>(x);
   return {static_cast<std::uint32_t>(bits), static_cast<std::uint32_t>(bits >> 32)};
 }
 
 inline double exact_join(ExactWords w) {
-  return std::bit_cast<double>((std::uint64_t{w.hi} << 32) | w.lo);
+  return detail::bits_as<double>((std::uint64_t{w.hi} << 32) | w.lo);
 }
 
 // Bulk: 2 words per double, low word first, into `words` (size 2 × x.size()): the uint data of

@@ -5,6 +5,10 @@
 
 #include <unistd.h>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#endif
+
 namespace doublet::cli {
 namespace {
 
@@ -43,12 +47,24 @@ std::optional<ColorChoice> parse_color_choice(std::string_view name) {
   return std::nullopt;
 }
 
+#ifdef __EMSCRIPTEN__
+// The WebAssembly CLI (wasm/CMakeLists.txt): Emscripten's isatty() answers 1 for every standard
+// stream; Node knows whether stderr is a terminal.
+EM_JS(int, node_stderr_is_tty, (), {
+  return typeof process === 'object' && process.stderr && process.stderr.isTTY ? 1 : 0;
+});
+#endif
+
 bool stderr_wants_color(ColorChoice choice) {
   if (choice != ColorChoice::Auto) return choice == ColorChoice::Always;
   if (env_set_non_empty("NO_COLOR")) return false;
   const char* term = std::getenv("TERM");
   if (term != nullptr && std::string_view(term) == "dumb") return false;
+#ifdef __EMSCRIPTEN__
+  return node_stderr_is_tty() == 1;
+#else
   return ::isatty(STDERR_FILENO) == 1;
+#endif
 }
 
 std::string render_diagnostic(const Diagnostic& d, bool color) {

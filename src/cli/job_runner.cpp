@@ -9,8 +9,17 @@
 #include "commands.hpp"
 #include "diagnostic_printer.hpp"
 
+// WebAssembly without threads (wasm/CMakeLists.txt): -j is accepted and jobs run one at a time.
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+#define DOUBLET_SINGLE_THREADED 1
+#else
+#define DOUBLET_SINGLE_THREADED 0
+#endif
+
 namespace doublet::cli {
 namespace {
+
+constexpr bool kSingleThreaded = DOUBLET_SINGLE_THREADED;
 
 int report(JobOutcome& outcome, bool color) {
   for (const Diagnostic& d : outcome.diagnostics) std::cerr << render_diagnostic(d, color);
@@ -31,7 +40,7 @@ int report(JobOutcome& outcome, bool color) {
 int run_jobs(const std::vector<LowerJob>& jobs, unsigned threads, bool color) {
   int worst = kExitOk;
   threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(jobs.size())));
-  if (threads == 1) {
+  if (threads == 1 || kSingleThreaded) {
     for (const LowerJob& job : jobs) {
       JobOutcome outcome = run_lower_job(job);
       worst = std::max(worst, report(outcome, color));
@@ -39,6 +48,7 @@ int run_jobs(const std::vector<LowerJob>& jobs, unsigned threads, bool color) {
     return worst;
   }
 
+#if !DOUBLET_SINGLE_THREADED
   std::vector<std::promise<JobOutcome>> promises(jobs.size());
   std::atomic<size_t> next{0};
   auto worker = [&] {
@@ -56,6 +66,7 @@ int run_jobs(const std::vector<LowerJob>& jobs, unsigned threads, bool color) {
     JobOutcome outcome = p.get_future().get();
     worst = std::max(worst, report(outcome, color));
   }
+#endif
   return worst;
 }
 

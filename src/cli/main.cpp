@@ -45,11 +45,12 @@ int main(int argc, char** argv) {
 
   std::vector<Command> commands;
   commands.push_back(add_lower_command(app));
+#ifndef DOUBLET_LOWER_ONLY  // the WebAssembly build (wasm/CMakeLists.txt) has no drivers to run
   commands.push_back(add_verify_command(app));
   commands.push_back(add_bench_command(app));
   commands.push_back(add_demo_command(app));
   commands.push_back(add_plan_command(app));
-  // Later: verify, bench, plan.
+#endif
 
   try {
     // -MD/-MF/-MT (GCC's spelling) become --MD/--MF/--MT for CLI11.

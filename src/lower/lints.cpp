@@ -5,6 +5,8 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <optional>
@@ -12,6 +14,8 @@
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include "support/c_locale.hpp"
 
 namespace doublet::passes {
 namespace {
@@ -110,7 +114,11 @@ std::optional<std::string> float_literal_digits(const std::string& text) {
   return body;
 }
 
-// std::from_chars/to_chars: exact and independent of the C and C++ locales.
+// std::from_chars/to_chars: exact and independent of the C and C++ locales. Emscripten's libc++
+// (the WebAssembly build, wasm/CMakeLists.txt) has no floating-point ones: there, musl's correctly
+// rounded strtod/strtof and "%.15g" (what to_chars' general format with precision 15 is defined
+// as) under the "C" locale give the same results.
+#if defined(__cpp_lib_to_chars)
 double parse_double(const std::string& digits) {
   double d = 0;
   std::from_chars(digits.data(), digits.data() + digits.size(), d);
@@ -126,6 +134,22 @@ std::string format_15(double d) {
   auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), d, std::chars_format::general, 15);
   return ec == std::errc() ? std::string(buf.data(), end) : std::string("?");
 }
+#else
+double parse_double(const std::string& digits) {
+  ScopedCLocale c_locale;
+  return std::strtod(digits.c_str(), nullptr);
+}
+float parse_float(const std::string& digits) {
+  ScopedCLocale c_locale;
+  return std::strtof(digits.c_str(), nullptr);
+}
+std::string format_15(double d) {
+  ScopedCLocale c_locale;
+  std::array<char, 64> buf{};
+  int n = std::snprintf(buf.data(), buf.size(), "%.15g", d);
+  return n > 0 && n < static_cast<int>(buf.size()) ? std::string(buf.data(), static_cast<size_t>(n)) : std::string("?");
+}
+#endif
 
 const std::set<std::string>& double_type_names() {
   static const std::set<std::string> names{"double", "dvec2", "dvec3", "dvec4", "dmat2", "dmat3", "dmat4",
