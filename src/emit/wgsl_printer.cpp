@@ -1204,19 +1204,28 @@ class WgslPrinter {
       for (const auto& io : inputs) known |= name == io.glsl;
       if (!known) error(loc, "the built-in variable '" + name + "' has no WGSL translation in doublet");
     }
-    int in_location = 0, out_location = 0;
+    // Every input and output has its location by now (the wgsl-io-locations pass).
+    auto location = [&](const ir::Var& g) {
+      if (g.layout.location < 0) error(g.loc, "internal error: '" + g.name + "' reached the WGSL printer without a location");
+      // WGSL's user-defined inputs and outputs are scalars and vectors only (WGSL, "Inter-stage
+      // Input and Output Interface"; vertex attributes likewise).
+      if (g.type.cols > 1 || g.type.is_array())
+        error(g.loc, "'" + g.name + "' is " + (g.type.is_array() ? "an array" : "a matrix") + " " +
+                         (g.storage == ir::Storage::In ? "input" : "output") +
+                         "; WGSL passes only scalars and vectors between stages and from vertex buffers: declare one "
+                         "vector per " + (g.type.is_array() ? "element" : "column") + ", or target a GLSL dialect");
+      return std::max(g.layout.location, 0);
+    };
     for (const auto& g : m_.globals) {
       if (g->storage == ir::Storage::In && !vertex && !fragment) continue;
       if (g->storage == ir::Storage::In) {
-        int loc = g->layout.location >= 0 ? g->layout.location : in_location;
-        in_location = loc + 1;
+        int loc = location(*g);
         const bool flat = g->type.base != Base::Float || g->interp == ir::Interp::Flat;
         params.push_back("@location(" + std::to_string(loc) + ")" + (flat && fragment ? " @interpolate(flat)" : "") +
                          " df_in_" + g->name + ": " + type(g->type, g->loc));
         copies.push_back(ident(g->name) + " = df_in_" + g->name);
       } else if (g->storage == ir::Storage::Out) {
-        int loc = g->layout.location >= 0 ? g->layout.location : out_location;
-        out_location = loc + 1;
+        int loc = location(*g);
         const bool flat = g->type.base != Base::Float || g->interp == ir::Interp::Flat;
         outputs.push_back("@location(" + std::to_string(loc) + ")" + (flat && vertex ? " @interpolate(flat)" : "") + " " +
                           ident(g->name) + ": " + type(g->type, g->loc));

@@ -90,6 +90,9 @@ bool move_global_initialisers(ir::Module& module, Context& context);
 // in declaration order, with a warning.
 bool assign_fragment_output_locations(ir::Module& module, Context& context);
 bool split_interfaces(ir::Module& module, Context& context, Manifest& manifest);
+// WGSL: every vertex/fragment input and output without a location gets the first free one in
+// declaration order (after split-interfaces); the manifest records every one's locations.
+bool assign_wgsl_io_locations(ir::Module& module, Manifest& manifest);
 // Mode exact: uniform, storage and in/out blocks hold each double as its binary64 words (low word
 // first) at the original block's offsets; accesses load and store through helpers (exact_blocks.cpp).
 bool exact_block_words(ir::Module& module, Context& context);

@@ -99,9 +99,12 @@ const std::vector<Pass>& pass_table() {
       IR_PASS("global-inits", "interfaces", always, passes::move_global_initialisers(s.module, s.ctx)),
       IR_PASS("exact-block-words", "interfaces", [](const Config& c) { return c.binary64_words(); },
               passes::exact_block_words(s.module, s.ctx)),
-      IR_PASS("output-locations", "interfaces", [](const Config& c) { return (c.facts->es && c.facts->version >= 300) || c.facts->wgsl; },
+      // c.facts is the target the IR is lowered for: for --target wgsl, its GLSL ES 3.10 intermediate.
+      IR_PASS("output-locations", "interfaces", [](const Config& c) { return c.facts->es && c.facts->version >= 300; },
               passes::assign_fragment_output_locations(s.module, s.ctx)),
       IR_PASS("split-interfaces", "interfaces", always, passes::split_interfaces(s.module, s.ctx, s.result.manifest)),
+      IR_PASS("wgsl-io-locations", "interfaces", [](const Config& c) { return target::facts(c.output).wgsl; },
+              passes::assign_wgsl_io_locations(s.module, s.result.manifest)),
       IR_PASS("rename-builtins", "interfaces", [](const Config& c) { return !c.facts->overloads_builtin_names; },
               passes::rename_functions_named_like_builtins(s.module, s.ctx)),
       IR_PASS("select-structs", "interfaces", [](const Config& c) { return c.facts->webgl_rules; },

@@ -94,6 +94,35 @@ TEST(WgslManifest, UniformBufferBindingAndOffsets) {
   EXPECT_NE(result.manifest.to_json().find("\"binding\": 1"), std::string::npos);
 }
 
+// Every input and output's locations are in the manifest (a WebGPU host builds its vertex buffer
+// layout from it), and they are the @location(N) the WGSL entry point declares: read back from the
+// text, independently of how the compiler chose them. Split doubles list hi then lo.
+TEST(WgslManifest, EveryInterfaceVariableHasTheLocationsOfTheText) {
+  int checked = 0;
+  for (const std::string& file : cases()) {
+    const std::string stage_name = file.substr(file.rfind('.') + 1);
+    if (stage_name == "comp") continue;
+    doublet::Options options;
+    options.stage = doublet::parse_stage(stage_name);
+    options.target = doublet::Target::Wgsl;
+    doublet::Result result = doublet::lower(doublet::test::file_text(kDir / "cases" / file), options);
+    if (!result.ok) continue;  // a case the target refuses (its .errors golden)
+    for (const auto& v : result.manifest.variables) {
+      if (v.storage != "in" && v.storage != "out") continue;
+      ASSERT_EQ(v.locations.size(), v.lowered_names.size()) << file << ": " << v.name << "\n" << result.manifest.to_json();
+      for (size_t k = 0; k < v.lowered_names.size(); ++k) {
+        const std::string name = v.storage == "in" ? "df_in_" + v.lowered_names[k] : v.lowered_names[k];
+        const std::regex declared("@location\\(([0-9]+)\\)( @interpolate\\(flat\\))? " + name + ":");
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(result.output, m, declared)) << file << ": no @location for " << name;
+        EXPECT_EQ(std::stoi(m[1]), v.locations[k]) << file << ": " << name;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GE(checked, 4);  // orbit.vert: position_hi, position_lo, color; deepzoom.frag: its output
+}
+
 TEST(WgslTarget, PreciseGuardAndNativeModeAreRefused) {
   doublet::Options options;
   options.stage = doublet::Stage::Compute;
