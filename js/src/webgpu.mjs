@@ -1,0 +1,137 @@
+// WebGPU host helpers for shaders lowered with `doublet lower --target wgsl` (docs/web.md, "WebGPU
+// binder"), driven by the manifest alone: the loose uniforms' buffer (the manifest's `wgsl-uniform`
+// entry, df_uniforms, with the guard left at 0), and vertex buffers whose attributes carry the
+// doubles as hi/lo float pairs (df64 modes) or binary64 words (mode exact) at the locations the
+// manifest records.
+import { exactWordsArray, setUniformsFromManifest, splitArray } from './index.mjs';
+
+const isExact = (v) => v.encoding === 'binary64-words';
+
+// WGSL member types: f32, vec3<f32>, vec4<u32>, mat4x4<f32>, ...
+function wgslType(type) {
+  const m = /^(?:(f32|i32|u32)|vec([234])<(f32|i32|u32)>|mat([234])x([234])<f32>)$/.exec(type);
+  if (!m) return null;
+  if (m[1]) return { scalar: m[1], columns: 1, rows: 1 };
+  if (m[2]) return { scalar: m[3], columns: 1, rows: Number(m[2]) };
+  return { scalar: 'f32', columns: Number(m[4]), rows: Number(m[5]) };
+}
+
+function writeScalar(view, offset, scalar, value) {
+  if (scalar === 'f32') view.setFloat32(offset, value, true);
+  else if (scalar === 'i32') view.setInt32(offset, value, true);
+  else view.setUint32(offset, value >>> 0, true);
+}
+
+// One member of the uniform buffer: components in order, matrices column by column (a column of
+// 2 floats is 8 bytes apart from the next, of 3 or 4 floats 16: WGSL's uniform layout).
+function writeMember(view, member, data) {
+  const t = wgslType(member.lowered_type);
+  if (!t) throw new Error(`'${member.name}': members of type ${member.lowered_type} are not supported yet`);
+  const list = typeof data === 'number' ? [data] : Array.from(data);
+  if (list.length !== t.columns * t.rows)
+    throw new Error(`'${member.name}' (${member.lowered_type}): expected ${t.columns * t.rows} value(s), got ${list.length}`);
+  const columnStride = t.columns === 1 ? 0 : (t.rows === 2 ? 8 : 16);
+  for (let c = 0; c < t.columns; ++c)
+    for (let r = 0; r < t.rows; ++r)
+      writeScalar(view, member.offset + c * columnStride + 4 * r, t.scalar, list[c * t.rows + r]);
+}
+
+/**
+ * The bytes of the loose-uniform buffer of a WGSL shader: { group, binding, size, data } for
+ * device.queue.writeBuffer and the bind group. `values` names the original uniforms: doubles as
+ * numbers (components × elements), plain ones (float, vecN, int, matCxR column-major) likewise.
+ * Uniforms with a default in the manifest are written at it unless named; the guard stays 0.
+ */
+export function wgslUniformBuffer(manifest, values = {}) {
+  const block = manifest.variables.find((v) => v.layout === 'wgsl-uniform');
+  if (!block) throw new Error('the manifest has no wgsl-uniform buffer (target wgsl with loose uniforms)');
+  const size = Math.max(16, Math.ceil(Math.max(...block.members.map((m) => m.offset + m.size)) / 16) * 16);
+  const data = new ArrayBuffer(size);
+  const view = new DataView(data);
+  const doubles = {}, plain = new Map();
+  for (const [name, value] of Object.entries(values)) {
+    const v = manifest.variables.find((e) => e.name === name && e.storage === 'uniform' && e !== block);
+    if (!v) throw new Error(`'${name}' is not a uniform in the manifest`);
+    if (v.split) doubles[name] = value;
+    else plain.set(v.lowered_names[0], value);
+  }
+  // Doubles (and every default) as the WebGL2 binder lowers them, by lowered name.
+  const writes = setUniformsFromManifest(manifest, doubles).filter((u) => !plain.has(u.name));
+  for (const [name, value] of plain) writes.push({ name, data: value });
+  for (const w of writes) {
+    const member = block.members.find((m) => m.name === w.name);
+    if (!member) throw new Error(`'${w.name}' is not a member of the uniform buffer`);
+    writeMember(view, member, w.data);
+  }
+  return { group: block.group, binding: block.binding, size, data };
+}
+
+// GPUVertexFormat of a lowered input type; bytes and component kind.
+function vertexFormat(type) {
+  const m = /^(?:(float|int|uint)|(vec|ivec|uvec)([234]))$/.exec(type);
+  if (!m) throw new Error(`no vertex format for an input of type ${type}`);
+  const kind = m[1] || { vec: 'float', ivec: 'int', uvec: 'uint' }[m[2]];
+  const n = m[3] ? Number(m[3]) : 1;
+  const name = { float: 'float32', int: 'sint32', uint: 'uint32' }[kind];
+  return { format: n === 1 ? name : `${name}x${n}`, kind, components: n, bytes: 4 * n };
+}
+
+/**
+ * One interleaved vertex buffer for the inputs `names` (original names, in this order):
+ * { arrayStride, attributes: [{ shaderLocation, offset, format }], parts } — a GPUVertexBufferLayout
+ * (parts: what packVertices needs). A dvec3 input in df64 is two float32x3 attributes (hi, lo) at
+ * the manifest's two locations; in mode exact its words (uint32x4 + uint32x2).
+ */
+export function wgslVertexLayout(manifest, names) {
+  const attributes = [], parts = [];
+  let offset = 0;
+  for (const name of names) {
+    const v = manifest.variables.find((e) => e.name === name && e.storage === 'in');
+    if (!v) throw new Error(`'${name}' is not an input in the manifest`);
+    if (!v.locations || v.locations.length !== v.lowered_names.length)
+      throw new Error(`'${name}': the manifest has no locations for it (lower with --target wgsl)`);
+    v.lowered_names.forEach((lowered, k) => {
+      const f = vertexFormat(isExact(v) ? v.lowered_types[k] : v.lowered_type);
+      attributes.push({ shaderLocation: v.locations[k], offset, format: f.format });
+      parts.push({ name, variable: v, part: k, offset, ...f });
+      offset += f.bytes;
+    });
+  }
+  return { arrayStride: offset, attributes, parts };
+}
+
+/**
+ * The bytes of `count` vertices for a layout from wgslVertexLayout: values[name] holds the input's
+ * components vertex after vertex (doubles as numbers; split or packed into words here).
+ */
+export function packVertices(layout, values, count) {
+  const data = new ArrayBuffer(layout.arrayStride * count);
+  const view = new DataView(data);
+  for (const p of layout.parts) {
+    const v = p.variable;
+    const list = Array.from(values[p.name] ?? []);
+    let per, words = null, pair = null;
+    if (isExact(v)) {
+      per = /^dvec([234])/.test(v.type) ? Number(v.type[4]) : 1;
+      words = exactWordsArray(list);
+    } else if (v.split) {
+      per = p.components;
+      pair = splitArray(list);
+    } else {
+      per = p.components;
+    }
+    if (list.length !== per * count) throw new Error(`'${p.name}': expected ${per * count} numbers, got ${list.length}`);
+    // Mode exact: part k holds the next components/2 doubles' words of each vertex.
+    const firstDouble = isExact(v) ? v.lowered_types.slice(0, p.part).reduce((s, t) => s + vertexFormat(t).components / 2, 0) : 0;
+    for (let i = 0; i < count; ++i) {
+      const base = i * layout.arrayStride + p.offset;
+      for (let c = 0; c < p.components; ++c) {
+        const at = base + 4 * c;
+        if (words) view.setUint32(at, words[2 * (i * per + firstDouble) + c], true);
+        else if (pair) view.setFloat32(at, (p.part === 0 ? pair.hi : pair.lo)[i * per + c], true);
+        else writeScalar(view, at, { float: 'f32', int: 'i32', uint: 'u32' }[p.kind], list[i * per + c]);
+      }
+    }
+  }
+  return data;
+}

@@ -1,0 +1,141 @@
+// The WebGPU binder (js/src/webgpu.mjs, docs/web.md "WebGPU binder"). In headless Chromium (WebGPU
+// on SwiftShader): a compute shader lowered by the native CLI (DOUBLET_CLI) with --target wgsl gets
+// its uniforms only through wgslUniformBuffer; in mode exact the results must be the bits JavaScript's
+// doubles give, in df64 within 2^-44 of them (hi/lo swapped or lo dropped is off by ~2^-24). In Node:
+// the vertex layout and packed vertices follow the manifest's locations and the words/pairs of
+// the C++ helpers' definitions. No browser: the Chromium test is skipped, unless
+// DOUBLET_REQUIRE_BROWSER=1.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { exactWords, fromExactWords, join as joinPair, split } from '../src/index.mjs';
+import { packVertices, wgslUniformBuffer, wgslVertexLayout } from '../src/webgpu.mjs';
+
+const nativeCli = process.env.DOUBLET_CLI;
+const skip = !nativeCli && 'DOUBLET_CLI is not set';
+const jsDir = fileURLToPath(new URL('../', import.meta.url));
+const runPage = fileURLToPath(new URL('../../tools/browser/run-page.mjs', import.meta.url));
+
+function lowerNative(source, stage, args) {
+  const dir = mkdtempSync(join(tmpdir(), 'doublet-binder-'));
+  try {
+    writeFileSync(join(dir, `s.${stage}`), source);
+    const r = spawnSync(nativeCli, ['lower', `s.${stage}`, '--target', 'wgsl', ...args, '-o', 'out.wgsl', '--manifest', 'out.json'], { cwd: dir });
+    assert.equal(r.status, 0, r.stderr.toString());
+    return { wgsl: readFileSync(join(dir, 'out.wgsl'), 'utf8'), manifest: JSON.parse(readFileSync(join(dir, 'out.json'), 'utf8')) };
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+}
+
+const kernel = `#version 450
+layout(local_size_x = 1) in;
+uniform double a;
+uniform dvec3 v;
+uniform float scale;
+uniform double offset_ = 0.1lf;
+uniform mat2 m;
+layout(std430, binding = 0) buffer Out { double r[]; };
+void main() {
+  r[0] = a * v.x + v.y / v.z;
+  r[1] = sqrt(a) * double(scale) + offset_;
+  r[2] = v.z - a;
+  r[3] = double(m[1][0]) * a;
+}
+`;
+const values = { a: 1.0 / 3.0, v: [42164137.25, -7.0e-3, 1.1], scale: 0.75, m: [1, 2, 3.5, 4] };
+// In JavaScript's doubles, as the shader computes them (float inputs widened exactly).
+const expected = [values.a * values.v[0] + values.v[1] / values.v[2],
+                  Math.sqrt(values.a) * Math.fround(values.scale) + 0.1,
+                  values.v[2] - values.a,
+                  Math.fround(values.m[2]) * values.a];
+
+for (const mode of ['exact', 'df64']) {
+  test(`Chromium WebGPU, mode ${mode}: uniforms through wgslUniformBuffer give the expected doubles`, { skip }, (t) => {
+    const { wgsl, manifest } = lowerNative(kernel, 'comp', ['--mode', mode]);
+    // The page fetches its inputs from a file next to it (a mode exact kernel is too long for a URL).
+    const payload = `.payload-${process.pid}-${mode}.json`;
+    const payloadPath = join(jsDir, 'wasm-test/browser', payload);
+    writeFileSync(payloadPath, JSON.stringify({ wgsl, manifest, values, outBytes: 8 * expected.length }));
+    let page;
+    try {
+      page = spawnSync(process.execPath, [runPage, jsDir, '--page', `wasm-test/browser/webgpu-binder.html?payload=${payload}`],
+                       { maxBuffer: 1 << 26 });
+    } finally {
+      rmSync(payloadPath, { force: true });
+    }
+    if (page.status === 2 && process.env.DOUBLET_REQUIRE_BROWSER !== '1') {
+      t.skip(`no browser: ${page.stderr}`);
+      return;
+    }
+    assert.equal(page.status, 0, `run-page failed:\n${page.stderr}`);
+    const { words } = JSON.parse(page.stdout.toString());
+    const member = manifest.variables.find((v) => v.name === 'Out').members[0];
+    expected.forEach((want, i) => {
+      if (mode === 'exact') {
+        assert.deepEqual([words[2 * i], words[2 * i + 1]], Array.from(exactWords(want)), `r[${i}]: ${fromExactWords(words, 2 * i)} vs ${want}`);
+      } else {
+        const f = new Float32Array(new Uint32Array(words).buffer);
+        const base = (member.offset + i * member.array_stride) / 4;
+        const got = joinPair(f[base + member.hi_offset / 4], f[base + member.lo_offset / 4]);
+        assert.ok(Math.abs(got - want) <= Math.abs(want) * 2 ** -44, `r[${i}]: ${got} vs ${want}`);
+      }
+    });
+  });
+}
+
+test('vertex layout and packed vertices follow the manifest', { skip }, () => {
+  const shader = `#version 450
+in float size;
+layout(location = 0) in vec2 uv;
+in dvec3 position;
+out vec2 v_uv;
+uniform dvec3 eye;
+void main() { v_uv = uv * size; gl_Position = vec4(vec3(position - eye), 1.0); }
+`;
+  const positions = [42164137.25, 1.0 / 3.0, -2.5e-9, 6378137.0, 0.1, 7.0];
+  for (const mode of ['df64', 'exact']) {
+    const { wgsl, manifest } = lowerNative(shader, 'vert', ['--mode', mode]);
+    const layout = wgslVertexLayout(manifest, ['position', 'uv', 'size']);
+    // The locations are the ones the WGSL entry point declares.
+    for (const v of manifest.variables.filter((e) => e.storage === 'in'))
+      v.lowered_names.forEach((name, k) =>
+        assert.match(wgsl, new RegExp(`@location\\(${v.locations[k]}\\)( @interpolate\\(flat\\))? df_in_${name}:`)));
+    const formats = layout.attributes.map((a) => a.format);
+    assert.deepEqual(formats, mode === 'df64' ? ['float32x3', 'float32x3', 'float32x2', 'float32']
+                                              : ['uint32x4', 'uint32x2', 'float32x2', 'float32']);
+    assert.deepEqual(layout.attributes.map((a) => a.offset), mode === 'df64' ? [0, 12, 24, 32] : [0, 16, 24, 32]);
+    assert.equal(layout.arrayStride, 36);
+    const data = packVertices(layout, { position: positions, uv: [0.5, 0.25, 1, 0], size: [2, 3] }, 2);
+    const view = new DataView(data);
+    for (let i = 0; i < 2; ++i) {
+      const at = i * layout.arrayStride;
+      for (let c = 0; c < 3; ++c) {
+        const x = positions[3 * i + c];
+        if (mode === 'df64') {
+          assert.equal(view.getFloat32(at + 4 * c, true), split(x).hi);
+          assert.equal(view.getFloat32(at + 12 + 4 * c, true), split(x).lo);
+        } else {
+          const w = exactWords(x);
+          assert.deepEqual([view.getUint32(at + 8 * c, true), view.getUint32(at + 8 * c + 4, true)], Array.from(w));
+        }
+      }
+      assert.equal(view.getFloat32(at + 32, true), [2, 3][i]);
+    }
+  }
+});
+
+test('the uniform buffer leaves the guard at 0 and refuses unknown names', { skip }, () => {
+  const { manifest } = lowerNative(kernel, 'comp', ['--mode', 'df64']);
+  const buffer = wgslUniformBuffer(manifest, values);
+  const block = manifest.variables.find((v) => v.layout === 'wgsl-uniform');
+  const guard = block.members.find((m) => m.name === 'df_guard');
+  assert.equal(new DataView(buffer.data).getFloat32(guard.offset, true), 0);
+  const lo = block.members.find((m) => m.name === manifest.variables.find((v) => v.name === 'offset_').lowered_names[1]);
+  assert.equal(new DataView(buffer.data).getFloat32(lo.offset, true), split(0.1).lo, 'the default of offset_');
+  assert.throws(() => wgslUniformBuffer(manifest, { nope: 1 }), /'nope' is not a uniform/);
+});
