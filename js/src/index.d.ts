@@ -65,3 +65,26 @@ export interface LoweredUniform {
 }
 export function setUniformsFromManifest(manifest: Manifest,
                                         values: Record<string, number | ArrayLike<number>>): LoweredUniform[];
+
+/** Calls the setters of setUniformsFromManifest's list on the current program (matrices: transpose false). */
+export function applyUniforms(gl: WebGL2RenderingContext, program: WebGLProgram, uniforms: LoweredUniform[]): void;
+
+export interface WebGL2Binder {
+  setDouble(name: string, x: number): void;
+  setDoubles(name: string, values: ArrayLike<number>): void;
+  /** A double matrix uniform, column-major. */
+  setDMat(name: string, columnMajor: ArrayLike<number>): void;
+}
+/** Binds a lowered program's double uniforms by their original names; applies the manifest's defaults; checks the guard reads 0. */
+export function createWebGL2Binder(gl: WebGL2RenderingContext, program: WebGLProgram, manifest: Manifest): WebGL2Binder;
+
+export interface LoweredAttribute {
+  name: string;
+  /** Components per vertex (vertexAttribPointer's / vertexAttribIPointer's size). */
+  size: number;
+  /** true: words, Uint32Array, vertexAttribIPointer with UNSIGNED_INT (mode exact). */
+  integer: boolean;
+  data: Float32Array | Uint32Array;
+}
+/** The lowered attributes of a double input (hi/lo, or exact words) for components given vertex after vertex. */
+export function webgl2Attributes(manifest: Manifest, name: string, values: ArrayLike<number>): LoweredAttribute[];

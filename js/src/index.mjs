@@ -82,12 +82,15 @@ export function writeDouble(view, byteOffset, x, mode) {
   }
 }
 
-// "double" -> 1, "dvec3" -> 3, "double[2]" -> 1; 0 for anything else (matrices included).
+// "double" -> 1, "dvec3" -> 3, "double[2]" -> 1, "dmat3" -> 9, "dmat2x3" -> 6; 0 for anything else.
 function doubleComponents(type) {
   if (/^double(\[|$)/.test(type)) return 1;
   const m = /^dvec([234])(\[|$)/.exec(type);
-  return m ? Number(m[1]) : 0;
+  if (m) return Number(m[1]);
+  const d = /^dmat([234])(?:x([234]))?(\[|$)/.exec(type);
+  return d ? Number(d[1]) * Number(d[2] ?? d[1]) : 0;
 }
+const isDoubleMatrix = (type) => /^dmat/.test(type);
 // "T[N]" -> N, "T" -> 1.
 function arrayElements(type) {
   const m = /\[(\d+)\]$/.exec(type);
@@ -108,7 +111,7 @@ const isExact = (v) => v.encoding === 'binary64-words';
  */
 export function writeBlockMember(view, member, value, blockOffset = 0) {
   const n = doubleComponents(member.type);
-  if (n === 0 || member.type.includes('['))
+  if (n === 0 || member.type.includes('[') || isDoubleMatrix(member.type))
     throw new Error(`writeBlockMember: '${member.name}' has type ${member.type}; only double/dvecN members are supported`);
   const list = asList(member.name, value, n);
   const base = blockOffset + member.offset;
@@ -139,6 +142,11 @@ function plainUniform(v) {
 
 function setterFor(loweredType) {
   const base = loweredType.replace(/\[\d+\]$/, '');
+  const matrix = /^mat([234])(?:x([234]))?$/.exec(base);
+  if (matrix) {  // df64 matrices: NAME_hi/NAME_lo as matCxR, column-major, transpose false
+    const columns = Number(matrix[1]), rows = Number(matrix[2] ?? matrix[1]);
+    return { setter: `uniformMatrix${columns === rows ? columns : `${columns}x${rows}`}fv`, components: columns * rows, matrix: true };
+  }
   const m = /^(float|vec([234])|uvec([24]))$/.exec(base);
   if (!m) throw new Error(`no uniform setter for lowered type ${loweredType}`);
   if (m[3]) return { setter: `uniform${m[3]}uiv`, components: Number(m[3]) };
@@ -156,7 +164,9 @@ function setterFor(loweredType) {
  * A uniform declared with an initializer has its value in the manifest ("default"; GLSL ES has no
  * uniform initializers, so the host sets it): every such uniform not named in `values` is listed at
  * that value, plain ones (int n = 3) too, with their setter (uniform1iv, ...).
- * Throws for a name that is not a double uniform of the manifest, and for matrices (not done yet).
+ * Double matrices (column-major values): df64 gives NAME_hi/NAME_lo with `uniformMatrixNfv` (call it
+ * with transpose false: applyUniforms does), mode exact the words packed into a uvec4 array.
+ * Throws for a name that is not a double uniform of the manifest.
  */
 export function setUniformsFromManifest(manifest, values) {
   const out = [];
@@ -172,7 +182,15 @@ export function setUniformsFromManifest(manifest, values) {
     if (n === 0) throw new Error(`'${name}' is not a double/dvecN uniform in the manifest`);
     const elements = arrayElements(v.type);
     const list = asList(name, value, n * elements);
-    if (isExact(v)) {
+    if (isExact(v) && isDoubleMatrix(v.type)) {
+      // A double matrix's words, column-major, low word first, packed into uvec4[N] (the last one
+      // padded with zeros).
+      const type = v.lowered_types[0];
+      const count = Number(/\[(\d+)\]$/.exec(type)[1]);
+      const data = new Uint32Array(4 * count);
+      data.set(exactWordsArray(list));
+      out.push({ name: v.lowered_names[0], type, setter: 'uniform4uiv', data });
+    } else if (isExact(v)) {
       // Each lowered variable holds the next components/2 doubles of every element.
       let first = 0;
       v.lowered_names.forEach((lowered, part) => {
@@ -194,4 +212,76 @@ export function setUniformsFromManifest(manifest, values) {
     }
   }
   return out;
+}
+
+/**
+ * Calls the WebGL2 setters of setUniformsFromManifest's list on `program` (current program:
+ * gl.useProgram first). Matrices get transpose = false.
+ */
+export function applyUniforms(gl, program, uniforms) {
+  for (const u of uniforms) {
+    const location = gl.getUniformLocation(program, u.name);
+    if (location === null) continue;  // optimised out by the driver: nothing to set
+    if (u.setter.startsWith('uniformMatrix')) gl[u.setter](location, false, u.data);
+    else gl[u.setter](location, u.data);
+  }
+}
+
+/**
+ * A WebGL2 binder for one program lowered by doublet: setDouble / setDoubles / setDMat write the
+ * lowered uniforms of a double uniform by its original name; created with the manifest's
+ * defaults applied. It checks the guard: the manifest's guard uniform must read 0 in the program
+ * (GL zero-fills it; a host that set it would let the driver fold the error terms away).
+ */
+export function createWebGL2Binder(gl, program, manifest) {
+  const guard = manifest.guard ?? {};
+  if (guard.kind === 'uniform') {
+    const location = gl.getUniformLocation(program, guard.uniform);
+    if (location !== null && gl.getUniform(program, location) !== (guard.required_value ?? 0))
+      throw new Error(`the guard uniform '${guard.uniform}' must stay ${guard.required_value ?? 0} (docs/web.md)`);
+  }
+  const set = (values) => {
+    gl.useProgram(program);
+    applyUniforms(gl, program, setUniformsFromManifest({ ...manifest, variables: manifest.variables.filter((v) => !v.default || v.name in values) }, values));
+  };
+  gl.useProgram(program);
+  applyUniforms(gl, program, setUniformsFromManifest(manifest, {}));  // the defaults
+  return {
+    setDouble: (name, x) => set({ [name]: x }),
+    setDoubles: (name, values) => set({ [name]: values }),
+    setDMat: (name, columnMajor) => set({ [name]: columnMajor }),
+  };
+}
+
+/**
+ * The WebGL2 attributes of a double input by its original name, for `count` vertices of `values`
+ * (components vertex after vertex): [{name, size, integer, data}] — df64: NAME_hi and NAME_lo,
+ * Float32Array, `gl.vertexAttribPointer(location, size, gl.FLOAT, ...)`; mode exact: the words
+ * (NAME / NAME_xy + NAME_z / NAME_zw), Uint32Array, `gl.vertexAttribIPointer(location, size,
+ * gl.UNSIGNED_INT, ...)`. A plain input is returned as is (one Float32Array entry).
+ */
+export function webgl2Attributes(manifest, name, values) {
+  const v = manifest.variables.find((e) => e.name === name && (e.storage === 'in' || e.storage === 'attribute'));
+  if (!v) throw new Error(`'${name}' is not an input in the manifest`);
+  const list = Array.from(values);
+  const n = doubleComponents(v.type);
+  const sizeOf = (type) => Number(/([234])$/.exec(type.replace(/\[\d+\]$/, ''))?.[1] ?? 1);
+  if (!v.split || n === 0) return [{ name: v.lowered_names[0], size: sizeOf(v.lowered_type), integer: false, data: new Float32Array(list) }];
+  if (list.length % n !== 0) throw new Error(`'${name}': ${list.length} numbers is not a whole number of ${v.type}`);
+  const count = list.length / n;
+  if (!isExact(v)) {
+    const { hi, lo } = splitArray(list);
+    return [{ name: v.lowered_names[0], size: n, integer: false, data: hi },
+            { name: v.lowered_names[1], size: n, integer: false, data: lo }];
+  }
+  // Mode exact: part k holds the next size/2 doubles' words of each vertex.
+  const words = exactWordsArray(list);
+  let first = 0;
+  return v.lowered_names.map((lowered, k) => {
+    const size = sizeOf(v.lowered_types[k]), doubles = size / 2;
+    const data = new Uint32Array(size * count);
+    for (let i = 0; i < count; ++i) data.set(words.subarray(2 * (i * n + first), 2 * (i * n + first + doubles)), i * size);
+    first += doubles;
+    return { name: lowered, size, integer: true, data };
+  });
 }

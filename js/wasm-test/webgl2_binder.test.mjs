@@ -1,0 +1,80 @@
+// The WebGL2 binder (createWebGL2Binder, webgl2Attributes; js/src/index.mjs, docs/web.md "Host
+// package") in headless Chromium's WebGL2: a vertex shader lowered by the native CLI (DOUBLET_CLI)
+// with --target webgl2 gets a dvec3 attribute, a dmat3 and a double[2] uniform only through the
+// package, and its flat dvec3 output is captured by transform feedback. Mode exact must give the bits
+// of JavaScript's doubles, df64 within 2^-44 of them. No browser: skipped, unless
+// DOUBLET_REQUIRE_BROWSER=1.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { exactWords, join as joinPair } from '../src/index.mjs';
+
+const nativeCli = process.env.DOUBLET_CLI;
+const jsDir = fileURLToPath(new URL('../', import.meta.url));
+const runPage = fileURLToPath(new URL('../../tools/browser/run-page.mjs', import.meta.url));
+
+const shader = `#version 300 es
+in dvec3 p;
+uniform dmat3 m;
+uniform double d[2];
+flat out dvec3 r;
+void main() {
+  r = dvec3(m[0][0] * p.x + d[1], m[1][2] - p.y, m[2][1] / p.z);
+  gl_Position = vec4(0.0);
+}
+`;
+const p = [42164137.25, 1 / 3, 1.1, -6378137.5, 0.1, -7e-3, 1e-9, 2.5, 3];
+const m = [1 / 7, 2, 3, 4, 5, 6.000001, 7, 1e10 / 3, 9];
+const d = [0.5, Math.PI];
+const expected = [];
+for (let i = 0; i < 3; ++i) expected.push(m[0] * p[3 * i] + d[1], m[5] - p[3 * i + 1], m[7] / p[3 * i + 2]);
+
+for (const mode of ['exact', 'df64']) {
+  test(`Chromium WebGL2, mode ${mode}: attributes and uniforms through the binder give the expected doubles`,
+       { skip: !nativeCli && 'DOUBLET_CLI is not set' }, (t) => {
+    const dir = mkdtempSync(join(tmpdir(), 'doublet-webgl2-binder-'));
+    let manifest, vertex;
+    try {
+      writeFileSync(join(dir, 's.vert'), shader);
+      const r = spawnSync(nativeCli, ['lower', 's.vert', '--target', 'webgl2', '--mode', mode, '-o', 'out.vert', '--manifest', 'out.json'], { cwd: dir });
+      assert.equal(r.status, 0, r.stderr.toString());
+      vertex = readFileSync(join(dir, 'out.vert'), 'utf8');
+      manifest = JSON.parse(readFileSync(join(dir, 'out.json'), 'utf8'));
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+    const payload = `.payload-${process.pid}-webgl2-${mode}.json`;
+    const payloadPath = join(jsDir, 'wasm-test/browser', payload);
+    writeFileSync(payloadPath, JSON.stringify({ vertex, manifest, attributes: { p }, uniforms: { d }, matrices: { m }, output: 'r' }));
+    let page;
+    try {
+      page = spawnSync(process.execPath, [runPage, jsDir, '--page', `wasm-test/browser/webgl2-binder.html?payload=${payload}`], { maxBuffer: 1 << 24 });
+    } finally {
+      rmSync(payloadPath, { force: true });
+    }
+    if (page.status === 2 && process.env.DOUBLET_REQUIRE_BROWSER !== '1') {
+      t.skip(`no browser: ${page.stderr}`);
+      return;
+    }
+    assert.equal(page.status, 0, `run-page failed:\n${page.stderr}`);
+    const { captured, count } = JSON.parse(page.stdout.toString());
+    assert.equal(count, 3);
+    for (let i = 0; i < 3; ++i)
+      for (let c = 0; c < 3; ++c) {
+        const want = expected[3 * i + c];
+        if (mode === 'exact') {
+          // r_xy holds x and y's words (4 per vertex), r_z z's (2 per vertex).
+          const words = c < 2 ? captured[0].slice(4 * i + 2 * c, 4 * i + 2 * c + 2) : captured[1].slice(2 * i, 2 * i + 2);
+          assert.deepEqual(words, Array.from(exactWords(want)), `vertex ${i} component ${c}`);
+        } else {
+          const f = (k) => new Float32Array(new Uint32Array(captured[k].slice(3 * i + c, 3 * i + c + 1)).buffer)[0];
+          const got = joinPair(f(0), f(1));
+          assert.ok(Math.abs(got - want) <= Math.abs(want) * 2 ** -44, `vertex ${i} component ${c}: ${got} vs ${want}`);
+        }
+      }
+  });
+}
