@@ -52,8 +52,11 @@ export interface Manifest {
   guard?: { kind: string; uniform?: string };
 }
 
+/** double, dvecN, dmatCxR (column-major) members and arrays of them; a runtime-sized array takes as many elements as given. */
 export function writeBlockMember(view: DataView, member: ManifestMember, value: number | ArrayLike<number>,
                                  blockOffset?: number): void;
+/** The inverse: a member's doubles (`elements` of a runtime-sized array). */
+export function readBlockMember(view: DataView, member: ManifestMember, blockOffset?: number, elements?: number): Float64Array;
 
 export interface LoweredUniform {
   name: string;

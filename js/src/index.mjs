@@ -103,27 +103,75 @@ function asList(name, value, count) {
 }
 const isExact = (v) => v.encoding === 'binary64-words';
 
+// The shape of a double block member: components per column, columns, elements (0: runtime-sized).
+function memberShape(member) {
+  const t = member.type;
+  const m = /^(?:double|dvec([234])|dmat([234])(?:x([234]))?)(?:\[(\d*)\])?$/.exec(t);
+  if (!m) return null;
+  const columns = m[2] ? Number(m[2]) : 1;
+  const rows = m[2] ? Number(m[3] ?? m[2]) : (m[1] ? Number(m[1]) : 1);
+  const elements = m[4] === undefined ? 1 : (m[4] === '' ? 0 : Number(m[4]));
+  return { rows, columns, elements };
+}
+
+// Byte offsets of double k (element-major, then column, then row) of a block member: [hi, lo] in
+// df64, [words] in mode exact.
+function doubleOffsets(member, shape, blockOffset, k) {
+  const perElement = shape.rows * shape.columns;
+  const e = Math.floor(k / perElement), column = Math.floor((k % perElement) / shape.rows), row = k % shape.rows;
+  const base = blockOffset + member.offset + e * (member.array_stride ?? 0) + column * (member.matrix_stride ?? 0);
+  return isExact(member) ? [base + 8 * row] : [base + member.hi_offset + 4 * row, base + member.lo_offset + 4 * row];
+}
+
+function checkedShape(member, fn) {
+  const shape = memberShape(member);
+  if (!shape) throw new Error(`${fn}: '${member.name}' has type ${member.type}; only double, dvecN and dmatCxR members (and arrays of them) hold doubles`);
+  return shape;
+}
+
 /**
- * Writes a double/dvecN member of a block the manifest lists (`members` of a uniform or buffer
- * block) into `view`, the block's memory starting at `blockOffset`. df64: component c's hi at
- * offset + hi_offset + 4c, lo at offset + lo_offset + 4c; exact: the doubles' words at the
- * member's original std140/std430 offset, 8 bytes apart. Matrices and arrays are not handled yet.
+ * Writes a double member of a block the manifest lists (`members` of a uniform or buffer block) into
+ * `view`, the block's memory starting at `blockOffset`: double, dvecN, dmatCxR (column-major values)
+ * and arrays of them (elements one after another; a runtime-sized array takes as many elements as
+ * `value` holds). df64: component c's hi at offset + hi_offset + 4c, lo at offset + lo_offset + 4c,
+ * matrix columns matrix_stride apart (hi and lo matrices each), elements array_stride apart; exact:
+ * the doubles' words at the member's original std140/std430 offsets, 8 bytes apart.
  */
 export function writeBlockMember(view, member, value, blockOffset = 0) {
-  const n = doubleComponents(member.type);
-  if (n === 0 || member.type.includes('[') || isDoubleMatrix(member.type))
-    throw new Error(`writeBlockMember: '${member.name}' has type ${member.type}; only double/dvecN members are supported`);
-  const list = asList(member.name, value, n);
-  const base = blockOffset + member.offset;
-  for (let c = 0; c < n; ++c) {
+  const shape = checkedShape(member, 'writeBlockMember');
+  const per = shape.rows * shape.columns;
+  const list = typeof value === 'number' ? [value] : Array.from(value);
+  const count = shape.elements === 0 ? list.length : per * shape.elements;
+  if (list.length !== count || count % per !== 0)
+    throw new Error(`'${member.name}': expected ${shape.elements === 0 ? `a multiple of ${per}` : count} value(s), got ${list.length}`);
+  list.forEach((x, k) => {
+    const at = doubleOffsets(member, shape, blockOffset, k);
     if (isExact(member)) {
-      writeDouble(view, base + 8 * c, list[c], 'exact');
+      writeDouble(view, at[0], x, 'exact');
     } else {
-      const p = split(list[c]);
-      view.setFloat32(base + member.hi_offset + 4 * c, p.hi, true);
-      view.setFloat32(base + member.lo_offset + 4 * c, p.lo, true);
+      const p = split(x);
+      view.setFloat32(at[0], p.hi, true);
+      view.setFloat32(at[1], p.lo, true);
     }
+  });
+}
+
+/**
+ * Reads a double member back as doubles (hi + lo with join, or the words): `elements` elements of a
+ * runtime-sized array, else the member's own size. The inverse of writeBlockMember, for results a
+ * shader wrote to a storage buffer.
+ */
+export function readBlockMember(view, member, blockOffset = 0, elements = undefined) {
+  const shape = checkedShape(member, 'readBlockMember');
+  const count = shape.rows * shape.columns * (elements ?? (shape.elements || 1));
+  const out = new Float64Array(count);
+  for (let k = 0; k < count; ++k) {
+    const at = doubleOffsets(member, shape, blockOffset, k);
+    out[k] = isExact(member)
+      ? fromExactWords([view.getUint32(at[0], true), view.getUint32(at[0] + 4, true)])
+      : join(view.getFloat32(at[0], true), view.getFloat32(at[1], true));
   }
+  return out;
 }
 
 // gl.uniform{N}fv / gl.uniform{N}uiv for a lowered type ("vec3", "float[2]", "uvec4", "uvec2[2]").

@@ -12,7 +12,7 @@ import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { exactWords, fromExactWords, join as joinPair, split } from '../src/index.mjs';
+import { exactWords, fromExactWords, join as joinPair, readBlockMember, split, writeBlockMember } from '../src/index.mjs';
 import { packVertices, wgslUniformBuffer, wgslVertexLayout } from '../src/webgpu.mjs';
 
 const nativeCli = process.env.DOUBLET_CLI;
@@ -54,26 +54,32 @@ const expected = [values.a * values.v[0] + values.v[1] / values.v[2],
                   values.v[2] - values.a,
                   Math.fround(values.m[2]) * values.a];
 
+// Runs webgpu-binder.html on a lowered kernel; the storage buffer's words, or null (no browser: skipped).
+function runKernel(t, name, data) {
+  // The page fetches its inputs from a file next to it (a mode exact kernel is too long for a URL).
+  const payload = `.payload-${process.pid}-${name}.json`;
+  const payloadPath = join(jsDir, 'wasm-test/browser', payload);
+  writeFileSync(payloadPath, JSON.stringify(data));
+  let page;
+  try {
+    page = spawnSync(process.execPath, [runPage, jsDir, '--page', `wasm-test/browser/webgpu-binder.html?payload=${payload}`],
+                     { maxBuffer: 1 << 26 });
+  } finally {
+    rmSync(payloadPath, { force: true });
+  }
+  if (page.status === 2 && process.env.DOUBLET_REQUIRE_BROWSER !== '1') {
+    t.skip(`no browser: ${page.stderr}`);
+    return null;
+  }
+  assert.equal(page.status, 0, `run-page failed:\n${page.stderr}`);
+  return JSON.parse(page.stdout.toString()).words;
+}
+
 for (const mode of ['exact', 'df64']) {
   test(`Chromium WebGPU, mode ${mode}: uniforms through wgslUniformBuffer give the expected doubles`, { skip }, (t) => {
     const { wgsl, manifest } = lowerNative(kernel, 'comp', ['--mode', mode]);
-    // The page fetches its inputs from a file next to it (a mode exact kernel is too long for a URL).
-    const payload = `.payload-${process.pid}-${mode}.json`;
-    const payloadPath = join(jsDir, 'wasm-test/browser', payload);
-    writeFileSync(payloadPath, JSON.stringify({ wgsl, manifest, values, outBytes: 8 * expected.length }));
-    let page;
-    try {
-      page = spawnSync(process.execPath, [runPage, jsDir, '--page', `wasm-test/browser/webgpu-binder.html?payload=${payload}`],
-                       { maxBuffer: 1 << 26 });
-    } finally {
-      rmSync(payloadPath, { force: true });
-    }
-    if (page.status === 2 && process.env.DOUBLET_REQUIRE_BROWSER !== '1') {
-      t.skip(`no browser: ${page.stderr}`);
-      return;
-    }
-    assert.equal(page.status, 0, `run-page failed:\n${page.stderr}`);
-    const { words } = JSON.parse(page.stdout.toString());
+    const words = runKernel(t, mode, { wgsl, manifest, values, outBytes: 8 * expected.length });
+    if (!words) return;
     const member = manifest.variables.find((v) => v.name === 'Out').members[0];
     expected.forEach((want, i) => {
       if (mode === 'exact') {
@@ -139,3 +145,46 @@ test('the uniform buffer leaves the guard at 0 and refuses unknown names', { ski
   assert.equal(new DataView(buffer.data).getFloat32(lo.offset, true), split(0.1).lo, 'the default of offset_');
   assert.throws(() => wgslUniformBuffer(manifest, { nope: 1 }), /'nope' is not a uniform/);
 });
+
+// Storage-block members of every shape, written by writeBlockMember and read back by readBlockMember
+// around a GPU that reads and writes them at the offsets it uses.
+const blockKernel = `#version 450
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) buffer B { dmat3 m; double arr[3]; dvec3 v[2]; dmat2x3 n; double r[]; };
+void main() {
+  r[0] = m[1][2] * arr[2];
+  r[1] = v[1].z - n[1][0];
+  r[2] = m[2][0] / v[0].y + arr[0];
+  r[3] = n[0][2] - m[0][1];
+}
+`;
+const blockValues = { m: [1 / 3, 2.5, -7, 1e-3, 5, 1 / 9, 42164137.25, 8, 9], arr: [0.1, 0.2, 1 / 7],
+                      v: [1, 3.5, -2, 4, 5, 6.125], n: [1, 2, 1 / 11, -4, 5, 6] };
+const blockExpected = [blockValues.m[5] * blockValues.arr[2], blockValues.v[5] - blockValues.n[3],
+                       blockValues.m[6] / blockValues.v[1] + blockValues.arr[0], blockValues.n[2] - blockValues.m[1]];
+
+for (const mode of ['exact', 'df64']) {
+  test(`Chromium WebGPU, mode ${mode}: matrices and arrays of a storage block through writeBlockMember/readBlockMember`, { skip }, (t) => {
+    const { wgsl, manifest } = lowerNative(blockKernel, 'comp', ['--mode', mode]);
+    const members = manifest.variables.find((v) => v.name === 'B').members;
+    const r = members.find((m) => m.name === 'r');
+    const bytes = r.offset + 4 * r.array_stride;
+    const view = new DataView(new ArrayBuffer(bytes));
+    for (const [name, value] of Object.entries(blockValues)) writeBlockMember(view, members.find((m) => m.name === name), value);
+    const words = runKernel(t, `block-${mode}`, { wgsl, manifest, values: {}, outBytes: bytes,
+                                                  storageWords: Array.from(new Uint32Array(view.buffer)) });
+    if (!words) return;
+    const result = new DataView(new Uint32Array(words).buffer);
+    const got = readBlockMember(result, r, 0, 4);
+    // The inputs come back unchanged through readBlockMember, too.
+    for (const [name, value] of Object.entries(blockValues)) {
+      const back = Array.from(readBlockMember(result, members.find((m) => m.name === name)));
+      if (mode === 'exact') assert.deepEqual(back, value, name);
+      else back.forEach((x, k) => assert.ok(Math.abs(x - value[k]) <= Math.abs(value[k]) * 2 ** -46, `${name}[${k}]`));
+    }
+    blockExpected.forEach((want, i) => {
+      if (mode === 'exact') assert.ok(Object.is(got[i], want), `r[${i}]: ${got[i]} vs ${want}`);
+      else assert.ok(Math.abs(got[i] - want) <= Math.abs(want) * 2 ** -44, `r[${i}]: ${got[i]} vs ${want}`);
+    });
+  });
+}
