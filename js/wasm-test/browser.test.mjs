@@ -7,10 +7,11 @@ import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { join, resolve as resolvePath } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-const nativeCli = process.env.DOUBLET_CLI;
+// Absolute: the tests run it from temporary folders (npm test may be given a relative path).
+const nativeCli = process.env.DOUBLET_CLI && resolvePath(process.env.DOUBLET_CLI);
 const jsDir = fileURLToPath(new URL('../', import.meta.url));
 const runPage = fileURLToPath(new URL('../../tools/browser/run-page.mjs', import.meta.url));
 

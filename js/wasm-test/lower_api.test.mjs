@@ -6,10 +6,11 @@ import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync, mkdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { join, resolve as resolvePath } from 'node:path';
 import { lower } from '../src/compiler.mjs';
 
-const nativeCli = process.env.DOUBLET_CLI;
+// Absolute: the tests run it from temporary folders (npm test may be given a relative path).
+const nativeCli = process.env.DOUBLET_CLI && resolvePath(process.env.DOUBLET_CLI);
 const skip = !nativeCli && 'DOUBLET_CLI is not set';
 
 const header = `double scaled(double x) { return x * 3.0lf + 1.0lf / 3.0lf; }\n`;
