@@ -82,19 +82,15 @@ export function writeDouble(view, byteOffset, x, mode) {
   }
 }
 
-// "double" -> 1, "dvec3" -> 3, "double[2]" -> 1, "dmat3" -> 9, "dmat2x3" -> 6; 0 for anything else.
-function doubleComponents(type) {
-  if (/^double(\[|$)/.test(type)) return 1;
-  const m = /^dvec([234])(\[|$)/.exec(type);
-  if (m) return Number(m[1]);
-  const d = /^dmat([234])(?:x([234]))?(\[|$)/.exec(type);
-  return d ? Number(d[1]) * Number(d[2] ?? d[1]) : 0;
-}
-const isDoubleMatrix = (type) => /^dmat/.test(type);
-// "T[N]" -> N, "T" -> 1.
-function arrayElements(type) {
-  const m = /\[(\d+)\]$/.exec(type);
-  return m ? Number(m[1]) : 1;
+// The shape of a double type: "double" {rows 1, columns 1, elements 1}, "dvec3[2]" {3, 1, 2},
+// "dmat2x3" {3, 2, 1}, "double[]" elements 0 (runtime-sized); null for a type without doubles.
+function doubleShape(type) {
+  const m = /^(?:double|dvec([234])|dmat([234])(?:x([234]))?)(?:\[(\d*)\])?$/.exec(type);
+  if (!m) return null;
+  const columns = m[2] ? Number(m[2]) : 1;
+  const rows = m[2] ? Number(m[3] ?? m[2]) : (m[1] ? Number(m[1]) : 1);
+  const elements = m[4] === undefined ? 1 : (m[4] === '' ? 0 : Number(m[4]));
+  return { rows, columns, elements };
 }
 function asList(name, value, count) {
   const list = typeof value === 'number' ? [value] : Array.from(value);
@@ -103,15 +99,14 @@ function asList(name, value, count) {
 }
 const isExact = (v) => v.encoding === 'binary64-words';
 
-// The shape of a double block member: components per column, columns, elements (0: runtime-sized).
-function memberShape(member) {
-  const t = member.type;
-  const m = /^(?:double|dvec([234])|dmat([234])(?:x([234]))?)(?:\[(\d*)\])?$/.exec(t);
-  if (!m) return null;
-  const columns = m[2] ? Number(m[2]) : 1;
-  const rows = m[2] ? Number(m[3] ?? m[2]) : (m[1] ? Number(m[1]) : 1);
-  const elements = m[4] === undefined ? 1 : (m[4] === '' ? 0 : Number(m[4]));
-  return { rows, columns, elements };
+// Mode exact splits a dvec3/dvec4 over two lowered variables (NAME_xy + NAME_z/NAME_zw): the words
+// of doubles [first, first + doubles) of each group of `per` doubles in `list` (an array element, a
+// vertex), group after group.
+function exactPartWords(list, per, first, doubles) {
+  const picked = [];
+  for (let g = 0; g * per < list.length; ++g)
+    for (let c = first; c < first + doubles; ++c) picked.push(list[g * per + c]);
+  return exactWordsArray(picked);
 }
 
 // Byte offsets of double k (element-major, then column, then row) of a block member: [hi, lo] in
@@ -124,7 +119,7 @@ function doubleOffsets(member, shape, blockOffset, k) {
 }
 
 function checkedShape(member, fn) {
-  const shape = memberShape(member);
+  const shape = doubleShape(member.type);
   if (!shape) throw new Error(`${fn}: '${member.name}' has type ${member.type}; only double, dvecN and dmatCxR members (and arrays of them) hold doubles`);
   return shape;
 }
@@ -226,11 +221,11 @@ export function setUniformsFromManifest(manifest, values) {
   }
   for (const [name, value] of Object.entries(given)) {
     const v = manifest.variables.find((e) => e.name === name);
-    const n = v && v.storage === 'uniform' && v.split ? doubleComponents(v.type) : 0;
-    if (n === 0) throw new Error(`'${name}' is not a double/dvecN uniform in the manifest`);
-    const elements = arrayElements(v.type);
-    const list = asList(name, value, n * elements);
-    if (isExact(v) && isDoubleMatrix(v.type)) {
+    const shape = v && v.storage === 'uniform' && v.split ? doubleShape(v.type) : null;
+    if (!shape) throw new Error(`'${name}' is not a double/dvecN uniform in the manifest`);
+    const n = shape.rows * shape.columns;
+    const list = asList(name, value, n * shape.elements);
+    if (isExact(v) && shape.columns > 1) {
       // A double matrix's words, column-major, low word first, packed into uvec4[N] (the last one
       // padded with zeros).
       const type = v.lowered_types[0];
@@ -244,12 +239,8 @@ export function setUniformsFromManifest(manifest, values) {
       v.lowered_names.forEach((lowered, part) => {
         const type = v.lowered_types[part];
         const { setter, components } = setterFor(type);
-        const doubles = components / 2;
-        const picked = [];
-        for (let e = 0; e < elements; ++e)
-          for (let c = first; c < first + doubles; ++c) picked.push(list[e * n + c]);
-        out.push({ name: lowered, type, setter, data: exactWordsArray(picked) });
-        first += doubles;
+        out.push({ name: lowered, type, setter, data: exactPartWords(list, n, first, components / 2) });
+        first += components / 2;
       });
     } else {
       if (v.lowered_names.length !== 2) throw new Error(`'${name}': expected lowered names hi and lo`);
@@ -306,30 +297,34 @@ export function createWebGL2Binder(gl, program, manifest) {
  * (components vertex after vertex): [{name, size, integer, data}] — df64: NAME_hi and NAME_lo,
  * Float32Array, `gl.vertexAttribPointer(location, size, gl.FLOAT, ...)`; mode exact: the words
  * (NAME / NAME_xy + NAME_z / NAME_zw), Uint32Array, `gl.vertexAttribIPointer(location, size,
- * gl.UNSIGNED_INT, ...)`. A plain input is returned as is (one Float32Array entry).
+ * gl.UNSIGNED_INT, ...)`. A plain input is returned as is: one entry, Int32Array/Uint32Array for
+ * int/uint inputs (integer true), else Float32Array.
  */
 export function webgl2Attributes(manifest, name, values) {
   const v = manifest.variables.find((e) => e.name === name && (e.storage === 'in' || e.storage === 'attribute'));
   if (!v) throw new Error(`'${name}' is not an input in the manifest`);
   const list = Array.from(values);
-  const n = doubleComponents(v.type);
+  const shape = doubleShape(v.type);
   const sizeOf = (type) => Number(/([234])$/.exec(type.replace(/\[\d+\]$/, ''))?.[1] ?? 1);
-  if (!v.split || n === 0) return [{ name: v.lowered_names[0], size: sizeOf(v.lowered_type), integer: false, data: new Float32Array(list) }];
+  if (!v.split || !shape) {
+    // A plain input: ints and uints as integers (vertexAttribIPointer), anything else as floats.
+    const integer = /^(u?int|[iu]vec)/.exec(v.lowered_type)?.[0];
+    const Array_ = !integer ? Float32Array : (integer.startsWith('u') ? Uint32Array : Int32Array);
+    return [{ name: v.lowered_names[0], size: sizeOf(v.lowered_type), integer: Boolean(integer), data: Array_.from(list) }];
+  }
+  const n = shape.rows * shape.columns;
   if (list.length % n !== 0) throw new Error(`'${name}': ${list.length} numbers is not a whole number of ${v.type}`);
-  const count = list.length / n;
   if (!isExact(v)) {
     const { hi, lo } = splitArray(list);
     return [{ name: v.lowered_names[0], size: n, integer: false, data: hi },
             { name: v.lowered_names[1], size: n, integer: false, data: lo }];
   }
   // Mode exact: part k holds the next size/2 doubles' words of each vertex.
-  const words = exactWordsArray(list);
   let first = 0;
   return v.lowered_names.map((lowered, k) => {
-    const size = sizeOf(v.lowered_types[k]), doubles = size / 2;
-    const data = new Uint32Array(size * count);
-    for (let i = 0; i < count; ++i) data.set(words.subarray(2 * (i * n + first), 2 * (i * n + first + doubles)), i * size);
-    first += doubles;
+    const size = sizeOf(v.lowered_types[k]);
+    const data = exactPartWords(list, n, first, size / 2);
+    first += size / 2;
     return { name: lowered, size, integer: true, data };
   });
 }

@@ -13,6 +13,7 @@ export interface VertexLayout {
   arrayStride: number;
   attributes: { shaderLocation: number; offset: number; format: string }[];
   parts: object[];
+  manifest: object;
 }
 /** One interleaved vertex buffer layout for the named inputs (GPUVertexBufferLayout plus what packVertices needs). */
 export function wgslVertexLayout(manifest: object, names: string[]): VertexLayout;

@@ -3,7 +3,7 @@
 // entry, df_uniforms, with the guard left at 0), and vertex buffers whose attributes carry the
 // doubles as hi/lo float pairs (df64 modes) or binary64 words (mode exact) at the locations the
 // manifest records.
-import { exactWordsArray, setUniformsFromManifest, splitArray } from './index.mjs';
+import { setUniformsFromManifest, webgl2Attributes } from './index.mjs';
 
 const isExact = (v) => v.encoding === 'binary64-words';
 
@@ -78,8 +78,8 @@ function vertexFormat(type) {
 
 /**
  * One interleaved vertex buffer for the inputs `names` (original names, in this order):
- * { arrayStride, attributes: [{ shaderLocation, offset, format }], parts } — a GPUVertexBufferLayout
- * (parts: what packVertices needs). A dvec3 input in df64 is two float32x3 attributes (hi, lo) at
+ * { arrayStride, attributes: [{ shaderLocation, offset, format }], parts, manifest } — a
+ * GPUVertexBufferLayout (parts and manifest: what packVertices needs). A dvec3 input in df64 is two float32x3 attributes (hi, lo) at
  * the manifest's two locations; in mode exact its words (uint32x4 + uint32x2).
  */
 export function wgslVertexLayout(manifest, names) {
@@ -97,41 +97,27 @@ export function wgslVertexLayout(manifest, names) {
       offset += f.bytes;
     });
   }
-  return { arrayStride: offset, attributes, parts };
+  return { arrayStride: offset, attributes, parts, manifest };
 }
 
 /**
  * The bytes of `count` vertices for a layout from wgslVertexLayout: values[name] holds the input's
- * components vertex after vertex (doubles as numbers; split or packed into words here).
+ * components vertex after vertex (doubles as numbers; split or packed into words as for WebGL2's
+ * attributes, webgl2Attributes, then interleaved).
  */
 export function packVertices(layout, values, count) {
   const data = new ArrayBuffer(layout.arrayStride * count);
   const view = new DataView(data);
+  const lowered = new Map();  // lowered name -> { size, data } of each attribute
+  for (const name of new Set(layout.parts.map((p) => p.name)))
+    for (const a of webgl2Attributes(layout.manifest, name, values[name] ?? [])) lowered.set(a.name, a);
   for (const p of layout.parts) {
-    const v = p.variable;
-    const list = Array.from(values[p.name] ?? []);
-    let per, words = null, pair = null;
-    if (isExact(v)) {
-      per = /^dvec([234])/.test(v.type) ? Number(v.type[4]) : 1;
-      words = exactWordsArray(list);
-    } else if (v.split) {
-      per = p.components;
-      pair = splitArray(list);
-    } else {
-      per = p.components;
-    }
-    if (list.length !== per * count) throw new Error(`'${p.name}': expected ${per * count} numbers, got ${list.length}`);
-    // Mode exact: part k holds the next components/2 doubles' words of each vertex.
-    const firstDouble = isExact(v) ? v.lowered_types.slice(0, p.part).reduce((s, t) => s + vertexFormat(t).components / 2, 0) : 0;
-    for (let i = 0; i < count; ++i) {
-      const base = i * layout.arrayStride + p.offset;
-      for (let c = 0; c < p.components; ++c) {
-        const at = base + 4 * c;
-        if (words) view.setUint32(at, words[2 * (i * per + firstDouble) + c], true);
-        else if (pair) view.setFloat32(at, (p.part === 0 ? pair.hi : pair.lo)[i * per + c], true);
-        else writeScalar(view, at, { float: 'f32', int: 'i32', uint: 'u32' }[p.kind], list[i * per + c]);
-      }
-    }
+    const a = lowered.get(p.variable.lowered_names[p.part]);
+    if (a.data.length !== a.size * count)
+      throw new Error(`'${p.name}': expected ${count} vertices, got ${a.data.length / a.size}`);
+    const scalar = a.data instanceof Float32Array ? 'f32' : (a.data instanceof Int32Array ? 'i32' : 'u32');
+    for (let i = 0; i < count; ++i)
+      for (let c = 0; c < a.size; ++c) writeScalar(view, i * layout.arrayStride + p.offset + 4 * c, scalar, a.data[i * a.size + c]);
   }
   return data;
 }
