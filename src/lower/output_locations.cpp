@@ -66,19 +66,13 @@ bool assign_fragment_output_locations(ir::Module& module, Context& context) {
   if (module.stage != ir::StageKind::Fragment) return true;
   std::vector<ir::VarPtr> outputs = user_interface(module, ir::Storage::Out);
   if (outputs.size() < 2) return true;
-  std::string assigned;
-  for (const auto& v : assign_free_locations(outputs))
-    assigned += (assigned.empty() ? "" : ", ") + ("'" + v->name + "' = " + std::to_string(v->layout.location));
-  if (!assigned.empty()) {
-    ir::Loc first;
-    for (const auto& v : outputs)
-      if (assigned.find("'" + v->name + "'") != std::string::npos) {
-        first = v->loc;
-        break;
-      }
-    context.warning(first, "fragment outputs without a location get locations in declaration order (" + assigned +
-                               "): the target needs one on each of several outputs; write layout(location = N) to choose");
-  }
+  const std::vector<ir::VarPtr> assigned = assign_free_locations(outputs);
+  if (assigned.empty()) return true;
+  std::string list;
+  for (const auto& v : assigned)
+    list += (list.empty() ? "" : ", ") + ("'" + v->name + "' = " + std::to_string(v->layout.location));
+  context.warning(assigned.front()->loc, "fragment outputs without a location get locations in declaration order (" + list +
+                                             "): the target needs one on each of several outputs; write layout(location = N) to choose");
   return true;
 }
 
