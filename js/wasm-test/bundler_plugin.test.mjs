@@ -4,14 +4,12 @@
 // with the CLI's diagnostic; the #included file is watched.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
-import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, resolve as resolvePath } from 'node:path';
+import { join } from 'node:path';
 import doublet from '../src/bundler-plugin.mjs';
+import { lowerNative, nativeCli } from './support.mjs';
 
-// Absolute: the tests run it from temporary folders (npm test may be given a relative path).
-const nativeCli = process.env.DOUBLET_CLI && resolvePath(process.env.DOUBLET_CLI);
 const skip = !nativeCli && 'DOUBLET_CLI is not set';
 
 async function rollupModule() {
@@ -51,11 +49,10 @@ import exact from './shaders/orbit.vert?doublet&target=es310&mode=exact';
 export { webgl, exact };\n`);
     const bundled = await import(`data:text/javascript;base64,${Buffer.from(code).toString('base64')}`);
     for (const [shader, target, mode] of [[bundled.webgl, 'webgl2', 'df64'], [bundled.exact, 'es310', 'exact']]) {
-      const r = spawnSync(nativeCli, ['lower', 'shaders/orbit.vert', '-I', 'shaders/lib', '--target', target, '--mode', mode,
-                                      '-o', 'out.glsl', '--manifest', 'out.json'], { cwd: dir });
-      assert.equal(r.status, 0, r.stderr.toString());
-      assert.equal(shader.code, readFileSync(join(dir, 'out.glsl'), 'utf8'), `${target} ${mode}: text`);
-      assert.deepEqual(shader.manifest, JSON.parse(readFileSync(join(dir, 'out.json'), 'utf8')), `${target} ${mode}: manifest`);
+      const want = lowerNative({ 'shaders/orbit.vert': orbit, 'shaders/lib/kepler.glsl': kepler }, 'shaders/orbit.vert',
+                               ['-I', 'shaders/lib', '--target', target, '--mode', mode]);
+      assert.equal(shader.code, want.output, `${target} ${mode}: text`);
+      assert.deepEqual(shader.manifest, want.manifest, `${target} ${mode}: manifest`);
       assert.equal(shader.target, target);
       assert.equal(shader.mode, mode);
     }

@@ -11,13 +11,12 @@ import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, resolve as resolvePath } from 'node:path';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { nativeCli } from './support.mjs';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const wasmCli = join(root, 'js/bin/doublet.mjs');
-// Absolute: the tests run it from temporary folders (npm test may be given a relative path).
-const nativeCli = process.env.DOUBLET_CLI && resolvePath(process.env.DOUBLET_CLI);
 const targets = ['es100', 'es300', 'es310', 'es320', 'glsl330', 'glsl450', 'webgl2', 'wgsl'];
 const goldenDefaultTargets = ['es300', 'es310', 'es320', 'glsl450', 'webgl2'];
 

@@ -4,13 +4,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync, mkdirSync } from 'node:fs';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, resolve as resolvePath } from 'node:path';
+import { join } from 'node:path';
 import { lower } from '../src/compiler.mjs';
+import { lowerNative, nativeCli } from './support.mjs';
 
-// Absolute: the tests run it from temporary folders (npm test may be given a relative path).
-const nativeCli = process.env.DOUBLET_CLI && resolvePath(process.env.DOUBLET_CLI);
 const skip = !nativeCli && 'DOUBLET_CLI is not set';
 
 const header = `double scaled(double x) { return x * 3.0lf + 1.0lf / 3.0lf; }\n`;
@@ -31,31 +30,22 @@ function native(dir, args) {
 }
 
 test('lower() gives the native output and manifest, #include through the callback', { skip }, async () => {
-  const dir = mkdtempSync(join(tmpdir(), 'doublet-api-'));
-  try {
-    mkdirSync(join(dir, 'inc'));
-    writeFileSync(join(dir, 'inc/scaled.glsl'), header);
-    writeFileSync(join(dir, 'orbit.vert'), shader);
-    for (const [target, mode] of [['webgl2', 'df64'], ['es310', 'exact'], ['wgsl', 'df64-int']]) {
-      const r = native(dir, ['lower', 'orbit.vert', '-I', 'inc', '--target', target, '--mode', mode,
-                             '-o', 'out.glsl', '--manifest', 'out.json']);
-      assert.equal(r.status, 0, r.stderr);
-      const requested = [];
-      const result = await lower(shader, {
-        fileName: 'orbit.vert', target, mode,
-        include: (name, includer) => {
-          requested.push([name, includer]);
-          return name === 'scaled.glsl' ? { path: 'inc/scaled.glsl', contents: header } : null;
-        },
-      });
-      assert.equal(result.ok, true, JSON.stringify(result.diagnostics));
-      assert.equal(result.output, readFileSync(join(dir, 'out.glsl'), 'utf8'), `${target} ${mode}: text`);
-      assert.deepEqual(result.manifest, JSON.parse(readFileSync(join(dir, 'out.json'), 'utf8')), `${target} ${mode}: manifest`);
-      assert.deepEqual(requested, [['scaled.glsl', 'orbit.vert']]);
-      assert.deepEqual(result.includedFiles, ['inc/scaled.glsl']);
-    }
-  } finally {
-    rmSync(dir, { recursive: true, force: true });
+  for (const [target, mode] of [['webgl2', 'df64'], ['es310', 'exact'], ['wgsl', 'df64-int']]) {
+    const want = lowerNative({ 'orbit.vert': shader, 'inc/scaled.glsl': header }, 'orbit.vert',
+                             ['-I', 'inc', '--target', target, '--mode', mode]);
+    const requested = [];
+    const result = await lower(shader, {
+      fileName: 'orbit.vert', target, mode,
+      include: (name, includer) => {
+        requested.push([name, includer]);
+        return name === 'scaled.glsl' ? { path: 'inc/scaled.glsl', contents: header } : null;
+      },
+    });
+    assert.equal(result.ok, true, JSON.stringify(result.diagnostics));
+    assert.equal(result.output, want.output, `${target} ${mode}: text`);
+    assert.deepEqual(result.manifest, want.manifest, `${target} ${mode}: manifest`);
+    assert.deepEqual(requested, [['scaled.glsl', 'orbit.vert']]);
+    assert.deepEqual(result.includedFiles, ['inc/scaled.glsl']);
   }
 });
 

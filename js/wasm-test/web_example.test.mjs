@@ -11,9 +11,9 @@ import { copyFileSync, existsSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { runPage } from './support.mjs';
 
 const example = fileURLToPath(new URL('../../examples/web/', import.meta.url));
-const runPage = fileURLToPath(new URL('../../tools/browser/run-page.mjs', import.meta.url));
 
 function buildAndRun(mode, t) {
   const dir = mkdtempSync(join(tmpdir(), `doublet-example-${mode}-`));
@@ -22,13 +22,7 @@ function buildAndRun(mode, t) {
                             { cwd: example, env: { ...process.env, DOUBLET_MODE: mode, DOUBLET_EXAMPLE_OUT: join(dir, 'dist') } });
     assert.equal(build.status, 0, `rollup -c (${mode}):\n${build.stderr}`);
     copyFileSync(join(example, 'index.html'), join(dir, 'index.html'));
-    const page = spawnSync(process.execPath, [runPage, dir], { maxBuffer: 1 << 24 });
-    if (page.status === 2 && process.env.DOUBLET_REQUIRE_BROWSER !== '1') {
-      t.skip(`no browser: ${page.stderr}`);
-      return null;
-    }
-    assert.equal(page.status, 0, `run-page failed:\n${page.stderr}`);
-    return JSON.parse(page.stdout.toString());
+    return runPage(t, dir, 'index.html');
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }

@@ -6,17 +6,8 @@
 // DOUBLET_REQUIRE_BROWSER=1.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve as resolvePath } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { exactWords, join as joinPair } from '../src/index.mjs';
-
-// Absolute: the tests run it from temporary folders (npm test may be given a relative path).
-const nativeCli = process.env.DOUBLET_CLI && resolvePath(process.env.DOUBLET_CLI);
-const jsDir = fileURLToPath(new URL('../', import.meta.url));
-const runPage = fileURLToPath(new URL('../../tools/browser/run-page.mjs', import.meta.url));
+import { jsDir, lowerNative, nativeCli, runPage } from './support.mjs';
 
 const shader = `#version 300 es
 in dvec3 p;
@@ -37,32 +28,11 @@ for (let i = 0; i < 3; ++i) expected.push(m[0] * p[3 * i] + d[1], m[5] - p[3 * i
 for (const mode of ['exact', 'df64']) {
   test(`Chromium WebGL2, mode ${mode}: attributes and uniforms through the binder give the expected doubles`,
        { skip: !nativeCli && 'DOUBLET_CLI is not set' }, (t) => {
-    const dir = mkdtempSync(join(tmpdir(), 'doublet-webgl2-binder-'));
-    let manifest, vertex;
-    try {
-      writeFileSync(join(dir, 's.vert'), shader);
-      const r = spawnSync(nativeCli, ['lower', 's.vert', '--target', 'webgl2', '--mode', mode, '-o', 'out.vert', '--manifest', 'out.json'], { cwd: dir });
-      assert.equal(r.status, 0, r.stderr.toString());
-      vertex = readFileSync(join(dir, 'out.vert'), 'utf8');
-      manifest = JSON.parse(readFileSync(join(dir, 'out.json'), 'utf8'));
-    } finally {
-      rmSync(dir, { recursive: true, force: true });
-    }
-    const payload = `.payload-${process.pid}-webgl2-${mode}.json`;
-    const payloadPath = join(jsDir, 'wasm-test/browser', payload);
-    writeFileSync(payloadPath, JSON.stringify({ vertex, manifest, attributes: { p }, uniforms: { d }, matrices: { m }, output: 'r' }));
-    let page;
-    try {
-      page = spawnSync(process.execPath, [runPage, jsDir, '--page', `wasm-test/browser/webgl2-binder.html?payload=${payload}`], { maxBuffer: 1 << 24 });
-    } finally {
-      rmSync(payloadPath, { force: true });
-    }
-    if (page.status === 2 && process.env.DOUBLET_REQUIRE_BROWSER !== '1') {
-      t.skip(`no browser: ${page.stderr}`);
-      return;
-    }
-    assert.equal(page.status, 0, `run-page failed:\n${page.stderr}`);
-    const { captured, count } = JSON.parse(page.stdout.toString());
+    const { output: vertex, manifest } = lowerNative({ 's.vert': shader }, 's.vert', ['--target', 'webgl2', '--mode', mode]);
+    const page = runPage(t, jsDir, 'wasm-test/browser/webgl2-binder.html',
+                         { vertex, manifest, attributes: { p }, uniforms: { d }, matrices: { m }, output: 'r' });
+    if (!page) return;
+    const { captured, count } = page;
     assert.equal(count, 3);
     for (let i = 0; i < 3; ++i)
       for (let c = 0; c < 3; ++c) {

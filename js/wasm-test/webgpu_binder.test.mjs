@@ -7,32 +7,16 @@
 // DOUBLET_REQUIRE_BROWSER=1.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve as resolvePath } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { exactWords, fromExactWords, join as joinPair, readBlockMember, split, writeBlockMember } from '../src/index.mjs';
 import { packVertices, wgslUniformBuffer, wgslVertexLayout } from '../src/webgpu.mjs';
+import { jsDir, lowerNative as lowerWith, nativeCli, runPage } from './support.mjs';
 
-// Absolute: the tests run it from temporary folders (npm test may be given a relative path).
-const nativeCli = process.env.DOUBLET_CLI && resolvePath(process.env.DOUBLET_CLI);
 const skip = !nativeCli && 'DOUBLET_CLI is not set';
-const jsDir = fileURLToPath(new URL('../', import.meta.url));
-const runPage = fileURLToPath(new URL('../../tools/browser/run-page.mjs', import.meta.url));
 
 function lowerNative(source, stage, args) {
-  const dir = mkdtempSync(join(tmpdir(), 'doublet-binder-'));
-  try {
-    writeFileSync(join(dir, `s.${stage}`), source);
-    const r = spawnSync(nativeCli, ['lower', `s.${stage}`, '--target', 'wgsl', ...args, '-o', 'out.wgsl', '--manifest', 'out.json'], { cwd: dir });
-    assert.equal(r.status, 0, r.stderr.toString());
-    return { wgsl: readFileSync(join(dir, 'out.wgsl'), 'utf8'), manifest: JSON.parse(readFileSync(join(dir, 'out.json'), 'utf8')) };
-  } finally {
-    rmSync(dir, { recursive: true, force: true });
-  }
+  const { output: wgsl, manifest } = lowerWith({ [`s.${stage}`]: source }, `s.${stage}`, ['--target', 'wgsl', ...args]);
+  return { wgsl, manifest };
 }
-
 const kernel = `#version 450
 layout(local_size_x = 1) in;
 uniform double a;
@@ -56,30 +40,14 @@ const expected = [values.a * values.v[0] + values.v[1] / values.v[2],
                   Math.fround(values.m[2]) * values.a];
 
 // Runs webgpu-binder.html on a lowered kernel; the storage buffer's words, or null (no browser: skipped).
-function runKernel(t, name, data) {
-  // The page fetches its inputs from a file next to it (a mode exact kernel is too long for a URL).
-  const payload = `.payload-${process.pid}-${name}.json`;
-  const payloadPath = join(jsDir, 'wasm-test/browser', payload);
-  writeFileSync(payloadPath, JSON.stringify(data));
-  let page;
-  try {
-    page = spawnSync(process.execPath, [runPage, jsDir, '--page', `wasm-test/browser/webgpu-binder.html?payload=${payload}`],
-                     { maxBuffer: 1 << 26 });
-  } finally {
-    rmSync(payloadPath, { force: true });
-  }
-  if (page.status === 2 && process.env.DOUBLET_REQUIRE_BROWSER !== '1') {
-    t.skip(`no browser: ${page.stderr}`);
-    return null;
-  }
-  assert.equal(page.status, 0, `run-page failed:\n${page.stderr}`);
-  return JSON.parse(page.stdout.toString()).words;
+function runKernel(t, data) {
+  return runPage(t, jsDir, 'wasm-test/browser/webgpu-binder.html', data)?.words ?? null;
 }
 
 for (const mode of ['exact', 'df64']) {
   test(`Chromium WebGPU, mode ${mode}: uniforms through wgslUniformBuffer give the expected doubles`, { skip }, (t) => {
     const { wgsl, manifest } = lowerNative(kernel, 'comp', ['--mode', mode]);
-    const words = runKernel(t, mode, { wgsl, manifest, values, outBytes: 8 * expected.length });
+    const words = runKernel(t, { wgsl, manifest, values, outBytes: 8 * expected.length });
     if (!words) return;
     const member = manifest.variables.find((v) => v.name === 'Out').members[0];
     expected.forEach((want, i) => {
@@ -172,7 +140,7 @@ for (const mode of ['exact', 'df64']) {
     const bytes = r.offset + 4 * r.array_stride;
     const view = new DataView(new ArrayBuffer(bytes));
     for (const [name, value] of Object.entries(blockValues)) writeBlockMember(view, members.find((m) => m.name === name), value);
-    const words = runKernel(t, `block-${mode}`, { wgsl, manifest, values: {}, outBytes: bytes,
+    const words = runKernel(t, { wgsl, manifest, values: {}, outBytes: bytes,
                                                   storageWords: Array.from(new Uint32Array(view.buffer)) });
     if (!words) return;
     const result = new DataView(new Uint32Array(words).buffer);
