@@ -57,6 +57,9 @@ struct Context {
   // default_value); split_interfaces initialises X_hi and X_lo from it where the target keeps it.
   std::map<const ir::Var*, std::vector<double>> uniform_defaults;
 
+  // #extension lines the generated helpers need beyond the shader's own (subgroup reductions).
+  std::set<std::string> extensions;
+
   void error(ir::Loc loc, const std::string& message);
   void warning(ir::Loc loc, const std::string& message);
   void use_rule(const std::string& name, int width);

@@ -683,10 +683,13 @@ class DoubleLowering {
     const std::string& n = e->name;
     const ExprPtr& value = e->args[0];
     const bool all_equal = n == "subgroupAllEqual" && !exact();  // words: +0 and -0 would differ
+    if (!kMoves.count(n) && !all_equal && is_df(value->type))
+      if (ExprPtr reduced = lower_subgroup_reduction(e)) return reduced;
     if ((!kMoves.count(n) && !all_equal) || !is_df(value->type)) {
-      ctx_.error(e->loc, n + " on doubles is not lowered yet: doublet lowers the subgroup operations that move a "
-                             "value (subgroupBroadcast, subgroupShuffle, ...; subgroupAllEqual outside mode exact); "
-                             "for a reduction, reduce in a loop over subgroupShuffleXor with double addition");
+      ctx_.error(e->loc, n + " is not lowered on doubles" + (exact() && n == "subgroupAllEqual" ? " in mode exact" : "") +
+                             ": doublet lowers the subgroup operations that move a value (subgroupBroadcast, "
+                             "subgroupShuffle, ...), the reductions and scans of Add, Mul, Min and Max, and "
+                             "subgroupAllEqual outside mode exact");
       return e;
     }
     const int width = df_width(value->type);
@@ -723,6 +726,69 @@ class DoubleLowering {
     ctx_.add_helper(name, df + " " + name + "(" + params + ") {\n  return " + df + "(" + n + "(v.hi" + extra + "), " + n +
                               "(v.lo" + extra + "));\n}\n");
     return ir::make_node(Kind::Call, name, df_type(width), args, e->loc);
+  }
+
+  // Reductions and scans on a double (subgroupAdd, subgroupInclusiveMul, subgroupExclusiveMin,
+  // subgroupClusteredMax, ...): one loop over the subgroup's lanes in id order, each active lane's
+  // value moved by two shuffles (both words) and combined with the double operation of the mode
+  // (df_add, ex_add, ...). Every lane of a reduction combines the same values in the same order,
+  // so all get the same result; the error bound of the order is in docs/accuracy.md ("Subgroup
+  // reductions"). The shuffles run in control flow that is uniform over the active lanes (the
+  // ballot of active lanes is the same in each), so no lane reads an inactive one; a scan only
+  // masks which values it combines. Cost: gl_SubgroupSize iterations, against log2 of it for the
+  // driver's own tree on floats: the order, not the speed, is what the lowering fixes.
+  ExprPtr lower_subgroup_reduction(const ExprPtr& e) {
+    const std::string& n = e->name;
+    std::string rest = n.substr(std::string("subgroup").size()), kind;
+    for (const char* k : {"Inclusive", "Exclusive", "Clustered"})
+      if (rest.rfind(k, 0) == 0) kind = k, rest = rest.substr(std::string(k).size());
+    static const std::map<std::string, std::string> kOps = {
+        {"Add", "df_add"}, {"Mul", "df_mul"}, {"Min", "df_min"}, {"Max", "df_max"}};
+    auto op = kOps.find(rest);
+    if (op == kOps.end()) return nullptr;
+    const int width = df_width(e->args[0]->type);
+    const std::string df = df_type_name(width), word = word_type_name(width), combine = runtime_name(op->second);
+    std::string name = "df_" + n + "_" + std::to_string(width), taken = "true";
+    if (kind == "Inclusive") taken = "j <= self";
+    if (kind == "Exclusive") taken = "j < self";
+    if (kind == "Clustered") {
+      const ExprPtr& size = e->args[1];
+      if (size->kind != Kind::Const || size->values.size() != 1) {
+        ctx_.error(size->loc, n + ": the cluster size must be a constant expression");
+        return e;
+      }
+      const std::string literal = std::to_string(size->values[0].i) + "u";
+      name += "_" + literal;
+      taken = "j / " + literal + " == self / " + literal;
+    }
+    ctx_.use_width(width);
+    ctx_.use_rule(combine, width);
+    ctx_.rule_first_use.emplace(combine, e->loc);
+    for (const char* x : {"GL_KHR_shader_subgroup_ballot", "GL_KHR_shader_subgroup_shuffle"}) ctx_.extensions.insert(x);
+    // Only an exclusive scan's first lane returns the identity: IEEE's for the operation, as the
+    // GL_KHR_shader_subgroup_arithmetic specification lists it (0, 1, +Inf, -Inf).
+    const std::map<std::string, std::string> identity_hi =
+        exact() ? std::map<std::string, std::string>{{"Add", "0u"}, {"Mul", "0x3FF00000u"}, {"Min", "0x7FF00000u"}, {"Max", "0xFFF00000u"}}
+                : std::map<std::string, std::string>{{"Add", "0.0"}, {"Mul", "1.0"}, {"Min", "uintBitsToFloat(0x7F800000u)"},
+                                                     {"Max", "uintBitsToFloat(0xFF800000u)"}};
+    const std::string& hi = identity_hi.at(rest);
+    const std::string identity = df + "(" + word + "(" + hi + "), " + word + "(" + (exact() ? "0u" : "0.0") + "))";
+    ctx_.add_helper(name, df + " " + name + "(" + df + " v) {\n"
+                              "  uvec4 lanes = subgroupBallot(true);\n"
+                              "  uint self = gl_SubgroupInvocationID;\n"
+                              "  " + df + " r = " + identity + ";\n"
+                              "  bool started = false;\n"
+                              "  for (uint j = 0u; j < gl_SubgroupSize; ++j) {\n"
+                              "    if (!subgroupBallotBitExtract(lanes, j)) continue;\n"
+                              "    " + df + " x = " + df + "(subgroupShuffle(v.hi, j), subgroupShuffle(v.lo, j));\n"
+                              "    if (" + taken + ") {\n"
+                              "      r = started ? " + combine + "(r, x) : x;\n"
+                              "      started = true;\n"
+                              "    }\n"
+                              "  }\n"
+                              "  return r;\n"
+                              "}\n");
+    return ir::make_node(Kind::Call, name, df_type(width), {e->args[0]}, e->loc);
   }
 
   // Built-ins of GLSL 4.60 sections 8.3-8.7 on doubles: each is one rule of rules/*.glsl at the

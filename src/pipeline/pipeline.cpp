@@ -68,6 +68,9 @@ bool link_runtime_pass(State& s) {
 bool print(State& s) {
   s.print_options.target = s.config.target;
   s.print_options.extensions = s.config.guard_extensions;
+  for (const auto& e : s.ctx.extensions)
+    if (std::find(s.print_options.extensions.begin(), s.print_options.extensions.end(), e) == s.print_options.extensions.end())
+      s.print_options.extensions.push_back(e);
   s.print_options.user_extensions = s.user_extensions;
   s.printed = emit::print(s.module, s.print_options, s.config.file_name);
   auto& diags = s.result.diagnostics;

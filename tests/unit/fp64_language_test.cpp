@@ -134,11 +134,17 @@ TEST(Targets, ConstructsTheTargetLacksAreDiagnosedByConstructAndTarget) {
                      "layout(std430, binding = 0) buffer B { double v[]; };\nvoid main() { atomicAdd(v[0], 1.0lf); }\n",
                      doublet::Stage::Compute, doublet::Target::Es310),
                {"atomic operations on doubles", "atomicAdd", "es310", "reduce"});
-  expect_error(lower("#version 450\n#extension GL_KHR_shader_subgroup_arithmetic : enable\n"
-                     "layout(local_size_x = 64) in;\nlayout(std430, binding = 0) buffer B { double v[]; };\n"
-                     "void main() { v[0] = subgroupAdd(v[1]); }\n",
-                     doublet::Stage::Compute, doublet::Target::Glsl450),
-               {"subgroupAdd on doubles is not lowered yet", "subgroupShuffleXor"});
+  {
+    doublet::Options exact;
+    exact.stage = doublet::Stage::Compute;
+    exact.target = doublet::Target::Glsl450;
+    exact.mode = doublet::Mode::Exact;
+    expect_error(doublet::lower("#version 450\n#extension GL_KHR_shader_subgroup_vote : enable\n"
+                                "layout(local_size_x = 64) in;\nlayout(std430, binding = 0) buffer B { double v[]; };\n"
+                                "void main() { v[0] = subgroupAllEqual(v[1]) ? 1.0lf : 0.0lf; }\n",
+                                exact),
+                 {"subgroupAllEqual is not lowered on doubles in mode exact", "reductions and scans"});
+  }
   expect_error(lower("#version 450\n#extension GL_ARB_gpu_shader_int64 : enable\nlayout(local_size_x = 1) in;\n"
                      "layout(std430, binding = 0) buffer B { double v; int64_t w; };\nvoid main() { w = int64_t(v); }\n",
                      doublet::Stage::Compute, doublet::Target::Es320),
