@@ -13,7 +13,9 @@
 
 namespace doublet {
 
-enum class Stage { Vertex, Fragment, Compute };
+// Geometry and tessellation lower for the targets that have the stage (desktop 3.30/4.00+, ES 3.20,
+// ES 3.10 with GL_EXT_geometry_shader/GL_EXT_tessellation_shader).
+enum class Stage { Vertex, Fragment, Compute, Geometry, TessControl, TessEvaluation };
 
 // Output dialects. es* are GLSL ES, glsl* desktop GLSL (core profile).
 // webgl2: ES 3.00 under WebGL 2.0's rules. wgsl: WebGPU Shading Language (no f64: every double is

@@ -42,6 +42,9 @@ std::string_view to_string(Stage s) {
     case Stage::Vertex: return "vert";
     case Stage::Fragment: return "frag";
     case Stage::Compute: return "comp";
+    case Stage::Geometry: return "geom";
+    case Stage::TessControl: return "tesc";
+    case Stage::TessEvaluation: return "tese";
   }
   return "vert";
 }
@@ -50,6 +53,9 @@ std::optional<Stage> parse_stage(std::string_view name) {
   if (name == "vert") return Stage::Vertex;
   if (name == "frag") return Stage::Fragment;
   if (name == "comp") return Stage::Compute;
+  if (name == "geom") return Stage::Geometry;
+  if (name == "tesc") return Stage::TessControl;
+  if (name == "tese") return Stage::TessEvaluation;
   return std::nullopt;
 }
 

@@ -149,14 +149,13 @@ Options common_options(const LowerArgs& a, std::string& error) {
 // as the file's diagnostic (exit 2).
 std::string resolve_stage(const std::string& input, Options& opt, std::string& refusal) {
   if (opt.stage) return {};
-  if (input == "-") return "reading the shader from stdin requires -S vert|frag|comp";
+  if (input == "-") return "reading the shader from stdin requires -S vert|frag|comp|geom|tesc|tese";
   opt.stage = stage_from_path(input);
   if (opt.stage) return {};
   // A stage doublet does not lower, named by glslang's extensions: say which, not "cannot tell"
   // (glslang's own test suite has 186 such files).
   static const std::pair<const char*, const char*> kOtherStages[] = {
-      {".geom", "a geometry shader"},         {".tesc", "a tessellation control shader"},
-      {".tese", "a tessellation evaluation shader"}, {".mesh", "a mesh shader"},
+      {".mesh", "a mesh shader"},
       {".task", "a task shader"},             {".rgen", "a ray generation shader"},
       {".rint", "a ray intersection shader"}, {".rahit", "an any-hit shader"},
       {".rchit", "a closest-hit shader"},     {".rmiss", "a miss shader"},
@@ -166,12 +165,12 @@ std::string resolve_stage(const std::string& input, Options& opt, std::string& r
   for (const auto& [ext, what] : kOtherStages) {
     const size_t len = std::char_traits<char>::length(ext);
     if (name.size() > len && name.compare(name.size() - len, len, ext) == 0) {
-      refusal = std::string("this is ") + what + ": doublet lowers vertex, fragment and compute shaders only";
+      refusal = std::string("this is ") + what + ": doublet lowers vertex, fragment, compute, geometry and tessellation shaders only";
       return {};
     }
   }
   return "cannot tell the shader stage from the file name '" + input +
-         "' (expected .vert, .frag, .comp, optionally followed by .glsl); use -S";
+         "' (expected .vert, .frag, .comp, .geom, .tesc, .tese, optionally followed by .glsl); use -S";
 }
 
 // One input, output to -o FILE or stdout.

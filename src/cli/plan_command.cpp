@@ -31,7 +31,7 @@ int run_plan(const PlanArgs& a) {
   Options o;
   o.file_name = a.shader;
   o.stage = a.stage.empty() ? stage_from_path(a.shader) : parse_stage(a.stage);
-  if (!o.stage) return input_error("cannot tell the stage of '" + a.shader + "': use -S vert|frag|comp");
+  if (!o.stage) return input_error("cannot tell the stage of '" + a.shader + "': use -S vert|frag|comp|geom|tesc|tese");
   for (const std::string& d : a.defines) {
     const size_t eq = d.find('=');
     o.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
@@ -67,7 +67,7 @@ Command add_plan_command(CLI::App& app) {
   cmd->add_option("SHADER", args->shader, "shader file (.vert, .frag or .comp)")->required();
   cmd->add_option("--scene", args->scene, "scene JSON: input ranges, relations, output abs_error")->required();
   cmd->add_option("-o,--output", args->output, "write the plan file (JSON) for `doublet lower --plan`");
-  cmd->add_option("-S", args->stage, "stage: vert|frag|comp (default: from the extension)");
+  cmd->add_option("-S", args->stage, "stage: vert|frag|comp|geom|tesc|tese (default: from the extension)");
   cmd->add_option("-D", args->defines, "NAME[=VALUE] preprocessor define");
   cmd->add_option("-I", args->include_dirs, "include directory");
   cmd->footer(

@@ -143,7 +143,7 @@ int run_verify(const VerifyArgs& a) {
   verify::VerifyOptions o;
   o.lower.file_name = a.shader;
   o.lower.stage = a.stage.empty() ? stage_from_path(a.shader) : parse_stage(a.stage);
-  if (!o.lower.stage) return input_error("cannot tell the stage of '" + a.shader + "': use -S vert|frag|comp");
+  if (!o.lower.stage) return input_error("cannot tell the stage of '" + a.shader + "': use -S vert|frag|comp|geom|tesc|tese");
   const std::string target_name = default_target(a, o.lower.stage);
   const std::optional<Target> target = parse_target(target_name);
   if (!target) return input_error("unknown target '" + target_name + "'");
@@ -222,7 +222,7 @@ Command add_verify_command(CLI::App& app) {
   cmd->add_option("--heatmap-dir", args->heatmap_dir, "where --sweep writes its PNG heatmaps (default .)");
   cmd->add_option("--grid-step", args->grid_step, "exponent step of the sweep grid (default 1)")
       ->check(CLI::Range(1, 64));
-  cmd->add_option("-S", args->stage, "stage: vert|frag|comp (default: from the extension)");
+  cmd->add_option("-S", args->stage, "stage: vert|frag|comp|geom|tesc|tese (default: from the extension)");
   cmd->add_option("--target", args->target, "target of the lowering (default es310; webgl2 for vert/frag with --backend webgl2/all)");
   cmd->add_option("--samples", args->samples, "input sets (default 1024)")->check(CLI::PositiveNumber);
   cmd->add_option("--seed", args->seed, "random seed (default 1)");

@@ -94,6 +94,7 @@ class Printer {
           opaque.insert(g->type.name);
       for (const auto& t : opaque) out_ << "precision highp " << t << ";\n";
     }
+    for (const auto& layout : module_.stage_layouts) out_ << layout << "\n";
     if (module_.stage == ir::StageKind::Compute)
       out_ << "layout(local_size_x = " << module_.local_size[0] << ", local_size_y = " << module_.local_size[1]
            << ", local_size_z = " << module_.local_size[2] << ") in;\n";
@@ -258,6 +259,7 @@ class Printer {
         parts.push_back(v.layout.packing);
     }
     if (!v.layout.format.empty()) parts.push_back(v.layout.format);
+    if (v.layout.passthrough) parts.push_back("passthrough");
     if (v.layout.set >= 0 && !es_ && version_ >= 450) parts.push_back("set = " + std::to_string(v.layout.set));
     if (v.layout.binding >= 0 && (es_ ? version_ >= 310 : version_ >= 420))
       parts.push_back("binding = " + std::to_string(v.layout.binding));
@@ -301,6 +303,7 @@ class Printer {
     s += precise_keyword(v);
     s += layout(v);
     bool interface = v.storage == ir::Storage::In || v.storage == ir::Storage::Out;
+    if (interface && v.patch) s += "patch ";
     if (interface) s += interpolation(v.interp);
     if (v.coherent) s += "coherent ";
     if (v.volatile_) s += "volatile ";

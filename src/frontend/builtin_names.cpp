@@ -152,6 +152,10 @@ const char* builtin_function_name(TOperator op, int args) {
     case EOpAny: return "any";
     case EOpAll: return "all";
     case EOpBarrier: return "barrier";
+    case EOpEmitVertex: return "EmitVertex";
+    case EOpEndPrimitive: return "EndPrimitive";
+    case EOpEmitStreamVertex: return "EmitStreamVertex";
+    case EOpEndStreamPrimitive: return "EndStreamPrimitive";
     case EOpMemoryBarrier: return "memoryBarrier";
     case EOpMemoryBarrierBuffer: return "memoryBarrierBuffer";
     case EOpMemoryBarrierShared: return "memoryBarrierShared";

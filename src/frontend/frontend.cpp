@@ -11,6 +11,8 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include "frontend/glslang_stage.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -196,16 +198,19 @@ std::vector<int> error_lines_of_main_string(std::string_view log) {
   return lines;
 }
 
-namespace {
-
-EShLanguage to_glslang(Stage s) {
+EShLanguage glslang_stage(Stage s) {
   switch (s) {
     case Stage::Vertex: return EShLangVertex;
     case Stage::Fragment: return EShLangFragment;
     case Stage::Compute: return EShLangCompute;
+    case Stage::Geometry: return EShLangGeometry;
+    case Stage::TessControl: return EShLangTessControl;
+    case Stage::TessEvaluation: return EShLangTessEvaluation;
   }
   return EShLangVertex;
 }
+
+namespace {
 
 // Resolves #include for glslang via the user's Includer or -I directories, and
 // remembers every file read (for depfiles and for column recovery). Each
@@ -487,7 +492,7 @@ void configure(glslang::TShader& shader, ShaderStrings& strings, const std::stri
   strings = {{text.c_str()}, {static_cast<int>(text.size())}, {options.file_name.c_str()}};
   shader.setStringsWithLengthsAndNames(strings.text, strings.length, strings.name, 1);
   shader.setPreamble(preamble.c_str());
-  shader.setEnvInput(glslang::EShSourceGlsl, to_glslang(*options.stage), glslang::EShClientNone, 100);
+  shader.setEnvInput(glslang::EShSourceGlsl, glslang_stage(*options.stage), glslang::EShClientNone, 100);
   shader.setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
   shader.setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
 }
@@ -497,7 +502,7 @@ void configure(glslang::TShader& shader, ShaderStrings& strings, const std::stri
 // budget has bounded what preprocessing produces.
 std::optional<Diagnostic> check_expanded_operators(const std::string& text, const std::string& preamble,
                                                    const Options& options, IncludeAdapter& includer) {
-  glslang::TShader shader(to_glslang(*options.stage));
+  glslang::TShader shader(glslang_stage(*options.stage));
   ShaderStrings strings;
   configure(shader, strings, text, preamble, options);
   std::string expanded;
@@ -555,7 +560,7 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
 
   ShaderStrings strings;
   auto attempt = [&](const std::string& with_preamble) {
-    out.shader = std::make_unique<glslang::TShader>(to_glslang(*options.stage));
+    out.shader = std::make_unique<glslang::TShader>(glslang_stage(*options.stage));
     configure(*out.shader, strings, text, with_preamble, options);
     auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
     // Every input is parsed as desktop 4.50 compatibility, whatever its #version says.

@@ -244,6 +244,7 @@ class Importer {
     }
     if (q.layoutMatrix == ElmRowMajor) l.matrix = "row_major";
     if (q.hasFormat()) l.format = TQualifier::getLayoutFormatString(q.layoutFormat);
+    l.passthrough = q.layoutPassthrough;
     return l;
   }
 
@@ -298,6 +299,7 @@ class Importer {
     v->layout = import_layout(q);
     v->interp = import_interp(q);
     v->invariant = q.invariant;
+    v->patch = q.patch;
     v->precise = q.isNoContraction();
     v->readonly = q.readonly;
     v->writeonly = q.writeonly;
@@ -777,6 +779,39 @@ class Importer {
   void top(TIntermNode* node) { top_level(node); }
 };
 
+// The layout declarations of a geometry or tessellation stage, rebuilt from what glslang recorded
+// (the declarations themselves are not in its tree).
+std::vector<std::string> stage_layouts(const TIntermediate& in) {
+  std::vector<std::string> out;
+  auto join = [](const std::vector<std::string>& parts) {
+    std::string s;
+    for (const auto& p : parts) s += (s.empty() ? "" : ", ") + p;
+    return s;
+  };
+  std::vector<std::string> input, output;
+  switch (in.getStage()) {
+    case EShLangGeometry:
+      if (in.getInputPrimitive() != glslang::ElgNone) input.push_back(glslang::TQualifier::getGeometryString(in.getInputPrimitive()));
+      if (in.getInvocations() > 0) input.push_back("invocations = " + std::to_string(in.getInvocations()));
+      if (in.getOutputPrimitive() != glslang::ElgNone) output.push_back(glslang::TQualifier::getGeometryString(in.getOutputPrimitive()));
+      if (in.getVertices() > 0) output.push_back("max_vertices = " + std::to_string(in.getVertices()));
+      break;
+    case EShLangTessControl:
+      if (in.getVertices() > 0) output.push_back("vertices = " + std::to_string(in.getVertices()));
+      break;
+    case EShLangTessEvaluation:
+      if (in.getInputPrimitive() != glslang::ElgNone) input.push_back(glslang::TQualifier::getGeometryString(in.getInputPrimitive()));
+      if (in.getVertexSpacing() != glslang::EvsNone) input.push_back(glslang::TQualifier::getVertexSpacingString(in.getVertexSpacing()));
+      if (in.getVertexOrder() != glslang::EvoNone) input.push_back(glslang::TQualifier::getVertexOrderString(in.getVertexOrder()));
+      if (in.getPointMode()) input.push_back("point_mode");
+      break;
+    default: break;
+  }
+  if (!input.empty()) out.push_back("layout(" + join(input) + ") in;");
+  if (!output.empty()) out.push_back("layout(" + join(output) + ") out;");
+  return out;
+}
+
 bool Importer::run(TIntermediate& intermediate) {
   auto* root = intermediate.getTreeRoot() ? intermediate.getTreeRoot()->getAsAggregate() : nullptr;
   if (!root) {
@@ -797,6 +832,7 @@ bool Importer::run(TIntermediate& intermediate) {
     });
   if (module_.stage == ir::StageKind::Compute)
     for (int i = 0; i < 3; ++i) module_.local_size[i] = static_cast<int>(intermediate.getLocalSize(i));
+  module_.stage_layouts = stage_layouts(intermediate);
   return !failed_;
 }
 
@@ -804,9 +840,7 @@ bool Importer::run(TIntermediate& intermediate) {
 
 bool import_module(const ParsedShader& parsed, const Options& options, ir::Module& out,
                    std::vector<Diagnostic>& diagnostics) {
-  out.stage = *options.stage == Stage::Vertex     ? ir::StageKind::Vertex
-              : *options.stage == Stage::Fragment ? ir::StageKind::Fragment
-                                                  : ir::StageKind::Compute;
+  out.stage = *options.stage;
   out.source_version = parsed.info.version;
   out.source_es = parsed.info.es;
   Importer importer(options, parsed.source, out, diagnostics);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "doublet/doublet.hpp"
+
 namespace doublet::ir {
 
 struct Loc {
@@ -52,6 +54,7 @@ struct Layout {
   std::string packing;  // "std140", "std430", "shared", "packed" or empty
   std::string matrix;   // "row_major", "column_major" or empty
   std::string format;   // image format ("rgba32f"), or empty
+  bool passthrough = false;  // GL_NV_geometry_shader_passthrough
 };
 
 enum class Interp { Default, Smooth, Flat, NoPerspective, Centroid };
@@ -87,6 +90,7 @@ struct Var {
   Layout layout;
   Interp interp = Interp::Default;
   bool invariant = false;
+  bool patch = false;  // a tessellation per-patch in/out
   bool precise = false;
   bool readonly = false, writeonly = false, coherent = false, restrict_ = false, volatile_ = false;
   std::shared_ptr<Var> block;  // for members of an anonymous block: the block
@@ -199,7 +203,7 @@ struct Function {
 };
 using FunctionPtr = std::shared_ptr<Function>;
 
-enum class StageKind { Vertex, Fragment, Compute };
+using StageKind = doublet::Stage;  // the public enum, one name for the IR
 
 struct Module {
   StageKind stage = StageKind::Vertex;
@@ -210,6 +214,9 @@ struct Module {
   std::vector<ExprPtr> global_inits;  // parallel to globals; null when none
   std::vector<FunctionPtr> functions;
   int local_size[3] = {0, 0, 0};  // compute: 0 = not declared
+  // Geometry and tessellation: the stage's layout declarations as printed, in order
+  // ("layout(triangles, invocations = 2) in;", "layout(triangle_strip, max_vertices = 3) out;").
+  std::vector<std::string> stage_layouts;
   bool early_fragment_tests = false;
 };
 

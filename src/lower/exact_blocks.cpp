@@ -19,6 +19,7 @@
 #include <set>
 
 #include "lower/block_layout.hpp"
+#include "lower/exact_interface.hpp"
 #include "lower/lower.hpp"
 #include "lower/matrix_helpers.hpp"
 
@@ -370,8 +371,7 @@ class BlockWords {
   void plan_block(ir::Var& block) {
     const bool memory = block.storage == ir::Storage::Uniform || block.storage == ir::Storage::Buffer;
     const bool std140 = block.layout.packing != "std430";
-    const bool flat = (block.storage == ir::Storage::Out && module_.stage == ir::StageKind::Vertex) ||
-                      (block.storage == ir::Storage::In && module_.stage == ir::StageKind::Fragment);
+    const bool flat = exact_io::between_stages(block.storage, module_.stage);
     const Layout layout(std140);
     const std::vector<ir::Field> fields = *block.type.fields;  // a copy: the block's fields are replaced below
     const std::vector<ir::Field>* declared = block.declared_type.fields ? block.declared_type.fields.get() : nullptr;

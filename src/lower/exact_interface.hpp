@@ -31,4 +31,11 @@ ir::ExprPtr words_of(const ir::ExprPtr& value, int width, int part);
 // The df_dvecW value of the words in `parts` (one or two pure expressions).
 ir::ExprPtr value_of(const std::vector<ir::ExprPtr>& parts, int width);
 
+// Whether an in/out of `stage` passes between two shader stages (every one but a vertex input and
+// a fragment output), where words, being integers, must be `flat`.
+inline bool between_stages(ir::Storage storage, ir::StageKind stage) {
+  if (storage == ir::Storage::In) return stage != ir::StageKind::Vertex;
+  return storage == ir::Storage::Out && stage != ir::StageKind::Fragment;
+}
+
 }  // namespace doublet::passes::exact_io

@@ -17,19 +17,6 @@
 #include "lower/lower.hpp"
 
 namespace doublet::passes {
-namespace {
-
-Stage stage_of(const ir::Module& m) {
-  switch (m.stage) {
-    case ir::StageKind::Vertex: return Stage::Vertex;
-    case ir::StageKind::Fragment: return Stage::Fragment;
-    case ir::StageKind::Compute: return Stage::Compute;
-  }
-  return Stage::Vertex;
-}
-
-}  // namespace
-
 bool rename_functions_named_like_builtins(ir::Module& module, Context& ctx) {
   if (ctx.config.facts->overloads_builtin_names) return true;
   std::set<std::string> user_functions, taken;
@@ -40,7 +27,7 @@ bool rename_functions_named_like_builtins(ir::Module& module, Context& ctx) {
   // redefinition, which fp32's demotion makes of `double exp(double)`: ES 1.00 asks ES 3.00's
   // names (a superset; renaming one more function there is harmless).
   const Target probe_target = ctx.config.target == Target::Es100 ? Target::Es300 : ctx.config.target;
-  const std::set<std::string> builtins = target::builtin_function_names(user_functions, probe_target, stage_of(module));
+  const std::set<std::string> builtins = target::builtin_function_names(user_functions, probe_target, module.stage);
   if (builtins.empty()) return true;
   for (const auto& f : module.functions) taken.insert(f->name);
   for (const auto& g : module.globals) taken.insert(g->name);

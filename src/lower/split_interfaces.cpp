@@ -9,6 +9,7 @@
 #include <set>
 #include <tuple>
 
+#include "ir/walk.hpp"
 #include "lower/block_layout.hpp"
 #include "lower/exact_interface.hpp"
 #include "lower/lower.hpp"
@@ -115,6 +116,72 @@ void add_copy_out(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_out
   }
 }
 
+// `array[gl_InvocationID]`.
+ExprPtr index_by_invocation(const ExprPtr& array) {
+  auto id = std::make_shared<ir::Var>();
+  id->name = "gl_InvocationID";
+  id->type = ir::scalar_type(ir::Base::Int);
+  id->declared_type = id->type;
+  id->storage = ir::Storage::BuiltIn;
+  auto e = Expr::make(Kind::Index, array->type.element());
+  e->args = {array, sym(id)};
+  return e;
+}
+
+// A tessellation control shader's double outputs live in private copies until main's end, where
+// each invocation stores its own vertex (index_by_invocation). That is right only when the shader
+// reads and writes its own vertex alone, and has no per-patch double output (which any invocation
+// may write, so a store of every invocation's copy would race): anything else is refused by name.
+bool tessellation_control_outputs_are_own(const ir::Module& module, const std::vector<Split>& splits,
+                                          const std::vector<WordSplit>& word_splits, Context& ctx) {
+  if (module.stage != ir::StageKind::TessControl) return true;
+  std::set<const ir::Var*> outputs;
+  auto note = [&](const ir::VarPtr& v, ir::Storage storage) {
+    if (storage != ir::Storage::Out) return;
+    if (!v->type.is_array() || v->patch) {
+      ctx.error(v->loc, "the per-patch double output '" + v->name + "' of a tessellation control shader is not "
+                        "lowered yet: pass it as a per-vertex output (out double " + v->name + "[]), or as two float "
+                        "patch outputs that hold its hi and lo words");
+      return;
+    }
+    outputs.insert(v.get());
+  };
+  for (const auto& s : splits) note(s.original, s.storage);
+  for (const auto& s : word_splits) note(s.original, s.storage);
+  for (const auto& f : module.functions)
+    ir::visit(f->body, [&](const ExprPtr& e) {
+      for (size_t k = 0; k < e->args.size(); ++k) {
+        const ExprPtr& a = e->args[k];
+        if (!a || a->kind != Kind::Sym || !outputs.count(a->var.get())) continue;
+        const bool own = e->kind == Kind::Index && k == 0 && e->args[1]->kind == Kind::Sym &&
+                         e->args[1]->var->name == "gl_InvocationID";
+        if (!own)
+          ctx.error(e->loc, "the double output '" + a->var->name + "' of a tessellation control shader is used "
+                            "other than as " + a->var->name + "[gl_InvocationID]; doublet lowers only an invocation's "
+                            "own vertex of a per-vertex double output");
+      }
+    });
+  return !ctx.failed;
+}
+
+// Geometry: the outputs are the values at each EmitVertex()/EmitStreamVertex(n), so the split
+// goes before every such call statement, in any function (the outputs are globals).
+void add_copy_out_before_emits(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_out) {
+  for (auto& child : s->body) {
+    if (!child) continue;
+    const ExprPtr& e = child->expr;
+    if (child->kind == ir::Stmt::Kind::Expr && e && e->kind == Kind::Builtin &&
+        (e->name == "EmitVertex" || e->name == "EmitStreamVertex")) {
+      auto block = ir::Stmt::make(ir::Stmt::Kind::Block, child->loc);
+      block->body = copy_out;
+      block->body.push_back(child);
+      child = block;
+    } else {
+      add_copy_out_before_emits(child, copy_out);
+    }
+  }
+}
+
 // Diagnoses a generated name that GLSL reserves ("__") or that the shader already uses.
 // `remedy` ends the message when renaming the generated name is up to an option.
 void check_generated_name(const ir::Var& v, const std::string& generated, bool first, Context& ctx,
@@ -157,15 +224,14 @@ WordSplit split_into_words(const ir::VarPtr& v, ir::StageKind stage, Context& ct
   s.width = v->declared_type.vec;
   const std::vector<std::string> suffixes = exact_io::part_suffixes(s.width);
   const int elements = v->declared_type.is_array() ? v->declared_type.array_dims[0] : 1;
-  const bool varying = (v->storage == ir::Storage::Out && stage == ir::StageKind::Vertex) ||
-                       (v->storage == ir::Storage::In && stage == ir::StageKind::Fragment);
+  const bool varying = exact_io::between_stages(v->storage, stage);
   for (size_t k = 0; k < suffixes.size(); ++k) {
     auto part = std::make_shared<ir::Var>(*v);
     part->name = suffixes[k].empty() ? v->name : ir::join_identifier(v->name, suffixes[k]);
     part->type = exact_io::part_type(s.width, static_cast<int>(k));
     part->type.array_dims = v->declared_type.array_dims;
     part->declared_type = part->type;
-    if (varying) part->interp = ir::Interp::Flat;  // integer varyings must be flat (GLSL)
+    if (varying && !v->patch) part->interp = ir::Interp::Flat;  // integer varyings must be flat (GLSL; patch ones take no qualifier)
     // One location per element and part: a dvec3/dvec4's two parts fill the two locations it had
     // (SPIR-V's count), unless another declaration holds the second (OpenGL counts a vertex
     // input's dvec3 as one location): then the next free one past every declaration.
@@ -420,13 +486,20 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
     return false;
   }
   std::vector<ir::StmtPtr> copy_in, copy_out;
+  if (!tessellation_control_outputs_are_own(module, splits, word_splits, ctx)) return false;
+  auto elements = [&](const ExprPtr& whole, bool out, std::vector<ExprPtr>& into) {
+    // A tessellation control shader writes only its own vertex of a per-vertex output.
+    if (out && module.stage == ir::StageKind::TessControl && whole->type.is_array())
+      return into.push_back(index_by_invocation(whole));
+    for_each_element(whole, [&](const ExprPtr& e) { into.push_back(e); });
+  };
   for (const auto& s : splits) {
     bool out = s.storage == ir::Storage::Out;
     ExprPtr whole = sym(s.original), hi = sym(s.hi), lo = sym(s.lo);
     std::vector<ExprPtr> elems_df, elems_hi, elems_lo;
-    for_each_element(whole, [&](const ExprPtr& e) { elems_df.push_back(e); });
-    for_each_element(hi, [&](const ExprPtr& e) { elems_hi.push_back(e); });
-    for_each_element(lo, [&](const ExprPtr& e) { elems_lo.push_back(e); });
+    elements(whole, out, elems_df);
+    elements(hi, out, elems_hi);
+    elements(lo, out, elems_lo);
     for (size_t k = 0; k < elems_df.size(); ++k) {
       const ir::Type& ft = elems_hi[k]->type;
       if (out) {
@@ -441,10 +514,10 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   }
   for (const auto& s : word_splits) {
     std::vector<ExprPtr> elems_df;
-    for_each_element(sym(s.original), [&](const ExprPtr& e) { elems_df.push_back(e); });
+    const bool out = s.storage == ir::Storage::Out;
+    elements(sym(s.original), out, elems_df);
     std::vector<std::vector<ExprPtr>> elems_parts(s.parts.size());
-    for (size_t k = 0; k < s.parts.size(); ++k)
-      for_each_element(sym(s.parts[k]), [&](const ExprPtr& e) { elems_parts[k].push_back(e); });
+    for (size_t k = 0; k < s.parts.size(); ++k) elements(sym(s.parts[k]), out, elems_parts[k]);
     for (size_t i = 0; i < elems_df.size(); ++i) {
       if (s.storage == ir::Storage::Out) {
         for (size_t k = 0; k < s.parts.size(); ++k)
@@ -464,6 +537,10 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   }
   auto& body = (*main)->body->body;
   body.insert(body.begin(), copy_in.begin(), copy_in.end());
+  if (module.stage == ir::StageKind::Geometry) {
+    for (const auto& f : module.functions) add_copy_out_before_emits(f->body, copy_out);
+    return !ctx.failed;
+  }
   add_copy_out((*main)->body, copy_out);
   if (body.empty() || body.back()->kind != ir::Stmt::Kind::Return)
     body.insert(body.end(), copy_out.begin(), copy_out.end());

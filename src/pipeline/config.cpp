@@ -69,9 +69,14 @@ std::optional<Config> resolve_config(const Options& o, std::vector<Diagnostic>& 
   const std::string target_name = c.facts->name;
   if (!o.stage) return refuse("the shader stage is unknown: name the file .vert/.frag/.comp or pass -S");
   c.stage = *o.stage;
-  if (c.stage == Stage::Compute && !c.facts->compute)
-    return refuse("target " + target_name +
-                  " has no compute shaders (they need ES 3.10 or desktop 4.30); use --target es310, es320 or glsl450");
+  if (!target::has_stage(target::facts(o.target), c.stage)) {
+    std::string have;
+    for (Target t : target::all_targets())
+      if (target::has_stage(target::facts(t), c.stage)) have += std::string(have.empty() ? "" : ", ") + target::facts(t).name;
+    return refuse("target " + std::string(target::facts(o.target).name) + " has no " + target::stage_noun(c.stage) +
+                  " shaders; the targets that have them: " + have);
+  }
+  if (const char* extension = target::stage_extension(*c.facts, c.stage)) c.stage_extensions.push_back(extension);
   c.requested_mode = o.mode;
   c.mode = o.mode;
   // df64-int is df64 with the integer error-free transformations of rules/int.glsl: the passes

@@ -32,6 +32,7 @@ struct Config {
   bool integer_eft = false;          // df64-int: rules/int.glsl's error-free transformations
   rules::GuardStyle guard = rules::GuardStyle::Uniform;
   std::vector<std::string> guard_extensions;  // #extension lines the guard needs (es310 precise)
+  std::vector<std::string> stage_extensions;  // #extension lines the stage needs (es310 geometry)
   std::string guard_uniform = "df_guard";
   bool optimize = true;
   // What the passes read of the user's options.

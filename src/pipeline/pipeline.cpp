@@ -67,7 +67,9 @@ bool link_runtime_pass(State& s) {
 
 bool print(State& s) {
   s.print_options.target = s.config.target;
-  s.print_options.extensions = s.config.guard_extensions;
+  s.print_options.extensions = s.config.stage_extensions;
+  s.print_options.extensions.insert(s.print_options.extensions.end(), s.config.guard_extensions.begin(),
+                                    s.config.guard_extensions.end());
   for (const auto& e : s.ctx.extensions)
     if (std::find(s.print_options.extensions.begin(), s.print_options.extensions.end(), e) == s.print_options.extensions.end())
       s.print_options.extensions.push_back(e);

@@ -42,7 +42,7 @@ bool report_builtins_the_target_lacks(const std::string& log,
       if (use == first_use.end() || !reported.insert(name).second) continue;
       const std::string target(to_string(options.target));
       const std::string& written = use->second.source_name;
-      const char* stage = *options.stage == Stage::Vertex ? "vertex" : *options.stage == Stage::Fragment ? "fragment" : "compute";
+      const char* stage = target::stage_noun(*options.stage);
       const bool variable = name.rfind("gl_", 0) == 0;
       std::string message = "the built-in '" + written + "'" + (written != name ? " (" + name + " there)" : "") +
                             (variable ? " does not exist in " : " has no such overload in ") + target + " " + stage +

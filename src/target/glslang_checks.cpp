@@ -3,6 +3,8 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include "frontend/glslang_stage.hpp"
+
 #include <map>
 #include <mutex>
 
@@ -13,7 +15,7 @@ namespace doublet::target {
 
 std::string validate(std::string_view text, Stage stage, Target target) {
   frontend::ensure_glslang_initialized();
-  EShLanguage lang = stage == Stage::Vertex ? EShLangVertex : stage == Stage::Fragment ? EShLangFragment : EShLangCompute;
+  EShLanguage lang = frontend::glslang_stage(stage);
   glslang::TShader shader(lang);
   std::string source(text);
   const char* strings[] = {source.c_str()};

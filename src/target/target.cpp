@@ -37,4 +37,34 @@ std::vector<Target> all_targets(bool with_wgsl) {
 
 std::string version_directive(Target target) { return facts(target).version_line; }
 
+const char* stage_noun(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return "vertex";
+    case Stage::Fragment: return "fragment";
+    case Stage::Compute: return "compute";
+    case Stage::Geometry: return "geometry";
+    case Stage::TessControl: return "tessellation control";
+    case Stage::TessEvaluation: return "tessellation evaluation";
+  }
+  return "vertex";
+}
+
+const char* stage_extension(const Facts& t, Stage stage) {
+  if (t.id != Target::Es310) return nullptr;
+  if (stage == Stage::Geometry) return "GL_EXT_geometry_shader";
+  if (stage == Stage::TessControl || stage == Stage::TessEvaluation) return "GL_EXT_tessellation_shader";
+  return nullptr;
+}
+
+bool has_stage(const Facts& t, Stage stage) {
+  if (stage_extension(t, stage)) return true;
+  switch (stage) {
+    case Stage::Compute: return t.compute;
+    case Stage::Geometry: return t.geometry;
+    case Stage::TessControl:
+    case Stage::TessEvaluation: return t.tessellation;
+    default: return true;
+  }
+}
+
 }  // namespace doublet::target

@@ -41,6 +41,15 @@ struct Facts {
   std::vector<std::string> reserved_prefixes;  // identifiers the target forbids
 };
 
+// "vertex", "fragment", "compute", "geometry", "tessellation control", "tessellation evaluation".
+const char* stage_noun(Stage stage);
+// The extension ES 3.10 needs for geometry (GL_EXT_geometry_shader) and tessellation
+// (GL_EXT_tessellation_shader) shaders; null where the stage needs none or the target lacks it.
+const char* stage_extension(const Facts& t, Stage stage);
+// Whether `t` has the stage's shaders at all (compute, geometry, tessellation are not everywhere),
+// natively or through stage_extension.
+bool has_stage(const Facts& t, Stage stage);
+
 // The row of `t`.
 const Facts& facts(Target t);
 // Every row, es100 first; `with_wgsl` false leaves out the WGSL row (the GLSL targets).

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "frontend/text_scan.hpp"
+#include "target/target.hpp"
 #include "verify/compute_harness.hpp"
 #include "verify/webgpu_jobs.hpp"
 #include "verify/graphics_harness.hpp"
@@ -408,6 +409,12 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
     case Stage::Compute: run_compute_stage(native, lowered, wgsl ? &*wgsl : nullptr, options, &report); break;
     case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;
     case Stage::Fragment: run_graphics_stage(runner::GraphicsStage::Fragment, native, lowered, options, &report); break;
+    case Stage::Geometry:
+    case Stage::TessControl:
+    case Stage::TessEvaluation:
+      report.input_error = std::string("doublet verify does not run ") + target::stage_noun(*options.lower.stage) +
+                           " shaders yet: `doublet lower` lowers them; verify runs vertex, fragment and compute shaders";
+      return report;
   }
   if (options.judge_against_float) judge_against_float(source, options, &report);
   // Mode exact promises native fp64's bits: any output differing is a failure (NaN payloads apart).

@@ -123,9 +123,9 @@ TEST_F(Cli, UnknownTargetIsUsageError) {  // [core] needs the real parse_target
 
 TEST_F(Cli, UnknownStageIsUsageError) {  // [core] needs the real parse_stage
   put("a.vert", kGoodVert);
-  auto r = run({"lower", "a.vert", "-S", "geom"});
+  auto r = run({"lower", "a.vert", "-S", "mesh"});
   EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_NE(r.err.find("geom"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("mesh"), std::string::npos) << r.err;
 }
 
 TEST_F(Cli, StdinWithoutStageIsUsageError) {

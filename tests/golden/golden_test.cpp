@@ -1,6 +1,6 @@
 // Golden-file tests of doublet::lower.
 //
-//   cases/<name>.<vert|frag|comp>          input; an optional first line
+//   cases/<name>.<vert|frag|comp|geom|tesc|tese>  input; an optional first line
 //                                          `// targets: es100 es300 ...` picks the
 //                                          targets (default: es300 es310 es320 glsl450 webgl2).
 //                                          That line is removed before lowering: GLSL ES
@@ -80,6 +80,9 @@ const std::map<std::string, StageInfo> kStages = {
     {"vert", {doublet::Stage::Vertex, EShLangVertex}},
     {"frag", {doublet::Stage::Fragment, EShLangFragment}},
     {"comp", {doublet::Stage::Compute, EShLangCompute}},
+    {"geom", {doublet::Stage::Geometry, EShLangGeometry}},
+    {"tesc", {doublet::Stage::TessControl, EShLangTessControl}},
+    {"tese", {doublet::Stage::TessEvaluation, EShLangTessEvaluation}},
 };
 
 struct GoldenParam {

@@ -57,6 +57,9 @@ std::optional<Stage> stage_of(const std::string& name) {
   if (ends(".vert")) return Stage::Vertex;
   if (ends(".frag")) return Stage::Fragment;
   if (ends(".comp")) return Stage::Compute;
+  if (ends(".geom")) return Stage::Geometry;
+  if (ends(".tesc")) return Stage::TessControl;
+  if (ends(".tese")) return Stage::TessEvaluation;
   return std::nullopt;
 }
 
@@ -68,7 +71,7 @@ std::string read_file(const fs::path& p) {
 }
 
 // The shaders of Test/ (not its subfolders, which hold #include targets) doublet has a stage for;
-// `others` counts the rest (geometry, tessellation, mesh, ray tracing: outside doublet's scope).
+// `others` counts the rest (mesh, task, ray tracing: outside doublet's scope).
 std::vector<std::string> shaders(int* others) {
   std::vector<std::string> names;
   *others = 0;
