@@ -44,18 +44,24 @@ std::string pack_inputs(const GraphicsInterface& iface, const GraphicsJob& job, 
 }
 
 std::vector<uint8_t> blank_outputs(const GraphicsInterface& iface, uint32_t count) {
-  return std::vector<uint8_t>(std::max<size_t>(size_t{count} * iface.output_stride, 16), 0xff);
+  return std::vector<uint8_t>(std::max<size_t>(size_t{count} * iface.records_per_sample * iface.output_stride, 16), 0xff);
 }
 
 void unpack_outputs(const GraphicsInterface& iface, uint32_t count, const uint8_t* bytes, GraphicsResult* out) {
   for (const StageVariable& v : iface.outputs) {
     std::vector<double>& values = out->outputs[v.name];
-    values.resize(size_t{count} * static_cast<size_t>(v.components));
+    values.resize(size_t{count} * iface.records_per_sample * static_cast<size_t>(v.components));
     for (size_t k = 0; k < values.size(); ++k) {
       const size_t sample = k / static_cast<size_t>(v.components), c = k % static_cast<size_t>(v.components);
       values[k] = load(bytes + sample * iface.output_stride + v.offset + c * scalar_bytes(v), v.scalar);
     }
   }
+}
+
+std::vector<std::pair<Stage, std::string>> stages_of(const WrappedProgram& w) {
+  std::vector<std::pair<Stage, std::string>> stages = {{Stage::Vertex, w.vertex}, {Stage::Fragment, w.fragment}};
+  if (!w.geometry.empty()) stages.emplace_back(Stage::Geometry, w.geometry);
+  return stages;
 }
 
 }  // namespace detail
@@ -68,8 +74,7 @@ bool reflect_graphics(GraphicsStage stage, const std::string& glsl, GraphicsInte
   }
   detail::SpirvProgram program;
   ShaderInterface iface;
-  if (!detail::compile_glsl_stages({{detail::Stage::Vertex, wrapped.vertex}, {detail::Stage::Fragment, wrapped.fragment}},
-                                   &program, error, &iface))
+  if (!detail::compile_glsl_stages(detail::stages_of(wrapped), &program, error, &iface))
     return false;
   if (iface.blocks.size() > (wrapped.iface.inputs.empty() ? 1u : 2u)) {
     *error = "the shader declares storage buffers of its own (not fed by vertex/fragment runs yet)";
@@ -117,6 +122,10 @@ std::vector<GraphicsResult> run_graphics_batch(Backend backend, const std::vecto
     failed.error = e;
     return {failed};
   }
+  if (backend != Backend::Vulkan && !wrapped.geometry.empty()) {
+    failed.error = "geometry jobs run on Vulkan only";
+    return {failed};
+  }
   if (backend == Backend::Gles) {
     if (!wrapped.es) {
       failed.error = "GLES runs GLSL ES text only (the shader is desktop #version 450)";
@@ -125,8 +134,7 @@ std::vector<GraphicsResult> run_graphics_batch(Backend backend, const std::vecto
     return detail::gles_run_graphics(wrapped, jobs);
   }
   detail::SpirvProgram program;
-  if (!detail::compile_glsl_stages({{detail::Stage::Vertex, wrapped.vertex}, {detail::Stage::Fragment, wrapped.fragment}},
-                                   &program, &failed.error, nullptr, jobs[0].strict_fp64))
+  if (!detail::compile_glsl_stages(detail::stages_of(wrapped), &program, &failed.error, nullptr, jobs[0].strict_fp64))
     return {failed};
   return detail::vulkan_run_graphics(wrapped, program, jobs);
 }

@@ -14,7 +14,8 @@ namespace {
 const std::regex& declaration() {
   static const std::regex re(
       R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*)"
-      R"((in|out|attribute|varying)\s+((?:highp|mediump|lowp)\s+)?([A-Za-z_]\w*)\s+([A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*)\s*;\s*(?://.*)?$)");
+      R"((in|out|attribute|varying)\s+((?:highp|mediump|lowp)\s+)?([A-Za-z_]\w*)\s+([A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*)\s*)"
+      R"((\[\s*\d*\s*\])?\s*;\s*(?://.*)?$)");
   return re;
 }
 
@@ -163,6 +164,38 @@ std::string struct_decl(const char* name, const std::vector<StageVariable>& vars
   return s + " };\n";
 }
 
+// Geometry: vertices per input primitive, from `layout(triangles) in;` (0 when not declared).
+uint32_t geometry_input_vertices(const std::string& glsl) {
+  static const std::regex re(R"(layout\s*\(\s*(points|lines_adjacency|lines|triangles_adjacency|triangles)\b[^)]*\)\s*in\s*;)");
+  std::smatch m;
+  if (!std::regex_search(glsl, m, re)) return 0;
+  static const std::pair<const char*, uint32_t> kVertices[] = {
+      {"points", 1}, {"lines", 2}, {"lines_adjacency", 4}, {"triangles", 3}, {"triangles_adjacency", 6}};
+  for (const auto& [name, n] : kVertices)
+    if (m[1] == name) return n;
+  return 0;
+}
+
+// Geometry: `max_vertices = N` of the output layout (0 when not declared).
+uint32_t geometry_max_vertices(const std::string& glsl) {
+  static const std::regex re(R"(max_vertices\s*=\s*(\d+))");
+  std::smatch m;
+  return std::regex_search(glsl, m, re) ? static_cast<uint32_t>(std::stoul(m[1])) : 0;
+}
+
+// Geometry: the built-ins the wrapped text cannot use as written. gl_in becomes a global array
+// loaded from the input buffer; EmitVertex() stores the outputs (doublet_emit, in the wrapper's
+// main part) and EndPrimitive() does nothing (no primitive is rasterized).
+std::string rename_geometry_builtins(const std::string& line) {
+  static const std::pair<std::regex, const char*> kRenames[] = {
+      {std::regex(R"(\bgl_in\b)"), "doublet_gl_in"},
+      {std::regex(R"(\bEmitVertex\s*\(\s*\))"), "doublet_emit()"},
+      {std::regex(R"(\bEndPrimitive\s*\(\s*\))"), "doublet_end_primitive()"}};
+  std::string out = line;
+  for (const auto& [re, replacement] : kRenames) out = std::regex_replace(out, re, replacement);
+  return out;
+}
+
 // gl_VertexIndex under Vulkan (glslang defines VULKAN), gl_VertexID under GL.
 constexpr const char* kVertexIndexMacro =
     "#ifdef VULKAN\n#define doublet_vertex_index gl_VertexIndex\n#else\n#define doublet_vertex_index gl_VertexID\n#endif\n";
@@ -178,10 +211,32 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
   Scope scope;
   std::string legacy_outputs;  // declarations of the renamed fragment outputs, after the #version line
   std::vector<std::string> block_lines;  // an interface block being read, from its opening line
+  const bool geometry = stage == GraphicsStage::Geometry;
+  static const std::regex reads_gl_in(R"(\bgl_in\b)");
+  // Geometry: declarations the user's text needs, placed before its first line of code (after the
+  // #version and #extension lines).
+  std::string geometry_preamble;
+  if (geometry) {
+    out->iface.input_vertices = geometry_input_vertices(glsl);
+    out->iface.records_per_sample = geometry_max_vertices(glsl);
+    if (out->iface.input_vertices == 0 || out->iface.records_per_sample == 0)
+      return "a geometry shader needs its input primitive (layout(triangles) in;) and max_vertices declared";
+    geometry_preamble = "void doublet_emit();\nvoid doublet_end_primitive();\n";
+    if (std::regex_search(glsl, reads_gl_in))
+      geometry_preamble += "struct doublet_PerVertex { vec4 gl_Position; };\ndoublet_PerVertex doublet_gl_in[" +
+                           std::to_string(out->iface.input_vertices) + "];\n";
+  }
   while (std::getline(in, line)) {
     ++line_number;
     const bool global = scope.global();
     scope.advance(line);
+    if (!geometry_preamble.empty() && !version.empty() && global) {
+      const size_t first = line.find_first_not_of(" \t");
+      if (first != std::string::npos && line[first] != '#' && line.compare(first, 2, "//") != 0) {
+        body += geometry_preamble;
+        geometry_preamble.clear();
+      }
+    }
     std::smatch m;
     if (!block_lines.empty()) {
       block_lines.push_back(line);
@@ -219,24 +274,42 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
                std::string(m[3]) + "' (float/double/int/uint scalars and vectors)";
       const bool is_input = m[1] == "in" || m[1] == "attribute" || (m[1] == "varying" && stage == GraphicsStage::Fragment);
       std::string names = m[4];
+      // A geometry shader's per-vertex inputs are arrays, one element per vertex of the primitive:
+      // each element is an input of its own.
+      const bool per_vertex = geometry && is_input && m[5].matched;
+      if (m[5].matched && !per_vertex)
+        return "line " + std::to_string(line_number) + ": unsupported in/out declaration (arrays only as a geometry "
+               "shader's per-vertex inputs): " + line;
+      if (per_vertex && names.find(',') != std::string::npos)
+        return "line " + std::to_string(line_number) + ": one per-vertex input array per declaration: " + line;
       std::replace(names.begin(), names.end(), ',', ' ');
       std::istringstream split(names);
       for (std::string name; split >> name;) {
-        v.name = name;
-        (is_input ? out->iface.inputs : out->iface.outputs).push_back(v);
+        for (uint32_t k = 0; k < (per_vertex ? out->iface.input_vertices : 1); ++k) {
+          v.name = per_vertex ? name + "[" + std::to_string(k) + "]" : name;
+          (is_input ? out->iface.inputs : out->iface.outputs).push_back(v);
+        }
       }
-      body += std::string(m[2]) + std::string(m[3]) + " " + std::string(m[4]) + ";  // was: " + line + "\n";
+      body += std::string(m[2]) + std::string(m[3]) + " " + std::string(m[4]) +
+              (per_vertex ? "[" + std::to_string(out->iface.input_vertices) + "]" : "") + ";  // was: " + line + "\n";
       continue;
     }
     if (global && std::regex_search(line, looks_like_declaration()))
       return "line " + std::to_string(line_number) + ": unsupported in/out declaration (one per line, no arrays, " +
              "blocks or structs): " + line;
-    body += rename_legacy_builtins(line) + "\n";
+    body += (geometry ? rename_geometry_builtins(line) : rename_legacy_builtins(line)) + "\n";
   }
   if (!block_lines.empty()) return "an interface block does not end: " + block_lines.front();
   if (version.empty()) return "the shader has no #version line";
   if (stage == GraphicsStage::Vertex && glsl.find("gl_Position") != std::string::npos)
     out->iface.outputs.push_back(StageVariable{"gl_Position", 'f', 4});
+  if (geometry) {
+    static const std::regex writes_position(R"(\bgl_Position\s*=[^=])");
+    if (std::regex_search(glsl, reads_gl_in))
+      for (uint32_t k = 0; k < out->iface.input_vertices; ++k)
+        out->iface.inputs.push_back(StageVariable{"gl_in[" + std::to_string(k) + "].gl_Position", 'f', 4});
+    if (std::regex_search(glsl, writes_position)) out->iface.outputs.push_back(StageVariable{"gl_Position", 'f', 4});
+  }
   if (stage == GraphicsStage::Fragment) {
     if (std::regex_search(glsl, std::regex(R"(\bgl_FragColor\b)"))) {
       out->iface.outputs.push_back(StageVariable{"gl_FragColor", 'f', 4});
@@ -267,18 +340,34 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
          ") readonly buffer doublet_Inputs { doublet_In doublet_in[]; };\n";
   w += struct_decl("doublet_Out", out->iface.outputs) + "layout(std430, binding = " + std::to_string(kOutputBinding) +
        ") writeonly buffer doublet_Outputs { doublet_Out doublet_out[]; };\n";
-  w += "void main() {\n  int doublet_i = ";
-  w += stage == GraphicsStage::Vertex ? "doublet_vertex_index;\n"
-                                      : "int(gl_FragCoord.y) * " + std::to_string(kGridWidth) + " + int(gl_FragCoord.x);\n";
-  for (size_t i = 0; i < out->iface.inputs.size(); ++i)
-    w += "  " + out->iface.inputs[i].name + " = doublet_in[doublet_i].m" + std::to_string(i) + ";\n";
-  w += "  doublet_user_main();\n";
+  std::string stores;  // the outputs into their record
   for (size_t i = 0; i < out->iface.outputs.size(); ++i)
-    w += "  doublet_out[doublet_i].m" + std::to_string(i) + " = " + rename_legacy_builtins(out->iface.outputs[i].name) + ";\n";
+    stores += "  doublet_out[doublet_record].m" + std::to_string(i) + " = " + rename_legacy_builtins(out->iface.outputs[i].name) + ";\n";
+  if (geometry) {
+    const std::string records = std::to_string(out->iface.records_per_sample);
+    w += "int doublet_i;\nint doublet_emitted;\nvoid doublet_end_primitive() {}\n"
+         "void doublet_emit() {\n  if (doublet_emitted >= " + records + ") return;\n"
+         "  int doublet_record = doublet_i * " + records + " + doublet_emitted;\n" + stores +
+         "  doublet_emitted += 1;\n}\n";
+  }
+  w += "void main() {\n  ";
+  if (!geometry) w += "int ";
+  w += stage == GraphicsStage::Vertex     ? "doublet_i = doublet_vertex_index;\n"
+       : stage == GraphicsStage::Geometry ? "doublet_i = gl_PrimitiveIDIn;\n  doublet_emitted = 0;\n"
+                                          : "doublet_i = int(gl_FragCoord.y) * " + std::to_string(kGridWidth) + " + int(gl_FragCoord.x);\n";
+  for (size_t i = 0; i < out->iface.inputs.size(); ++i)
+    w += "  " + (geometry ? rename_geometry_builtins(out->iface.inputs[i].name) : out->iface.inputs[i].name) +
+         " = doublet_in[doublet_i].m" + std::to_string(i) + ";\n";
+  w += "  doublet_user_main();\n";
+  if (!geometry) w += "  int doublet_record = doublet_i;\n" + stores;
   w += "}\n";
 
   const std::string user = body + w;
-  if (stage == GraphicsStage::Vertex) {
+  if (geometry) {
+    out->geometry = user;
+    out->vertex = version + "\nvoid main() { gl_Position = vec4(0.0); }\n";  // the inputs come from the buffer
+    out->fragment = version + "\nvoid main() {}\n";  // never runs: rasterizer discard
+  } else if (stage == GraphicsStage::Vertex) {
     out->vertex = user;
     out->fragment = version + "\nvoid main() {}\n";  // never runs: rasterizer discard
   } else {

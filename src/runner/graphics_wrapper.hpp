@@ -22,6 +22,7 @@ inline constexpr uint32_t kOutputBinding = 1;
 
 struct WrappedProgram {
   std::string vertex, fragment;  // full texts of both stages
+  std::string geometry;          // geometry jobs: the user's stage (vertex and fragment are generated)
   GraphicsInterface iface;       // inputs/outputs with std430 offsets and strides (no uniforms yet)
   bool es = true;                // GLSL ES text (else desktop #version 450)
   // The user's rewritten stage before the storage-buffer main() is appended (its #version line,
@@ -43,6 +44,9 @@ std::string pack_inputs(const GraphicsInterface& iface, const GraphicsJob& job, 
 std::vector<uint8_t> blank_outputs(const GraphicsInterface& iface, uint32_t count);
 // Output records → per-variable values (see GraphicsResult::outputs).
 void unpack_outputs(const GraphicsInterface& iface, uint32_t count, const uint8_t* bytes, GraphicsResult* out);
+
+// The stages to compile: vertex, fragment, and the geometry stage of a geometry job.
+std::vector<std::pair<Stage, std::string>> stages_of(const WrappedProgram& w);
 
 // The backends (gles_graphics.cpp, vulkan_graphics.cpp): every job drawn with one program.
 std::vector<GraphicsResult> gles_run_graphics(const WrappedProgram& program, const std::vector<GraphicsJob>& jobs);

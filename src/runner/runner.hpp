@@ -126,7 +126,12 @@ bool reflect_compute(const std::string& glsl, ShaderInterface* out, std::string*
 //             attachments; a generated vertex shader places them.
 // The text may be "#version 450" (doubles; Vulkan only), "#version 310 es"/"320 es", or
 // "#version 300 es" (run as 310 es: the storage buffers need it; the language is a superset).
-enum class GraphicsStage { Vertex, Fragment };
+//   Geometry: `count` primitives of the shader's input type (points, lines, triangles, with or
+//             without adjacency), one per sample, with rasterizer discard; each per-vertex input
+//             array element is an input of its own ("world[1]", "gl_in[2].gl_Position"), and each
+//             EmitVertex() stores the outputs as one of the sample's max_vertices output records
+//             (GraphicsInterface::records_per_sample; a record never emitted reads as NaN). Vulkan only.
+enum class GraphicsStage { Vertex, Fragment, Geometry };
 
 // One wrapped `in` or `out` variable (or gl_Position) of scalar/vector numeric type.
 struct StageVariable {
@@ -139,6 +144,8 @@ struct StageVariable {
 struct GraphicsInterface {
   std::vector<StageVariable> inputs, outputs;  // declaration order; outputs end with gl_Position
   uint32_t input_stride = 0, output_stride = 0;  // bytes per sample record (std430 struct)
+  uint32_t records_per_sample = 1;  // output records per sample: a geometry shader's max_vertices
+  uint32_t input_vertices = 1;      // geometry: vertices per input primitive (1, 2, 3, 4 or 6)
   std::vector<ShaderInterface::Uniform> uniforms;  // active loose uniforms (glslang reflection)
   std::vector<ShaderInterface::UniformBlock> uniform_blocks;  // named uniform blocks (GraphicsJob::uniform_blocks)
   std::vector<std::string> samplers;  // sampler uniforms, each bound to test_texture(its kind)
@@ -178,8 +185,8 @@ struct GraphicsResult {
   bool ok = false;
   std::string error;
   std::string device;
-  // Per output variable (and "gl_Position"): count × components values, each exactly the bits the
-  // shader stored (a float widened to double). Samples the stage never wrote read back as NaN.
+  // Per output variable (and "gl_Position"): count × records_per_sample × components values, each
+  // exactly the bits the shader stored (a float widened to double). Records never written read NaN.
   std::map<std::string, std::vector<double>> outputs;
 };
 

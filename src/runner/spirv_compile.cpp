@@ -283,7 +283,10 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
   std::lock_guard<std::mutex> lock(glslang_mutex());
   const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   auto language = [](Stage s) {
-    return s == Stage::Vertex ? EShLangVertex : s == Stage::Fragment ? EShLangFragment : EShLangCompute;
+    return s == Stage::Vertex     ? EShLangVertex
+           : s == Stage::Fragment ? EShLangFragment
+           : s == Stage::Geometry ? EShLangGeometry
+                                  : EShLangCompute;
   };
 
   std::vector<std::unique_ptr<glslang::TShader>> shaders;
@@ -292,7 +295,10 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
     const EShLanguage lang = language(stage);
     auto shader = std::make_unique<glslang::TShader>(lang);
     const char* text = glsl.c_str();
-    const char* name = stage == Stage::Vertex ? "job.vert" : stage == Stage::Fragment ? "job.frag" : "job.comp";
+    const char* name = stage == Stage::Vertex     ? "job.vert"
+                       : stage == Stage::Fragment ? "job.frag"
+                       : stage == Stage::Geometry ? "job.geom"
+                                                  : "job.comp";
     shader->setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
     shader->setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
     shader->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
@@ -364,7 +370,9 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
   options.disableOptimizer = true;  // the driver's optimizer is what we want to observe, not spirv-opt's
   options.validate = false;         // validated below with a readable message
   for (size_t i = 0; i < stages.size(); ++i) {
-    std::vector<uint32_t>& words = i == 0 ? result.words : result.fragment_words;
+    std::vector<uint32_t>& words = stages[i].first == Stage::Geometry ? result.geometry_words
+                                   : i == 0                          ? result.words
+                                                                     : result.fragment_words;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(*program.getIntermediate(language(stages[i].first)), words, &logger, &options);
     if (words.empty()) {
@@ -377,7 +385,7 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
       return false;
     }
   }
-  for (const std::vector<uint32_t>* words : {&result.words, &result.fragment_words}) {
+  for (const std::vector<uint32_t>* words : {&result.words, &result.fragment_words, &result.geometry_words}) {
     const std::map<std::string, uint32_t> offsets = block_member_offsets(*words, kGlobalBlockName);
     if (offsets.empty()) continue;
     for (auto& [name, slot] : result.uniforms)

@@ -23,6 +23,7 @@ struct VulkanDevice {
   VkPhysicalDeviceLimits limits{};
   bool float64 = false;
   bool graphics = false;      // the queue draws as well as dispatches
+  bool geometry = false;  // geometryShader enabled
   bool stage_stores = false;  // vertexPipelineStoresAndAtomics and fragmentStoresAndAtomics enabled
   std::string name;
   std::string error;  // non-empty: this backend is unusable, and why

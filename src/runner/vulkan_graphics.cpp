@@ -12,7 +12,8 @@
 namespace doublet::runner::detail {
 namespace {
 
-constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr VkShaderStageFlags kStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 
 struct GraphicsPipeline {
   VkDescriptorSetLayout layouts[2] = {};
@@ -96,23 +97,36 @@ std::string make_render_target(VulkanDevice& d, JobObjects& objs, GraphicsPipeli
   return {};
 }
 
-std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, GraphicsStage stage, JobObjects& objs,
-                          GraphicsPipeline* p) {
+std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, GraphicsStage stage, uint32_t input_vertices,
+                          JobObjects& objs, GraphicsPipeline* p) {
   if (std::string e = make_layouts(d, program, objs, p); !e.empty()) return e;
   if (std::string e = make_render_target(d, objs, p); !e.empty()) return e;
-  VkShaderModule modules[2];
+  const bool geometry = stage == GraphicsStage::Geometry;
+  VkShaderModule modules[3];
   if (std::string e = make_module(d, objs, program.words, &modules[0]); !e.empty()) return e;
   if (std::string e = make_module(d, objs, program.fragment_words, &modules[1]); !e.empty()) return e;
-  VkPipelineShaderStageCreateInfo stages[2];
-  for (int i = 0; i < 2; ++i) {
+  if (geometry)
+    if (std::string e = make_module(d, objs, program.geometry_words, &modules[2]); !e.empty()) return e;
+  VkPipelineShaderStageCreateInfo stages[3];
+  const VkShaderStageFlagBits kinds[3] = {VK_SHADER_STAGE_VERTEX_BIT, VK_SHADER_STAGE_FRAGMENT_BIT,
+                                          VK_SHADER_STAGE_GEOMETRY_BIT};
+  for (int i = 0; i < 3; ++i) {
     stages[i] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    stages[i].stage = i == 0 ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[i].stage = kinds[i];
     stages[i].module = modules[i];
     stages[i].pName = "main";
   }
   VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+  // A geometry job draws primitives of the shader's input type, one per sample.
+  switch (geometry ? input_vertices : 1) {
+    case 2: assembly.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST; break;
+    case 3: assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST; break;
+    case 4: assembly.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST_WITH_ADJACENCY; break;
+    case 6: assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY; break;
+    default: break;
+  }
   const VkViewport viewport{0, 0, static_cast<float>(kGridWidth), static_cast<float>(kGridHeight), 0, 1};
   const VkRect2D scissor{{0, 0}, {kGridWidth, kGridHeight}};
   VkPipelineViewportStateCreateInfo viewport_state{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
@@ -121,7 +135,7 @@ std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, Graphics
   viewport_state.scissorCount = 1;
   viewport_state.pScissors = &scissor;
   VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.rasterizerDiscardEnable = stage == GraphicsStage::Vertex ? VK_TRUE : VK_FALSE;
+  raster.rasterizerDiscardEnable = stage == GraphicsStage::Fragment ? VK_FALSE : VK_TRUE;
   raster.polygonMode = VK_POLYGON_MODE_FILL;
   raster.cullMode = VK_CULL_MODE_NONE;
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
@@ -129,7 +143,7 @@ std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, Graphics
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkGraphicsPipelineCreateInfo gpci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  gpci.stageCount = 2;
+  gpci.stageCount = geometry ? 3 : 2;
   gpci.pStages = stages;
   gpci.pVertexInputState = &vertex_input;
   gpci.pInputAssemblyState = &assembly;
@@ -238,13 +252,14 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
   vkCmdBeginRenderPass(cmd, &rpbi, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, 0, 2, sets, 0, nullptr);
-  vkCmdDraw(cmd, count, 1, 0, 0);
+  vkCmdDraw(cmd, count * w.iface.input_vertices, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
   // Make the stages' buffer stores visible to the host mapping we read back from.
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT |
+                                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                        VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
   if (std::string error = submit_and_wait(d, objs, cmd); !error.empty()) return error;
   unpack_outputs(w.iface, count, static_cast<const uint8_t*>(outputs.mapped), result);
@@ -267,12 +282,15 @@ std::vector<GraphicsResult> vulkan_run_graphics(const WrappedProgram& w, const S
   if (!d.graphics || !d.stage_stores)
     return fail(d.name + " cannot run vertex/fragment jobs (needs a graphics queue, vertexPipelineStoresAndAtomics "
                 "and fragmentStoresAndAtomics)");
-  if ((spirv_uses_float64(program.words) || spirv_uses_float64(program.fragment_words)) && !d.float64)
+  if (jobs[0].stage == GraphicsStage::Geometry && !d.geometry) return fail(d.name + " has no geometryShader feature");
+  if ((spirv_uses_float64(program.words) || spirv_uses_float64(program.fragment_words) ||
+       spirv_uses_float64(program.geometry_words)) && !d.float64)
     return fail("shader uses double (Float64) but " + d.name + " lacks shaderFloat64");
   std::lock_guard<std::mutex> lock(d.mu);
   JobObjects shared(d.device);
   GraphicsPipeline pipeline;
-  if (std::string e = make_pipeline(d, program, jobs[0].stage, shared, &pipeline); !e.empty()) return fail(e);
+  if (std::string e = make_pipeline(d, program, jobs[0].stage, w.iface.input_vertices, shared, &pipeline); !e.empty())
+    return fail(e);
   for (const GraphicsJob& job : jobs) {
     GraphicsResult result;
     result.device = d.name;

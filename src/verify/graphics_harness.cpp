@@ -26,10 +26,19 @@ std::string type_name(char scalar, int components, bool matrix) {
   return "?";
 }
 
-std::vector<std::string> lowered_names(const Manifest& manifest, const std::string& name) {
+// "world[2]" (an element of a geometry shader's per-vertex input array) → {"world", "[2]"}; any
+// other name → {name, ""}.
+std::pair<std::string, std::string> array_element(const std::string& name) {
+  const size_t open = name.find('[');
+  if (open == std::string::npos || name.back() != ']' || name.find('.') != std::string::npos) return {name, ""};
+  return {name.substr(0, open), name.substr(open)};
+}
+
+std::vector<std::string> lowered_names(const Manifest& manifest, const std::string& element_name) {
+  const auto [name, element] = array_element(element_name);
   for (const auto& v : manifest.variables)
-    if (v.name == name && v.split && v.lowered_names.size() == 2) return v.lowered_names;
-  return {name};
+    if (v.name == name && v.split && v.lowered_names.size() == 2) return {v.lowered_names[0] + element, v.lowered_names[1] + element};
+  return {element_name};
 }
 
 bool has_output(const GraphicsInterface& s, const std::string& name) {
@@ -73,12 +82,15 @@ std::vector<std::string> lowered_output_names(const Manifest& manifest, const Gr
 
 // Mode exact: the word variables a double became (manifest) and their uints per sample (the
 // lowered shader's reflection); false when one is missing.
-bool word_variables(const Manifest& manifest, const std::string& name, const std::vector<runner::StageVariable>* stage,
+bool word_variables(const Manifest& manifest, const std::string& element_name,
+                    const std::vector<runner::StageVariable>* stage,
                     const std::vector<runner::ShaderInterface::Uniform>* uniforms, std::vector<std::string>* names,
                     std::vector<int>* components) {
+  const auto [name, element] = array_element(element_name);
   for (const auto& v : manifest.variables) {
     if (v.name != name || v.encoding.empty()) continue;
-    for (const std::string& n : v.lowered_names) {
+    for (const std::string& lowered : v.lowered_names) {
+      const std::string n = lowered + element;
       int c = 0;
       if (stage)
         for (const auto& s : *stage) c = s.name == n ? s.components : c;
@@ -208,6 +220,7 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
   const bool uniforms = std::any_of(inputs_.begin(), inputs_.end(), [](const Variable& v) { return v.is_uniform; });
   per_draw_ = uniforms ? spec.array_length.value_or(kDefaultPerDraw) : static_cast<uint32_t>(std::min<uint64_t>(samples, kMaxPerDraw));
   per_draw_ = std::clamp<uint32_t>(per_draw_, 1, kMaxPerDraw);
+  records_ = native_if.records_per_sample;
   draws_ = (samples + per_draw_ - 1) / per_draw_;
   return {};
 }
@@ -379,7 +392,8 @@ std::vector<OutputStats> GraphicsHarness::compare(const std::vector<runner::Grap
         std::vector<const std::vector<double>*> word_outputs;
         for (const std::string& n : v.word_components.empty() ? std::vector<std::string>{} : v.lowered)
           word_outputs.push_back(&lowered[d].outputs.at(n));
-        for (uint32_t s = 0; s < per_draw_; ++s) {
+        // A geometry sample has one record per vertex it may emit (records_).
+        for (uint32_t s = 0; s < per_draw_ * records_; ++s) {
           const size_t k = s * comps + static_cast<size_t>(c);
           double want = want_v[k], got = word_outputs.empty() ? hi_v[k] : 0;
           if (!word_outputs.empty()) {
@@ -390,11 +404,13 @@ std::vector<OutputStats> GraphicsHarness::compare(const std::vector<runner::Grap
           } else if (v.lowered.size() == 2) {
             got = join(static_cast<float>(got), static_cast<float>(lowered[d].outputs.at(v.lowered[1])[k]));
           }
-          stats.add(got, want, d * per_draw_ + s);
+          stats.add(got, want, d * per_draw_ * records_ + s);
         }
       }
       OutputStats s = stats.finish();
-      s.worst_input = describe_sample(s.worst_sample / per_draw_, static_cast<uint32_t>(s.worst_sample % per_draw_));
+      const uint64_t sample = s.worst_sample / records_;
+      s.worst_input = describe_sample(sample / per_draw_, static_cast<uint32_t>(sample % per_draw_));
+      if (records_ > 1) s.worst_input += " (emitted vertex " + std::to_string(s.worst_sample % records_) + ")";
       s.min_bits_required = v.output.min_bits.value_or(default_min_bits.value_or(-1));
       s.max_abs_err_allowed = v.output.max_abs_error.value_or(-1);
       all.push_back(std::move(s));

@@ -267,6 +267,11 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
     BackendRun run;
     run.backend = backend;
     run.reference_driver = native.back().device;
+    if (backend != runner::Backend::Vulkan && stage == runner::GraphicsStage::Geometry) {
+      report->notes.push_back(std::string(runner::backend_name(backend)) +
+                              " backend skipped: geometry shaders run on Vulkan (lavapipe) only");
+      continue;
+    }
     if (backend == runner::Backend::Gles && !target_is_es(t)) {
       report->notes.push_back("GLES backend skipped: target " + report->target + " is desktop GLSL");
       continue;
@@ -281,10 +286,12 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
       continue;
     }
     // The probe and the lowered draws in one call: on WebGL2 that is one browser start.
-    std::vector<std::vector<runner::GraphicsJob>> batches{{stage_probe_job(backend, stage)}};
+    // A geometry shader's driver is probed in the vertex stage (the probe is a vertex/fragment job).
+    const runner::GraphicsStage probed = stage == runner::GraphicsStage::Geometry ? runner::GraphicsStage::Vertex : stage;
+    std::vector<std::vector<runner::GraphicsJob>> batches{{stage_probe_job(backend, probed)}};
     if (native_ok) batches.push_back(lowered_jobs);
     const std::vector<std::vector<runner::GraphicsResult>> results = runner::run_graphics_batches(backend, batches);
-    run.probe = judge_stage_probe(backend, stage, results[0].back());
+    run.probe = judge_stage_probe(backend, probed, results[0].back());
     if (!native_ok) {
       run.error = "native fp64 run failed: " + native.back().error;
     } else {
@@ -409,11 +416,12 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
     case Stage::Compute: run_compute_stage(native, lowered, wgsl ? &*wgsl : nullptr, options, &report); break;
     case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;
     case Stage::Fragment: run_graphics_stage(runner::GraphicsStage::Fragment, native, lowered, options, &report); break;
-    case Stage::Geometry:
+    case Stage::Geometry: run_graphics_stage(runner::GraphicsStage::Geometry, native, lowered, options, &report); break;
     case Stage::TessControl:
     case Stage::TessEvaluation:
       report.input_error = std::string("doublet verify does not run ") + target::stage_noun(*options.lower.stage) +
-                           " shaders yet: `doublet lower` lowers them; verify runs vertex, fragment and compute shaders";
+                           " shaders yet: `doublet lower` lowers them; verify runs vertex, fragment, geometry and "
+                           "compute shaders";
       return report;
   }
   if (options.judge_against_float) judge_against_float(source, options, &report);

@@ -140,5 +140,50 @@ INSTANTIATE_TEST_SUITE_P(Stages, Graphics,
                                             ::testing::Values(GraphicsStage::Vertex, GraphicsStage::Fragment)),
                          param_name);
 
+// Geometry jobs: one triangle per sample, its per-vertex inputs one input per element; every
+// EmitVertex() stores one output record of the sample, and a record never emitted reads as NaN.
+TEST(GraphicsGeometry, EachEmitVertexStoresOneRecordOfItsSample) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  GraphicsJob job;
+  job.stage = GraphicsStage::Geometry;
+  job.glsl = R"(#version 450
+layout(triangles) in;
+layout(points, max_vertices = 3) out;
+in float a[];
+out float sum;
+out float corner;
+void main() {
+  for (int k = 0; k < 2; ++k) {
+    sum = a[0] + a[1] + a[2];
+    corner = a[k] * 2.0 + gl_in[k].gl_Position.x;
+    gl_Position = vec4(float(k));
+    EmitVertex();
+  }
+  EndPrimitive();
+}
+)";
+  job.count = 2;
+  job.inputs["a[0]"] = {1, 10};
+  job.inputs["a[1]"] = {2, 20};
+  job.inputs["a[2]"] = {4, 40};
+  job.inputs["gl_in[0].gl_Position"] = {0.5, 0, 0, 0, 0.25, 0, 0, 0};
+  job.inputs["gl_in[1].gl_Position"] = {0.125, 0, 0, 0, 8, 0, 0, 0};
+  const GraphicsResult r = run_graphics(Backend::Vulkan, job);
+  ASSERT_TRUE(r.ok) << r.error;
+  const std::vector<double>& sum = r.outputs.at("sum");
+  const std::vector<double>& corner = r.outputs.at("corner");
+  ASSERT_EQ(sum.size(), 6u);  // 2 samples × 3 records
+  EXPECT_EQ(sum[0], 7);
+  EXPECT_EQ(sum[1], 7);
+  EXPECT_TRUE(std::isnan(sum[2]));  // the third vertex is never emitted
+  EXPECT_EQ(sum[3], 70);
+  EXPECT_EQ(corner[0], 2.5);
+  EXPECT_EQ(corner[1], 4.125);
+  EXPECT_EQ(corner[3], 20.25);
+  EXPECT_EQ(corner[4], 48);
+  EXPECT_TRUE(std::isnan(corner[5]));
+  EXPECT_EQ(r.outputs.at("gl_Position")[4], 1);  // record 1 of sample 0: gl_Position = vec4(1)
+}
+
 }  // namespace
 }  // namespace doublet::runner::test
