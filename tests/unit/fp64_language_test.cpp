@@ -152,6 +152,25 @@ TEST(Targets, ConstructsTheTargetLacksAreDiagnosedByConstructAndTarget) {
   expect_error(lower(std::string(kComputeHeader) + "void main() { double x = 1.0lf; }\n", doublet::Stage::Compute,
                      doublet::Target::Es300),
                {"es300", "has no compute shaders", "es310"});
+  const std::string geometry = "#version 450\nlayout(points) in;\nlayout(points, max_vertices = 1) out;\nin double d[];\n"
+                               "flat out double e;\nvoid main() { e = d[0] * 2.0lf; EmitVertex(); }\n";
+  for (doublet::Target t : {doublet::Target::Es300, doublet::Target::Webgl2, doublet::Target::Es100})
+    expect_error(lower(geometry, doublet::Stage::Geometry, t),
+                 {"has no geometry shaders; the targets that have them: es310, es320, glsl330, glsl450"});
+  const std::string control = "#version 450\nlayout(vertices = 3) out;\nin double d[];\n";
+  for (doublet::Target t : {doublet::Target::Es300, doublet::Target::Glsl330})
+    expect_error(lower(control + "out double e[];\nvoid main() { e[gl_InvocationID] = d[0]; }\n", doublet::Stage::TessControl, t),
+                 {"has no tessellation control shaders", "es310, es320, glsl450"});
+  expect_error(lower("#version 450\nlayout(triangles) in;\nin double d[];\nflat out double e;\nvoid main() { e = d[0]; }\n",
+                     doublet::Stage::TessEvaluation, doublet::Target::Es300),
+               {"has no tessellation evaluation shaders"});
+  // A tessellation control shader's double outputs: each invocation stores only its own vertex.
+  expect_error(lower(control + "patch out double e;\nvoid main() { e = d[0]; }\n", doublet::Stage::TessControl,
+                     doublet::Target::Glsl450),
+               {"per-patch double output 'e' of a tessellation control shader"});
+  expect_error(lower(control + "out double e[];\nvoid main() { e[gl_InvocationID] = d[0]; barrier(); gl_TessLevelOuter[0] = float(e[0]); }\n",
+                     doublet::Stage::TessControl, doublet::Target::Es320),
+               {"'e' of a tessellation control shader is used other than as e[gl_InvocationID]"});
 }
 
 TEST(Targets, Es100LimitsAreDiagnosedByConstruct) {
