@@ -61,6 +61,8 @@ void unpack_outputs(const GraphicsInterface& iface, uint32_t count, const uint8_
 std::vector<std::pair<Stage, std::string>> stages_of(const WrappedProgram& w) {
   std::vector<std::pair<Stage, std::string>> stages = {{Stage::Vertex, w.vertex}, {Stage::Fragment, w.fragment}};
   if (!w.geometry.empty()) stages.emplace_back(Stage::Geometry, w.geometry);
+  if (!w.tess_control.empty()) stages.emplace_back(Stage::TessControl, w.tess_control);
+  if (!w.tess_evaluation.empty()) stages.emplace_back(Stage::TessEvaluation, w.tess_evaluation);
   return stages;
 }
 
@@ -122,8 +124,8 @@ std::vector<GraphicsResult> run_graphics_batch(Backend backend, const std::vecto
     failed.error = e;
     return {failed};
   }
-  if (backend != Backend::Vulkan && !wrapped.geometry.empty()) {
-    failed.error = "geometry jobs run on Vulkan only";
+  if (backend != Backend::Vulkan && (!wrapped.geometry.empty() || !wrapped.tess_control.empty())) {
+    failed.error = "geometry and tessellation jobs run on Vulkan only";
     return {failed};
   }
   if (backend == Backend::Gles) {

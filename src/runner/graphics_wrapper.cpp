@@ -1,6 +1,7 @@
 #include "runner/graphics_wrapper.hpp"
 
 #include <algorithm>
+#include <map>
 #include <regex>
 #include <set>
 #include <vector>
@@ -13,16 +14,16 @@ namespace {
 // (ES 1.00 spells them attribute and varying).
 const std::regex& declaration() {
   static const std::regex re(
-      R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*)"
+      R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|patch|highp|mediump|lowp)\s+)*)"
       R"((in|out|attribute|varying)\s+((?:highp|mediump|lowp)\s+)?([A-Za-z_]\w*)\s+([A-Za-z_]\w*(?:\s*,\s*[A-Za-z_]\w*)*)\s*)"
-      R"((\[\s*\d*\s*\])?\s*;\s*(?://.*)?$)");
+      R"((\[\s*(\d*)\s*\])?\s*;\s*(?://.*)?$)");
   return re;
 }
 
 // Anything that starts like an in/out declaration; what `declaration` does not take is unsupported.
 const std::regex& looks_like_declaration() {
   static const std::regex re(
-      R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|highp|mediump|lowp)\s+)*(in|out|attribute|varying)\s+\w)");
+      R"(^\s*(?:layout\s*\([^)]*\)\s*)?(?:(?:flat|smooth|noperspective|centroid|sample|invariant|precise|patch|highp|mediump|lowp)\s+)*(in|out|attribute|varying)\s+\w)");
   return re;
 }
 
@@ -183,12 +184,34 @@ uint32_t geometry_max_vertices(const std::string& glsl) {
   return std::regex_search(glsl, m, re) ? static_cast<uint32_t>(std::stoul(m[1])) : 0;
 }
 
-// Geometry: the built-ins the wrapped text cannot use as written. gl_in becomes a global array
-// loaded from the input buffer; EmitVertex() stores the outputs (doublet_emit, in the wrapper's
-// main part) and EndPrimitive() does nothing (no primitive is rasterized).
-std::string rename_geometry_builtins(const std::string& line) {
+// Tessellation evaluation: the vertices of the domain (its per-vertex input array elements fed).
+uint32_t tessellation_domain_vertices(const std::string& glsl) {
+  static const std::regex re(R"(layout\s*\(\s*(triangles|quads|isolines)\b[^)]*\)\s*in\s*;)");
+  std::smatch m;
+  if (!std::regex_search(glsl, m, re)) return 0;
+  return m[1] == "triangles" ? 3 : m[1] == "quads" ? 4 : 2;
+}
+
+// Tessellation control: `layout(vertices = N) out;` (0 when not declared).
+uint32_t tessellation_output_vertices(const std::string& glsl) {
+  static const std::regex re(R"(layout\s*\(\s*vertices\s*=\s*(\d+)\s*\)\s*out\s*;)");
+  std::smatch m;
+  return std::regex_search(glsl, m, re) ? static_cast<uint32_t>(std::stoul(m[1])) : 0;
+}
+
+// Geometry and tessellation: the built-ins the wrapped text cannot use as written. gl_in (and a
+// control shader's gl_out and tessellation levels) become global arrays, the inputs loaded from the
+// input buffer; gl_TessCoord a global loaded from it. EmitVertex() stores the outputs
+// (doublet_emit, in the wrapper's main part), EndPrimitive() and barrier() do nothing (no primitive
+// is rasterized; a control shader's outputs are its own, see the wrapper's main).
+std::string rename_primitive_builtins(const std::string& line) {
   static const std::pair<std::regex, const char*> kRenames[] = {
       {std::regex(R"(\bgl_in\b)"), "doublet_gl_in"},
+      {std::regex(R"(\bgl_out\b)"), "doublet_gl_out"},
+      {std::regex(R"(\bgl_TessCoord\b)"), "doublet_tess_coord"},
+      {std::regex(R"(\bgl_TessLevelOuter\b)"), "doublet_tess_level_outer"},
+      {std::regex(R"(\bgl_TessLevelInner\b)"), "doublet_tess_level_inner"},
+      {std::regex(R"(\bbarrier\s*\(\s*\))"), "doublet_barrier()"},
       {std::regex(R"(\bEmitVertex\s*\(\s*\))"), "doublet_emit()"},
       {std::regex(R"(\bEndPrimitive\s*\(\s*\))"), "doublet_end_primitive()"}};
   std::string out = line;
@@ -211,30 +234,48 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
   Scope scope;
   std::string legacy_outputs;  // declarations of the renamed fragment outputs, after the #version line
   std::vector<std::string> block_lines;  // an interface block being read, from its opening line
-  const bool geometry = stage == GraphicsStage::Geometry;
-  static const std::regex reads_gl_in(R"(\bgl_in\b)");
-  // Geometry: declarations the user's text needs, placed before its first line of code (after the
-  // #version and #extension lines).
-  std::string geometry_preamble;
+  const bool geometry = stage == GraphicsStage::Geometry, control = stage == GraphicsStage::TessControl,
+             evaluation = stage == GraphicsStage::TessEvaluation;
+  const bool per_primitive = geometry || control || evaluation;  // a sample is a primitive or a patch
+  static const std::regex reads_gl_in(R"(\bgl_in\b)"), reads_tess_coord(R"(\bgl_TessCoord\b)"),
+      writes_gl_out(R"(\bgl_out\b)"), tess_outer(R"(\bgl_TessLevelOuter\b)"), tess_inner(R"(\bgl_TessLevelInner\b)");
+  // Declarations the user's text needs, placed before its first line of code (after the #version
+  // and #extension lines).
+  std::string preamble;
+  uint32_t elements = 1;  // elements of a per-vertex input array that are fed
+  std::map<std::string, std::string> stored_as;  // an output stored other than by its name
   if (geometry) {
-    out->iface.input_vertices = geometry_input_vertices(glsl);
+    out->iface.input_vertices = elements = geometry_input_vertices(glsl);
     out->iface.records_per_sample = geometry_max_vertices(glsl);
     if (out->iface.input_vertices == 0 || out->iface.records_per_sample == 0)
       return "a geometry shader needs its input primitive (layout(triangles) in;) and max_vertices declared";
-    geometry_preamble = "void doublet_emit();\nvoid doublet_end_primitive();\n";
-    if (std::regex_search(glsl, reads_gl_in))
-      geometry_preamble += "struct doublet_PerVertex { vec4 gl_Position; };\ndoublet_PerVertex doublet_gl_in[" +
-                           std::to_string(out->iface.input_vertices) + "];\n";
+    preamble = "void doublet_emit();\nvoid doublet_end_primitive();\n";
+  } else if (evaluation) {
+    // One patch of one control point per sample, tessellated at level 1: the corner the wrapper
+    // stores from (main, below) evaluates the user's code at the sample's own gl_TessCoord.
+    elements = tessellation_domain_vertices(glsl);
+    if (elements == 0) return "a tessellation evaluation shader needs its domain declared (layout(triangles) in;)";
+    if (std::regex_search(glsl, reads_tess_coord)) preamble += "vec3 doublet_tess_coord;\n";
+  } else if (control) {
+    out->iface.input_vertices = out->iface.records_per_sample = elements = tessellation_output_vertices(glsl);
+    if (elements == 0) return "a tessellation control shader needs its output patch size declared (layout(vertices = 3) out;)";
+    preamble = "void doublet_barrier() {}\nfloat doublet_tess_level_outer[4];\nfloat doublet_tess_level_inner[2];\n";
+    if (std::regex_search(glsl, writes_gl_out))
+      preamble += "struct doublet_PerVertexOut { vec4 gl_Position; float gl_PointSize; };\ndoublet_PerVertexOut doublet_gl_out[" +
+                  std::to_string(elements) + "];\n";
   }
+  if (per_primitive && std::regex_search(glsl, reads_gl_in))
+    preamble += "struct doublet_PerVertex { vec4 gl_Position; };\ndoublet_PerVertex doublet_gl_in[" +
+                std::to_string(elements) + "];\n";
   while (std::getline(in, line)) {
     ++line_number;
     const bool global = scope.global();
     scope.advance(line);
-    if (!geometry_preamble.empty() && !version.empty() && global) {
+    if (!preamble.empty() && !version.empty() && global) {
       const size_t first = line.find_first_not_of(" \t");
       if (first != std::string::npos && line[first] != '#' && line.compare(first, 2, "//") != 0) {
-        body += geometry_preamble;
-        geometry_preamble.clear();
+        body += preamble;
+        preamble.clear();
       }
     }
     std::smatch m;
@@ -274,41 +315,59 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
                std::string(m[3]) + "' (float/double/int/uint scalars and vectors)";
       const bool is_input = m[1] == "in" || m[1] == "attribute" || (m[1] == "varying" && stage == GraphicsStage::Fragment);
       std::string names = m[4];
-      // A geometry shader's per-vertex inputs are arrays, one element per vertex of the primitive:
-      // each element is an input of its own.
-      const bool per_vertex = geometry && is_input && m[5].matched;
-      if (m[5].matched && !per_vertex)
-        return "line " + std::to_string(line_number) + ": unsupported in/out declaration (arrays only as a geometry "
-               "shader's per-vertex inputs): " + line;
-      if (per_vertex && names.find(',') != std::string::npos)
-        return "line " + std::to_string(line_number) + ": one per-vertex input array per declaration: " + line;
+      // Geometry and tessellation per-vertex inputs are arrays, one element per vertex: each element
+      // is an input of its own. A control shader's per-vertex output is one output per record,
+      // stored from the invocation's own element.
+      const bool per_vertex = per_primitive && is_input && m[5].matched;
+      const bool own_vertex = control && !is_input && m[5].matched;
+      if (m[5].matched && !per_vertex && !own_vertex)
+        return "line " + std::to_string(line_number) + ": unsupported in/out declaration (arrays only as the "
+               "per-vertex inputs of geometry and tessellation shaders): " + line;
+      if ((per_vertex || own_vertex) && names.find(',') != std::string::npos)
+        return "line " + std::to_string(line_number) + ": one per-vertex array per declaration: " + line;
+      // The declared size, else the vertices fed (a control shader's inputs are gl_MaxPatchVertices
+      // long where the lowered text says so; only the first `elements` are fed).
+      const std::string declared = m[6].matched ? m[6].str() : "";  // may be empty: `p[]`
+      const std::string size = declared.empty() ? std::to_string(elements) : declared;
       std::replace(names.begin(), names.end(), ',', ' ');
       std::istringstream split(names);
       for (std::string name; split >> name;) {
-        for (uint32_t k = 0; k < (per_vertex ? out->iface.input_vertices : 1); ++k) {
+        for (uint32_t k = 0; k < (per_vertex ? elements : 1); ++k) {
           v.name = per_vertex ? name + "[" + std::to_string(k) + "]" : name;
           (is_input ? out->iface.inputs : out->iface.outputs).push_back(v);
         }
+        if (own_vertex) stored_as[name] = name + "[gl_InvocationID]";
       }
       body += std::string(m[2]) + std::string(m[3]) + " " + std::string(m[4]) +
-              (per_vertex ? "[" + std::to_string(out->iface.input_vertices) + "]" : "") + ";  // was: " + line + "\n";
+              (per_vertex || own_vertex ? "[" + size + "]" : "") + ";  // was: " + line + "\n";
       continue;
     }
     if (global && std::regex_search(line, looks_like_declaration()))
       return "line " + std::to_string(line_number) + ": unsupported in/out declaration (one per line, no arrays, " +
              "blocks or structs): " + line;
-    body += (geometry ? rename_geometry_builtins(line) : rename_legacy_builtins(line)) + "\n";
+    body += (per_primitive ? rename_primitive_builtins(line) : rename_legacy_builtins(line)) + "\n";
   }
   if (!block_lines.empty()) return "an interface block does not end: " + block_lines.front();
   if (version.empty()) return "the shader has no #version line";
   if (stage == GraphicsStage::Vertex && glsl.find("gl_Position") != std::string::npos)
     out->iface.outputs.push_back(StageVariable{"gl_Position", 'f', 4});
-  if (geometry) {
-    static const std::regex writes_position(R"(\bgl_Position\s*=[^=])");
+  if (per_primitive) {
+    static const std::regex writes_position(R"((^|[^.\w])gl_Position\s*=[^=])");
     if (std::regex_search(glsl, reads_gl_in))
-      for (uint32_t k = 0; k < out->iface.input_vertices; ++k)
+      for (uint32_t k = 0; k < elements; ++k)
         out->iface.inputs.push_back(StageVariable{"gl_in[" + std::to_string(k) + "].gl_Position", 'f', 4});
-    if (std::regex_search(glsl, writes_position)) out->iface.outputs.push_back(StageVariable{"gl_Position", 'f', 4});
+    if (evaluation && std::regex_search(glsl, reads_tess_coord))
+      out->iface.inputs.push_back(StageVariable{"gl_TessCoord", 'f', 3});
+    if (!control && std::regex_search(glsl, writes_position)) out->iface.outputs.push_back(StageVariable{"gl_Position", 'f', 4});
+    if (control && std::regex_search(glsl, tess_outer)) {
+      out->iface.outputs.push_back(StageVariable{"gl_TessLevelOuter", 'f', 4});
+      stored_as["gl_TessLevelOuter"] = "vec4(doublet_tess_level_outer[0], doublet_tess_level_outer[1], "
+                                       "doublet_tess_level_outer[2], doublet_tess_level_outer[3])";
+    }
+    if (control && std::regex_search(glsl, tess_inner)) {
+      out->iface.outputs.push_back(StageVariable{"gl_TessLevelInner", 'f', 2});
+      stored_as["gl_TessLevelInner"] = "vec2(doublet_tess_level_inner[0], doublet_tess_level_inner[1])";
+    }
   }
   if (stage == GraphicsStage::Fragment) {
     if (std::regex_search(glsl, std::regex(R"(\bgl_FragColor\b)"))) {
@@ -341,8 +400,12 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
   w += struct_decl("doublet_Out", out->iface.outputs) + "layout(std430, binding = " + std::to_string(kOutputBinding) +
        ") writeonly buffer doublet_Outputs { doublet_Out doublet_out[]; };\n";
   std::string stores;  // the outputs into their record
-  for (size_t i = 0; i < out->iface.outputs.size(); ++i)
-    stores += "  doublet_out[doublet_record].m" + std::to_string(i) + " = " + rename_legacy_builtins(out->iface.outputs[i].name) + ";\n";
+  for (size_t i = 0; i < out->iface.outputs.size(); ++i) {
+    const std::string& name = out->iface.outputs[i].name;
+    const auto special = stored_as.find(name);
+    stores += "  doublet_out[doublet_record].m" + std::to_string(i) + " = " +
+              (special != stored_as.end() ? special->second : rename_legacy_builtins(name)) + ";\n";
+  }
   if (geometry) {
     const std::string records = std::to_string(out->iface.records_per_sample);
     w += "int doublet_i;\nint doublet_emitted;\nvoid doublet_end_primitive() {}\n"
@@ -354,19 +417,45 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
   if (!geometry) w += "int ";
   w += stage == GraphicsStage::Vertex     ? "doublet_i = doublet_vertex_index;\n"
        : stage == GraphicsStage::Geometry ? "doublet_i = gl_PrimitiveIDIn;\n  doublet_emitted = 0;\n"
+       : per_primitive                    ? "doublet_i = gl_PrimitiveID;\n"
                                           : "doublet_i = int(gl_FragCoord.y) * " + std::to_string(kGridWidth) + " + int(gl_FragCoord.x);\n";
   for (size_t i = 0; i < out->iface.inputs.size(); ++i)
-    w += "  " + (geometry ? rename_geometry_builtins(out->iface.inputs[i].name) : out->iface.inputs[i].name) +
+    w += "  " + (per_primitive ? rename_primitive_builtins(out->iface.inputs[i].name) : out->iface.inputs[i].name) +
          " = doublet_in[doublet_i].m" + std::to_string(i) + ";\n";
+  if (control)  // levels an invocation does not write read 0 in both runs
+    w += "  for (int k = 0; k < 4; ++k) doublet_tess_level_outer[k] = 0.0;\n"
+         "  for (int k = 0; k < 2; ++k) doublet_tess_level_inner[k] = 0.0;\n";
   w += "  doublet_user_main();\n";
-  if (!geometry) w += "  int doublet_record = doublet_i;\n" + stores;
+  if (control) {
+    w += "  int doublet_record = doublet_i * " + std::to_string(elements) + " + gl_InvocationID;\n" + stores;
+  } else if (evaluation) {
+    // Each corner of the patch runs the user's code on the sample's inputs; one of them stores.
+    const char* corner = elements == 3 ? "gl_TessCoord.x > 0.5" : elements == 4 ? "gl_TessCoord.x < 0.5 && gl_TessCoord.y < 0.5"
+                                                                                : "gl_TessCoord.x < 0.5";
+    w += std::string("  if (") + corner + ") {\n    int doublet_record = doublet_i;\n" + stores + "  }\n";
+  } else if (!geometry) {
+    w += "  int doublet_record = doublet_i;\n" + stores;
+  }
   w += "}\n";
 
   const std::string user = body + w;
-  if (geometry) {
-    out->geometry = user;
+  // ES 3.10 has tessellation through its extension (the user's text requires it itself).
+  const std::string tessellation = version + (version == "#version 310 es" ? "\n#extension GL_EXT_tessellation_shader : require" : "");
+  if (per_primitive) {
     out->vertex = version + "\nvoid main() { gl_Position = vec4(0.0); }\n";  // the inputs come from the buffer
     out->fragment = version + "\nvoid main() {}\n";  // never runs: rasterizer discard
+  }
+  if (geometry) {
+    out->geometry = user;
+  } else if (evaluation) {
+    out->iface.input_vertices = 1;  // patches of one control point, tessellated at level 1
+    out->tess_evaluation = user;
+    out->tess_control = tessellation + "\nlayout(vertices = 1) out;\nvoid main() {\n"
+                        "  for (int k = 0; k < 4; ++k) gl_TessLevelOuter[k] = 1.0;\n"
+                        "  for (int k = 0; k < 2; ++k) gl_TessLevelInner[k] = 1.0;\n}\n";
+  } else if (control) {
+    out->tess_control = user;
+    out->tess_evaluation = tessellation + "\nlayout(triangles) in;\nvoid main() { gl_Position = vec4(0.0); }\n";
   } else if (stage == GraphicsStage::Vertex) {
     out->vertex = user;
     out->fragment = version + "\nvoid main() {}\n";  // never runs: rasterizer discard

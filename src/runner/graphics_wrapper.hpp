@@ -22,7 +22,9 @@ inline constexpr uint32_t kOutputBinding = 1;
 
 struct WrappedProgram {
   std::string vertex, fragment;  // full texts of both stages
-  std::string geometry;          // geometry jobs: the user's stage (vertex and fragment are generated)
+  // Geometry and tessellation jobs: the user's stage; the other stages are generated (a vertex
+  // shader, a fragment shader that never runs, and the tessellation stage the user's one needs).
+  std::string geometry, tess_control, tess_evaluation;
   GraphicsInterface iface;       // inputs/outputs with std430 offsets and strides (no uniforms yet)
   bool es = true;                // GLSL ES text (else desktop #version 450)
   // The user's rewritten stage before the storage-buffer main() is appended (its #version line,
@@ -45,7 +47,7 @@ std::vector<uint8_t> blank_outputs(const GraphicsInterface& iface, uint32_t coun
 // Output records → per-variable values (see GraphicsResult::outputs).
 void unpack_outputs(const GraphicsInterface& iface, uint32_t count, const uint8_t* bytes, GraphicsResult* out);
 
-// The stages to compile: vertex, fragment, and the geometry stage of a geometry job.
+// The stages to compile: vertex, fragment, and a job's geometry or tessellation stages.
 std::vector<std::pair<Stage, std::string>> stages_of(const WrappedProgram& w);
 
 // The backends (gles_graphics.cpp, vulkan_graphics.cpp): every job drawn with one program.

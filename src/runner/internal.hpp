@@ -25,6 +25,7 @@ struct SpirvProgram {
   std::vector<uint32_t> words;           // the compute or vertex stage
   std::vector<uint32_t> fragment_words;  // graphics programs: the fragment stage
   std::vector<uint32_t> geometry_words;  // geometry jobs: the geometry stage (empty otherwise)
+  std::vector<uint32_t> tess_control_words, tess_evaluation_words;  // tessellation jobs: both stages
   std::map<std::string, UniformSlot> uniforms;  // live members of the global uniform block
   uint32_t uniform_block_size = 0;              // 0 when the shader has no loose uniforms
   std::vector<int> ssbo_bindings;               // bindings of the shader's buffer blocks
@@ -47,7 +48,7 @@ bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error
                   bool strict_fp64 = false);
 
 // The same for several stages linked as one program (vertex then fragment; words/fragment_words).
-enum class Stage { Compute, Vertex, Fragment, Geometry };
+enum class Stage { Compute, Vertex, Fragment, Geometry, TessControl, TessEvaluation };
 bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stages, SpirvProgram* out,
                          std::string* error, ShaderInterface* iface = nullptr, bool strict_fp64 = false);
 

@@ -131,7 +131,12 @@ bool reflect_compute(const std::string& glsl, ShaderInterface* out, std::string*
 //             array element is an input of its own ("world[1]", "gl_in[2].gl_Position"), and each
 //             EmitVertex() stores the outputs as one of the sample's max_vertices output records
 //             (GraphicsInterface::records_per_sample; a record never emitted reads as NaN). Vulkan only.
-enum class GraphicsStage { Vertex, Fragment, Geometry };
+//   TessControl: one patch of layout(vertices = N) control points per sample, the per-vertex input
+//             elements 0..N-1 fed; invocation k stores record k of its sample (its own element of a
+//             per-vertex output, the tessellation levels it wrote, 0 where it wrote none).
+//   TessEvaluation: one patch per sample tessellated at level 1; the per-vertex input elements of
+//             the domain's corners (3, 4 or 2) fed, and gl_TessCoord an input; one record.
+enum class GraphicsStage { Vertex, Fragment, Geometry, TessControl, TessEvaluation };
 
 // One wrapped `in` or `out` variable (or gl_Position) of scalar/vector numeric type.
 struct StageVariable {
@@ -145,7 +150,7 @@ struct GraphicsInterface {
   std::vector<StageVariable> inputs, outputs;  // declaration order; outputs end with gl_Position
   uint32_t input_stride = 0, output_stride = 0;  // bytes per sample record (std430 struct)
   uint32_t records_per_sample = 1;  // output records per sample: a geometry shader's max_vertices
-  uint32_t input_vertices = 1;      // geometry: vertices per input primitive (1, 2, 3, 4 or 6)
+  uint32_t input_vertices = 1;      // vertices drawn per sample: a geometry primitive's, a patch's
   std::vector<ShaderInterface::Uniform> uniforms;  // active loose uniforms (glslang reflection)
   std::vector<ShaderInterface::UniformBlock> uniform_blocks;  // named uniform blocks (GraphicsJob::uniform_blocks)
   std::vector<std::string> samplers;  // sampler uniforms, each bound to test_texture(its kind)

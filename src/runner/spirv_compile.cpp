@@ -283,10 +283,14 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
   std::lock_guard<std::mutex> lock(glslang_mutex());
   const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
   auto language = [](Stage s) {
-    return s == Stage::Vertex     ? EShLangVertex
-           : s == Stage::Fragment ? EShLangFragment
-           : s == Stage::Geometry ? EShLangGeometry
-                                  : EShLangCompute;
+    switch (s) {
+      case Stage::Vertex: return EShLangVertex;
+      case Stage::Fragment: return EShLangFragment;
+      case Stage::Geometry: return EShLangGeometry;
+      case Stage::TessControl: return EShLangTessControl;
+      case Stage::TessEvaluation: return EShLangTessEvaluation;
+      default: return EShLangCompute;
+    }
   };
 
   std::vector<std::unique_ptr<glslang::TShader>> shaders;
@@ -295,10 +299,12 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
     const EShLanguage lang = language(stage);
     auto shader = std::make_unique<glslang::TShader>(lang);
     const char* text = glsl.c_str();
-    const char* name = stage == Stage::Vertex     ? "job.vert"
-                       : stage == Stage::Fragment ? "job.frag"
-                       : stage == Stage::Geometry ? "job.geom"
-                                                  : "job.comp";
+    const char* name = stage == Stage::Vertex           ? "job.vert"
+                       : stage == Stage::Fragment       ? "job.frag"
+                       : stage == Stage::Geometry       ? "job.geom"
+                       : stage == Stage::TessControl    ? "job.tesc"
+                       : stage == Stage::TessEvaluation ? "job.tese"
+                                                        : "job.comp";
     shader->setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
     shader->setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
     shader->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
@@ -370,9 +376,11 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
   options.disableOptimizer = true;  // the driver's optimizer is what we want to observe, not spirv-opt's
   options.validate = false;         // validated below with a readable message
   for (size_t i = 0; i < stages.size(); ++i) {
-    std::vector<uint32_t>& words = stages[i].first == Stage::Geometry ? result.geometry_words
-                                   : i == 0                          ? result.words
-                                                                     : result.fragment_words;
+    std::vector<uint32_t>& words = stages[i].first == Stage::Geometry         ? result.geometry_words
+                                   : stages[i].first == Stage::TessControl    ? result.tess_control_words
+                                   : stages[i].first == Stage::TessEvaluation ? result.tess_evaluation_words
+                                   : i == 0                                   ? result.words
+                                                                              : result.fragment_words;
     spv::SpvBuildLogger logger;
     glslang::GlslangToSpv(*program.getIntermediate(language(stages[i].first)), words, &logger, &options);
     if (words.empty()) {
@@ -385,7 +393,8 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
       return false;
     }
   }
-  for (const std::vector<uint32_t>* words : {&result.words, &result.fragment_words, &result.geometry_words}) {
+  for (const std::vector<uint32_t>* words : {&result.words, &result.fragment_words, &result.geometry_words,
+                                             &result.tess_control_words, &result.tess_evaluation_words}) {
     const std::map<std::string, uint32_t> offsets = block_member_offsets(*words, kGlobalBlockName);
     if (offsets.empty()) continue;
     for (auto& [name, slot] : result.uniforms)

@@ -146,6 +146,8 @@ std::string init(VulkanDevice& d) {
   d.stage_stores = supported.vertexPipelineStoresAndAtomics && supported.fragmentStoresAndAtomics;
   enabled.geometryShader = supported.geometryShader;  // geometry jobs (runner.hpp)
   d.geometry = supported.geometryShader == VK_TRUE;
+  enabled.tessellationShader = supported.tessellationShader;  // tessellation jobs
+  d.tessellation = supported.tessellationShader == VK_TRUE;
 
   float priority = 1.0f;
   VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

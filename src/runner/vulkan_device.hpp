@@ -24,6 +24,7 @@ struct VulkanDevice {
   bool float64 = false;
   bool graphics = false;      // the queue draws as well as dispatches
   bool geometry = false;  // geometryShader enabled
+  bool tessellation = false;  // tessellationShader enabled
   bool stage_stores = false;  // vertexPipelineStoresAndAtomics and fragmentStoresAndAtomics enabled
   std::string name;
   std::string error;  // non-empty: this backend is unusable, and why

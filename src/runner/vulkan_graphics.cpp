@@ -12,8 +12,7 @@
 namespace doublet::runner::detail {
 namespace {
 
-constexpr VkShaderStageFlags kStages =
-    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_ALL_GRAPHICS;
 
 struct GraphicsPipeline {
   VkDescriptorSetLayout layouts[2] = {};
@@ -102,19 +101,21 @@ std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, Graphics
   if (std::string e = make_layouts(d, program, objs, p); !e.empty()) return e;
   if (std::string e = make_render_target(d, objs, p); !e.empty()) return e;
   const bool geometry = stage == GraphicsStage::Geometry;
-  VkShaderModule modules[3];
-  if (std::string e = make_module(d, objs, program.words, &modules[0]); !e.empty()) return e;
-  if (std::string e = make_module(d, objs, program.fragment_words, &modules[1]); !e.empty()) return e;
-  if (geometry)
-    if (std::string e = make_module(d, objs, program.geometry_words, &modules[2]); !e.empty()) return e;
-  VkPipelineShaderStageCreateInfo stages[3];
-  const VkShaderStageFlagBits kinds[3] = {VK_SHADER_STAGE_VERTEX_BIT, VK_SHADER_STAGE_FRAGMENT_BIT,
-                                          VK_SHADER_STAGE_GEOMETRY_BIT};
-  for (int i = 0; i < 3; ++i) {
-    stages[i] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    stages[i].stage = kinds[i];
-    stages[i].module = modules[i];
-    stages[i].pName = "main";
+  const bool tessellation = !program.tess_control_words.empty();
+  const std::pair<VkShaderStageFlagBits, const std::vector<uint32_t>*> present[] = {
+      {VK_SHADER_STAGE_VERTEX_BIT, &program.words},
+      {VK_SHADER_STAGE_FRAGMENT_BIT, &program.fragment_words},
+      {VK_SHADER_STAGE_GEOMETRY_BIT, &program.geometry_words},
+      {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, &program.tess_control_words},
+      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, &program.tess_evaluation_words}};
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  for (const auto& [kind, words] : present) {
+    if (words->empty()) continue;
+    VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    if (std::string e = make_module(d, objs, *words, &info.module); !e.empty()) return e;
+    info.stage = kind;
+    info.pName = "main";
+    stages.push_back(info);
   }
   VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
@@ -127,6 +128,10 @@ std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, Graphics
     case 6: assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY; break;
     default: break;
   }
+  // A tessellation job draws one patch per sample.
+  VkPipelineTessellationStateCreateInfo patches{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+  patches.patchControlPoints = input_vertices;
+  if (tessellation) assembly.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
   const VkViewport viewport{0, 0, static_cast<float>(kGridWidth), static_cast<float>(kGridHeight), 0, 1};
   const VkRect2D scissor{{0, 0}, {kGridWidth, kGridHeight}};
   VkPipelineViewportStateCreateInfo viewport_state{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
@@ -143,8 +148,9 @@ std::string make_pipeline(VulkanDevice& d, const SpirvProgram& program, Graphics
   VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
   VkGraphicsPipelineCreateInfo gpci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  gpci.stageCount = geometry ? 3 : 2;
-  gpci.pStages = stages;
+  gpci.stageCount = static_cast<uint32_t>(stages.size());
+  gpci.pStages = stages.data();
+  if (tessellation) gpci.pTessellationState = &patches;
   gpci.pVertexInputState = &vertex_input;
   gpci.pInputAssemblyState = &assembly;
   gpci.pViewportState = &viewport_state;
@@ -258,8 +264,7 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT |
-                                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
                        VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
   if (std::string error = submit_and_wait(d, objs, cmd); !error.empty()) return error;
   unpack_outputs(w.iface, count, static_cast<const uint8_t*>(outputs.mapped), result);
@@ -283,8 +288,10 @@ std::vector<GraphicsResult> vulkan_run_graphics(const WrappedProgram& w, const S
     return fail(d.name + " cannot run vertex/fragment jobs (needs a graphics queue, vertexPipelineStoresAndAtomics "
                 "and fragmentStoresAndAtomics)");
   if (jobs[0].stage == GraphicsStage::Geometry && !d.geometry) return fail(d.name + " has no geometryShader feature");
+  if (!program.tess_control_words.empty() && !d.tessellation) return fail(d.name + " has no tessellationShader feature");
   if ((spirv_uses_float64(program.words) || spirv_uses_float64(program.fragment_words) ||
-       spirv_uses_float64(program.geometry_words)) && !d.float64)
+       spirv_uses_float64(program.geometry_words) || spirv_uses_float64(program.tess_control_words) ||
+       spirv_uses_float64(program.tess_evaluation_words)) && !d.float64)
     return fail("shader uses double (Float64) but " + d.name + " lacks shaderFloat64");
   std::lock_guard<std::mutex> lock(d.mu);
   JobObjects shared(d.device);

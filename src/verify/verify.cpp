@@ -267,9 +267,10 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
     BackendRun run;
     run.backend = backend;
     run.reference_driver = native.back().device;
-    if (backend != runner::Backend::Vulkan && stage == runner::GraphicsStage::Geometry) {
+    const bool vertex_or_fragment = stage == runner::GraphicsStage::Vertex || stage == runner::GraphicsStage::Fragment;
+    if (backend != runner::Backend::Vulkan && !vertex_or_fragment) {
       report->notes.push_back(std::string(runner::backend_name(backend)) +
-                              " backend skipped: geometry shaders run on Vulkan (lavapipe) only");
+                              " backend skipped: geometry and tessellation shaders run on Vulkan (lavapipe) only");
       continue;
     }
     if (backend == runner::Backend::Gles && !target_is_es(t)) {
@@ -286,8 +287,9 @@ void run_graphics_stage(runner::GraphicsStage stage, const std::string& native_g
       continue;
     }
     // The probe and the lowered draws in one call: on WebGL2 that is one browser start.
-    // A geometry shader's driver is probed in the vertex stage (the probe is a vertex/fragment job).
-    const runner::GraphicsStage probed = stage == runner::GraphicsStage::Geometry ? runner::GraphicsStage::Vertex : stage;
+    // A geometry or tessellation shader's driver is probed in the vertex stage (the probe is a
+    // vertex/fragment job).
+    const runner::GraphicsStage probed = vertex_or_fragment ? stage : runner::GraphicsStage::Vertex;
     std::vector<std::vector<runner::GraphicsJob>> batches{{stage_probe_job(backend, probed)}};
     if (native_ok) batches.push_back(lowered_jobs);
     const std::vector<std::vector<runner::GraphicsResult>> results = runner::run_graphics_batches(backend, batches);
@@ -417,12 +419,10 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
     case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;
     case Stage::Fragment: run_graphics_stage(runner::GraphicsStage::Fragment, native, lowered, options, &report); break;
     case Stage::Geometry: run_graphics_stage(runner::GraphicsStage::Geometry, native, lowered, options, &report); break;
-    case Stage::TessControl:
+    case Stage::TessControl: run_graphics_stage(runner::GraphicsStage::TessControl, native, lowered, options, &report); break;
     case Stage::TessEvaluation:
-      report.input_error = std::string("doublet verify does not run ") + target::stage_noun(*options.lower.stage) +
-                           " shaders yet: `doublet lower` lowers them; verify runs vertex, fragment, geometry and "
-                           "compute shaders";
-      return report;
+      run_graphics_stage(runner::GraphicsStage::TessEvaluation, native, lowered, options, &report);
+      break;
   }
   if (options.judge_against_float) judge_against_float(source, options, &report);
   // Mode exact promises native fp64's bits: any output differing is a failure (NaN payloads apart).

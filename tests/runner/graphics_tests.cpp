@@ -185,5 +185,59 @@ void main() {
   EXPECT_EQ(r.outputs.at("gl_Position")[4], 1);  // record 1 of sample 0: gl_Position = vec4(1)
 }
 
+// Tessellation control jobs: one patch per sample; invocation k stores record k (its own element of
+// a per-vertex output, the levels it wrote, 0 for the ones it did not).
+TEST(GraphicsTessellation, ControlInvocationsStoreTheirOwnRecord) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  GraphicsJob job;
+  job.stage = GraphicsStage::TessControl;
+  job.glsl = R"(#version 450
+layout(vertices = 2) out;
+in float a[];
+out float twice[];
+void main() {
+  twice[gl_InvocationID] = a[gl_InvocationID] * 2.0 + a[1 - gl_InvocationID];
+  gl_TessLevelOuter[gl_InvocationID] = a[0] + 1.0;
+}
+)";
+  job.count = 2;
+  job.inputs["a[0]"] = {1, 10};
+  job.inputs["a[1]"] = {3, 30};
+  const GraphicsResult r = run_graphics(Backend::Vulkan, job);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.outputs.at("twice"), (std::vector<double>{5, 7, 50, 70}));
+  const std::vector<double>& outer = r.outputs.at("gl_TessLevelOuter");
+  ASSERT_EQ(outer.size(), 16u);  // 4 records × vec4
+  EXPECT_EQ((std::vector<double>(outer.begin(), outer.begin() + 8)), (std::vector<double>{2, 0, 0, 0, 0, 2, 0, 0}));
+  EXPECT_EQ(outer[8], 11);
+}
+
+// Tessellation evaluation jobs: the user's code runs at the sample's own gl_TessCoord, with the
+// domain's corner elements of its per-vertex inputs.
+TEST(GraphicsTessellation, EvaluationRunsAtTheSamplesTessCoord) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  GraphicsJob job;
+  job.stage = GraphicsStage::TessEvaluation;
+  job.glsl = R"(#version 450
+layout(triangles, equal_spacing, ccw) in;
+in float h[];
+patch in float base;
+out float value;
+void main() {
+  value = base + h[0] * gl_TessCoord.x + h[1] * gl_TessCoord.y + h[2] * gl_TessCoord.z;
+  gl_Position = vec4(value);
+}
+)";
+  job.count = 2;
+  job.inputs["h[0]"] = {1, 100};
+  job.inputs["h[1]"] = {2, 200};
+  job.inputs["h[2]"] = {4, 400};
+  job.inputs["base"] = {0.5, 0.25};
+  job.inputs["gl_TessCoord"] = {0.5, 0.25, 0.25, 0, 0, 1};
+  const GraphicsResult r = run_graphics(Backend::Vulkan, job);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.outputs.at("value"), (std::vector<double>{0.5 + 0.5 + 0.5 + 1, 400.25}));
+}
+
 }  // namespace
 }  // namespace doublet::runner::test
