@@ -1,6 +1,7 @@
 #include "emit/printer.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -434,6 +435,9 @@ class Printer {
       case ir::Base::Bool: return v.b ? "true" : "false";
       case ir::Base::Int: return std::to_string(v.i);
       case ir::Base::Uint: return std::to_string(v.i) + "u";
+      // -2^63 has no literal of its own (its magnitude overflows int64_t before the minus applies).
+      case ir::Base::Int64: return v.i == LLONG_MIN ? "(-9223372036854775807l - 1l)" : std::to_string(v.i) + "l";
+      case ir::Base::Uint64: return std::to_string(static_cast<unsigned long long>(v.i)) + "ul";
       case ir::Base::Float: return float_literal(static_cast<float>(v.d));
       case ir::Base::Double: {  // only mode native keeps doubles
         // GLSL has no infinity or NaN literal; glslang folds these divisions to them (`1e+309` in

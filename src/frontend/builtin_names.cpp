@@ -127,6 +127,14 @@ const char* builtin_function_name(TOperator op, int args) {
     case EOpUnpackHalf2x16: return "unpackHalf2x16";
     case EOpPackDouble2x32: return "packDouble2x32";
     case EOpUnpackDouble2x32: return "unpackDouble2x32";
+    case EOpPackInt2x32: return "packInt2x32";
+    case EOpUnpackInt2x32: return "unpackInt2x32";
+    case EOpPackUint2x32: return "packUint2x32";
+    case EOpUnpackUint2x32: return "unpackUint2x32";
+    case EOpDoubleBitsToInt64: return "doubleBitsToInt64";
+    case EOpDoubleBitsToUint64: return "doubleBitsToUint64";
+    case EOpInt64BitsToDouble: return "int64BitsToDouble";
+    case EOpUint64BitsToDouble: return "uint64BitsToDouble";
     case EOpLength: return "length";
     case EOpDistance: return "distance";
     case EOpDot: return "dot";

@@ -130,13 +130,14 @@ class Importer {
       }
       case EbtInt64:
       case EbtUint64:
-        if (reported_.insert("int64").second)
+        // Desktop GLSL 4.x has them (GL_ARB_gpu_shader_int64, which the shader enables itself).
+        out.base = t.getBasicType() == EbtInt64 ? ir::Base::Int64 : ir::Base::Uint64;
+        if (options_.target != Target::Glsl450 && reported_.insert("int64").second)
           error(loc, "type '" + std::string(t.getBasicTypeString().c_str()) +
                          "' is not supported: 64-bit integers are not available on " +
                          std::string(to_string(options_.target)) +
-                         " (no target of doublet has them); split the value into two 32-bit ints (high and low "
-                         "words), or carry it as a double when it fits in 48 bits");
-        out.base = ir::Base::Void;
+                         "; glsl450 has them (GL_ARB_gpu_shader_int64); elsewhere split the value into two 32-bit "
+                         "ints (high and low words), or carry it as a double when it fits in 48 bits");
         break;
       default:
         error(loc, std::string("type '") + t.getCompleteString().c_str() + "' is not supported by doublet");
@@ -361,6 +362,8 @@ class Importer {
           break;
         case EbtInt: s.base = ir::Base::Int; s.i = c.getIConst(); break;
         case EbtUint: s.base = ir::Base::Uint; s.i = c.getUConst(); break;
+        case EbtInt64: s.base = ir::Base::Int64; s.i = c.getI64Const(); break;
+        case EbtUint64: s.base = ir::Base::Uint64; s.i = static_cast<long long>(c.getU64Const()); break;
         case EbtBool: s.base = ir::Base::Bool; s.b = c.getBConst(); break;
         default: error(loc, "unsupported constant type"); break;
       }

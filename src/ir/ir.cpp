@@ -42,6 +42,8 @@ std::string type_name(const Type& t) {
     case Base::Bool: scalar = "bool"; vecp = "bvec"; break;
     case Base::Int: scalar = "int"; vecp = "ivec"; break;
     case Base::Uint: scalar = "uint"; vecp = "uvec"; break;
+    case Base::Int64: scalar = "int64_t"; vecp = "i64vec"; break;
+    case Base::Uint64: scalar = "uint64_t"; vecp = "u64vec"; break;
     case Base::Float: scalar = "float"; vecp = "vec"; break;
     case Base::Double: scalar = "double"; vecp = "dvec"; break;
     default: return "void";

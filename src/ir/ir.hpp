@@ -24,7 +24,8 @@ inline const std::string& file_of(const Loc& loc, const std::string& main_file) 
   return loc.file ? *loc.file : main_file;
 }
 
-enum class Base { Void, Bool, Int, Uint, Float, Double, Struct, Block, Opaque };
+// Int64/Uint64: GL_ARB_gpu_shader_int64's int64_t/uint64_t, carried on desktop 4.x targets.
+enum class Base { Void, Bool, Int, Uint, Float, Double, Struct, Block, Opaque, Int64, Uint64 };
 
 struct Type;
 struct Field;
@@ -106,7 +107,7 @@ using ExprPtr = std::shared_ptr<Expr>;
 struct Scalar {
   Base base = Base::Float;
   double d = 0;        // Float, Double
-  long long i = 0;     // Int, Uint
+  long long i = 0;     // Int, Uint, Int64, Uint64 (a uint64 value's bits)
   bool b = false;      // Bool
 };
 

@@ -274,11 +274,121 @@ class DoubleLowering {
       case ir::Base::Int: rule_name = "df_from_int"; break;
       case ir::Base::Uint: rule_name = "df_from_uint"; break;
       case ir::Base::Bool: rule_name = "df_from_bool"; break;
+      case ir::Base::Int64:
+      case ir::Base::Uint64: return int64_conversion(e, e->type.base, true);
       default:
         ctx_.error(e->loc, "cannot convert " + ir::type_name(e->type) + " to a double type");
         return e;
     }
     return rule(rule_name, width, df_type(width), {e}, e->loc);
+  }
+
+  // Conversions between 64-bit integers (GL_ARB_gpu_shader_int64, desktop 4.x) and doubles, as
+  // generated helpers (the rule files are written for every target, which int64_t is not):
+  //   float-float: double(i) is (hi, lo) = (float(i), float(i - int64_t(hi))), the difference exact
+  //     in 64-bit integer arithmetic (int64_t(hi) rebuilt from hi's bits); the pair is within 2^-48
+  //     of i, as any double rounded to df.
+  //     int64_t(x) is int64_t(t.hi) + int64_t(t.lo) of t = trunc(x), both parts integers.
+  //   exact: the integer's magnitude rounded once to binary64 (ex_norm_round_pack, as double(uint)
+  //     does); the conversion back truncates the magnitude (ex_trunc_magnitude, |x| < 2^63).
+  ExprPtr int64_conversion(const ExprPtr& e, ir::Base integer, bool to_double) {
+    const int width = to_double ? e->type.vec : df_width(e->type);
+    const bool is_signed = integer == ir::Base::Int64;
+    const std::string scalar = is_signed ? "int64_t" : "uint64_t", df = df_type_name(width);
+    const std::string one = std::string(to_double ? "df_from_" : "df_to_") + (is_signed ? "int64" : "uint64");
+    if (exact()) {
+      ctx_.use_rule(to_double ? "ex_from_uint" : "ex_to_uint", 1);  // brings ex_norm_round_pack, ex_trunc_magnitude
+    } else if (!to_double) {
+      ctx_.use_rule(runtime_name("df_trunc"), 1);
+    }
+    ctx_.use_width(1);
+    ctx_.use_width(width);
+    std::string body;
+    if (to_double && exact()) {
+      body = "df_double " + one + "(" + scalar + " i) {\n" +
+             (is_signed ? "  uint64_t m = i < 0l ? 0ul - uint64_t(i) : uint64_t(i);\n" : "  uint64_t m = i;\n") +
+             "  if (m == 0ul) return ex_from_bits(uvec2(0u));\n"
+             "  return ex_from_bits(ex_norm_round_pack(" + (is_signed ? "i < 0l" : "false") + ", 1084, unpackUint2x32(m)));\n}\n";
+    } else if (to_double) {
+      // back = the integer hi is, from hi's bits: Mesa folds int64_t(float(i)) back to i (which would
+      // make lo 0). Past 2^63 (2^64 unsigned) it wraps, and the wrapped difference is still right.
+      body = "df_double " + one + "(" + scalar + " i) {\n  float hi = float(i);\n"
+             "  uint b = floatBitsToUint(hi);\n  int e = int((b >> 23) & 0xFFu) - 150;\n"
+             "  " + scalar + " m = " + scalar + "((b & 0x7FFFFFu) | 0x800000u);\n"
+             "  " + scalar + " back = e >= 0 ? m << e : m >> min(-e, 63);\n" +
+             (is_signed ? "  if ((b >> 31) != 0u) back = -back;\n" : "") +
+             "  return df_double(hi, float(int64_t(i - back)));\n}\n";
+    } else if (exact()) {
+      body = scalar + " " + one + "(df_double a) {\n  uvec2 w = ex_bits(a);\n" +
+             (is_signed ? "  int64_t m = int64_t(packUint2x32(ex_trunc_magnitude(w)));\n  return w.y >= 0x80000000u ? -m : m;\n"
+                        : "  return packUint2x32(ex_trunc_magnitude(w));\n") + "}\n";
+    } else {
+      body = scalar + " " + one + "(df_double x) {\n  df_double t = df_trunc(x);\n  return " + scalar +
+             (is_signed ? "(t.hi) + int64_t(t.lo);\n" : "(t.hi) + uint64_t(int64_t(t.lo));\n") + "}\n";
+    }
+    ctx_.add_helper(one, body);
+    const ir::Type result = to_double ? df_type(width) : ir::scalar_type(integer, width);
+    if (width == 1) return ir::make_node(Kind::Call, one, result, {e}, e->loc);
+    // Vectors: the scalar helper per component.
+    const std::string name = one + "_" + std::to_string(width), vec = ir::type_name(ir::scalar_type(integer, width));
+    static const char* kLetters = "xyzw";
+    std::string text = (to_double ? df : vec) + " " + name + "(" + (to_double ? vec : df) + " v) {\n";
+    std::string hi, lo, parts;
+    for (int k = 0; k < width; ++k) {
+      const std::string c = std::string(1, kLetters[k]), r = "r" + std::to_string(k);
+      if (to_double) {
+        text += "  df_double " + r + " = " + one + "(v." + c + ");\n";
+        hi += (k ? ", " : "") + r + ".hi";
+        lo += (k ? ", " : "") + r + ".lo";
+      } else {
+        parts += (k ? ", " : "") + one + "(df_double(v.hi." + c + ", v.lo." + c + "))";
+      }
+    }
+    const std::string word = word_type_name(width);
+    text += to_double ? "  return " + df + "(" + word + "(" + hi + "), " + word + "(" + lo + "));\n}\n"
+                      : "  return " + vec + "(" + parts + ");\n}\n";
+    ctx_.add_helper(name, text);
+    return ir::make_node(Kind::Call, name, result, {e}, e->loc);
+  }
+
+  // The 64-bit integer bit casts (GL_ARB_gpu_shader_int64) go through the binary64 words the
+  // 2x32 packing functions already lower: int64BitsToDouble(i) = packDouble2x32(unpackUint2x32(i)),
+  // doubleBitsToInt64(d) = packUint2x32(unpackDouble2x32(d)), per component, in a helper.
+  ExprPtr lower_int64_bit_casts(const ExprPtr& e) {
+    const std::string& n = e->name;
+    const bool to_double = n == "int64BitsToDouble" || n == "uint64BitsToDouble";
+    if (!to_double && n != "doubleBitsToInt64" && n != "doubleBitsToUint64") return nullptr;
+    if (ctx_.config.mode == Mode::Fp32) {
+      ctx_.error(e->loc, n + " has no meaning when doubles are demoted to float (--mode fp32)");
+      return e;
+    }
+    const int width = to_double ? e->args[0]->type.vec : df_width(e->args[0]->type);
+    const std::string pack = runtime_name("df_pack_double2x32"), unpack = runtime_name("df_unpack_double2x32");
+    ctx_.use_rule(to_double ? pack : unpack, 1);
+    ctx_.use_width(1);
+    ctx_.use_width(width);
+    const ir::Base integer = n == "int64BitsToDouble" || n == "doubleBitsToInt64" ? ir::Base::Int64 : ir::Base::Uint64;
+    const std::string vec = ir::type_name(ir::scalar_type(integer, width)), df = df_type_name(width);
+    const std::string scalar = integer == ir::Base::Int64 ? "int64_t" : "uint64_t";
+    const std::string name = "df_" + n + "_" + std::to_string(width);
+    static const char* kLetters = "xyzw";
+    std::string text = (to_double ? df : vec) + " " + name + "(" + (to_double ? vec : df) + " v) {\n", hi, lo, parts;
+    for (int k = 0; k < width; ++k) {
+      const std::string c = width == 1 ? "" : std::string(".") + kLetters[k], r = "r" + std::to_string(k);
+      if (to_double) {
+        text += "  df_double " + r + " = " + pack + "(unpackUint2x32(uint64_t(v" + c + ")));\n";
+        hi += (k ? ", " : "") + r + ".hi";
+        lo += (k ? ", " : "") + r + ".lo";
+      } else {
+        parts += (k ? ", " : "") + scalar + "(packUint2x32(" + unpack + "(df_double(v.hi" + c + ", v.lo" + c + "))))";
+      }
+    }
+    const std::string word = word_type_name(width);
+    text += !to_double ? "  return " + vec + "(" + parts + ");\n}\n"
+            : width == 1 ? "  return r0;\n}\n"
+                         : "  return " + df + "(" + word + "(" + hi + "), " + word + "(" + lo + "));\n}\n";
+    ctx_.add_helper(name, text);
+    return ir::make_node(Kind::Call, name, to_double ? df_type(width) : ir::scalar_type(integer, width), {e->args[0]}, e->loc);
   }
 
   // Converts a df value to scalar/vector type `base` of the same width.
@@ -290,6 +400,8 @@ class DoubleLowering {
       case ir::Base::Int: rule_name = "df_to_int"; break;
       case ir::Base::Uint: rule_name = "df_to_uint"; break;
       case ir::Base::Bool: rule_name = "df_to_bool"; break;
+      case ir::Base::Int64:
+      case ir::Base::Uint64: return int64_conversion(e, base, false);
       default:
         ctx_.error(e->loc, "cannot convert a double to this type");
         return e;
@@ -660,6 +772,7 @@ class DoubleLowering {
     // `.length()` of a (runtime-sized) array of doubles counts elements, whatever they became.
     if (ir::is_array_length(*e)) return e;
     if (e->name == "packDouble2x32") return rule("df_pack_double2x32", 1, df_type(1), e->args, e->loc);
+    if (ExprPtr bits = lower_int64_bit_casts(e)) return bits;
     bool any_df = std::any_of(e->args.begin(), e->args.end(),
                               [](const ExprPtr& a) { return is_df(a->type) || matrix::is_matrix(a->type); });
     if (!any_df) return e;

@@ -148,7 +148,7 @@ TEST(Targets, ConstructsTheTargetLacksAreDiagnosedByConstructAndTarget) {
   expect_error(lower("#version 450\n#extension GL_ARB_gpu_shader_int64 : enable\nlayout(local_size_x = 1) in;\n"
                      "layout(std430, binding = 0) buffer B { double v; int64_t w; };\nvoid main() { w = int64_t(v); }\n",
                      doublet::Stage::Compute, doublet::Target::Es320),
-               {"64-bit integers", "es320", "two 32-bit"});
+               {"64-bit integers are not available on", "es320", "glsl450 has them", "two 32-bit"});
   expect_error(lower(std::string(kComputeHeader) + "void main() { double x = 1.0lf; }\n", doublet::Stage::Compute,
                      doublet::Target::Es300),
                {"es300", "has no compute shaders", "es310"});

@@ -1,0 +1,411 @@
+#version 450 core
+#extension GL_ARB_gpu_shader_int64 : enable
+precision highp float;
+precision highp int;
+layout(local_size_x = 16, local_size_y = 1, local_size_z = 1) in;
+
+struct df_dvec4 {
+  vec4 hi;
+  vec4 lo;
+};
+// doublet float-float runtime: 18 functions from rules/*.glsl, guard: precise
+struct df_double { float hi; float lo; };
+struct df_dvec2 { vec2 hi; vec2 lo; };
+
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_double df_neg(df_double a) {
+  precise float h = (-a.hi);
+  precise float l = (-a.lo);
+  return df_double(h, l);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float z = (s - a);
+  precise float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_floor: largest integer <= x. hi not an integer: floor(hi); else hi + floor(lo), joined by
+// Fast2Sum (|floor(lo)| <= |hi| since |lo| <= ulp(hi)/2 and |hi| >= 1).
+// Special values: +-0 and +-Inf are integers whose lo is 0 (or, for an input Inf, NaN): they
+// are returned as (hi, 0), as native floor does; the Fast2Sum would give +0 for -0 and
+// Inf - Inf = NaN in lo. NaN fails f == hi and gives (NaN, 0).
+// Algorithm: floor of hi, or Fast2Sum(hi, floor(lo)) when hi is a nonzero finite integer
+// Source: JMP 2017, Definition 1.4; Dekker 1971, Theorem 4.3 (Fast2Sum); IEEE 754-2008 section 5.9
+// Bound: exact
+// Flops: 6 (plus 2 comparisons)
+df_double df_floor(df_double a) {
+  precise float f = (floor(a.hi));
+  precise float af = (abs(f));
+  bool integer = all(bvec3(f == a.hi, af > 0.0, af <= 3.40282347e38));
+  precise float g = (floor(a.lo));
+  df_double r = df_fast_two_sum(a.hi, g);
+  precise float h = (mix(f, r.hi, integer));
+  precise float l = (mix(0.0, r.lo, integer));
+  return df_double(h, l);
+}
+
+// df_ceil: smallest integer >= x, as -floor(-x): negation is exact, and the zero results get
+// native's signs (ceil(-0.5) = -0, ceil(-1 + 2^-30) = -0), which hi + ceil(lo) would give as +0.
+// Algorithm: df_neg, df_floor, df_neg
+// Source: JMP 2017, Definition 1.4; IEEE 754-2008 section 5.9 (ceil(x) = -floor(-x))
+// Bound: exact
+// Flops: 10 (plus 2 comparisons)
+df_double df_ceil(df_double a) {
+  df_double n = df_neg(a);
+  df_double f = df_floor(n);
+  df_double r = df_neg(f);
+  return r;
+}
+
+// df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
+// ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
+// early return or a short-circuit inside a rule that is inlined into a loop body multiplies the
+// control flow the browser's shader compilers have to handle (docs/performance.md, "Compile time in
+// the browser").
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBType)
+// Bound: exact
+// Flops: 0
+df_double df_select(bool c, df_double a, df_double b) {
+  precise float h = (mix(b.hi, a.hi, c));
+  precise float l = (mix(b.lo, a.lo, c));
+  return df_double(h, l);
+}
+
+// df_trunc: the integer nearest x toward zero: ceil for negative x, floor otherwise, both computed
+// and one selected. (Selecting the operand instead, floor(x < 0 ? -x : x), is one floor less, but
+// Mesa's GLES compiler folds that select into abs(x), which turns trunc(-0) into +0.)
+// Algorithm: df_ceil and df_floor, selected by the sign of hi
+// Source: JMP 2017, Definition 1.4; GLSL 4.60 (2019) section 8.3 (trunc)
+// Bound: exact
+// Flops: 16
+df_double df_trunc(df_double a) {
+  bool negative = a.hi < 0.0;
+  df_double c = df_ceil(a);
+  df_double f = df_floor(a);
+  df_double r = df_select(negative, c, f);
+  return r;
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
+df_double df_split(float a) {
+  precise float g = (a * 4097.0);
+  precise float d = (a - g);
+  precise float hi = (g + d);
+  precise float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
+df_double df_two_prod(float a, float b) {
+  precise float p = (a * b);
+  precise float aa = (abs(a));
+  precise float ab = (abs(b));
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  precise float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  precise float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  precise float as = (a * ka);
+  precise float bs = (b * kb);
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  precise float az = (abs(z.hi));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  precise float h = (mix(f, z.hi, regular));
+  precise float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 30
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+df_double df_mul_f(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  precise float cl2 = (a.lo * b);
+  df_double t = df_fast_two_sum(c.hi, cl2);
+  precise float tl2 = (t.lo + c.lo);
+  df_double z = df_fast_two_sum(t.hi, tl2);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 39
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
+df_double df_div(df_double a, df_double b) {
+  precise float th = (a.hi / b.hi);
+  df_double r = df_mul_f(b, th);
+  precise float pih = (a.hi - r.hi);
+  precise float dl = (a.lo - r.lo);
+  precise float d = (pih + dl);
+  precise float tl = (d / b.hi);
+  df_double z = df_fast_two_sum(th, tl);
+  df_double q = df_finish(z, th);
+  return q;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec2 df_two_sum(vec2 a, vec2 b) {
+  precise vec2 s = (a + b);
+  precise vec2 bb = (s - a);
+  precise vec2 ab = (s - bb);
+  precise vec2 da = (a - ab);
+  precise vec2 db = (b - bb);
+  precise vec2 e = (da + db);
+  return df_dvec2(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
+  precise vec2 s = (a + b);
+  precise vec2 z = (s - a);
+  precise vec2 e = (b - z);
+  return df_dvec2(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 2: the width-1 df_finish applied to each component)
+df_dvec2 df_finish(df_dvec2 z, vec2 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
+  df_dvec2 s = df_two_sum(a.hi, b.hi);
+  df_dvec2 t = df_two_sum(a.lo, b.lo);
+  precise vec2 c = (s.lo + t.hi);
+  df_dvec2 v = df_fast_two_sum(s.hi, c);
+  precise vec2 w = (t.lo + v.lo);
+  df_dvec2 z = df_fast_two_sum(v.hi, w);
+  df_dvec2 r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
+// (width 2: the width-1 df_two_prod applied to each component)
+df_dvec2 df_two_prod(vec2 a, vec2 b) {
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+// df_mul_f2: a * b with b a plain float (the lo word of the double operand known to be zero).
+// Cheaper than df_mul (29) and more accurate (3u^2 against 7u^2).
+// Algorithm: DWTimesFP2 (JMP Algorithm 8) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, section 4
+// Bound: 3u^2
+// Flops: 27
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3);
+//        df_finish(z, ch).
+// Range and special values: as df_mul (the same TwoProd, the same df_finish).
+df_dvec2 df_mul_f2(df_dvec2 a, vec2 b) {
+  df_dvec2 c = df_two_prod(a.hi, b);
+  precise vec2 cl2 = (a.lo * b);
+  precise vec2 cl3 = (c.lo + cl2);
+  df_dvec2 z = df_fast_two_sum(c.hi, cl3);
+  df_dvec2 r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_mul_pow2: a * p where every component of p is a power of two (+-2^k), exact: scaling by a
+// power of two only changes exponents, so hi*p and lo*p are exact and (hi*p, lo*p) is still a
+// double-word number. Replaces df_mul (29 flops) and df_div by a power of two.
+// Algorithm: exact scaling of both words by a power of two, then df_finish
+// Source: HFPA (2018), section 2.2 (multiplication by a power of the radix is exact); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 3
+// Range: exact while lo*p stays normal (|lo*p| >= 2^-126) and hi*p does not overflow; an
+// overflowing, zero or NaN hi*p gives (hi*p, 0) as df_mul does (df_finish).
+df_dvec2 df_mul_pow2(df_dvec2 a, vec2 p) {
+  precise vec2 h = (a.hi * p);
+  precise vec2 l = (a.lo * p);
+  df_dvec2 r = df_finish(df_dvec2(h, l), h);
+  return r;
+}
+
+df_dvec2 df_splat_dvec2(df_double s) {
+  return df_dvec2(vec2(s.hi), vec2(s.lo));
+}
+
+int64_t df_to_int64(df_double x) {
+  df_double t = df_trunc(x);
+  return int64_t(t.hi) + int64_t(t.lo);
+}
+
+df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
+  return df_dvec2(vec2(a0.hi, a1.hi), vec2(a0.lo, a1.lo));
+}
+
+i64vec2 df_to_int64_2(df_dvec2 v) {
+  return i64vec2(df_to_int64(df_double(v.hi.x, v.lo.x)), df_to_int64(df_double(v.hi.y, v.lo.y)));
+}
+
+df_double df_from_int64(int64_t i) {
+  float hi = float(i);
+  uint b = floatBitsToUint(hi);
+  int e = int((b >> 23) & 0xFFu) - 150;
+  int64_t m = int64_t((b & 0x7FFFFFu) | 0x800000u);
+  int64_t back = e >= 0 ? m << e : m >> min(-e, 63);
+  if ((b >> 31) != 0u) back = -back;
+  return df_double(hi, float(int64_t(i - back)));
+}
+
+df_double df_from_uint64(uint64_t i) {
+  float hi = float(i);
+  uint b = floatBitsToUint(hi);
+  int e = int((b >> 23) & 0xFFu) - 150;
+  uint64_t m = uint64_t((b & 0x7FFFFFu) | 0x800000u);
+  uint64_t back = e >= 0 ? m << e : m >> min(-e, 63);
+  return df_double(hi, float(int64_t(i - back)));
+}
+
+df_dvec2 df_from_int64_2(i64vec2 v) {
+  df_double r0 = df_from_int64(v.x);
+  df_double r1 = df_from_int64(v.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+df_dvec2 df_from_uint64_2(u64vec2 v) {
+  df_double r0 = df_from_uint64(v.x);
+  df_double r1 = df_from_uint64(v.y);
+  return df_dvec2(vec2(r0.hi, r1.hi), vec2(r0.lo, r1.lo));
+}
+
+df_dvec4 df_make_dvec4_1_1_2(df_double a0, df_double a1, df_dvec2 a2) {
+  return df_dvec4(vec4(a0.hi, a1.hi, a2.hi.x, a2.hi.y), vec4(a0.lo, a1.lo, a2.lo.x, a2.lo.y));
+}
+
+layout(std430, binding = 0) buffer Data {
+  df_dvec2 x[];
+};
+layout(std430, binding = 1) buffer Results {
+  df_dvec4 r[];
+};
+
+
+void main()
+{
+  uint i = gl_GlobalInvocationID.x;
+  df_dvec2 v = df_mul_f2(x[i], vec2(1.0e+06));
+  int64_t micro = df_to_int64(df_double(v.hi.x, v.lo.x)) * 1000l - df_to_int64(df_double(v.hi.y, v.lo.y));
+  uint64_t bits = uint64_t(abs(micro)) ^ 6148914691236517205ul;
+  i64vec2 pair = df_to_int64_2(df_mul_pow2(df_make_dvec2_1_1(df_double(v.hi.y, v.lo.y), df_neg(df_double(v.hi.x, v.lo.x))), vec2(4096.0)));
+  df_double back = df_div(df_from_int64(micro), df_double(7.0, 0.0));
+  df_double wide = df_from_uint64(bits >> 11);
+  df_dvec2 both = df_add(df_from_int64_2(pair), df_from_uint64_2(u64vec2(uint64_t(i) << 40, 3ul)));
+  r[i] = df_make_dvec4_1_1_2(back, wide, both);
+}
