@@ -23,8 +23,23 @@ function writeScalar(view, offset, scalar, value) {
 }
 
 // One member of the uniform buffer: components in order, matrices column by column (a column of
-// 2 floats is 8 bytes apart from the next, of 3 or 4 floats 16: WGSL's uniform layout).
+// 2 floats is 8 bytes apart from the next, of 3 or 4 floats 16: WGSL's uniform layout). An array's
+// elements are array_stride apart; an array of scalars or 2-vectors is padded to vec4 elements
+// (its values fill each element's first components).
 function writeMember(view, member, data) {
+  const array = /^array<(.+), (\d+)>$/.exec(member.lowered_type);
+  if (array) {
+    const n = Number(array[2]);
+    const list = Array.from(data);
+    if (list.length % n !== 0) throw new Error(`'${member.name}' (${member.type}): ${list.length} values for ${n} elements`);
+    const per = list.length / n;
+    const element = wgslType(array[1]);
+    if (!element || element.columns !== 1 || per > element.rows)
+      throw new Error(`'${member.name}': arrays of ${array[1]} are not supported yet`);
+    for (let k = 0; k < n; ++k)
+      for (let c = 0; c < per; ++c) writeScalar(view, member.offset + k * member.array_stride + 4 * c, element.scalar, list[k * per + c]);
+    return;
+  }
   const t = wgslType(member.lowered_type);
   if (!t) throw new Error(`'${member.name}': members of type ${member.lowered_type} are not supported yet`);
   const list = typeof data === 'number' ? [data] : Array.from(data);

@@ -24,7 +24,7 @@ const goldenDefaultTargets = ['es300', 'es310', 'es320', 'glsl450', 'webgl2'];
 function goldenBatches() {
   const batches = new Map();
   const dir = join(root, 'tests/golden/cases');
-  for (const file of readdirSync(dir).filter((f) => /\.(vert|frag|comp)$/.test(f)).sort()) {
+  for (const file of readdirSync(dir).filter((f) => /\.(vert|frag|comp|geom|tesc|tese)$/.test(f)).sort()) {
     const lines = readFileSync(join(dir, file), 'utf8').split('\n');
     let caseTargets = goldenDefaultTargets;
     let options = [];

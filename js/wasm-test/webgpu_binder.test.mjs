@@ -63,6 +63,45 @@ for (const mode of ['exact', 'df64']) {
   });
 }
 
+// Loose uniform arrays: WGSL pads an array of scalars or 2-vectors to vec4 elements (the manifest's
+// array_stride 16); wgslUniformBuffer writes each element's values at its stride.
+const arrayKernel = `#version 450
+layout(local_size_x = 1) in;
+uniform double d[3];
+uniform dvec2 w[2];
+uniform float f[2];
+layout(std430, binding = 0) buffer Out { double r[]; };
+void main() {
+  for (int k = 0; k < 3; ++k) r[k] = d[k] * w[k % 2].y + double(f[k % 2]);
+  r[3] = w[1].x - d[2];
+}
+`;
+const arrayValues = { d: [1.0 / 3.0, 42164137.25, -7.0e-3], w: [0.1, 1.1, 2.0 / 7.0, -5.5], f: [0.75, -2.5] };
+const arrayExpected = [0, 1, 2].map((k) => arrayValues.d[k] * arrayValues.w[2 * (k % 2) + 1] + Math.fround(arrayValues.f[k % 2]))
+  .concat([arrayValues.w[2] - arrayValues.d[2]]);
+
+for (const mode of ['exact', 'df64']) {
+  test(`Chromium WebGPU, mode ${mode}: uniform arrays padded to vec4 elements give the expected doubles`, { skip }, (t) => {
+    const { wgsl, manifest } = lowerNative(arrayKernel, 'comp', ['--mode', mode]);
+    const block = manifest.variables.find((v) => v.layout === 'wgsl-uniform');
+    const padded = block.members.find((m) => m.name === (mode === 'exact' ? 'd' : 'd_hi'));
+    assert.equal(padded.array_stride, 16, JSON.stringify(padded));
+    const words = runKernel(t, { wgsl, manifest, values: arrayValues, outBytes: 8 * arrayExpected.length });
+    if (!words) return;
+    const member = manifest.variables.find((v) => v.name === 'Out').members[0];
+    arrayExpected.forEach((want, i) => {
+      if (mode === 'exact') {
+        assert.deepEqual([words[2 * i], words[2 * i + 1]], Array.from(exactWords(want)), `r[${i}]: ${fromExactWords(words, 2 * i)} vs ${want}`);
+      } else {
+        const f = new Float32Array(new Uint32Array(words).buffer);
+        const base = (member.offset + i * member.array_stride) / 4;
+        const got = joinPair(f[base + member.hi_offset / 4], f[base + member.lo_offset / 4]);
+        assert.ok(Math.abs(got - want) <= Math.abs(want) * 2 ** -44, `r[${i}]: ${got} vs ${want}`);
+      }
+    });
+  });
+}
+
 test('vertex layout and packed vertices follow the manifest', { skip }, () => {
   const shader = `#version 450
 in float size;

@@ -102,6 +102,9 @@ class WgslPrinter {
   std::vector<WgslPrintResult::BlockBinding> block_bindings_;
   std::map<std::string, int> overload_count_;
   std::set<const ir::Var*> loose_uniforms_, pointer_params_;
+  // Loose uniform arrays of scalars or 2-vectors: WGSL's uniform buffers need a 16-byte element
+  // stride, so each element is the first components of a vec4 (the swizzle that reads it).
+  std::map<const ir::Var*, std::string> padded_uniform_arrays_;
   std::map<const ir::Var*, std::string> block_var_names_;
   std::map<std::string, std::string> helpers_;  // name -> WGSL text, emitted before the module
   std::map<std::string, ir::Loc> builtins_used_;  // gl_* variables the functions name, first use
@@ -316,15 +319,26 @@ class WgslPrinter {
     for (const auto& v : vars) {
       if (v->type.base == Base::Bool) error(v->loc, "bool uniform '" + v->name + "': WGSL buffers hold no bool; use int or uint");
       Layout l = layout_of(v->type, true);
-      if (v->type.is_array() && l.size / std::max(v->type.array_dims[0], 1) % 16 != 0)
-        error(v->loc, "uniform array '" + v->name + "': WGSL's uniform buffers need a 16-byte element stride; use vec4 elements");
+      std::string declared = type(v->type, v->loc);
+      if (v->type.is_array() && l.size / std::max(v->type.array_dims[0], 1) % 16 != 0) {
+        const ir::Type element = v->type.element();
+        if (v->type.array_dims.size() == 1 && !element.is_matrix() && element.base != Base::Struct && element.vec <= 2) {
+          padded_uniform_arrays_[v.get()] = element.vec == 1 ? ".x" : ".xy";
+          ir::Type vec4 = element;
+          vec4.vec = 4;
+          declared = "array<" + type(vec4, v->loc) + ", " + std::to_string(v->type.array_dims[0]) + ">";
+          l = {16, 16 * v->type.array_dims[0]};
+        } else {
+          error(v->loc, "uniform array '" + v->name + "': WGSL's uniform buffers need a 16-byte element stride; use vec4 elements");
+        }
+      }
       offset = (offset + l.align - 1) / l.align * l.align;
       out_ << "  " << (l.align == 16 && (v->type.is_array() || v->type.base == Base::Struct) ? "@align(16) " : "")
-           << ident(v->name) << ": " << type(v->type, v->loc) << ",  // offset " << offset << "\n";
+           << ident(v->name) << ": " << declared << ",  // offset " << offset << "\n";
       BlockMember m;
       m.name = v->name;
       m.type = ir::type_name(v->type) + ir::array_suffix(v->type);
-      m.lowered_type = type(v->type);
+      m.lowered_type = declared;
       m.offset = offset;
       m.size = l.size;
       if (v->type.is_array()) m.array_stride = l.size / std::max(v->type.array_dims[0], 1);
@@ -721,6 +735,9 @@ class WgslPrinter {
     }
     if (pointer_params_.count(&v)) return "(*" + ident(v.name) + ")";
     if (shadowed_params_.count(&v)) return ident(v.name) + "_v";
+    if (padded_uniform_arrays_.count(&v))
+      error(current_loc_, "uniform array '" + v.name + "' is used as a whole: WGSL pads its elements to 16 bytes, so "
+                          "doublet reads it element by element only (" + v.name + "[i])");
     if (loose_uniforms_.count(&v)) return "df_uniforms." + ident(v.name);
     if (v.block) {
       auto it = block_var_names_.find(v.block.get());
@@ -1157,7 +1174,11 @@ class WgslPrinter {
                                                               : e->name);
       case Kind::Index: {
         std::string index = expr(e->args[1]);
-        return expr(e->args[0]) + "[" + index + "]";
+        const ir::ExprPtr& base = e->args[0];
+        if (base->kind == Kind::Sym)
+          if (auto padded = padded_uniform_arrays_.find(base->var.get()); padded != padded_uniform_arrays_.end())
+            return "df_uniforms." + ident(base->var->name) + "[" + index + "]" + padded->second;
+        return expr(base) + "[" + index + "]";
       }
       case Kind::Comma:
         error(e->loc, "a comma expression inside an expression cannot be expressed in WGSL");
