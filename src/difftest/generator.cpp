@@ -81,8 +81,8 @@ class Generator {
   explicit Generator(uint64_t seed) : rng_(seed) { program_.seed = seed; }
 
   Program run() {
-    const int which = pick(0, 9);
-    stage_ = which < 6 ? "comp" : which < 8 ? "vert" : "frag";
+    const int which = pick(0, 10);
+    stage_ = which < 6 ? "comp" : which < 8 ? "vert" : which < 10 ? "frag" : "geom";
     program_.stage = stage_;
     feature("stage:" + stage_);
     allow_rounding_ = chance(0.3);
@@ -90,6 +90,8 @@ class Generator {
     const int inputs = pick(1, 4), outputs = pick(1, 3);
     std::string head = "#version 450\n";
     if (stage_ == "comp") head += "layout(local_size_x = 64) in;\n";
+    // A geometry shader: one point in, one emitted (verify compares each emitted vertex).
+    if (stage_ == "geom") head += "layout(points) in;\nlayout(points, max_vertices = 1) out;\n";
     std::string spec = "{\n  \"inputs\": {";
     for (int i = 0; i < inputs; ++i) {
       const Ty t = vec_of(pick(1, 4));
@@ -100,10 +102,13 @@ class Generator {
         head += "layout(" + std::string(std140 ? "std140" : "std430") + ", binding = " + std::to_string(i) +
                 ") readonly buffer In" + std::to_string(i) + " { " + type_name(t) + " " + name + "[]; };\n";
       } else {
-        head += std::string(stage_ == "frag" ? "flat in " : "in ") + type_name(t) + " " + name + ";\n";
+        head += std::string(stage_ == "frag" ? "flat in " : "in ") + type_name(t) + " " + name +
+                (stage_ == "geom" ? "[]" : "") + ";\n";
       }
       const bool positive = chance(0.4);
-      spec += std::string(i ? "," : "") + "\n    \"" + name + "\": { \"range\": " + (positive ? "[0.25, 4]" : "[-3, 3]") + " }";
+      // A geometry shader's per-vertex input is fed element by element (verify names it in0[0]).
+      spec += std::string(i ? "," : "") + "\n    \"" + name + (stage_ == "geom" ? "[0]" : "") + "\": { \"range\": " +
+              (positive ? "[0.25, 4]" : "[-3, 3]") + " }";
       inputs_.push_back({name, t, 4, false});
     }
     std::string output_spec;
@@ -114,7 +119,7 @@ class Generator {
         head += "layout(std430, binding = " + std::to_string(inputs + o) + ") writeonly buffer Out" + std::to_string(o) +
                 " { " + type_name(t) + " " + name + "[]; };\n";
         outputs_.push_back({name, t});
-      } else if (stage_ == "vert") {
+      } else if (stage_ == "vert" || stage_ == "geom") {
         const Ty t = vec_of(pick(1, 4));
         head += "out " + std::string(type_name(t)) + " " + name + ";\n";
         outputs_.push_back({name, t});
@@ -874,6 +879,7 @@ class Generator {
     line("if " + paren(c.s) + " {");
     ++indent_;
     write_outputs();
+    if (stage_ == "geom") line("EmitVertex();");
     line("return;");
     --indent_;
     line("}");
@@ -964,7 +970,7 @@ class Generator {
       const Ex e = gen(type, 2);
       if (stage_ == "comp") {
         line(name + "[gid] = " + e.s + ";");
-      } else if (stage_ == "vert") {
+      } else if (stage_ == "vert" || stage_ == "geom") {
         line(name + " = " + e.s + ";");
       } else {
         // hi = float(t), lo = float(t - hi): both exact functions of the double t.
@@ -1033,10 +1039,11 @@ class Generator {
     line("void main() {");
     ++indent_;
     if (stage_ == "comp") line("uint gid = gl_GlobalInvocationID.x;");
-    if (stage_ == "vert") line("gl_Position = vec4(0.0, 0.0, 0.0, 1.0);");
+    if (stage_ == "vert" || stage_ == "geom") line("gl_Position = vec4(0.0, 0.0, 0.0, 1.0);");
     for (const Var& in : inputs_) {
       const std::string name = "x" + in.name.substr(2);
-      line(std::string(type_name(in.ty)) + " " + name + " = " + in.name + (stage_ == "comp" ? "[gid];" : ";"));
+      line(std::string(type_name(in.ty)) + " " + name + " = " + in.name +
+           (stage_ == "comp" ? "[gid];" : stage_ == "geom" ? "[0];" : ";"));
       scope_.push_back({name, in.ty, 4});
     }
     // Every block member is read once, so none is inactive (verify refuses a range for a uniform the
@@ -1048,6 +1055,7 @@ class Generator {
     }
     block(pick(3, 8), 0);
     write_outputs();
+    if (stage_ == "geom") line("EmitVertex();");
     --indent_;
     line("}");
   }
@@ -1085,7 +1093,7 @@ const std::vector<std::string>& all_features() {
       "stmt:continue", "stmt:early-return", "stmt:early-return-main", "call:expression", "call:out-arguments",
       "call:component-out-argument", "function:pure", "function:out-parameters", "struct", "struct:local",
       "struct:field-write", "struct:array", "array:local", "array:element-write", "global:const",
-      "global:initialised", "global:uniform-initialised", "layout:std140", "stage:comp", "stage:vert", "stage:frag",
+      "global:initialised", "global:uniform-initialised", "layout:std140", "stage:comp", "stage:vert", "stage:frag", "stage:geom",
       "stmt:discard", "block:uniform"};
   return list;
 }

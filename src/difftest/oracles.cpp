@@ -134,15 +134,17 @@ bool compiles_natively(const std::string& glsl, const std::string& stage, std::s
     return runner::compile_compute_to_spirv(glsl, &spirv, error);
   }
   runner::GraphicsInterface graphics;
-  return runner::reflect_graphics(stage == "vert" ? runner::GraphicsStage::Vertex : runner::GraphicsStage::Fragment, glsl,
-                                  &graphics, error);
+  const runner::GraphicsStage graphics_stage = stage == "vert"   ? runner::GraphicsStage::Vertex
+                                              : stage == "geom" ? runner::GraphicsStage::Geometry
+                                                                : runner::GraphicsStage::Fragment;
+  return runner::reflect_graphics(graphics_stage, glsl, &graphics, error);
 }
 
 CheckResult check(const std::string& glsl, const std::string& spec_json, const std::string& stage_name,
                   const CheckOptions& options) {
   CheckResult result;
   if (!compiles_natively(glsl, stage_name, &result.invalid)) return result;
-  const Stage stage = stage_name == "vert" ? Stage::Vertex : stage_name == "frag" ? Stage::Fragment : Stage::Compute;
+  const Stage stage = parse_stage(stage_name).value_or(Stage::Compute);
   verify::Spec spec;
   if (std::string e = verify::parse_spec(spec_json, &spec); !e.empty()) {
     result.invalid = "spec: " + e;

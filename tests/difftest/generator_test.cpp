@@ -28,7 +28,7 @@ TEST(DiffGenerator, ProgramsCompileNativelyAndLowerInEveryOraclesMode) {
     const Program p = generate(seed);
     std::string error;
     ASSERT_TRUE(compiles_natively(p.glsl, p.stage, &error)) << "seed " << seed << "\n" << error << "\n" << p.glsl;
-    const Stage stage = p.stage == "vert" ? Stage::Vertex : p.stage == "frag" ? Stage::Fragment : Stage::Compute;
+    const Stage stage = parse_stage(p.stage).value_or(Stage::Compute);
     for (const auto& [mode, target] : lowerings) {
       Options o;
       o.stage = stage;
