@@ -101,19 +101,25 @@ struct WordSplit {
   int width = 1;
 };
 
-void add_copy_out(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_out) {
-  for (size_t i = 0; i < s->body.size(); ++i) {
-    auto& child = s->body[i];
+// Puts `copy_out` before every statement below `s` that `before` selects.
+void add_copy_out_before(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_out,
+                         const std::function<bool(const ir::Stmt&)>& before) {
+  for (auto& child : s->body) {
     if (!child) continue;
-    if (child->kind == ir::Stmt::Kind::Return) {
+    if (before(*child)) {
       auto block = ir::Stmt::make(ir::Stmt::Kind::Block, child->loc);
       block->body = copy_out;
       block->body.push_back(child);
       child = block;
     } else {
-      add_copy_out(child, copy_out);
+      add_copy_out_before(child, copy_out, before);
     }
   }
+}
+
+// Outputs are split out before every return from main.
+void add_copy_out(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_out) {
+  add_copy_out_before(s, copy_out, [](const ir::Stmt& st) { return st.kind == ir::Stmt::Kind::Return; });
 }
 
 // `array[gl_InvocationID]`.
@@ -167,19 +173,10 @@ bool tessellation_control_outputs_are_own(const ir::Module& module, const std::v
 // Geometry: the outputs are the values at each EmitVertex()/EmitStreamVertex(n), so the split
 // goes before every such call statement, in any function (the outputs are globals).
 void add_copy_out_before_emits(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_out) {
-  for (auto& child : s->body) {
-    if (!child) continue;
-    const ExprPtr& e = child->expr;
-    if (child->kind == ir::Stmt::Kind::Expr && e && e->kind == Kind::Builtin &&
-        (e->name == "EmitVertex" || e->name == "EmitStreamVertex")) {
-      auto block = ir::Stmt::make(ir::Stmt::Kind::Block, child->loc);
-      block->body = copy_out;
-      block->body.push_back(child);
-      child = block;
-    } else {
-      add_copy_out_before_emits(child, copy_out);
-    }
-  }
+  add_copy_out_before(s, copy_out, [](const ir::Stmt& st) {
+    return st.kind == ir::Stmt::Kind::Expr && st.expr && st.expr->kind == Kind::Builtin &&
+           (st.expr->name == "EmitVertex" || st.expr->name == "EmitStreamVertex");
+  });
 }
 
 // Diagnoses a generated name that GLSL reserves ("__") or that the shader already uses.

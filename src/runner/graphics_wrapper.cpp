@@ -51,17 +51,22 @@ struct Scope {
   }
 };
 
+using Renames = std::vector<std::pair<std::regex, const char*>>;
+
+std::string apply_renames(const std::string& line, const Renames& renames) {
+  std::string out = line;
+  for (const auto& [re, replacement] : renames) out = std::regex_replace(out, re, replacement);
+  return out;
+}
+
 // Built-ins the wrapped text cannot use as written: ES 1.00/compatibility fragment outputs become
 // plain globals (stored like any output), ES 1.00 texture functions their ES 3.10 name.
 std::string rename_legacy_builtins(const std::string& line) {
-  static const std::pair<std::regex, const char*> kRenames[] = {
-      {std::regex(R"(\bgl_FragColor\b)"), "doublet_FragColor"},
-      {std::regex(R"(\bgl_FragData\b)"), "doublet_FragData"},
-      {std::regex(R"(\btexture2D\b)"), "texture"},
-      {std::regex(R"(\btextureCube\b)"), "texture"}};
-  std::string out = line;
-  for (const auto& [re, replacement] : kRenames) out = std::regex_replace(out, re, replacement);
-  return out;
+  static const Renames kRenames = {{std::regex(R"(\bgl_FragColor\b)"), "doublet_FragColor"},
+                                   {std::regex(R"(\bgl_FragData\b)"), "doublet_FragData"},
+                                   {std::regex(R"(\btexture2D\b)"), "texture"},
+                                   {std::regex(R"(\btextureCube\b)"), "texture"}};
+  return apply_renames(line, kRenames);
 }
 
 constexpr int kFragDataSlots = 4;  // gl_FragData[0..3]
@@ -205,18 +210,15 @@ uint32_t tessellation_output_vertices(const std::string& glsl) {
 // (doublet_emit, in the wrapper's main part), EndPrimitive() and barrier() do nothing (no primitive
 // is rasterized; a control shader's outputs are its own, see the wrapper's main).
 std::string rename_primitive_builtins(const std::string& line) {
-  static const std::pair<std::regex, const char*> kRenames[] = {
-      {std::regex(R"(\bgl_in\b)"), "doublet_gl_in"},
-      {std::regex(R"(\bgl_out\b)"), "doublet_gl_out"},
-      {std::regex(R"(\bgl_TessCoord\b)"), "doublet_tess_coord"},
-      {std::regex(R"(\bgl_TessLevelOuter\b)"), "doublet_tess_level_outer"},
-      {std::regex(R"(\bgl_TessLevelInner\b)"), "doublet_tess_level_inner"},
-      {std::regex(R"(\bbarrier\s*\(\s*\))"), "doublet_barrier()"},
-      {std::regex(R"(\bEmitVertex\s*\(\s*\))"), "doublet_emit()"},
-      {std::regex(R"(\bEndPrimitive\s*\(\s*\))"), "doublet_end_primitive()"}};
-  std::string out = line;
-  for (const auto& [re, replacement] : kRenames) out = std::regex_replace(out, re, replacement);
-  return out;
+  static const Renames kRenames = {{std::regex(R"(\bgl_in\b)"), "doublet_gl_in"},
+                                   {std::regex(R"(\bgl_out\b)"), "doublet_gl_out"},
+                                   {std::regex(R"(\bgl_TessCoord\b)"), "doublet_tess_coord"},
+                                   {std::regex(R"(\bgl_TessLevelOuter\b)"), "doublet_tess_level_outer"},
+                                   {std::regex(R"(\bgl_TessLevelInner\b)"), "doublet_tess_level_inner"},
+                                   {std::regex(R"(\bbarrier\s*\(\s*\))"), "doublet_barrier()"},
+                                   {std::regex(R"(\bEmitVertex\s*\(\s*\))"), "doublet_emit()"},
+                                   {std::regex(R"(\bEndPrimitive\s*\(\s*\))"), "doublet_end_primitive()"}};
+  return apply_renames(line, kRenames);
 }
 
 // gl_VertexIndex under Vulkan (glslang defines VULKAN), gl_VertexID under GL.
