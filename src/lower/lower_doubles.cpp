@@ -2,6 +2,7 @@
 // float-float runtime (rules/*.glsl). A double literal is split exactly into
 // hi = float(x), lo = float(x - hi) at compile time.
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -329,26 +330,36 @@ class DoubleLowering {
     ctx_.add_helper(one, body);
     const ir::Type result = to_double ? df_type(width) : ir::scalar_type(integer, width);
     if (width == 1) return ir::make_node(Kind::Call, one, result, {e}, e->loc);
-    // Vectors: the scalar helper per component.
-    const std::string name = one + "_" + std::to_string(width), vec = ir::type_name(ir::scalar_type(integer, width));
+    const std::string name = one + "_" + std::to_string(width);
+    add_int64_component_helper(name, integer, width, to_double, [&](const std::string& component) {
+      return one + "(" + component + ")";
+    });
+    return ir::make_node(Kind::Call, name, result, {e}, e->loc);
+  }
+
+  // A helper `name` between a 64-bit integer vector and a df vector of `width`, made of a scalar
+  // expression per component: `scalar_of` gets the component (`v.x`, or `df_double(v.hi.x,
+  // v.lo.x)` from a df vector) and spells the scalar conversion of it.
+  void add_int64_component_helper(const std::string& name, ir::Base integer, int width, bool to_double,
+                                  const std::function<std::string(const std::string&)>& scalar_of) {
     static const char* kLetters = "xyzw";
-    std::string text = (to_double ? df : vec) + " " + name + "(" + (to_double ? vec : df) + " v) {\n";
-    std::string hi, lo, parts;
+    const std::string df = df_type_name(width), vec = ir::type_name(ir::scalar_type(integer, width));
+    std::string text = (to_double ? df : vec) + " " + name + "(" + (to_double ? vec : df) + " v) {\n", hi, lo, parts;
     for (int k = 0; k < width; ++k) {
-      const std::string c = std::string(1, kLetters[k]), r = "r" + std::to_string(k);
+      const std::string c = width == 1 ? "" : std::string(".") + kLetters[k], r = "r" + std::to_string(k);
       if (to_double) {
-        text += "  df_double " + r + " = " + one + "(v." + c + ");\n";
+        text += "  df_double " + r + " = " + scalar_of("v" + c) + ";\n";
         hi += (k ? ", " : "") + r + ".hi";
         lo += (k ? ", " : "") + r + ".lo";
       } else {
-        parts += (k ? ", " : "") + one + "(df_double(v.hi." + c + ", v.lo." + c + "))";
+        parts += (k ? ", " : "") + scalar_of("df_double(v.hi" + c + ", v.lo" + c + ")");
       }
     }
     const std::string word = word_type_name(width);
-    text += to_double ? "  return " + df + "(" + word + "(" + hi + "), " + word + "(" + lo + "));\n}\n"
-                      : "  return " + vec + "(" + parts + ");\n}\n";
+    text += !to_double ? "  return " + vec + "(" + parts + ");\n}\n"
+            : width == 1 ? "  return r0;\n}\n"
+                         : "  return " + df + "(" + word + "(" + hi + "), " + word + "(" + lo + "));\n}\n";
     ctx_.add_helper(name, text);
-    return ir::make_node(Kind::Call, name, result, {e}, e->loc);
   }
 
   // The 64-bit integer bit casts (GL_ARB_gpu_shader_int64) go through the binary64 words the
@@ -368,26 +379,12 @@ class DoubleLowering {
     ctx_.use_width(1);
     ctx_.use_width(width);
     const ir::Base integer = n == "int64BitsToDouble" || n == "doubleBitsToInt64" ? ir::Base::Int64 : ir::Base::Uint64;
-    const std::string vec = ir::type_name(ir::scalar_type(integer, width)), df = df_type_name(width);
     const std::string scalar = integer == ir::Base::Int64 ? "int64_t" : "uint64_t";
     const std::string name = "df_" + n + "_" + std::to_string(width);
-    static const char* kLetters = "xyzw";
-    std::string text = (to_double ? df : vec) + " " + name + "(" + (to_double ? vec : df) + " v) {\n", hi, lo, parts;
-    for (int k = 0; k < width; ++k) {
-      const std::string c = width == 1 ? "" : std::string(".") + kLetters[k], r = "r" + std::to_string(k);
-      if (to_double) {
-        text += "  df_double " + r + " = " + pack + "(unpackUint2x32(uint64_t(v" + c + ")));\n";
-        hi += (k ? ", " : "") + r + ".hi";
-        lo += (k ? ", " : "") + r + ".lo";
-      } else {
-        parts += (k ? ", " : "") + scalar + "(packUint2x32(" + unpack + "(df_double(v.hi" + c + ", v.lo" + c + "))))";
-      }
-    }
-    const std::string word = word_type_name(width);
-    text += !to_double ? "  return " + vec + "(" + parts + ");\n}\n"
-            : width == 1 ? "  return r0;\n}\n"
-                         : "  return " + df + "(" + word + "(" + hi + "), " + word + "(" + lo + "));\n}\n";
-    ctx_.add_helper(name, text);
+    add_int64_component_helper(name, integer, width, to_double, [&](const std::string& component) {
+      return to_double ? pack + "(unpackUint2x32(uint64_t(" + component + ")))"
+                       : scalar + "(packUint2x32(" + unpack + "(" + component + ")))";
+    });
     return ir::make_node(Kind::Call, name, to_double ? df_type(width) : ir::scalar_type(integer, width), {e->args[0]}, e->loc);
   }
 

@@ -47,7 +47,7 @@ void store_scalar(uint8_t* at, char scalar, double value);
 bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error, ShaderInterface* iface = nullptr,
                   bool strict_fp64 = false);
 
-// The same for several stages linked as one program (vertex then fragment; words/fragment_words).
+// The same for several stages linked as one program, each stage's SPIR-V in its SpirvProgram member.
 enum class Stage { Compute, Vertex, Fragment, Geometry, TessControl, TessEvaluation };
 bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stages, SpirvProgram* out,
                          std::string* error, ShaderInterface* iface = nullptr, bool strict_fp64 = false);

@@ -282,29 +282,30 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
                          std::string* error, ShaderInterface* iface, bool strict_fp64) {
   std::lock_guard<std::mutex> lock(glslang_mutex());
   const EShMessages messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
-  auto language = [](Stage s) {
+  // Per stage: glslang's language, the name its log uses, and where its SPIR-V goes.
+  struct StageInfo {
+    EShLanguage language;
+    const char* name;
+    std::vector<uint32_t> SpirvProgram::*words;
+  };
+  auto info = [](Stage s) -> StageInfo {
     switch (s) {
-      case Stage::Vertex: return EShLangVertex;
-      case Stage::Fragment: return EShLangFragment;
-      case Stage::Geometry: return EShLangGeometry;
-      case Stage::TessControl: return EShLangTessControl;
-      case Stage::TessEvaluation: return EShLangTessEvaluation;
-      default: return EShLangCompute;
+      case Stage::Vertex: return {EShLangVertex, "job.vert", &SpirvProgram::words};
+      case Stage::Fragment: return {EShLangFragment, "job.frag", &SpirvProgram::fragment_words};
+      case Stage::Geometry: return {EShLangGeometry, "job.geom", &SpirvProgram::geometry_words};
+      case Stage::TessControl: return {EShLangTessControl, "job.tesc", &SpirvProgram::tess_control_words};
+      case Stage::TessEvaluation: return {EShLangTessEvaluation, "job.tese", &SpirvProgram::tess_evaluation_words};
+      default: return {EShLangCompute, "job.comp", &SpirvProgram::words};
     }
   };
 
   std::vector<std::unique_ptr<glslang::TShader>> shaders;
   glslang::TProgram program;
   for (const auto& [stage, glsl] : stages) {
-    const EShLanguage lang = language(stage);
+    const EShLanguage lang = info(stage).language;
     auto shader = std::make_unique<glslang::TShader>(lang);
     const char* text = glsl.c_str();
-    const char* name = stage == Stage::Vertex           ? "job.vert"
-                       : stage == Stage::Fragment       ? "job.frag"
-                       : stage == Stage::Geometry       ? "job.geom"
-                       : stage == Stage::TessControl    ? "job.tesc"
-                       : stage == Stage::TessEvaluation ? "job.tese"
-                                                        : "job.comp";
+    const char* name = info(stage).name;
     shader->setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
     shader->setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
     shader->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
@@ -376,13 +377,10 @@ bool compile_glsl_stages(const std::vector<std::pair<Stage, std::string>>& stage
   options.disableOptimizer = true;  // the driver's optimizer is what we want to observe, not spirv-opt's
   options.validate = false;         // validated below with a readable message
   for (size_t i = 0; i < stages.size(); ++i) {
-    std::vector<uint32_t>& words = stages[i].first == Stage::Geometry         ? result.geometry_words
-                                   : stages[i].first == Stage::TessControl    ? result.tess_control_words
-                                   : stages[i].first == Stage::TessEvaluation ? result.tess_evaluation_words
-                                   : i == 0                                   ? result.words
-                                                                              : result.fragment_words;
+    const StageInfo stage = info(stages[i].first);
+    std::vector<uint32_t>& words = result.*stage.words;
     spv::SpvBuildLogger logger;
-    glslang::GlslangToSpv(*program.getIntermediate(language(stages[i].first)), words, &logger, &options);
+    glslang::GlslangToSpv(*program.getIntermediate(stage.language), words, &logger, &options);
     if (words.empty()) {
       *error = "glslang produced no SPIR-V: " + logger.getAllMessages();
       return false;
