@@ -149,7 +149,7 @@ struct StageVariable {
 struct GraphicsInterface {
   std::vector<StageVariable> inputs, outputs;  // declaration order; outputs end with gl_Position
   uint32_t input_stride = 0, output_stride = 0;  // bytes per sample record (std430 struct)
-  uint32_t records_per_sample = 1;  // output records per sample: a geometry shader's max_vertices
+  uint32_t records_per_sample = 1;  // output records per sample: a geometry shader's max_vertices, a control shader's N
   uint32_t input_vertices = 1;      // vertices drawn per sample: a geometry primitive's, a patch's
   std::vector<ShaderInterface::Uniform> uniforms;  // active loose uniforms (glslang reflection)
   std::vector<ShaderInterface::UniformBlock> uniform_blocks;  // named uniform blocks (GraphicsJob::uniform_blocks)

@@ -392,7 +392,7 @@ std::vector<OutputStats> GraphicsHarness::compare(const std::vector<runner::Grap
         std::vector<const std::vector<double>*> word_outputs;
         for (const std::string& n : v.word_components.empty() ? std::vector<std::string>{} : v.lowered)
           word_outputs.push_back(&lowered[d].outputs.at(n));
-        // A geometry sample has one record per vertex it may emit (records_).
+        // A geometry or tessellation control sample has several records (records_).
         for (uint32_t s = 0; s < per_draw_ * records_; ++s) {
           const size_t k = s * comps + static_cast<size_t>(c);
           double want = want_v[k], got = word_outputs.empty() ? hi_v[k] : 0;

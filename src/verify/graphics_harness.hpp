@@ -84,7 +84,7 @@ class GraphicsHarness {
   std::vector<InputRelation> relations_;  // scene relations, applied after drawing
   std::map<std::string, uint32_t> native_block_sizes_, lowered_block_sizes_;  // bytes per uniform block
   uint32_t per_draw_ = 1;
-  uint32_t records_ = 1;  // output records per sample (a geometry shader's max_vertices)
+  uint32_t records_ = 1;  // output records per sample (GraphicsInterface::records_per_sample)
   uint64_t draws_ = 1;
   // values_[draw][input]: components values for a uniform, per_draw × components for a stage input.
   std::vector<std::vector<std::vector<double>>> values_;
