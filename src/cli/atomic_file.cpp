@@ -49,7 +49,19 @@ void unlist_temp_file(std::size_t slot) {
   if (slot < kTempSlots) delete[] g_temp_files[slot].exchange(nullptr);
 }
 
+// The handler runs on one thread while the others go on: a job on another thread may be
+// between mkstemp() and listing its file. So a creator announces itself (g_creating)
+// before it looks at g_dying, and the handler sets g_dying before it waits for the
+// creators to finish: with sequentially consistent atomics, either the creator sees
+// g_dying and creates nothing, or the handler sees the creator and waits for its listing.
+std::atomic<bool> g_dying{false};
+std::atomic<int> g_creating{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
+
 extern "C" void remove_temp_files_and_die(int sig) {
+  g_dying.store(true);
+  while (g_creating.load() != 0) {
+  }
   for (auto& slot : g_temp_files)
     if (char* path = slot.exchange(nullptr)) ::unlink(path);
   ::signal(sig, SIG_DFL);
@@ -204,14 +216,22 @@ bool AtomicFile::prepare_temporary(std::string_view contents) {
   std::string templ = (dir.empty() ? fs::path(".") : dir).string() + "/.dbl-XXXXXX";
   int fd = -1;
   {
-    FatalSignalsBlocked blocked;
+    FatalSignalsBlocked blocked;  // the handler cannot run here, on this thread, and wait for itself
+    g_creating.fetch_add(1);
+    if (g_dying.load()) {
+      g_creating.fetch_sub(1);
+      for (;;) ::pause();  // the handler, on another thread, is ending the process
+    }
     fd = ::mkstemp(templ.data());
+    if (fd >= 0) {
+      temp_path_ = templ;
+      temp_slot_ = list_temp_file(temp_path_);
+    }
+    g_creating.fetch_sub(1);
     if (fd < 0) {
       fail(errno);
       return false;
     }
-    temp_path_ = templ;
-    temp_slot_ = list_temp_file(temp_path_);
   }
 
   int err = 0;
