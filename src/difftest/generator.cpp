@@ -85,6 +85,9 @@ class Generator {
     stage_ = which < 6 ? "comp" : which < 8 ? "vert" : which < 10 ? "frag" : "geom";
     program_.stage = stage_;
     feature("stage:" + stage_);
+    // One compute or vertex program in three is continuous, for the bound oracle (oracles.hpp). Decided
+    // by the seed, not the engine, so the other programs stay what their seeds made before.
+    continuous_ = (stage_ == "comp" || stage_ == "vert") && program_.seed % 3 == 0;
     allow_rounding_ = chance(0.3);
     struct_vec_ = vec_of(pick(2, 4));
     const int inputs = pick(1, 4), outputs = pick(1, 3);
@@ -164,7 +167,7 @@ class Generator {
       head += std::string(is_const ? "const " : "") + type_name(t) + " " + name + " = " + init.s + ";\n";
       scope_.push_back({name, t, init.b, !is_const});
     }
-    if (chance(0.15)) {
+    if (!continuous_ && chance(0.15)) {  // (a bound oracle's scene has the spec's inputs only)
       feature("global:uniform-initialised");
       const std::string name = fresh("u");
       const Ex init = literal_of(Ty::D);
@@ -172,7 +175,8 @@ class Generator {
       scope_.push_back({name, Ty::D, init.b, false});
     }
     text_ = head;
-    for (int f = pick(0, 2); f > 0; --f) function();
+    if (!continuous_)
+      for (int f = pick(0, 2); f > 0; --f) function();
     main_function();
     program_.glsl = text_;
     program_.spec_json = spec;
@@ -307,7 +311,11 @@ class Generator {
   bool num_production(Ty t, int depth, Ex* out) {
     const int d = depth - 1;
     const int n = size_of(t);
-    switch (pick(0, 19)) {
+    const int kind = pick(0, 19);
+    // A continuous program: no production that jumps (rounding to integers, comparisons, ?:) and
+    // none the planner has no error bound for (ldexp, determinant, the identity through words).
+    if (continuous_ && (kind == 11 || kind == 13 || kind == 17 || kind >= 19 || (kind == 18 && t == Ty::D))) return false;
+    switch (kind) {
       case 0: {
         const Ex a = gen(t, d);
         feature("op:neg");
@@ -341,6 +349,7 @@ class Generator {
                                                         "trunc", "round", "roundEven"};
         const std::string f = one_of(kUnary);
         if (!allow_rounding_ && (f == "trunc" || f == "round" || f == "roundEven")) return false;
+        if (continuous_ && f != "abs" && f != "sqrt" && f != "inversesqrt") return false;
         const Ex a = gen(t, d);
         feature("fn:" + f);
         if (f == "sqrt") *out = {"sqrt(abs(" + a.s + "))", std::sqrt(a.b)};
@@ -351,6 +360,7 @@ class Generator {
       case 7: {
         static const std::vector<std::string> kBinary = {"min", "max", "mod", "step"};
         const std::string f = one_of(kBinary);
+        if (continuous_ && f != "min" && f != "max") return false;
         const Ex a = gen(t, d), b = scalar_or_same(t, d);
         feature("fn:" + f);
         if (f == "mod") *out = {"mod(" + a.s + ", " + denominator_floor() + " + abs(" + b.s + "))", b.b + 2};
@@ -366,7 +376,7 @@ class Generator {
       }
       case 9: {
         const Ex a = gen(t, d), b = gen(t, d);
-        if (chance(0.5)) {
+        if (continuous_ || chance(0.5)) {
           const Ex w = scalar_or_same(t, d);
           feature("fn:mix");
           *out = {"mix(" + a.s + ", " + b.s + ", " + w.s + ")", (a.b + b.b) * (1 + w.b)};
@@ -380,7 +390,7 @@ class Generator {
       case 10: {
         const Ex a = gen(t, d);
         const double lim = pick(1, 8) / 2.0;
-        if (chance(0.5)) {
+        if (continuous_ || chance(0.5)) {
           feature("fn:clamp");
           *out = {"clamp(" + a.s + ", " + literal(-lim) + ", " + literal(lim) + ")", lim};
         } else {
@@ -420,7 +430,7 @@ class Generator {
       case 14: {
         if (t == Ty::D) {
           const Ex a = gen(Ty::D, d);
-          switch (pick(0, 2)) {
+          switch (continuous_ ? 0 : pick(0, 2)) {
             case 0: feature("conv:float"); *out = {"double(float(" + a.s + "))", a.b}; return true;
             case 1:
               feature("conv:int");
@@ -451,7 +461,7 @@ class Generator {
           }
         }
         const Ex a = gen(t, d), b = gen(t, d);
-        switch (pick(0, 4)) {
+        switch (pick(0, continuous_ ? 2 : 4)) {
           case 0:
             feature("fn:normalize");
             *out = {"normalize(abs(" + a.s + ") + " + type_name(t) + "(0.25lf))", 1};
@@ -530,7 +540,9 @@ class Generator {
       }
       return literal_of(t);
     }
-    switch (pick(0, 7)) {
+    int kind = pick(0, 7);
+    if (continuous_ && (kind == 1 || kind == 6)) kind = 0;  // outerProduct and inverse: no bound in the planner
+    switch (kind) {
       case 0: {
         std::string s = std::string(type_name(t)) + "(";
         double b = 1;
@@ -670,7 +682,7 @@ class Generator {
 
   void statement(int nesting) {
     comma_used_ = false;
-    const int r = pick(0, nesting > 1 ? 11 : 17);
+    const int r = pick(0, continuous_ ? 7 : nesting > 1 ? 11 : 17);
     if (r <= 2) return declaration();
     if (r <= 5) return assignment();
     if (r == 6) return compound_assignment();
@@ -1069,6 +1081,7 @@ class Generator {
   int counter_ = 0, indent_ = 0;
   std::string stage_ = "comp";
   bool allow_rounding_ = false, has_struct_ = false, comma_used_ = false, in_function_ = false;
+  bool continuous_ = false;  // no jump anywhere: the planner's bound applies (the bound oracle)
   Ty struct_vec_ = Ty::V2, return_type_ = Ty::D;
 };
 

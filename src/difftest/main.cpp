@@ -131,7 +131,7 @@ int run(const RunArgs& a) {
   if (timeouts) std::cout << "programs without a result in time (skipped): " << timeouts << "\n";
   if (excused) std::cout << "exact: " << excused << " result(s) were zeros of the other sign than native's (excused)\n";
   std::cout << "programs: " << programs << ", failures: " << failures + invalid << ", oracles: exact=" << checked["exact"]
-            << " int=" << checked["int"] << " bound=0 targets=" << checked["targets"] << std::endl;
+            << " int=" << checked["int"] << " bound=" << checked["bound"] << " targets=" << checked["targets"] << std::endl;
   return failures + invalid > 0 ? 1 : 0;
 }
 

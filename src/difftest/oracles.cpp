@@ -8,11 +8,14 @@
 #include <cstring>
 #include <sstream>
 
+#include <regex>
+
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "plan/planner.hpp"
 #include "runner/runner.hpp"
 #include "verify/verify.hpp"
 
@@ -74,7 +77,7 @@ verify::VerifyReport run_verify(const std::string& glsl, const verify::Spec& spe
 // verify refused the program itself, which makes it invalid).
 bool failed(const verify::VerifyReport& r, const std::string& what, CheckResult* result) {
   std::vector<Finding>* findings = &result->findings;
-  if (r.input_error.rfind("lowering failed", 0) == 0) {
+  if (r.input_error.rfind("lowering failed", 0) == 0 || r.input_error.rfind("the lowered shader", 0) == 0) {
     findings->push_back({"lowering", what + ": " + r.input_error});
     return true;
   }
@@ -126,7 +129,69 @@ void compare_runs(const verify::BackendRun& a, const verify::BackendRun& b, cons
 // Samples where native is not finite or beyond float-float's range make no claim about pairs.
 bool outside_pair_range(double want, double, double) { return !std::isfinite(want) || std::fabs(want) > kPairRange; }
 
+// An output's own name: "r0" for verify's "r0[].x", "r0.y" or "r0 (hi+lo)".
+std::string base_name(const std::string& output) { return output.substr(0, output.find_first_of(".[ ")); }
+
+// The bound oracle's scene: the spec's input ranges (a block member by its own name, a geometry
+// input by its array's) and every output the df64 run measured, each with a nominal requirement
+// (only the planner's estimates are read).
+plan::Scene scene_of(const verify::Spec& spec, const verify::BackendRun& run) {
+  plan::Scene scene;
+  scene.file = "scene.json";
+  for (const auto& [name, in] : spec.inputs) {
+    if (!in.lo || !in.hi) continue;  // no range: the planner takes the input as unbounded
+    std::string own = name.substr(name.rfind('.') == std::string::npos ? 0 : name.rfind('.') + 1);
+    own = own.substr(0, own.find('['));
+    scene.inputs[own].components = {plan::Interval{*in.lo, *in.hi}};
+  }
+  for (const verify::OutputStats& o : run.outputs) scene.outputs[base_name(o.name)].abs_error = 1;
+  return scene;
+}
+
+// The bound oracle on one df64 report (every backend): each output's measured max |df64 - native|
+// against the planner's df64 estimate plus its binary64 estimate. False when no output has a
+// finite estimate (the oracle then made no check).
+bool check_bound(const std::string& glsl, Stage stage, const verify::Spec& spec, const verify::VerifyReport& df64,
+                 const std::string& what, CheckResult* result) {
+  if (df64.runs.empty()) return false;
+  Options options;
+  options.stage = stage;
+  options.file_name = "program." + std::string(to_string(stage));
+  const plan::PlanOutcome plan = plan::make_plan(glsl, options, scene_of(spec, df64.runs[0]));
+  if (!plan.ok) {
+    std::string why;
+    for (const Diagnostic& d : plan.diagnostics) why += (why.empty() ? "" : "; ") + d.message;
+    result->findings.push_back({"bound", "the planner refused a valid program: " + why});
+    return true;
+  }
+  bool any = false;
+  for (const plan::OutputRow& row : plan.outputs) {
+    const double bound = row.estimate_df64 + row.estimate_exact;
+    if (!std::isfinite(bound)) continue;
+    any = true;
+    for (const verify::BackendRun& run : df64.runs)
+      for (const verify::OutputStats& o : run.outputs)
+        if (base_name(o.name) == row.name && !(o.max_abs_err <= bound))
+          result->findings.push_back(
+              {"bound", what + " on " + runner::backend_name(run.backend) + ": output " + o.name + ": measured max |df64 - native| " +
+                            show(o.max_abs_err) + " exceeds the planner's bound " + show(bound) + " (df64 " +
+                            show(row.estimate_df64) + " + binary64 " + show(row.estimate_exact) + ")"});
+  }
+  return any;
+}
+
 }  // namespace
+
+bool is_continuous(const std::string& glsl) {
+  // Comments out first; then any jump: comparisons and ?:, control flow, rounding to integers and
+  // the built-ins that select (sign, step, faceforward, refract's total reflection).
+  const std::string code = std::regex_replace(glsl, std::regex(R"(//[^\n]*)"), "");
+  static const std::regex jump(
+      R"([<>?!]|==|\b(if|for|while|do|switch|discard|return|floor|ceil|fract|trunc|round|roundEven|mod|modf|frexp|)"
+      R"(step|smoothstep|sign|faceforward|refract|isnan|isinf|int|uint|bool|ivec[234]|uvec[234]|bvec[234])\s*\()"
+      R"(|\b(if|for|while|do|switch|discard|return|break|continue|bool)\b)");
+  return !std::regex_search(code, jump);
+}
 
 bool compiles_natively(const std::string& glsl, const std::string& stage, std::string* error) {
   if (stage == "comp") {
@@ -180,7 +245,7 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
     }
   }
 
-  if (wants("int") || wants("targets")) {
+  if (wants("int") || wants("targets") || wants("bound")) {
     // es320 declares the runtime `precise`, so no driver contracts a*b + c anywhere in it: two
     // lowerings then differ only where their rules do. es310's uniform guard, and df64-int's
     // default guard (none), leave contracting the parts that are not error-free transformations to
@@ -198,6 +263,16 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
                          std::string("df64-int against df64 on ") + runner::backend_name(df64.runs[b].backend),
                          outside_pair_range, &result.findings);
         }
+      }
+      if (wants("bound") && (stage == Stage::Compute || stage == Stage::Vertex) && is_continuous(glsl)) {
+        verify::VerifyReport sabotaged;
+        const verify::VerifyReport* measured = &df64;
+        if (options.sabotage != "none") {  // the other oracles keep their unsabotaged reference
+          const Lowering broken{.mode = Mode::Df64, .target = Target::Es320, .sabotaged = true};
+          sabotaged = run_verify(glsl, spec, stage, broken, drivers, options, &result);
+          measured = failed(sabotaged, broken.label(), &result) ? nullptr : &sabotaged;
+        }
+        if (measured && check_bound(glsl, stage, spec, *measured, base.label(), &result)) result.checked.push_back("bound");
       }
       if (wants("targets")) {
         bool all_ran = true;

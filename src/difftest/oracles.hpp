@@ -5,6 +5,11 @@
 //   int     — --mode df64-int returns the same pairs as df64 on every sample where native's value
 //             is finite and within float-float's range (the integer and the guarded float
 //             error-free transformations are the same functions);
+//   bound   — on a continuous program (no comparison, branch, loop or built-in that jumps; compute or
+//             vertex), `doublet plan`'s error model bounds every output of df64: the measured
+//             max |df64 - native| stays within the planner's df64 estimate plus its binary64
+//             estimate (native's own rounding), for the spec's input ranges. This tests the planner
+//             as much as the lowering;
 //   targets — the df64 lowerings for es310, es320 and glsl450 give the same pairs on lavapipe, and
 //             (with webgpu) the wgsl lowering the same pairs in Chromium's WebGPU.
 // Every lowering must succeed: the programs are valid GLSL 4.50, so a refusal is a finding too.
@@ -17,20 +22,20 @@
 namespace doublet::difftest {
 
 struct Finding {
-  std::string oracle;  // "exact", "int", "targets", "lowering"
+  std::string oracle;  // "exact", "int", "bound", "targets", "lowering"
   std::string detail;  // one paragraph: what differs, where, one sample's values
 };
 
 struct CheckOptions {
   uint64_t samples = 256;
-  std::vector<std::string> oracles{"exact", "int", "targets"};
+  std::vector<std::string> oracles{"exact", "int", "bound", "targets"};
   bool skip_exact = false;  // the program uses a built-in native does not compute as IEEE
   bool webgpu = false;      // also run the wgsl lowering in Chromium (targets)
   // Passes left out of every lowering (Options::skip_passes): a bug put back on purpose, to show
   // that the oracles find it (docs/robustness.md, "Differential testing").
   std::vector<std::string> skip_passes;
-  // verify's sabotage, applied to the mode exact and df64-int runs only (the others are their
-  // references): each oracle must then report a finding.
+  // verify's sabotage, applied to the mode exact and df64-int runs and to a df64 run of its own for
+  // the bound oracle (the other runs are references): each oracle must then report a finding.
   std::string sabotage = "none";
 };
 
@@ -45,6 +50,10 @@ struct CheckResult {
 // The program compiles as native fp64 GLSL 4.50 the way verify runs it (stage "comp", "vert" or
 // "frag"); else *error says why.
 bool compiles_natively(const std::string& glsl, const std::string& stage, std::string* error);
+
+// True when the program has nothing that jumps (comparisons, ?:, branches, loops, returns, rounding
+// to integers, ...): the planner's linear error model applies to it (docs/plan.md, "Limits").
+bool is_continuous(const std::string& glsl);
 
 // `stage`: "comp", "vert" or "frag".
 CheckResult check(const std::string& glsl, const std::string& spec_json, const std::string& stage,

@@ -1,7 +1,12 @@
-// select_structs (webgl2 only): every `c ? a : b` whose value is a struct (df_double, df_dvecN,
+// select_structs: on webgl2, every `c ? a : b` whose value is a struct (df_double, df_dvecN,
 // df_dmatCxR, a user struct) becomes a selection through a temporary, because WebGL forbids the
 // ternary operator on structures (ANGLE: "'?:' : ternary operator is not allowed for structures
 // in ESSL 1.0 and webgl"; docs/web.md records it rejecting doublet's es300 output).
+// On every other target only a struct ternary with an operand read from a uniform or buffer
+// block is rewritten: glslang 12 compiles `c ? df_double(...) : block_member` to an OpSelect
+// whose operands have two different struct types (the block's, with offsets, and the
+// function's), which spirv-val rejects, so such a shader could not be compiled for Vulkan
+// (found by the differential tester; docs/robustness.md, "Differential testing").
 //
 //   c ? a : b   →   (c ? (tmp = a, true) : (tmp = b, true), tmp)
 //
@@ -40,6 +45,13 @@ bool is_struct_ternary(const ir::ExprPtr& e) {
   return e->kind == Kind::Ternary && (e->type.base == ir::Base::Struct || e->type.is_array());
 }
 
+// True when `e` reads (through members and indices) a variable of a uniform or buffer block.
+bool reads_block(ir::ExprPtr e) {
+  while ((e->kind == Kind::Member || e->kind == Kind::Index) && !e->args.empty()) e = e->args[0];
+  return e->kind == Kind::Sym && e->var &&
+         (e->var->storage == ir::Storage::Uniform || e->var->storage == ir::Storage::Buffer);
+}
+
 bool constant_condition(const ir::ExprPtr& c, bool& value) {
   if (c->kind != Kind::Const || c->type.base != ir::Base::Bool || c->type.vec != 1 || c->values.size() != 1)
     return false;
@@ -70,7 +82,7 @@ ir::ExprPtr bool_true(ir::Loc loc) {
 
 class StructSelectRewriter {
  public:
-  StructSelectRewriter(ir::Module& m, Context& c) : module_(m), ctx_(c) {}
+  StructSelectRewriter(ir::Module& m, Context& c) : module_(m), ctx_(c), every_struct_(c.config.facts->webgl_rules) {}
 
   void run() {
     for (size_t i = 0; i < module_.globals.size(); ++i)
@@ -88,7 +100,7 @@ class StructSelectRewriter {
   // moved the others into main): a constant condition folds; anything else cannot be written.
   ir::ExprPtr rewrite_global(const ir::ExprPtr& init) {
     return ir::rewrite(init, [&](const ir::ExprPtr& e) -> ir::ExprPtr {
-      if (!is_struct_ternary(e)) return nullptr;
+      if (!every_struct_ || !rewritten(e)) return nullptr;  // (a block read is no constant initialiser)
       bool value;
       if (constant_condition(e->args[0], value)) return value ? e->args[1] : e->args[2];
       ctx_.error(e->loc, "webgl2: WebGL has no ternary operator on structures, and this one is in a global "
@@ -125,11 +137,11 @@ class StructSelectRewriter {
     if (!e) return {};
     ir::ExprPtr selection;
     ir::ExprPtr target;
-    if (s->kind == ir::Stmt::Kind::Decl && is_struct_ternary(e) && holds_array(e->type)) {
+    if (s->kind == ir::Stmt::Kind::Decl && rewritten(e) && holds_array(e->type)) {
       selection = e;
       target = sym(s->var, s->loc);
     } else if (s->kind == ir::Stmt::Kind::Expr && e->kind == Kind::Binary && e->op == "=" &&
-               is_struct_ternary(e->args[1]) && holds_array(e->args[1]->type) && ir::is_pure(e->args[0])) {
+               rewritten(e->args[1]) && holds_array(e->args[1]->type) && ir::is_pure(e->args[0])) {
       selection = e->args[1];
       target = e->args[0];
     } else {
@@ -157,10 +169,11 @@ class StructSelectRewriter {
   ir::ExprPtr rewrite_expr(const ir::ExprPtr& root, const ir::StmtPtr& owner) {
     bool comma_used = false;
     ir::ExprPtr result = ir::rewrite(root, [&](const ir::ExprPtr& e) -> ir::ExprPtr {
-      if (!is_struct_ternary(e)) return nullptr;
+      if (!rewritten(e)) return nullptr;
       bool value;
       if (constant_condition(e->args[0], value)) return value ? e->args[1] : e->args[2];
       if (holds_array(e->type)) {
+        if (!every_struct_) return nullptr;  // only WebGL lacks the sequence operator's way around
         ctx_.error(e->loc, "webgl2: WebGL allows neither the ternary operator nor the sequence operator on " +
                                std::string(e->type.is_array() ? "arrays" : "structures that contain arrays") +
                                " (" + ir::type_name(e->type) + ir::array_suffix(e->type) +
@@ -193,8 +206,14 @@ class StructSelectRewriter {
     return result;
   }
 
+  // The ternaries this target needs rewritten: every struct one (WebGL), or those reading a block.
+  bool rewritten(const ir::ExprPtr& e) const {
+    return is_struct_ternary(e) && (every_struct_ || reads_block(e->args[1]) || reads_block(e->args[2]));
+  }
+
   ir::Module& module_;
   Context& ctx_;
+  const bool every_struct_;
   std::vector<ir::StmtPtr> temporaries_;
   int counter_ = 0;
 };
@@ -202,7 +221,6 @@ class StructSelectRewriter {
 }  // namespace
 
 bool select_structs(ir::Module& module, Context& context) {
-  if (!context.config.facts->webgl_rules) return !context.failed;
   StructSelectRewriter(module, context).run();
   return !context.failed;
 }

@@ -137,6 +137,11 @@ bool Analysis::run(const ir::Module& module, const Scene& scene, std::vector<Dia
     if (!scene.inputs.count(name) && v->declared_type.contains_double())
       notes_.push_back("input '" + name + "' has no range in the scene: unbounded");
 
+  // A write-only buffer holds, for the analysis, only what the shader writes: its earlier
+  // contents are no value of the shader's (else an element write would join them, unbounded).
+  for (const auto& [name, v] : outputs_)
+    if (v->storage == ir::Storage::Buffer && is_writeonly(v)) env.emplace(v, Box{});
+
   // Forward: global initialisers, then main (callees analysed at each call).
   forward_pass(*this, main, std::move(env), std::move(relations));
   for (const auto& [name, v] : outputs_)

@@ -1,6 +1,6 @@
 // The differential tester's oracles on lavapipe and Mesa GLES (src/difftest/oracles.hpp): they hold
 // on generated programs, and each one reports a finding when a bug is put back on purpose — the
-// lowering's low words dropped (verify's drop-lo sabotage on the exact and df64-int runs), or a pass
+// lowering's low words dropped (verify's drop-lo sabotage on the exact, df64-int and bound runs), or a pass
 // left out of the pipeline.
 #include <gtest/gtest.h>
 
@@ -81,6 +81,55 @@ void main() {
   const CheckResult r = run(p, o);
   EXPECT_TRUE(has_finding(r, "exact")) << describe(r);
   EXPECT_TRUE(has_finding(r, "int")) << describe(r);
+}
+
+// The bound oracle: on a continuous program (one seed in three of the compute and vertex ones),
+// every df64 output stays within the planner's bound.
+TEST(DiffOracles, ContinuousProgramsKeepThePlannersBound) {
+  Program p;
+  for (uint64_t seed = 3;; seed += 3)
+    if ((p = generate(seed)).stage == "comp") break;
+  ASSERT_TRUE(is_continuous(p.glsl)) << p.glsl;
+  CheckOptions o = quick();
+  o.oracles = {"bound"};
+  const CheckResult r = run(p, o);
+  EXPECT_TRUE(r.findings.empty()) << "seed " << p.seed << describe(r);
+  EXPECT_EQ(r.checked, (std::vector<std::string>{"bound"})) << "seed " << p.seed << "\n" << p.glsl;
+}
+
+TEST(DiffOracles, DroppedLowWordsBreakThePlannersBound) {
+  Program p;  // in the generator's continuous form: a product, a quotient and a square root
+  p.glsl = R"(#version 450
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer In0 { dvec2 in0[]; };
+layout(std430, binding = 1) writeonly buffer Out0 { dvec2 r0[]; };
+void main() {
+  uint gid = gl_GlobalInvocationID.x;
+  dvec2 x0 = in0[gid];
+  dvec2 v1 = fma(x0, x0.yx, dvec2(0.1lf, 0.3lf));
+  r0[gid] = v1 / (1.5lf + abs(x0.yx)) + sqrt(abs(v1));
+}
+)";
+  p.spec_json = R"({ "inputs": { "in0": { "range": [0.25, 4] } } })";
+  CheckOptions o = quick();
+  o.oracles = {"bound"};
+  const CheckResult held = run(p, o);
+  EXPECT_TRUE(held.findings.empty()) << describe(held);
+  EXPECT_EQ(held.checked, (std::vector<std::string>{"bound"}));
+  o.sabotage = "drop-lo";
+  const CheckResult broken = run(p, o);
+  EXPECT_TRUE(has_finding(broken, "bound")) << describe(broken);
+}
+
+// What the bound oracle leaves out: anything that jumps, where a tiny error can move a result by
+// a whole step (docs/plan.md, "Limits").
+TEST(DiffOracles, OnlyProgramsWithoutJumpsAreContinuous) {
+  const std::string head = "#version 450\nin dvec2 a;\nout double r;\nvoid main() {\n  uint gid = 0u;\n";
+  EXPECT_TRUE(is_continuous(head + "  r = fma(a.x, a.y, sqrt(abs(a.x))) / (1.5lf + abs(a.y)); // if (x < y)\n}\n"));
+  for (const std::string body : {"r = a.x < a.y ? a.x : a.y;", "r = floor(a.x);", "if (a.x == 0.0lf) r = 1.0lf;",
+                                 "r = double(int(a.x));", "for (int k = 0; k < 2; ++k) r += a.x;", "r = step(a.x, a.y);",
+                                 "r = mix(a.x, a.y, a.x > 0.0lf);"})
+    EXPECT_FALSE(is_continuous(head + "  " + body + "\n}\n")) << body;
 }
 
 TEST(DiffOracles, APassLeftOutIsFound) {
