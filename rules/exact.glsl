@@ -581,8 +581,9 @@ uvec2 ex_from_uint_bits(bool negative, uint m) {
   return ex_norm_round_pack(negative, 1084, uvec2(m, 0u));
 }
 
-// ex_trunc_magnitude: the integer part of |a| as a 64-bit integer, for |a| < 2^63 (0 for |a| < 1).
-// Algorithm: the 53-bit significand shifted by the exponent (right: bits dropped, truncation; left up to 10 bits)
+// ex_trunc_magnitude: the integer part of |a| as a 64-bit integer, for |a| < 2^64 (0 for |a| < 1).
+// Algorithm: the 53-bit significand shifted by the exponent (right: bits dropped, truncation; left up to 11 bits,
+// so that uint64_t's top bit is reached)
 // Source: IEEE 754-2019, 5.8 (convertToIntegerTowardZero)
 // Bound: exact
 // Flops: 0
@@ -591,7 +592,7 @@ uvec2 ex_trunc_magnitude(uvec2 a) {
   int field = int((a.y >> 20) & 0x7FFu);
   if (field < 1023) return uvec2(0u);
   uvec2 m = ex_sig(a);
-  return field <= 1075 ? ex_shr64(m, 1075 - field) : ex_shl64(m, min(field - 1075, 10));
+  return field <= 1075 ? ex_shr64(m, 1075 - field) : ex_shl64(m, min(field - 1075, 11));
 }
 
 // ex_round_integral_bits: a rounded to an integral binary64 value: mode 0 toward zero (trunc), 1 toward -Inf (floor), 2 toward +Inf (ceil), 3 to nearest even.

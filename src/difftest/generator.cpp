@@ -4,6 +4,7 @@
 #include "difftest/generator.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -379,7 +380,12 @@ class Generator {
         if (continuous_ || chance(0.5)) {
           const Ex w = scalar_or_same(t, d);
           feature("fn:mix");
-          *out = {"mix(" + a.s + ", " + b.s + ", " + w.s + ")", (a.b + b.b) * (1 + w.b)};
+          // No component of the weight or of the two ends the same value as another's: lavapipe's
+          // NIR folds mix(x, x, t) to x and rewrites mix(x, y, x) even under NoContraction, where
+          // the written x(1 - t) + yt rounds otherwise (docs/robustness.md, findings). So the
+          // weight is clamped (a value of its own) and ends reading one variable are moved apart.
+          const std::string other = root_name(b.s) == root_name(a.s) ? "(" + b.s + " + 1.0lf)" : b.s;
+          *out = {"mix(" + a.s + ", " + other + ", clamp(" + w.s + ", 0.0lf, 1.0lf))", (a.b + b.b + 1) * (1 + w.b)};
         } else {
           const Ex c = is_vec(t) ? Ex{"lessThan(" + gen(t, d).s + ", " + gen(t, d).s + ")", 1} : gen_bool(d);
           feature("fn:mix(bool)");
@@ -525,6 +531,12 @@ class Generator {
         return true;
       }
     }
+  }
+  // The variable an expression starts with ("x2" of "x2.xy" or "x2[0]"); "" for other text.
+  static std::string root_name(const std::string& s) {
+    size_t n = 0;
+    while (n < s.size() && (std::isalnum(static_cast<unsigned char>(s[n])) || s[n] == '_')) ++n;
+    return n == 0 || (n < s.size() && s[n] == '(') ? "" : s.substr(0, n);
   }
   static std::string paren(const std::string& s) { return s.front() == '(' ? s : "(" + s + ")"; }
 
@@ -1112,7 +1124,10 @@ const std::vector<std::string>& all_features() {
 }
 
 bool uses_native_non_ieee(const Program& p) {
-  return p.features.count("fn:trunc") || p.features.count("fn:round") || p.features.count("fn:roundEven");
+  // smoothstep: lavapipe reassociates a constant factor into its expansion (fma(C, smoothstep(..),
+  // C) differs from the written order; a runtime factor of the same value does not).
+  return p.features.count("fn:trunc") || p.features.count("fn:round") || p.features.count("fn:roundEven") ||
+         p.features.count("fn:smoothstep");
 }
 
 }  // namespace doublet::difftest

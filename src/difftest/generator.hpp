@@ -28,9 +28,9 @@ Program generate(uint64_t seed);
 // Every feature the generator can emit: the denominator of the coverage share it prints.
 const std::vector<std::string>& all_features();
 
-// Built-ins whose native lavapipe results are not IEEE on some machines (docs/extremes.md, "Native
-// fp64 is not the oracle for rounding to an integer"): the exact-equals-native oracle skips a
-// program that uses one of them.
+// Built-ins whose native lavapipe results are not IEEE (docs/extremes.md, "Native fp64 is not the
+// oracle for rounding to an integer"; smoothstep: docs/robustness.md, findings): the
+// exact-equals-native oracle skips a program that uses one of them.
 bool uses_native_non_ieee(const Program&);
 
 }  // namespace doublet::difftest

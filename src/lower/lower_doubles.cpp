@@ -291,7 +291,7 @@ class DoubleLowering {
   //     of i, as any double rounded to df.
   //     int64_t(x) is int64_t(t.hi) + int64_t(t.lo) of t = trunc(x), both parts integers.
   //   exact: the integer's magnitude rounded once to binary64 (ex_norm_round_pack, as double(uint)
-  //     does); the conversion back truncates the magnitude (ex_trunc_magnitude, |x| < 2^63).
+  //     does); the conversion back truncates the magnitude (ex_trunc_magnitude, |x| < 2^64).
   ExprPtr int64_conversion(const ExprPtr& e, ir::Base integer, bool to_double) {
     const int width = to_double ? e->type.vec : df_width(e->type);
     const bool is_signed = integer == ir::Base::Int64;

@@ -14,7 +14,8 @@ void main() {
   uint64_t bits = uint64_t(abs(micro)) ^ 0x5555555555555555ul;
   i64vec2 pair = i64vec2(dvec2(v.y, -v.x) * 4096.0lf);
   double back = double(micro) / 7.0lf;
-  double wide = double(bits >> 11);
+  double huge = 1.0e19lf + abs(v.x);  // past 2^63: uint64_t's top bit
+  double wide = double(bits >> 11) + double(uint64_t(huge) >> 11);
   dvec2 both = dvec2(pair) + dvec2(u64vec2(uint64_t(i) << 40, 3ul));
   r[i] = dvec4(back, wide, both);
 }

@@ -8,7 +8,7 @@ struct df_dvec4 {
   vec4 hi;
   vec4 lo;
 };
-// doublet float-float runtime: 18 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 21 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 
@@ -214,6 +214,55 @@ df_double df_div(df_double a, df_double b) {
   return q;
 }
 
+// df_abs: |a|. Both words are multiplied by sign(hi) (exactly -1, 0 or +1).
+// Algorithm: sign of hi applied to both words
+// Source: JMP 2017, Definition 1.4 (sign of a double-word number is the sign of hi)
+// Bound: exact
+// Flops: 3
+df_double df_abs(df_double a) {
+  precise float s = (sign(a.hi));
+  precise float h = (abs(a.hi));
+  precise float l = (a.lo * s);
+  return df_double(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  precise float s = (a + b);
+  precise float bb = (s - a);
+  precise float ab = (s - bb);
+  precise float da = (a - ab);
+  precise float db = (b - bb);
+  precise float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  precise float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  precise float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
 // Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
@@ -373,6 +422,11 @@ df_double df_from_uint64(uint64_t i) {
   return df_double(hi, float(int64_t(i - back)));
 }
 
+uint64_t df_to_uint64(df_double x) {
+  df_double t = df_trunc(x);
+  return uint64_t(t.hi) + uint64_t(int64_t(t.lo));
+}
+
 df_dvec2 df_from_int64_2(i64vec2 v) {
   df_double r0 = df_from_int64(v.x);
   df_double r1 = df_from_int64(v.y);
@@ -405,7 +459,8 @@ void main()
   uint64_t bits = uint64_t(abs(micro)) ^ 6148914691236517205ul;
   i64vec2 pair = df_to_int64_2(df_mul_pow2(df_make_dvec2_1_1(df_double(v.hi.y, v.lo.y), df_neg(df_double(v.hi.x, v.lo.x))), vec2(4096.0)));
   df_double back = df_div(df_from_int64(micro), df_double(7.0, 0.0));
-  df_double wide = df_from_uint64(bits >> 11);
+  df_double huge = df_add(df_double(1.0e+19, 1.9493552e+10), df_abs(df_double(v.hi.x, v.lo.x)));
+  df_double wide = df_add(df_from_uint64(bits >> 11), df_from_uint64(df_to_uint64(huge) >> 11));
   df_dvec2 both = df_add(df_from_int64_2(pair), df_from_uint64_2(u64vec2(uint64_t(i) << 40, 3ul)));
   r[i] = df_make_dvec4_1_1_2(back, wide, both);
 }
