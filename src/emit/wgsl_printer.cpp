@@ -956,7 +956,9 @@ class WgslPrinter {
     ir::Type b = t;
     b.base = Base::Bool;
     const std::string key = name + "_" + std::to_string(t.vec);
-    const std::string fn = "df_" + name + (t.vec > 1 ? std::to_string(t.vec) : "");
+    // df_float_*: the runtime's own df_isnan/df_isinf (rules/common.glsl) take df_double, and WGSL
+    // has no overloading.
+    const std::string fn = "df_float_" + name + (t.vec > 1 ? std::to_string(t.vec) : "");
     helpers_[key] = "fn " + fn + "(x: " + tn + ") -> " + type(b) + " {\n  let m = bitcast<" + type(u) + ">(x) & " + type(u) +
                     "(0x7fffffffu);\n  return m " + body_op + " " + type(u) + "(0x7f800000u);\n}\n";
     return fn;

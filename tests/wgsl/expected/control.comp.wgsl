@@ -5,7 +5,7 @@ fn df_select_df_double(f: df_double, t: df_double, c: bool) -> df_double {
   return f;
 }
 
-fn df_isnan(x: f32) -> bool {
+fn df_float_isnan(x: f32) -> bool {
   let m = bitcast<u32>(x) & u32(0x7fffffffu);
   return m > u32(0x7f800000u);
 }
@@ -189,7 +189,7 @@ fn df_main() {
     df_assign_component_dvec2(&df_arg3, 1i, df_select_df_double(df_mul_pow2(s, 2.0f), df_from_float(m), (i > 3u)));
     df_block_Data.acc[i] = df_arg3;
   }
-  df_block_Data.f[i] = ((f32(steps((i32(i) + 3i))) + v[2i]) + select(0.0f, 1.0f, df_isnan(m)));
+  df_block_Data.f[i] = ((f32(steps((i32(i) + 3i))) + v[2i]) + select(0.0f, 1.0f, df_float_isnan(m)));
 }
 
 var<private> df_LocalInvocationIndex: u32;
