@@ -43,10 +43,24 @@ class HostIncluder : public doublet::Includer {
   }
 };
 
+const char* severity_name(doublet::Severity s) {
+  switch (s) {
+    case doublet::Severity::Error: return "error";
+    case doublet::Severity::Warning: return "warning";
+    case doublet::Severity::Note: return "note";
+  }
+  return "error";
+}
+
+// One diagnostic as the answer spells it, whether from the lowering or from the options.
+json diagnostic_json(const doublet::Diagnostic& d) {
+  return {{"file", d.file}, {"line", d.line}, {"column", d.column}, {"severity", severity_name(d.severity)},
+          {"message", d.message}, {"text", doublet::format_diagnostic(d)}};
+}
+
 std::string option_error(const std::string& message) {
-  return json{{"ok", false}, {"output", ""}, {"manifest", nullptr},
-              {"diagnostics", json::array({{{"file", ""}, {"line", 0}, {"column", 0},
-                                             {"severity", "error"}, {"message", message}}})},
+  const doublet::Diagnostic d{"", 0, 0, doublet::Severity::Error, message};
+  return json{{"ok", false}, {"output", ""}, {"manifest", nullptr}, {"diagnostics", json::array({diagnostic_json(d)})},
               {"includedFiles", json::array()}}.dump();
 }
 
@@ -83,10 +97,9 @@ std::string read_options(const json& o, doublet::Options& options, bool& use_hos
   options.include_dirs = o.value("includeDirs", std::vector<std::string>{});
   if (o.contains("guard")) {
     std::string guard = o["guard"].get<std::string>();
-    if (guard == "auto") options.guard = doublet::GuardKind::Auto;
-    else if (guard == "precise") options.guard = doublet::GuardKind::Precise;
-    else if (guard == "uniform") options.guard = doublet::GuardKind::Uniform;
-    else return "unknown guard '" + guard + "' (auto, precise, uniform)";
+    std::optional<doublet::GuardKind> kind = doublet::parse_guard(guard);
+    if (!kind) return "unknown guard '" + guard + "' (auto, precise, uniform)";
+    options.guard = *kind;
   }
   options.allow_gpu_shader5 = o.value("gpuShader5", false);
   options.guard_uniform_name = o.value("guardUniform", options.guard_uniform_name);
@@ -98,15 +111,6 @@ std::string read_options(const json& o, doublet::Options& options, bool& use_hos
   options.constant_range_errors = o.value("constantRangeErrors", false);
   use_host_includer = o.value("hostIncludes", false);
   return "";
-}
-
-const char* severity_name(doublet::Severity s) {
-  switch (s) {
-    case doublet::Severity::Error: return "error";
-    case doublet::Severity::Warning: return "warning";
-    case doublet::Severity::Note: return "note";
-  }
-  return "error";
 }
 
 }  // namespace
@@ -133,10 +137,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE char* doublet_lower_json(const char* source, con
     if (use_host_includer) options.includer = &includer;
     doublet::Result r = doublet::lower(source, options);
     json diagnostics = json::array();
-    for (const doublet::Diagnostic& d : r.diagnostics)
-      diagnostics.push_back({{"file", d.file}, {"line", d.line}, {"column", d.column},
-                             {"severity", severity_name(d.severity)}, {"message", d.message},
-                             {"text", doublet::format_diagnostic(d)}});
+    for (const doublet::Diagnostic& d : r.diagnostics) diagnostics.push_back(diagnostic_json(d));
     answer = json{{"ok", r.ok}, {"output", r.output},
                   {"manifest", r.ok ? json::parse(r.manifest.to_json()) : json(nullptr)},
                   {"diagnostics", diagnostics}, {"includedFiles", r.included_files}}.dump();

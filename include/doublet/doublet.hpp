@@ -212,6 +212,7 @@ std::optional<Target> parse_target(std::string_view name);
 std::string_view to_string(Mode m);             // "fp32", "rte", "df64-fast", "df64", "native", "df64-int", "exact", "rte-exact"
 std::optional<Mode> parse_mode(std::string_view name);
 std::optional<Stage> parse_stage(std::string_view name);  // "vert"|"frag"|"comp"
+std::optional<GuardKind> parse_guard(std::string_view name);  // "auto"|"precise"|"uniform" (None: tests only)
 // The passes of the pipeline, in order (Options::stop_after names one): "parse", "import", ...
 std::vector<std::string_view> pass_names();
 // The lints Options::disabled_lints can name: "float-literal", "wasted-double", ...

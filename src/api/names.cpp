@@ -59,6 +59,13 @@ std::optional<Stage> parse_stage(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<GuardKind> parse_guard(std::string_view name) {
+  if (name == "auto") return GuardKind::Auto;
+  if (name == "precise") return GuardKind::Precise;
+  if (name == "uniform") return GuardKind::Uniform;
+  return std::nullopt;
+}
+
 std::optional<Stage> stage_from_path(std::string_view path) {
   auto slash = path.find_last_of("/\\");
   std::string_view file = slash == std::string_view::npos ? path : path.substr(slash + 1);

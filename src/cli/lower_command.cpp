@@ -139,7 +139,7 @@ Options common_options(const LowerArgs& a, std::string& error) {
   opt.constant_range_errors = a.constant_range_errors;
   opt.optimize = !a.no_optimize;
   opt.stop_after = a.stop_after;
-  opt.guard = a.guard == "precise" ? GuardKind::Precise : a.guard == "uniform" ? GuardKind::Uniform : GuardKind::Auto;
+  opt.guard = parse_guard(a.guard).value_or(GuardKind::Auto);  // CLI11 checked the name
   if (std::string mode_error = apply_mode_args(a.mode, a.mode_for, opt); !mode_error.empty()) problem(mode_error);
   return opt;
 }

@@ -49,8 +49,9 @@ bool write_file(const fs::path& path, const std::string& text) {
 fs::path spec_path(const fs::path& program) { return fs::path(program).replace_extension(".json"); }
 std::string stage_of(const fs::path& program) { return program.extension().string().substr(1); }
 
-void print_findings(const std::vector<Finding>& findings) {
-  for (const Finding& f : findings) std::cout << "  [" << f.oracle << "] " << f.detail << "\n";
+void print_findings(const CheckResult& r) {
+  for (const std::string& n : r.notes) std::cout << "  note: " << n << "\n";
+  for (const Finding& f : r.findings) std::cout << "  [" << f.oracle << "] " << f.detail << "\n";
 }
 
 struct RunArgs {
@@ -97,14 +98,17 @@ int run(const RunArgs& a) {
     std::cout << "seed " << seed << ": " << (r.findings.empty() ? "ok" : "FAIL") << " (";
     for (size_t i = 0; i < r.checked.size(); ++i) std::cout << (i ? " " : "") << r.checked[i];
     std::cout << "; " << static_cast<int>(spent + 0.5) << " s)\n";
-    if (r.findings.empty()) continue;
+    if (r.findings.empty()) {
+      print_findings(r);  // its notes
+      continue;
+    }
     ++failures;
     const fs::path base = fs::path(a.out) / ("finding-" + std::to_string(seed));
     write_file(base.string() + "." + p.stage, p.glsl);
     write_file(base.string() + ".json", p.spec_json);
     std::cout << "seed " << seed << ": " << r.findings.size() << " finding(s), program " << base.string() << "." << p.stage
               << "\n";
-    print_findings(r.findings);
+    print_findings(r);
     if (!a.reduce) continue;
     const auto reduce_start = Clock::now();
     CheckOptions reduce_options = options;
@@ -163,7 +167,7 @@ int check_files(const std::vector<std::string>& files, uint64_t samples, bool we
     std::cout << ")";
     for (const auto& [what, s] : r.seconds) std::cout << "; " << what << " " << static_cast<int>(s * 1000) << " ms";
     std::cout << "\n";
-    print_findings(r.findings);
+    print_findings(r);
     if (!r.findings.empty()) status = std::max(status, 1);
   }
   return status;

@@ -11,7 +11,8 @@
 //             estimate (native's own rounding), for the spec's input ranges. This tests the planner
 //             as much as the lowering;
 //   targets — the df64 lowerings for es310, es320 and glsl450 give the same pairs on lavapipe, and
-//             (with webgpu) the wgsl lowering the same pairs in Chromium's WebGPU.
+//             (with webgpu, compute programs) the wgsl lowering in Chromium's WebGPU the same pairs
+//             within 2^-40 relative (WGSL's f32 division is not correctly rounded there).
 // Every lowering must succeed: the programs are valid GLSL 4.50, so a refusal is a finding too.
 #pragma once
 
@@ -43,6 +44,7 @@ struct CheckResult {
   std::string invalid;                // non-empty: the program itself does not compile natively
   std::vector<std::string> checked;   // oracles that ran to a verdict
   std::vector<Finding> findings;
+  std::vector<std::string> notes;     // what was left unchecked and why (a documented refusal)
   std::vector<std::pair<std::string, double>> seconds;
   uint64_t excused_zero_signs = 0;  // exact: +0 against native's -0 or the reverse (oracles.cpp)  // wall time per verify run ("exact es310", ...)
 };

@@ -202,6 +202,71 @@ class WgslPrinter {
     return {col_align, col_size};
   }
 
+  // std140 (OpenGL 4.6, 7.6.2.2) of a lowered type: std430's, with array strides and struct
+  // alignments rounded up to 16 bytes, matrix columns too.
+  Layout std140_layout(const ir::Type& t) {
+    auto round_up = [](int x, int a) { return (x + a - 1) / a * a; };
+    if (t.is_array()) {
+      const Layout e = std140_layout(t.element());
+      return {round_up(e.align, 16), round_up(round_up(e.size, e.align), 16) * std::max(t.array_dims[0], 1)};
+    }
+    if (t.base == Base::Struct || t.base == Base::Block) {
+      int offset = 0, align = 4;
+      for (const auto& f : *t.fields) {
+        const Layout l = std140_layout(f.type);
+        offset = round_up(offset, l.align) + l.size;
+        align = std::max(align, l.align);
+      }
+      align = round_up(align, 16);
+      return {align, round_up(offset, align)};
+    }
+    if (t.is_matrix()) return {16, t.cols * 16};
+    return layout_of(t, false);
+  }
+
+  // A std140 block is read by WGSL with WGSL's layout: its storage layout is std430's for these
+  // types, and its uniform layout pads nothing (it rejects array strides that are not multiples of
+  // 16). A member WGSL would place elsewhere than std140 does (an array of doubles: stride 8 against
+  // 16) would be misread from the host's data, which follows the manifest's std140 offsets, so it
+  // is refused by member (found by the differential tester; docs/web.md).
+  void std140_differences(const ir::Var& block, const ir::Type& t, const std::string& path, bool block_level) {
+    auto round_up = [](int x, int a) { return (x + a - 1) / a * a; };
+    const bool uniform = block.storage == ir::Storage::Uniform;
+    int wgsl = 0, std140 = 0;
+    for (const auto& f : *t.fields) {
+      const std::string member = path + "." + f.name;
+      // As printed: WGSL's own layout, with @align(16) on a uniform block's struct and array members.
+      Layout w = layout_of(f.type, false);
+      if (uniform && block_level && (f.type.base == Base::Struct || f.type.is_array())) w.align = std::max(w.align, 16);
+      const Layout s140 = std140_layout(f.type);
+      wgsl = round_up(wgsl, w.align);
+      std140 = round_up(std140, s140.align);
+      auto refuse = [&](const std::string& what) {
+        error(block.loc, "block '" + block.type.name + "' is std140, and WGSL would read '" + member + "' " + what +
+                             ", so the host's data (at the manifest's std140 offsets) would be misread: declare the block std430" +
+                             (uniform ? " (a storage buffer), or use 16-byte elements" : ""));
+      };
+      if (wgsl != std140) {
+        refuse("at offset " + std::to_string(wgsl) + " where std140 puts it at " + std::to_string(std140));
+        return;
+      }
+      const ir::Type element = f.type.element();
+      if (f.type.is_array()) {
+        const Layout e = layout_of(element, false);
+        const int stride = round_up(e.size, e.align);
+        const Layout e140 = std140_layout(element);
+        const int stride140 = round_up(round_up(e140.size, e140.align), 16);
+        if (stride != stride140) {
+          refuse("with an element stride of " + std::to_string(stride) + " bytes where std140's is " + std::to_string(stride140));
+          return;
+        }
+      }
+      if (element.base == Base::Struct && element.fields) std140_differences(block, element, member, false);
+      wgsl += w.size;
+      std140 += s140.size;
+    }
+  }
+
   // ---- declarations --------------------------------------------------------
   void struct_definition(const ir::Type& t, bool uniform = false) {
     out_ << "struct " << ident(t.name) << " {\n";
@@ -271,6 +336,7 @@ class WgslPrinter {
             break;
           }
           const bool uniform = v->storage == ir::Storage::Uniform;
+          if (uniform || v->layout.packing == "std140") std140_differences(*v, v->type, v->type.name, true);
           const int binding = bindings_of.at(v.get());
           block_bindings_.push_back({v->type.name, anonymous_name(*v), binding});
           struct_definition(v->type, uniform);

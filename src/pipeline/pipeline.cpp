@@ -67,12 +67,15 @@ bool link_runtime_pass(State& s) {
 
 bool print(State& s) {
   s.print_options.target = s.config.target;
-  s.print_options.extensions = s.config.stage_extensions;
-  s.print_options.extensions.insert(s.print_options.extensions.end(), s.config.guard_extensions.begin(),
-                                    s.config.guard_extensions.end());
-  for (const auto& e : s.ctx.extensions)
-    if (std::find(s.print_options.extensions.begin(), s.print_options.extensions.end(), e) == s.print_options.extensions.end())
-      s.print_options.extensions.push_back(e);
+  // The stage's, the guard's and the helpers' extensions, in that order, each once.
+  auto add_extensions = [&](const auto& list) {
+    for (const std::string& e : list)
+      if (std::find(s.print_options.extensions.begin(), s.print_options.extensions.end(), e) == s.print_options.extensions.end())
+        s.print_options.extensions.push_back(e);
+  };
+  add_extensions(s.config.stage_extensions);
+  add_extensions(s.config.guard_extensions);
+  add_extensions(s.ctx.extensions);
   s.print_options.user_extensions = s.user_extensions;
   s.printed = emit::print(s.module, s.print_options, s.config.file_name);
   auto& diags = s.result.diagnostics;

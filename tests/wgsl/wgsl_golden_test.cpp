@@ -255,3 +255,42 @@ TEST(WgslRefusals, VertexStorageBuffersAreReadOnlyOrRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// std140 rounds array strides and struct alignments up to 16 bytes; WGSL's storage layout does not
+// (and its uniform layout rejects such strides). A std140 block whose members WGSL would place
+// elsewhere is refused by member; one whose layout agrees lowers. Before, a std140 storage array of
+// doubles was read with an 8-byte stride where the host (following the manifest) wrote 16: wrong
+// values in Chromium's WebGPU, exit 0 (the differential tester's seed 6103).
+TEST(WgslRefusals, Std140BlocksWgslWouldMisreadAreRefusedByMember) {
+  doublet::Options options;
+  options.stage = doublet::Stage::Compute;
+  options.target = doublet::Target::Wgsl;
+  options.file_name = "b.comp";
+  auto lower_block = [&](const std::string& block) {
+    return doublet::lower("#version 450\nlayout(local_size_x = 1) in;\n" + block +
+                              "\nlayout(std430, binding = 1) buffer Out { double r; };\nvoid main() { r = s + double(x.length()); }\n",
+                          options);
+  };
+  struct Case {
+    std::string block, member;
+  };
+  for (const Case& c : {Case{"layout(std140, binding = 0) buffer In { double x[4]; double s; };", "'In.x'"},
+                        Case{"layout(std140, binding = 0) uniform In { double x[4]; double s; };", "'In.x'"},
+                        Case{"layout(std140, binding = 0) buffer In { dvec2 x[4]; float f; double s; };", "'In.s'"}}) {
+    const auto r = lower_block(c.block);
+    ASSERT_FALSE(r.ok) << c.block << "\n" << r.output;
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_NE(r.diagnostics[0].message.find(c.member), std::string::npos) << r.diagnostics[0].message;
+    EXPECT_NE(r.diagnostics[0].message.find("std430"), std::string::npos) << r.diagnostics[0].message;
+    EXPECT_EQ(r.diagnostics[0].line, 3);
+  }
+  for (const std::string& agrees : {"layout(std430, binding = 0) buffer In { double x[4]; double s; };",
+                                    "layout(std140, binding = 0) buffer In { dvec2 x[4]; double s; };"}) {
+    const auto r = lower_block(agrees);
+    EXPECT_TRUE(r.ok) << agrees << "\n" << (r.diagnostics.empty() ? "" : r.diagnostics[0].message);
+  }
+}
+
+}  // namespace
