@@ -459,10 +459,20 @@ class WgslPrinter {
       bool assign = (e->kind == Kind::Binary && e->op.back() == '=' && e->op != "==" && e->op != "<=" && e->op != ">=" &&
                      e->op != "!=") ||
                     (e->kind == Kind::Unary && e->op.find_first_of("+-") != std::string::npos && e->op.size() == 3);
-      if (!assign) return;
-      ir::ExprPtr root = e->args[0];
-      while (root->kind == Kind::Member || root->kind == Kind::Index) root = root->args[0];
-      if (root->kind == Kind::Sym) assigned.insert(root->var.get());
+      auto mark = [&](ir::ExprPtr root) {
+        while (root->kind == Kind::Member || root->kind == Kind::Index) root = root->args[0];
+        if (root->kind == Kind::Sym) assigned.insert(root->var.get());
+      };
+      // An argument for an out/inout parameter is passed by pointer (&p), which a parameter cannot
+      // give (Chromium: "cannot take the address of parameter"): doublet's df_assign_* helpers for
+      // swizzle assignments are such calls too.
+      if (e->kind == Kind::Call)
+        for (const auto& callee : m_.functions)
+          if (callee->name == e->name && callee->params.size() == e->args.size())
+            for (size_t i = 0; i < e->args.size(); ++i)
+              if (callee->params[i]->storage == ir::Storage::ParamOut || callee->params[i]->storage == ir::Storage::ParamInOut)
+                mark(e->args[i]);
+      if (assign) mark(e->args[0]);
     });
     for (const auto& p : f.params)
       if (assigned.count(p.get()) && !pointer_params_.count(p.get())) {

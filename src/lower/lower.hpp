@@ -101,8 +101,12 @@ bool assign_wgsl_io_locations(ir::Module& module, Manifest& manifest);
 bool exact_block_words(ir::Module& module, Context& context);
 // GLSL ES forbids overloading built-in names: user functions named like one are renamed (NAME_user).
 bool rename_functions_named_like_builtins(ir::Module& module, Context& context);
-// webgl2: every ternary on a struct becomes a selection through a temporary (WebGL forbids them).
+// Ternaries on structs become selections through a temporary: all of them on webgl2 (WebGL forbids
+// them), those reading a uniform or buffer block elsewhere (glslang 12 miscompiles those).
 bool select_structs(ir::Module& module, Context& context);
+// hoist_commas.cpp (--target wgsl): a comma inside an expression becomes statements before it, where
+// that cannot change what the statement computes.
+bool hoist_commas(ir::Module& module, Context& context);
 // Diagnoses, by construct and target, what the lowered shader needs but the target lacks.
 bool check_target(const ir::Module& module, Context& context);
 
