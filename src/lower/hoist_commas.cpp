@@ -8,7 +8,7 @@
 //     return, the condition of an if or a switch);
 //   - neither its left operands nor the rest of the statement (less the comma) calls a function of
 //     the user's or a built-in with effects, and no variable one of them writes is used by the
-//     other (doublet's runtime calls count as writing the variables passed to them). What
+//     other (a runtime call with an out parameter counts as writing what is passed to it). What
 //     encloses the comma (an assignment, a call) takes effect after it: its target counts as read.
 // The pass runs on the lowered IR, so the intermediate GLSL the WGSL is printed from has no such
 // comma left. docs/web.md ("The WGSL target") lists what is still refused.
@@ -35,9 +35,18 @@ const ir::Var* root_variable(ir::ExprPtr e) {
 }
 
 // A call of doublet's runtime (the df_/ex_ prefixes are reserved): no effect but on the variables
-// passed to it (an out parameter such as df_frexp's exponent).
+// passed to its out parameters.
 bool is_runtime_call(const Expr& e) {
   return e.kind == Kind::Call && (e.name.rfind("df_", 0) == 0 || e.name.rfind("ex_", 0) == 0);
+}
+
+// Whether a runtime call may write its arguments: a generated helper declared with an out/inout
+// parameter (df_assign_* for swizzle and column assignments, ...), or the rules with one (frexp's
+// exponent, modf's whole part: rules/common.glsl, rules/exact.glsl).
+bool writes_arguments(const Expr& call, const Context& ctx) {
+  if (auto h = ctx.helpers.find(call.name); h != ctx.helpers.end())
+    return h->second.head.find("out ") != std::string::npos;
+  return call.name.find("frexp") != std::string::npos || call.name.find("modf") != std::string::npos;
 }
 
 // What a part of a statement reads and writes; `opaque` when it has an effect this pass does not
@@ -50,15 +59,16 @@ struct Access {
 // Collects over `e`, leaving out the subtree `skip`. The effects of `after` (the comma's ancestors:
 // a call, an assignment) happen once their operands, the comma among them, are evaluated: they
 // count as reads only.
-void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const Expr*>& after, Access& a) {
+void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const Expr*>& after, const Context& ctx,
+             Access& a) {
   if (!e || e == skip) return;
   if (e->kind == Kind::Sym) a.reads.insert(e->var.get());
   if (after.count(e.get())) {
-    for (const auto& arg : e->args) collect(arg, skip, after, a);
+    for (const auto& arg : e->args) collect(arg, skip, after, ctx, a);
     return;
   }
   if (e->kind == Kind::Call && !is_runtime_call(*e)) a.opaque = true;
-  if (is_runtime_call(*e))
+  if (is_runtime_call(*e) && writes_arguments(*e, ctx))
     for (const auto& arg : e->args)
       if (const ir::Var* v = root_variable(arg)) a.writes.insert(v);
   if (e->kind == Kind::Builtin) {
@@ -70,7 +80,7 @@ void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const
     if (const ir::Var* v = root_variable(e->args[0])) a.writes.insert(v);
     else a.opaque = true;
   }
-  for (const auto& arg : e->args) collect(arg, skip, after, a);
+  for (const auto& arg : e->args) collect(arg, skip, after, ctx, a);
 }
 
 // The nodes from `root` down to `target` (both included); empty when `target` is not under it.
@@ -90,7 +100,7 @@ bool meet(const std::set<const ir::Var*>& x, const std::set<const ir::Var*>& y) 
 
 class CommaHoister {
  public:
-  explicit CommaHoister(ir::Module& m) : module_(m) {}
+  CommaHoister(ir::Module& m, const Context& c) : module_(m), ctx_(c) {}
 
   void run() {
     for (const auto& f : module_.functions) hoist_in_block(f->body);
@@ -139,24 +149,25 @@ class CommaHoister {
 
   // The conditions of the header comment, for `comma` inside `statement`: its left operands and
   // the rest of the statement (less the comma) touch no variable one writes and the other uses.
-  static bool movable(const ir::StmtPtr& statement, const ir::ExprPtr& comma) {
+  bool movable(const ir::StmtPtr& statement, const ir::ExprPtr& comma) const {
     Access left, rest;
-    for (size_t a = 0; a + 1 < comma->args.size(); ++a) collect(comma->args[a], nullptr, {}, left);
+    for (size_t a = 0; a + 1 < comma->args.size(); ++a) collect(comma->args[a], nullptr, {}, ctx_, left);
     std::set<const Expr*> ancestors;
     path_to(statement->expr, comma, ancestors);
-    collect(statement->expr, comma, ancestors, rest);
+    collect(statement->expr, comma, ancestors, ctx_, rest);
     if (statement->kind == ir::Stmt::Kind::Decl && statement->var) rest.reads.insert(statement->var.get());
     return !left.opaque && !rest.opaque && !meet(left.writes, rest.reads) && !meet(left.writes, rest.writes) &&
            !meet(left.reads, rest.writes);
   }
 
   ir::Module& module_;
+  const Context& ctx_;
 };
 
 }  // namespace
 
 bool hoist_commas(ir::Module& module, Context& context) {
-  CommaHoister(module).run();
+  CommaHoister(module, context).run();
   return !context.failed;
 }
 
