@@ -112,10 +112,9 @@ class WgslPrinter {
   // Where the shader first writes block `block` (an assignment, ++/--, an atomic or other built-in
   // with side effects whose first argument is in it); false when it only reads it.
   bool block_written(const ir::Var* block, ir::Loc& where) const {
-    auto in_block = [&](ir::ExprPtr e) {
-      while (e && (e->kind == ir::Expr::Kind::Member || e->kind == ir::Expr::Kind::Index) && !e->args.empty())
-        e = e->args[0];
-      return e && e->kind == ir::Expr::Kind::Sym && e->var && (e->var.get() == block || e->var->block.get() == block);
+    auto in_block = [&](const ir::ExprPtr& e) {
+      const ir::Var* v = e ? ir::root_variable(e) : nullptr;
+      return v && (v == block || v->block.get() == block);
     };
     bool written = false;
     for (const auto& f : m_.functions)
@@ -459,19 +458,16 @@ class WgslPrinter {
       bool assign = (e->kind == Kind::Binary && e->op.back() == '=' && e->op != "==" && e->op != "<=" && e->op != ">=" &&
                      e->op != "!=") ||
                     (e->kind == Kind::Unary && e->op.find_first_of("+-") != std::string::npos && e->op.size() == 3);
-      auto mark = [&](ir::ExprPtr root) {
-        while (root->kind == Kind::Member || root->kind == Kind::Index) root = root->args[0];
-        if (root->kind == Kind::Sym) assigned.insert(root->var.get());
+      auto mark = [&](const ir::ExprPtr& target) {
+        if (const ir::Var* v = ir::root_variable(target)) assigned.insert(v);
       };
       // An argument for an out/inout parameter is passed by pointer (&p), which a parameter cannot
       // give (Chromium: "cannot take the address of parameter"): doublet's df_assign_* helpers for
       // swizzle assignments are such calls too.
-      if (e->kind == Kind::Call)
-        for (const auto& callee : m_.functions)
-          if (callee->name == e->name && callee->params.size() == e->args.size())
-            for (size_t i = 0; i < e->args.size(); ++i)
-              if (callee->params[i]->storage == ir::Storage::ParamOut || callee->params[i]->storage == ir::Storage::ParamInOut)
-                mark(e->args[i]);
+      if (const ir::Function* callee = e->kind == Kind::Call ? callee_of(*e) : nullptr)
+        for (size_t i = 0; i < e->args.size(); ++i)
+          if (callee->params[i]->storage == ir::Storage::ParamOut || callee->params[i]->storage == ir::Storage::ParamInOut)
+            mark(e->args[i]);
       if (assign) mark(e->args[0]);
     });
     for (const auto& p : f.params)
@@ -777,16 +773,12 @@ class WgslPrinter {
           const ir::Function* g = callee_of(*x);
           pure &= g && pure_and_loop_free(*g);
         } else if (x->kind == Kind::Builtin) {
-          auto shallow = std::make_shared<Expr>(*x);
-          shallow->args.clear();
-          pure &= !ir::has_side_effects(shallow);
+          pure &= !ir::builtin_has_side_effects(x->name);
         } else if ((x->kind == Kind::Binary && x->op.size() >= 1 && x->op.back() == '=' && x->op != "==" && x->op != "!=" &&
                     x->op != "<=" && x->op != ">=") ||
                    (x->kind == Kind::Unary && x->op.size() == 3)) {
-          ir::ExprPtr root = x->args[0];
-          while (root->kind == Kind::Member || root->kind == Kind::Index) root = root->args[0];
-          pure &= root->kind == Kind::Sym && root->var &&
-                  (root->var->storage == ir::Storage::Local || root->var->storage == ir::Storage::ParamIn);
+          const ir::Var* root = ir::root_variable(x->args[0]);
+          pure &= root && (root->storage == ir::Storage::Local || root->storage == ir::Storage::ParamIn);
         }
       });
     return pure_memo_[&f] = pure;

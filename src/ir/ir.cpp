@@ -77,9 +77,6 @@ bool is_assignment_operator(const std::string& op) {
   return !op.empty() && op.back() == '=' && op != "==" && op != "!=" && op != "<=" && op != ">=";
 }
 
-namespace {
-
-// Built-ins that write an out parameter or memory, or synchronise.
 bool builtin_has_side_effects(const std::string& name) {
   static const char* const kPrefixes[] = {"atomic", "imageAtomic", "imageStore", "memoryBarrier", "EmitVertex",
                                           "EndPrimitive", "subgroupBarrier", "subgroupMemoryBarrier"};
@@ -91,7 +88,11 @@ bool builtin_has_side_effects(const std::string& name) {
     if (name == n) return true;
   return false;
 }
-}  // namespace
+
+Var* root_variable(ExprPtr e) {
+  while ((e->kind == Expr::Kind::Member || e->kind == Expr::Kind::Index) && !e->args.empty()) e = e->args[0];
+  return e->kind == Expr::Kind::Sym ? e->var.get() : nullptr;
+}
 
 bool has_side_effects(const ExprPtr& e) {
   switch (e->kind) {

@@ -154,6 +154,11 @@ bool is_array_length(const Expr& e);
 // write globals or out parameters), a built-in with out parameters or memory effects (modf,
 // atomicAdd, imageStore, barrier, ...). Such an expression must be evaluated exactly once.
 bool has_side_effects(const ExprPtr& e);
+// The built-in itself writes an out parameter or memory, or synchronises (modf, atomicAdd, barrier, ...).
+bool builtin_has_side_effects(const std::string& name);
+// The variable an access reads or writes through members and indices (`v` of `v.a[i].xy`); null
+// when it is not rooted in a variable (a call's result, a constructor).
+Var* root_variable(ExprPtr e);
 // A deep copy of an expression tree (the variables it names are shared, not copied).
 ExprPtr clone(const ExprPtr& e);
 // "+=", "-=", "*=", "/=".

@@ -29,11 +29,6 @@ bool is_increment(const Expr& e) {
   return e.kind == Kind::Unary && (e.op == "++x" || e.op == "--x" || e.op == "x++" || e.op == "x--");
 }
 
-const ir::Var* root_variable(ir::ExprPtr e) {
-  while ((e->kind == Kind::Member || e->kind == Kind::Index) && !e->args.empty()) e = e->args[0];
-  return e->kind == Kind::Sym ? e->var.get() : nullptr;
-}
-
 // A call of doublet's runtime (the df_/ex_ prefixes are reserved): no effect but on the variables
 // passed to its out parameters.
 bool is_runtime_call(const Expr& e) {
@@ -70,14 +65,10 @@ void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const
   if (e->kind == Kind::Call && !is_runtime_call(*e)) a.opaque = true;
   if (is_runtime_call(*e) && writes_arguments(*e, ctx))
     for (const auto& arg : e->args)
-      if (const ir::Var* v = root_variable(arg)) a.writes.insert(v);
-  if (e->kind == Kind::Builtin) {
-    auto alone = std::make_shared<Expr>(*e);
-    alone->args.clear();
-    if (ir::has_side_effects(alone)) a.opaque = true;
-  }
+      if (const ir::Var* v = ir::root_variable(arg)) a.writes.insert(v);
+  if (e->kind == Kind::Builtin && ir::builtin_has_side_effects(e->name)) a.opaque = true;
   if ((e->kind == Kind::Binary && ir::is_assignment_operator(e->op)) || is_increment(*e)) {
-    if (const ir::Var* v = root_variable(e->args[0])) a.writes.insert(v);
+    if (const ir::Var* v = ir::root_variable(e->args[0])) a.writes.insert(v);
     else a.opaque = true;
   }
   for (const auto& arg : e->args) collect(arg, skip, after, ctx, a);

@@ -46,10 +46,9 @@ bool is_struct_ternary(const ir::ExprPtr& e) {
 }
 
 // True when `e` reads (through members and indices) a variable of a uniform or buffer block.
-bool reads_block(ir::ExprPtr e) {
-  while ((e->kind == Kind::Member || e->kind == Kind::Index) && !e->args.empty()) e = e->args[0];
-  return e->kind == Kind::Sym && e->var &&
-         (e->var->storage == ir::Storage::Uniform || e->var->storage == ir::Storage::Buffer);
+bool reads_block(const ir::ExprPtr& e) {
+  const ir::Var* v = ir::root_variable(e);
+  return v && (v->storage == ir::Storage::Uniform || v->storage == ir::Storage::Buffer);
 }
 
 bool constant_condition(const ir::ExprPtr& c, bool& value) {
