@@ -20,6 +20,7 @@
 #include <set>
 #include <sstream>
 
+#include "emit/wgsl_std140.hpp"
 #include "ir/walk.hpp"
 
 namespace doublet::emit {
@@ -73,10 +74,6 @@ std::string f32_literal(float value) {
   return buf;
 }
 
-struct Layout {
-  int align = 4, size = 4;
-};
-
 class WgslPrinter {
  public:
   WgslPrinter(const ir::Module& m, const std::string& file, const std::string& note) : m_(m), file_(file), note_(note) {
@@ -85,6 +82,9 @@ class WgslPrinter {
 
   WgslPrintResult run() {
     collect_overloads();
+    std140_ = plan_wgsl_std140(m_);
+    for (const auto& r : std140_.refusals) error(r.loc, r.message);
+    std140_wrappers();
     for (const auto& t : m_.structs) struct_definition(t);
     globals();
     for (const auto& f : m_.functions) function(*f);
@@ -105,6 +105,7 @@ class WgslPrinter {
   // Loose uniform arrays of scalars or 2-vectors: WGSL's uniform buffers need a 16-byte element
   // stride, so each element is the first components of a vec4 (the swizzle that reads it).
   std::map<const ir::Var*, std::string> padded_uniform_arrays_;
+  WgslStd140Plan std140_;
   std::map<const ir::Var*, std::string> block_var_names_;
   std::map<std::string, std::string> helpers_;  // name -> WGSL text, emitted before the module
   std::map<std::string, ir::Loc> builtins_used_;  // gl_* variables the functions name, first use
@@ -175,106 +176,30 @@ class WgslPrinter {
     return s;
   }
 
-  // Host-shareable layout (W3C WGSL 13.4 "Memory Layout"); uniform adds the 16-byte rules.
-  Layout layout_of(const ir::Type& t, bool uniform) {
-    if (t.is_array()) {
-      Layout e = layout_of(t.element(), uniform);
-      int stride = (e.size + e.align - 1) / e.align * e.align;
-      int n = std::max(t.array_dims[0], 1);
-      return {uniform ? std::max(e.align, 16) : e.align, stride * n};
-    }
-    if (t.base == Base::Struct || t.base == Base::Block) {
-      int offset = 0, align = 4;
-      for (const auto& f : *t.fields) {
-        Layout l = layout_of(f.type, uniform);
-        if (uniform && (f.type.base == Base::Struct || f.type.is_array())) l.align = std::max(l.align, 16);
-        offset = (offset + l.align - 1) / l.align * l.align + l.size;
-        align = std::max(align, l.align);
-      }
-      if (uniform) align = std::max(align, 16);
-      return {align, (offset + align - 1) / align * align};
-    }
-    const int rows = t.vec;
-    const int col_align = rows == 1 ? 4 : rows == 2 ? 8 : 16;
-    const int col_size = rows * 4;
-    if (t.is_matrix()) return {col_align, t.cols * col_align};
-    return {col_align, col_size};
-  }
-
-  // std140 (OpenGL 4.6, 7.6.2.2) of a lowered type: std430's, with array strides and struct
-  // alignments rounded up to 16 bytes, matrix columns too.
-  Layout std140_layout(const ir::Type& t) {
-    auto round_up = [](int x, int a) { return (x + a - 1) / a * a; };
-    if (t.is_array()) {
-      const Layout e = std140_layout(t.element());
-      return {round_up(e.align, 16), round_up(round_up(e.size, e.align), 16) * std::max(t.array_dims[0], 1)};
-    }
-    if (t.base == Base::Struct || t.base == Base::Block) {
-      int offset = 0, align = 4;
-      for (const auto& f : *t.fields) {
-        const Layout l = std140_layout(f.type);
-        offset = round_up(offset, l.align) + l.size;
-        align = std::max(align, l.align);
-      }
-      align = round_up(align, 16);
-      return {align, round_up(offset, align)};
-    }
-    if (t.is_matrix()) return {16, t.cols * 16};
-    return layout_of(t, false);
-  }
-
-  // A std140 block is read by WGSL with WGSL's layout: its storage layout is std430's for these
-  // types, and its uniform layout pads nothing (it rejects array strides that are not multiples of
-  // 16). A member WGSL would place elsewhere than std140 does (an array of doubles: stride 8 against
-  // 16) would be misread from the host's data, which follows the manifest's std140 offsets, so it
-  // is refused by member (found by the differential tester; docs/web.md).
-  void std140_differences(const ir::Var& block, const ir::Type& t, const std::string& path, bool block_level) {
-    auto round_up = [](int x, int a) { return (x + a - 1) / a * a; };
-    const bool uniform = block.storage == ir::Storage::Uniform;
-    int wgsl = 0, std140 = 0;
-    for (const auto& f : *t.fields) {
-      const std::string member = path + "." + f.name;
-      // As printed: WGSL's own layout, with @align(16) on a uniform block's struct and array members.
-      Layout w = layout_of(f.type, false);
-      if (uniform && block_level && (f.type.base == Base::Struct || f.type.is_array())) w.align = std::max(w.align, 16);
-      const Layout s140 = std140_layout(f.type);
-      wgsl = round_up(wgsl, w.align);
-      std140 = round_up(std140, s140.align);
-      auto refuse = [&](const std::string& what) {
-        error(block.loc, "block '" + block.type.name + "' is std140, and WGSL would read '" + member + "' " + what +
-                             ", so the host's data (at the manifest's std140 offsets) would be misread: declare the block std430" +
-                             (uniform ? " (a storage buffer), or use 16-byte elements" : ""));
-      };
-      if (wgsl != std140) {
-        refuse("at offset " + std::to_string(wgsl) + " where std140 puts it at " + std::to_string(std140));
-        return;
-      }
-      const ir::Type element = f.type.element();
-      if (f.type.is_array()) {
-        const Layout e = layout_of(element, false);
-        const int stride = round_up(e.size, e.align);
-        const Layout e140 = std140_layout(element);
-        const int stride140 = round_up(round_up(e140.size, e140.align), 16);
-        if (stride != stride140) {
-          refuse("with an element stride of " + std::to_string(stride) + " bytes where std140's is " + std::to_string(stride140));
-          return;
-        }
-      }
-      if (element.base == Base::Struct && element.fields) std140_differences(block, element, member, false);
-      wgsl += w.size;
-      std140 += s140.size;
-    }
-  }
-
   // ---- declarations --------------------------------------------------------
-  void struct_definition(const ir::Type& t, bool uniform = false) {
+  // A struct or block; in a std140 block, with std140's offsets (wgsl_std140.hpp).
+  void struct_definition(const ir::Type& t) {
+    const auto std140 = std140_.members.find(t.name);
     out_ << "struct " << ident(t.name) << " {\n";
     for (const auto& f : *t.fields) {
       out_ << "  ";
-      if (uniform && (f.type.base == Base::Struct || f.type.is_array())) out_ << "@align(16) ";
-      out_ << ident(f.name) << ": " << type(f.type) << ",\n";
+      const Std140Member* m = nullptr;
+      if (std140 != std140_.members.end())
+        if (auto it = std140->second.find(f.name); it != std140->second.end()) m = &it->second;
+      if (m && m->align) out_ << "@align(" << m->align << ") ";
+      if (m && m->size) out_ << "@size(" << m->size << ") ";
+      std::string declared = type(f.type);
+      if (m && !m->wrapper.empty())
+        declared = "array<" + m->wrapper + (f.type.array_dims[0] > 0 ? ", " + std::to_string(f.type.array_dims[0]) : "") + ">";
+      out_ << ident(f.name) << ": " << declared << ",\n";
     }
     out_ << "}\n\n";
+  }
+
+  // std140's element stride for arrays WGSL would pack tighter: `a[i]` reads `a[i].v`.
+  void std140_wrappers() {
+    for (const Std140Wrapper& w : std140_.wrappers)
+      out_ << "struct " << w.name << " {\n  @align(16) @size(" << w.stride << ") v: " << type(w.element) << ",\n}\n\n";
   }
 
   // The instance name of a block, "" for an anonymous one.
@@ -335,10 +260,9 @@ class WgslPrinter {
             break;
           }
           const bool uniform = v->storage == ir::Storage::Uniform;
-          if (uniform || v->layout.packing == "std140") std140_differences(*v, v->type, v->type.name, true);
           const int binding = bindings_of.at(v.get());
           block_bindings_.push_back({v->type.name, anonymous_name(*v), binding});
-          struct_definition(v->type, uniform);
+          struct_definition(v->type);
           const std::string var_name = anonymous_name(*v).empty() ? "df_block_" + v->type.name : name;
           block_var_names_[v.get()] = var_name;
           // WebGPU has no writable storage buffers in vertex shaders: one the shader only reads is
@@ -383,7 +307,7 @@ class WgslPrinter {
     int offset = 0;
     for (const auto& v : vars) {
       if (v->type.base == Base::Bool) error(v->loc, "bool uniform '" + v->name + "': WGSL buffers hold no bool; use int or uint");
-      Layout l = layout_of(v->type, true);
+      WgslLayout l = wgsl_layout(v->type, true);
       std::string declared = type(v->type, v->loc);
       if (v->type.is_array() && l.size / std::max(v->type.array_dims[0], 1) % 16 != 0) {
         const ir::Type element = v->type.element();
@@ -1086,7 +1010,7 @@ class WgslPrinter {
         {"equal", "=="}, {"notEqual", "!="}};
     if (ir::is_array_length(e)) {
       if (a[0]->type.array_dims[0] > 0) return std::to_string(a[0]->type.array_dims[0]) + "i";
-      return "i32(arrayLength(&" + expr(a[0]) + "))";
+      return "i32(arrayLength(&" + (std140_.wrapped(*a[0]) ? member_access(*a[0]) : expr(a[0])) + "))";
     }
     if (auto it = comparisons.find(n); it != comparisons.end()) return "(" + expr(a[0]) + " " + it->second + " " + expr(a[1]) + ")";
     if (n == "matrixCompMult") {
@@ -1201,6 +1125,7 @@ class WgslPrinter {
     switch (e->kind) {
       case Kind::Sym:
         current_loc_ = e->loc;
+        refuse_whole_member_access(*e);
         return symbol(*e->var);
       case Kind::Const: {
         size_t at = 0;
@@ -1238,16 +1163,14 @@ class WgslPrinter {
       case Kind::Call: return call(*e);
       case Kind::Builtin: return builtin(*e);
       case Kind::Construct: return construct(*e);
-      case Kind::Member: return expr(e->args[0]) + "." + (e->args[0]->type.base == Base::Struct ||
-                                                                  e->args[0]->type.base == Base::Block
-                                                              ? ident(e->name)
-                                                              : e->name);
+      case Kind::Member: refuse_whole_member_access(*e); return member_access(*e);
       case Kind::Index: {
         std::string index = expr(e->args[1]);
         const ir::ExprPtr& base = e->args[0];
         if (base->kind == Kind::Sym)
           if (auto padded = padded_uniform_arrays_.find(base->var.get()); padded != padded_uniform_arrays_.end())
             return "df_uniforms." + ident(base->var->name) + "[" + index + "]" + padded->second;
+        if (std140_.wrapped(*base)) return member_access(*base) + "[" + index + "].v";
         return expr(base) + "[" + index + "]";
       }
       case Kind::Comma:
@@ -1255,6 +1178,21 @@ class WgslPrinter {
         return "0";
     }
     return "0";
+  }
+
+  // A member (or an anonymous block's member), without the check for whole reads of padded arrays.
+  std::string member_access(const Expr& e) {
+    if (e.kind == Kind::Sym) return symbol(*e.var);
+    const Base base = e.args[0]->type.base;
+    return expr(e.args[0]) + "." + (base == Base::Struct || base == Base::Block ? ident(e.name) : e.name);
+  }
+
+  // An array member padded to std140's stride is an array of wrappers: read element by element.
+  void refuse_whole_member_access(const Expr& e) {
+    if (!std140_.wrapped(e)) return;
+    const std::string name = e.kind == Kind::Sym ? e.var->name : e.name;
+    error(e.loc, "'" + name + "' is read as a whole: in WGSL its elements are padded to std140's 16-byte stride, so " +
+                     "doublet reads it element by element only (" + name + "[i])");
   }
 
   // ---- entry point ---------------------------------------------------------

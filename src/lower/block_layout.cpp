@@ -150,6 +150,12 @@ bool holds_doubles(const ir::Type& t) {
   return false;
 }
 
+StdLayout std_layout(const ir::Type& t, bool std140) {
+  const Layout layout(std140);
+  const Shape whole = layout.whole(t);
+  return {whole.size, whole.align, t.is_array() ? layout.stride(t) : 0};
+}
+
 std::vector<BlockMember> block_layout(const ir::Type& block, const std::string& packing) {
   std::vector<BlockMember> out;
   members(Layout(packing != "std430"), block, "", 0, out);

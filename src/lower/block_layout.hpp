@@ -14,4 +14,11 @@ bool holds_doubles(const ir::Type& t);
 
 std::vector<BlockMember> block_layout(const ir::Type& block, const std::string& packing);
 
+// Size, alignment and (for an array) element stride of `t` in std140 or std430; a runtime-sized
+// array has size 0. The WGSL printer lays std140 blocks out with these (docs/web.md).
+struct StdLayout {
+  int size = 0, align = 4, stride = 0;
+};
+StdLayout std_layout(const ir::Type& t, bool std140);
+
 }  // namespace doublet::passes

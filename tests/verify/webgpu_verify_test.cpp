@@ -113,6 +113,26 @@ TEST(WebGpuVerify, ExactIsBitIdenticalInChromiumAndTiesAwayFails) {
   EXPECT_NE(r.out.find("FAIL"), std::string::npos) << r.out;
 }
 
+// std140 storage arrays of doubles and floats: WGSL's own stride (8, 4) is not std140's (16), which
+// the host writes; doublet pads the elements. Before, the shader was refused; printed without the
+// padding, every value is misread (0 bits). drop-lo shows the check can fail.
+TEST(WebGpuVerify, Std140ArraysAreReadAtStd140Strides) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  const std::string shader = std::string(DOUBLET_VERIFY_SHADERS) + "/webgpu/std140.comp";
+  const std::string common = shader + " --spec " + shader + ".json --min-bits 44 --backend webgpu";
+  auto min_bits = [](const CliRun& r) {
+    for (const auto& o : r.report.at("runs").at(0).at("outputs"))
+      if (o.at("name") == "o[]") return o.at("min_bits").get<double>();
+    return -1.0;
+  };
+  const CliRun kept = verify(common);
+  ASSERT_EQ(kept.exit_code, 0) << kept.out;
+  EXPECT_GE(min_bits(kept), 44) << kept.out;
+  const CliRun dropped = verify(common + " --sabotage drop-lo");
+  ASSERT_EQ(dropped.exit_code, 1) << dropped.out;
+  EXPECT_LT(min_bits(dropped), 30) << dropped.out;
+}
+
 TEST(WebGpuVerify, VertexShaderAndManyDispatchesAreInputErrors) {
   const CliRun vertex = verify(std::string(DOUBLET_VERIFY_SHADERS) + "/pairs.vert --backend webgpu");
   EXPECT_EQ(vertex.exit_code, 2) << vertex.out;
