@@ -376,8 +376,12 @@ class Generator {
         return true;
       }
       case 9: {
-        const Ex a = gen(t, d), b = gen(t, d);
-        if (continuous_ || chance(0.5)) {
+        const Ex a = gen(t, d);
+        Ex b = gen(t, d);
+        // Two constant ends: NIR evaluates mix(A, B, t) as A + t(B - A) with B - A folded, which
+        // rounds otherwise than the written A(1 - t) + Bt (docs/robustness.md, findings).
+        for (int tries = 0; tries < 8 && !reads_a_variable(a.s) && !reads_a_variable(b.s); ++tries) b = gen(t, d);
+        if ((continuous_ || chance(0.5)) && (reads_a_variable(a.s) || reads_a_variable(b.s))) {
           const Ex w = scalar_or_same(t, d);
           feature("fn:mix");
           // No component of the weight or of the two ends the same value as another's: lavapipe's
@@ -1121,6 +1125,24 @@ const std::vector<std::string>& all_features() {
       "global:initialised", "global:uniform-initialised", "layout:std140", "stage:comp", "stage:vert", "stage:frag", "stage:geom",
       "stmt:discard", "block:uniform"};
   return list;
+}
+
+bool reads_a_variable(const std::string& s) {
+  const auto word = [&](size_t k) { return k < s.size() && (std::isalnum(static_cast<unsigned char>(s[k])) || s[k] == '_'); };
+  for (size_t i = 0; i < s.size();) {
+    if (!word(i)) {
+      ++i;
+      continue;
+    }
+    const size_t start = i;
+    while (word(i)) ++i;
+    const bool literal = std::isdigit(static_cast<unsigned char>(s[start]));
+    const bool swizzle = start > 0 && s[start - 1] == '.';
+    const bool call = i < s.size() && s[i] == '(';
+    const std::string name = s.substr(start, i - start);
+    if (!literal && !swizzle && !call && name != "true" && name != "false") return true;
+  }
+  return false;
 }
 
 bool uses_native_non_ieee(const Program& p) {

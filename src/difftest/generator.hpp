@@ -33,4 +33,9 @@ const std::vector<std::string>& all_features();
 // exact-equals-native oracle skips a program that uses one of them.
 bool uses_native_non_ieee(const Program&);
 
+// Whether a generated expression's text reads a variable (an identifier that is not a function or
+// constructor, a swizzle or a literal's suffix): mix's ends must not both be constants, which NIR
+// folds into another formula (docs/robustness.md, findings).
+bool reads_a_variable(const std::string& expression);
+
 }  // namespace doublet::difftest
