@@ -84,6 +84,8 @@ class Generator {
   Program run() {
     const int which = pick(0, 10);
     stage_ = which < 6 ? "comp" : which < 8 ? "vert" : which < 10 ? "frag" : "geom";
+    // Half the geometry seeds make tessellation shaders (chosen by the seed: other programs stay).
+    if (stage_ == "geom" && program_.seed % 4 >= 2) stage_ = program_.seed % 4 == 2 ? "tese" : "tesc";
     program_.stage = stage_;
     feature("stage:" + stage_);
     // One compute or vertex program in three is continuous, for the bound oracle (oracles.hpp). Decided
@@ -96,6 +98,10 @@ class Generator {
     if (stage_ == "comp") head += "layout(local_size_x = 64) in;\n";
     // A geometry shader: one point in, one emitted (verify compares each emitted vertex).
     if (stage_ == "geom") head += "layout(points) in;\nlayout(points, max_vertices = 1) out;\n";
+    // Tessellation (docs/verify.md): a control shader of one control point per patch; an evaluation
+    // shader on triangles, its inputs the corners weighted by gl_TessCoord.
+    if (stage_ == "tesc") head += "layout(vertices = 1) out;\n";
+    if (stage_ == "tese") head += "layout(triangles, equal_spacing, ccw) in;\n";
     std::string spec = "{\n  \"inputs\": {";
     for (int i = 0; i < inputs; ++i) {
       const Ty t = vec_of(pick(1, 4));
@@ -107,12 +113,14 @@ class Generator {
                 ") readonly buffer In" + std::to_string(i) + " { " + type_name(t) + " " + name + "[]; };\n";
       } else {
         head += std::string(stage_ == "frag" ? "flat in " : "in ") + type_name(t) + " " + name +
-                (stage_ == "geom" ? "[]" : "") + ";\n";
+                (per_vertex() ? "[]" : "") + ";\n";
       }
       const bool positive = chance(0.4);
-      // A geometry shader's per-vertex input is fed element by element (verify names it in0[0]).
-      spec += std::string(i ? "," : "") + "\n    \"" + name + (stage_ == "geom" ? "[0]" : "") + "\": { \"range\": " +
-              (positive ? "[0.25, 4]" : "[-3, 3]") + " }";
+      // A per-vertex input is fed element by element (verify names them in0[0], in0[1], ...).
+      const int elements = stage_ == "tese" ? 3 : 1;
+      for (int k = 0; k < elements; ++k)
+        spec += std::string(i || k ? "," : "") + "\n    \"" + name + (per_vertex() ? "[" + std::to_string(k) + "]" : "") +
+                "\": { \"range\": " + (positive ? "[0.25, 4]" : "[-3, 3]") + " }";
       inputs_.push_back({name, t, 4, false});
     }
     std::string output_spec;
@@ -123,9 +131,9 @@ class Generator {
         head += "layout(std430, binding = " + std::to_string(inputs + o) + ") writeonly buffer Out" + std::to_string(o) +
                 " { " + type_name(t) + " " + name + "[]; };\n";
         outputs_.push_back({name, t});
-      } else if (stage_ == "vert" || stage_ == "geom") {
+      } else if (stage_ != "frag") {
         const Ty t = vec_of(pick(1, 4));
-        head += "out " + std::string(type_name(t)) + " " + name + ";\n";
+        head += "out " + std::string(type_name(t)) + " " + name + (stage_ == "tesc" ? "[]" : "") + ";\n";
         outputs_.push_back({name, t});
       } else {
         // A fragment shader cannot output doubles: (hi, lo) float pairs, compared joined.
@@ -998,7 +1006,9 @@ class Generator {
       const Ex e = gen(type, 2);
       if (stage_ == "comp") {
         line(name + "[gid] = " + e.s + ";");
-      } else if (stage_ == "vert" || stage_ == "geom") {
+      } else if (stage_ == "tesc") {
+        line(name + "[gl_InvocationID] = " + e.s + ";");
+      } else if (stage_ != "frag") {
         line(name + " = " + e.s + ";");
       } else {
         // hi = float(t), lo = float(t - hi): both exact functions of the double t.
@@ -1067,11 +1077,16 @@ class Generator {
     line("void main() {");
     ++indent_;
     if (stage_ == "comp") line("uint gid = gl_GlobalInvocationID.x;");
-    if (stage_ == "vert" || stage_ == "geom") line("gl_Position = vec4(0.0, 0.0, 0.0, 1.0);");
+    if (stage_ == "vert" || stage_ == "geom" || stage_ == "tese") line("gl_Position = vec4(0.0, 0.0, 0.0, 1.0);");
+    if (stage_ == "tese") line("dvec3 tc = dvec3(gl_TessCoord);");
     for (const Var& in : inputs_) {
       const std::string name = "x" + in.name.substr(2);
-      line(std::string(type_name(in.ty)) + " " + name + " = " + in.name +
-           (stage_ == "comp" ? "[gid];" : stage_ == "geom" ? "[0];" : ";"));
+      const std::string n = in.name;
+      line(std::string(type_name(in.ty)) + " " + name + " = " +
+           (stage_ == "comp"   ? n + "[gid];"
+            : stage_ == "tese" ? n + "[0] * tc.x + " + n + "[1] * tc.y + " + n + "[2] * tc.z;"
+            : per_vertex()     ? n + "[0];"
+                               : n + ";"));
       scope_.push_back({name, in.ty, 4});
     }
     // Every block member is read once, so none is inactive (verify refuses a range for a uniform the
@@ -1096,6 +1111,7 @@ class Generator {
   std::vector<Func> funcs_;
   int counter_ = 0, indent_ = 0;
   std::string stage_ = "comp";
+  bool per_vertex() const { return stage_ == "geom" || stage_ == "tesc" || stage_ == "tese"; }
   bool allow_rounding_ = false, has_struct_ = false, comma_used_ = false, in_function_ = false;
   bool continuous_ = false;  // no jump anywhere: the planner's bound applies (the bound oracle)
   Ty struct_vec_ = Ty::V2, return_type_ = Ty::D;
@@ -1122,7 +1138,7 @@ const std::vector<std::string>& all_features() {
       "stmt:continue", "stmt:early-return", "stmt:early-return-main", "call:expression", "call:out-arguments",
       "call:component-out-argument", "function:pure", "function:out-parameters", "struct", "struct:local",
       "struct:field-write", "struct:array", "array:local", "array:element-write", "global:const",
-      "global:initialised", "global:uniform-initialised", "layout:std140", "stage:comp", "stage:vert", "stage:frag", "stage:geom",
+      "global:initialised", "global:uniform-initialised", "layout:std140", "stage:comp", "stage:vert", "stage:frag", "stage:geom", "stage:tesc", "stage:tese",
       "stmt:discard", "block:uniform"};
   return list;
 }

@@ -214,6 +214,8 @@ bool compiles_natively(const std::string& glsl, const std::string& stage, std::s
   runner::GraphicsInterface graphics;
   const runner::GraphicsStage graphics_stage = stage == "vert"   ? runner::GraphicsStage::Vertex
                                               : stage == "geom" ? runner::GraphicsStage::Geometry
+                                              : stage == "tesc" ? runner::GraphicsStage::TessControl
+                                              : stage == "tese" ? runner::GraphicsStage::TessEvaluation
                                                                 : runner::GraphicsStage::Fragment;
   return runner::reflect_graphics(graphics_stage, glsl, &graphics, error);
 }

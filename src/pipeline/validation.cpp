@@ -89,6 +89,12 @@ std::vector<std::pair<int, std::string>> main_string_errors(std::string_view log
     if (end == std::string_view::npos) end = log.size();
     std::string_view line = log.substr(start, end - start);
     start = end + 1;
+    // glslang lists the extensions that would allow a construct on the lines after its error.
+    if (!errors.empty() && line.substr(0, 3) == "GL_" && errors.back().second.find("include:") != std::string::npos) {
+      std::string& message = errors.back().second;
+      message += (message.ends_with("include:") ? " " : ", ") + std::string(frontend::trim_blanks(line));
+      continue;
+    }
     if (line.substr(0, 9) != "ERROR: 0:") continue;
     line.remove_prefix(9);
     const size_t colon = line.find(':');
@@ -133,6 +139,9 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
   // numbers the next line N).
   const int prelude_after = std::max(version_line, last_extension_line);
   std::string prelude;
+  // The stage's own extension (es310 geometry and tessellation), as the lowering declares it.
+  if (const char* extension = target::stage_extension(target::facts(options.target), *options.stage))
+    prelude += std::string("#extension ") + extension + " : require\n";
   for (const auto& [name, value] : options.defines) prelude += "#define " + name + " " + frontend::demote_doubles(value) + "\n";
   if (target_is_es(options.target)) {
     prelude += "precision highp float;\nprecision highp int;\n";  // desktop shaders declare none

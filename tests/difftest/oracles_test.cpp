@@ -83,6 +83,41 @@ void main() {
   EXPECT_TRUE(has_finding(r, "int")) << describe(r);
 }
 
+// Tessellation programs in the generator's form (one geometry seed in four each makes a control or
+// an evaluation shader): the oracles hold on lavapipe (docs/verify.md), and drop-lo is found.
+TEST(DiffOracles, TessellationProgramsHoldAndDroppedLowWordsAreFound) {
+  const std::string body = R"(  for (int k0 = 0; k0 < 3; ++k0) {
+    x0 = x0 * x1 + dvec2(0.1lf, 0.3lf);
+  }
+)";
+  Program control;
+  control.stage = "tesc";
+  control.glsl = "#version 450\nlayout(vertices = 1) out;\nin dvec2 in0[];\nin double in1[];\nout dvec2 r0[];\n"
+                 "void main() {\n  dvec2 x0 = in0[0];\n  double x1 = in1[0];\n" + body +
+                 "  r0[gl_InvocationID] = x0 / (1.5lf + abs(x0.yx));\n}\n";
+  control.spec_json = R"({ "inputs": { "in0[0]": { "range": [-3, 3] }, "in1[0]": { "range": [0.25, 4] } } })";
+  Program evaluation;
+  evaluation.stage = "tese";
+  evaluation.glsl = "#version 450\nlayout(triangles, equal_spacing, ccw) in;\nin dvec2 in0[];\nin double in1[];\nout dvec2 r0;\n"
+                    "void main() {\n  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);\n  dvec3 tc = dvec3(gl_TessCoord);\n"
+                    "  dvec2 x0 = in0[0] * tc.x + in0[1] * tc.y + in0[2] * tc.z;\n"
+                    "  double x1 = in1[0] * tc.x + in1[1] * tc.y + in1[2] * tc.z;\n" + body +
+                    "  r0 = x0 / (1.5lf + abs(x0.yx));\n}\n";
+  evaluation.spec_json = R"({ "inputs": { "in0[0]": { "range": [-3, 3] }, "in0[1]": { "range": [-3, 3] },
+    "in0[2]": { "range": [-3, 3] }, "in1[0]": { "range": [0.25, 4] }, "in1[1]": { "range": [0.25, 4] },
+    "in1[2]": { "range": [0.25, 4] } } })";
+  for (const Program& p : {control, evaluation}) {
+    const CheckResult r = run(p, quick());
+    EXPECT_TRUE(r.invalid.empty()) << p.stage << ": " << r.invalid;
+    EXPECT_TRUE(r.findings.empty()) << p.stage << describe(r);
+    EXPECT_EQ(r.checked, (std::vector<std::string>{"exact", "int", "targets"})) << p.stage;
+    CheckOptions o = quick();
+    o.sabotage = "drop-lo";
+    const CheckResult broken = run(p, o);
+    EXPECT_TRUE(has_finding(broken, "int")) << p.stage << describe(broken);
+  }
+}
+
 // The bound oracle: on a continuous program (one seed in three of the compute and vertex ones),
 // every df64 output stays within the planner's bound.
 TEST(DiffOracles, ContinuousProgramsKeepThePlannersBound) {

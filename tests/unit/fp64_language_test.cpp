@@ -164,6 +164,17 @@ TEST(Targets, ConstructsTheTargetLacksAreDiagnosedByConstructAndTarget) {
   expect_error(lower("#version 450\nlayout(triangles) in;\nin double d[];\nflat out double e;\nvoid main() { e = d[0]; }\n",
                      doublet::Stage::TessEvaluation, doublet::Target::Es300),
                {"has no tessellation evaluation shaders"});
+  // A float construct es310 lacks in a tessellation shader is blamed on its own line, with the
+  // extensions glslang names: the user's text is compiled as es310 with the stage's extension
+  // (before, glslang's complaint about the missing tessellation extension hid it; found by the
+  // differential tester's drop-lo runs of generated tessellation programs).
+  const doublet::Result fma = lower("#version 450\nlayout(triangles) in;\nin vec4 c[];\nout vec4 p;\n"
+                                    "void main() {\n  p = fma(c[0], c[1], c[2]);\n}\n",
+                                    doublet::Stage::TessEvaluation, doublet::Target::Es310);
+  expect_error(fma, {"'fma'", "GL_EXT_gpu_shader5, GL_OES_gpu_shader5"});
+  ASSERT_FALSE(fma.diagnostics.empty());
+  EXPECT_EQ(fma.diagnostics[0].line, 6);
+  EXPECT_EQ(messages(fma).find("tessellation shaders"), std::string::npos) << messages(fma);
   // A tessellation control shader's double outputs: each invocation stores only its own vertex.
   expect_error(lower(control + "patch out double e;\nvoid main() { e = d[0]; }\n", doublet::Stage::TessControl,
                      doublet::Target::Glsl450),
