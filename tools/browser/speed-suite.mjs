@@ -1,0 +1,163 @@
+// The browser run-time benchmark against luma.gl (issue 23; docs/performance.md, "Speed in the browser
+// against luma.gl"): issue 23's straight-line and loop kernels (tests/browser-speed/*.frag) lowered by
+// the doublet CLI for webgl2 in each mode, the same kernels written by hand on luma.gl's fp64 module
+// (tests/browser-speed/*.luma.frag, the library from npm via tools/peers/luma-fp64.mjs) and the float
+// twin (doublet --mode fp32), each run per pixel of a size x size framebuffer in headless chromium's
+// WebGL2, timed in interleaved rounds (speed-page.mjs), and their outputs compared with the kernels in
+// JavaScript doubles. Prints ms per draw (best and median of the rounds), the speed against luma.gl
+// (the median over rounds of luma.gl's ms / the contender's ms in the same round: on a shared machine
+// a round's neighbours see the same load, while the best of each may come from different moments)
+// and the bits.
+//   node speed-suite.mjs --doublet build/bin/doublet [--modes df64,df64-fast,df64-int] [--size 256]
+//        [--draws N] [--target-ms 100] [--rounds 5] [--kernels straight,loop] [--json FILE]
+//        [--sabotage drop-lo] [--timeout-ms 3600000]
+// --draws 0 (default): per contender, as many draws as take --target-ms. --sabotage drop-lo feeds
+// doublet's NAME_lo uniforms zeros (a check that the bits floor catches broken wiring). --timeout-ms:
+// how long the page may take in all.
+// Exit 0 when everything ran (speed is reported, never judged), 1 on a lowering, compile, link or
+// run-time error or bits below the sanity floor (median: df64, df64-int < 40; df64-fast, luma.gl < 35), 2 when
+// there is no browser or no luma.gl here; with DOUBLET_REQUIRE_BROWSER=1 a missing one is 1.
+import { spawnSync } from 'child_process';
+import fs from 'fs';
+import os from 'os';
+import path from 'path';
+import { findChromium, launch, pageOutcome, serve, takeOption } from './session.mjs';
+
+const here = path.dirname(new URL(import.meta.url).pathname);
+const root = path.resolve(here, '..', '..');
+const args = process.argv.slice(2);
+const option = (name, fallback) => takeOption(args, name, fallback);
+const doublet = option('--doublet', '');
+const modes = option('--modes', 'df64,df64-fast,df64-int').split(',').filter((x) => x);
+const size = Number(option('--size', '256'));
+const draws = Number(option('--draws', '0'));
+const targetMs = Number(option('--target-ms', '100'));
+const rounds = Number(option('--rounds', '5'));
+const kernelNames = option('--kernels', 'straight,loop').split(',').filter((x) => x);
+const jsonFile = option('--json', '');
+const sabotage = option('--sabotage', '');
+const timeoutMs = Number(option('--timeout-ms', '3600000'));
+// Sanity floors on the median bits: well below what each gives here (df64-fast: its sloppy sum loses
+// bits in the eye subtraction), well above what broken wiring gives (a lost low word: about 24).
+const floors = { df64: 40, 'df64-int': 40, 'df64-fast': 35, luma: 35 };
+if (!doublet || args.length || !(size > 0) || !(rounds > 0) || !['', 'drop-lo'].includes(sabotage) ||
+    kernelNames.some((k) => !['straight', 'loop'].includes(k))) {
+  console.error('usage: node speed-suite.mjs --doublet PATH [--modes M,..] [--size N] [--draws N] [--target-ms N] [--rounds N] [--kernels straight,loop] [--json FILE] [--sabotage drop-lo] [--timeout-ms N]');
+  process.exit(1);
+}
+const missing = (why) => {
+  console.error(`speed-suite: ${why}`);
+  process.exit(process.env.DOUBLET_REQUIRE_BROWSER === '1' ? 1 : 2);
+};
+
+// luma.gl's fp64 module as a luma.gl application gets it (tools/peers/luma-fp64.mjs; never stored here).
+const peers = process.env.DOUBLET_PEER_TOOLS || path.join(root, 'tools', 'peers');
+if (!fs.existsSync(path.join(peers, 'node_modules', '@luma.gl', 'shadertools')))
+  missing(`@luma.gl/shadertools is not installed (cd ${peers} && npm ci)`);
+const printed = spawnSync(process.execPath, [path.join(peers, 'luma-fp64.mjs')], { encoding: 'utf8', maxBuffer: 1 << 24 });
+if (printed.status !== 0) {
+  console.error(`speed-suite: luma-fp64.mjs failed: ${printed.stderr}`);
+  process.exit(1);
+}
+const luma = JSON.parse(printed.stdout);
+if (!/uniform\s+fp64arithmeticUniforms\s*\{/.test(luma.glsl)) {
+  console.error(`speed-suite: @luma.gl/shadertools ${luma.version}: no fp64arithmeticUniforms block (the module changed)`);
+  process.exit(1);
+}
+// The library is assembled for a vertex shader (luma.gl's fp64 functions are a vertex-stage module);
+// the text is the same GLSL in a fragment shader.
+const lumaLibrary = luma.glsl.replace('#define SHADER_TYPE_VERTEX', '#define SHADER_TYPE_FRAGMENT');
+
+const chromium = await findChromium('speed-suite');
+if (!chromium) missing('no browser');
+
+const kernelDir = path.join(root, 'tests', 'browser-speed');
+const work = fs.mkdtempSync(path.join(os.tmpdir(), 'doublet-speed-'));
+let failed = false;
+const lower = (source, mode) => {
+  const out = path.join(work, `${path.basename(source, '.frag')}.${mode}.frag`);
+  const r = spawnSync(doublet, ['lower', source, '--target', 'webgl2', '--mode', mode, '-o', out], { encoding: 'utf8' });
+  if (r.status !== 0) {
+    console.error(`speed-suite: doublet lower ${source} --mode ${mode} failed:\n${r.stderr}`);
+    failed = true;
+    return null;
+  }
+  return fs.readFileSync(out, 'utf8');
+};
+const marker = '// luma.gl fp64 library: inserted here by speed-suite.mjs';
+const kernels = kernelNames.map((name) => {
+  const source = path.join(kernelDir, `${name}.frag`);
+  const lumaText = fs.readFileSync(path.join(kernelDir, `${name}.luma.frag`), 'utf8');
+  if (!lumaText.includes(marker)) throw new Error(`${name}.luma.frag has no line '${marker}'`);
+  const contenders = [
+    { name: 'fp32', flavour: 'fp32', code: lower(source, 'fp32') },
+    { name: `luma.gl ${luma.version}`, flavour: 'luma', luma: true, code: lumaText.replace(marker, lumaLibrary),
+      blocks: { fp64arithmeticUniforms: luma.uniforms } },
+    ...modes.map((mode) => ({ name: mode, flavour: 'doublet', doublet: true, code: lower(source, mode) })),
+  ];
+  return { name, contenders };
+});
+if (failed) {
+  fs.rmSync(work, { recursive: true, force: true });
+  process.exit(1);
+}
+if (sabotage === 'drop-lo')
+  for (const k of kernels) for (const c of k.contenders) if (c.doublet) c.sabotage = 'drop-lo';
+
+for (const f of ['speed.html', 'speed-page.mjs']) fs.copyFileSync(path.join(here, f), path.join(work, f));
+fs.writeFileSync(path.join(work, 'job.json'), JSON.stringify({ size, rounds, draws, targetMs, seed: 23, kernels }));
+const server = await serve(work);
+let browser;
+let outcome;
+try {
+  browser = await launch(chromium);
+  const page = await browser.newPage();
+  // (ANGLE's "GPU stall due to ReadPixels" is the point of the read-back here: not shown)
+  page.on('console', (message) => { if (!/GPU stall due to ReadPixels/.test(message.text())) console.error(`[page ${message.type()}] ${message.text()}`); });
+  await page.goto(`http://127.0.0.1:${server.address().port}/speed.html?job=job.json`, { timeout: 60000 });
+  outcome = await pageOutcome(page, timeoutMs);
+} catch (e) {
+  outcome = { error: e.message };
+}
+if (browser) await browser.close().catch(() => {});
+server.close();
+fs.rmSync(work, { recursive: true, force: true });
+if (outcome.error !== undefined) {
+  console.error(`speed-suite: the page failed: ${outcome.error}`);
+  process.exit(1);
+}
+
+const { renderer } = outcome.result;
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+};
+const vsLuma = (peer, c) => median(peer.ms.map((m, r) => m / c.ms[r]));  // > 1: faster than luma.gl
+const fixed = (x, n) => (x === null || x === undefined ? 'n/a' : x.toFixed(n));
+console.log(`WebGL2 renderer: ${renderer}; ${size}x${size} pixels, ${rounds} interleaved round(s)${sabotage ? `; SABOTAGE ${sabotage}` : ''}`);
+console.log('| kernel | contender | ms/draw (best) | ms/draw (median) | draws | speed vs luma.gl | bits min | bits median |\n|---|---|---|---|---|---|---|---|');
+const verdicts = [];
+const rows = [];
+for (const k of outcome.result.kernels) {
+  const peer = k.contenders.find((c) => c.name.startsWith('luma.gl'));
+  for (const c of k.contenders) {
+    const flavour = kernels.find((x) => x.name === k.name).contenders.find((x) => x.name === c.name).flavour;
+    const ratio = vsLuma(peer, c);
+    const floor = floors[flavour === 'luma' ? 'luma' : c.name];
+    const low = floor !== undefined && !(c.bits_median >= floor);
+    if (low) failed = true;
+    rows.push({ kernel: k.name, ...c, vs_luma: +ratio.toFixed(3), bits_floor: floor ?? null, below_floor: low });
+    console.log(`| ${k.name} | ${c.name} | ${fixed(c.best_ms, 2)} | ${fixed(c.median_ms, 2)} | ${c.draws} | ${fixed(ratio, 2)}x | ${fixed(c.bits_min, 1)} | ${fixed(c.bits_median, 1)}${low ? ` BELOW THE FLOOR (${floor})` : ''} |`);
+  }
+  const df = k.contenders.find((c) => c.name === 'df64');
+  if (df) {
+    const ratio = vsLuma(peer, df);
+    const bitsOk = df.bits_min >= peer.bits_min && df.bits_median >= peer.bits_median;
+    verdicts.push(`${k.name}: df64 ${ratio.toFixed(2)}x luma.gl's speed at ${fixed(df.bits_min, 1)}/${fixed(df.bits_median, 1)} bits ` +
+                  `against ${fixed(peer.bits_min, 1)}/${fixed(peer.bits_median, 1)} (min/median): ` +
+                  (ratio >= 1.3 && bitsOk ? 'met' : `not met (${ratio >= 1.3 ? '' : 'speed < 1.3x'}${ratio >= 1.3 || bitsOk ? '' : ', '}${bitsOk ? '' : 'fewer bits'})`));
+  }
+}
+if (jsonFile) fs.writeFileSync(jsonFile, JSON.stringify({ renderer, size, rounds, luma: luma.version, sabotage: sabotage || null, rows }, null, 1));
+console.log(`goal (df64 >= 1.3x luma.gl at >= its bits): ${verdicts.join('; ') || 'no df64 row'}`);
+process.exit(failed ? 1 : 0);
