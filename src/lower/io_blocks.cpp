@@ -89,6 +89,13 @@ class Flattener {
 
  private:
   bool flattenable(const ir::Var& block) {
+    if (block.layout.passthrough) {  // a passthrough input must stay a block (or gl_PerVertex)
+      ctx_.error(block.loc, "the passthrough input block '" + block.type.name +
+                                "' (GL_NV_geometry_shader_passthrough) cannot be flattened into plain inputs for " +
+                                std::string(to_string(ctx_.config.target)) +
+                                " (it has no in/out blocks); target es320 or glsl450");
+      return false;
+    }
     if (!block.type.is_array()) return true;
     ctx_.error(block.loc, "the " + std::string(block.storage == ir::Storage::In ? "input" : "output") + " block '" +
                               block.type.name + "' is an array, which cannot be flattened into plain varyings for " +

@@ -125,6 +125,12 @@ class Optimizer {
   explicit Optimizer(OptimizeStats& stats) : stats_(stats) {}
 
   ExprPtr operator()(const ExprPtr& e) {
+    // float(double(f)) is f (df_to_float keeps a zero's sign where the sum is zero).
+    if (e->kind == Kind::Call && e->name == "df_to_float" && e->args.size() == 1 && e->args[0]->kind == Kind::Call &&
+        e->args[0]->name == "df_from_float" && e->args[0]->args.size() == 1) {
+      ++stats_.low_words;
+      return e->args[0]->args[0];
+    }
     if (e->kind != Kind::Call || e->args.size() != 2 || !is_df(e->type)) return nullptr;
     const std::string& n = e->name;
     const ExprPtr& a = e->args[0];
@@ -174,6 +180,11 @@ class Optimizer {
   ExprPtr add(const ExprPtr& e, const ExprPtr& a, const ExprPtr& b, bool subtract) {
     if (!is_df(a->type) || !is_df(b->type)) return nullptr;
     ExprPtr fa = known_float(a), fb = known_float(b);
+    if (subtract && fb && fb->kind == Kind::Call && fb->name == "df_to_float" && fb->args.size() == 1 &&
+        same_pure(fb->args[0], a)) {
+      ++stats_.low_words;
+      return make_call("df_from_float", e->type, {low_word(a)}, e->loc);
+    }
     if (fa && fb) {
       ++stats_.exact_pairs;
       return make_call("df_two_sum", e->type, {fa, subtract ? negate_float(fb) : fb}, e->loc);
@@ -189,6 +200,15 @@ class Optimizer {
       return make_call("df_add_f", e->type, {other, fa}, e->loc);
     }
     return nullptr;
+  }
+
+  // The lo word of a side-effect-free df expression: a constructor's second argument, else `.lo`.
+  static ExprPtr low_word(const ExprPtr& a) {
+    if (a->kind == Kind::Construct && a->args.size() == 2) return a->args[1];
+    auto lo = Expr::make(Kind::Member, ir::scalar_type(ir::Base::Float, df_width(a->type)), a->loc);
+    lo->name = "lo";
+    lo->args = {a};
+    return lo;
   }
 
   OptimizeStats& stats_;
@@ -218,7 +238,7 @@ bool optimize_df(ir::Module& module, Context& ctx, OptimizeStats* stats) {
   const ir::ExprRewriter f = [&](const ExprPtr& e) { return opt(e); };
   for (auto& init : module.global_inits) init = ir::rewrite(init, f);
   for (auto& fn : module.functions) ir::rewrite(fn->body, f);
-  if (s.pow2 + s.squares + s.float_operands + s.exact_pairs == 0) return true;
+  if (s.pow2 + s.squares + s.float_operands + s.exact_pairs + s.low_words == 0) return true;
 
   // Bring rules_used up to date: add what is now called, drop what the rewrites replaced when
   // nothing calls it any more (neither the code nor a generated helper).
@@ -249,7 +269,7 @@ bool optimize_df(ir::Module& module, Context& ctx, OptimizeStats* stats) {
     if (!replaceable.count(r.name) || called.count({r.name, r.width}) || in_helpers(r.name)) kept.push_back(r);
   ctx.rules_used = std::move(kept);
   static const std::set<std::string> added{"df_mul_pow2", "df_sqr", "df_mul_f2", "df_add_f", "df_two_sum",
-                                           "df_two_prod", "df_neg"};
+                                           "df_two_prod", "df_neg", "df_from_float"};
   for (const auto& [name, width] : called)
     if (added.count(name) && width >= 1 && width <= 4) ctx.use_rule(name, width);
   return true;

@@ -5,6 +5,11 @@
 //   df_mul(a, f) with f's lo known zero                                 -> df_mul_f2(a, f)     27 flops, 3u^2
 //   df_add(a, f) / df_sub(a, f) / df_sub(f, a) with f's lo known zero   -> df_add_f(...)       11 flops, 2u^2
 //   both operands' lo known zero: df_add/df_sub -> df_two_sum, df_mul -> df_two_prod        exact
+//   df_sub(x, df_from_float(df_to_float(x))), x side-effect-free         -> df_from_float(x.lo) exact
+//   df_to_float(df_from_float(f))                                        -> f                   exact
+// The last two are GLSL's idiom for a double's low word, `x - double(float(x))` (fragment outputs
+// as hi/lo floats): for a double-word x (hi = RN(hi + lo), as every rule returns and hosts split),
+// float(x) is hi, and x - hi is lo exactly.
 // "lo known zero": df_from_float(f), a df constant whose lo words are all 0, or a df_splat_* of one.
 // A hand-written float-float library cannot do these: it sees one call at a time.
 #pragma once
@@ -15,7 +20,7 @@
 namespace doublet::passes {
 
 struct OptimizeStats {
-  int pow2 = 0, squares = 0, float_operands = 0, exact_pairs = 0;
+  int pow2 = 0, squares = 0, float_operands = 0, exact_pairs = 0, low_words = 0;
 };
 
 // Rewrites in place and updates context.rules_used (rules no longer called are dropped unless a

@@ -2,7 +2,7 @@
 precision highp float;
 precision highp int;
 
-// doublet float-float runtime: 11 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 10 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 
@@ -202,20 +202,6 @@ vec2 df_to_float(df_dvec2 a) {
   return r.hi;
 }
 
-// df_add_f: a + b with b a plain float (b need not be a double-word).
-// Algorithm: DWPlusFP (JMP Algorithm 4), then df_finish
-// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 2.2
-// Bound: 2u^2
-// Flops: 11
-// Steps: (sh,sl) = TwoSum(ah,b); v = RN(al+sl); (zh,zl) = Fast2Sum(sh,v); df_finish(z, sh).
-df_dvec2 df_add_f(df_dvec2 a, vec2 b) {
-  df_dvec2 s = df_two_sum(a.hi, b);
-  precise vec2 v = (a.lo + s.lo);
-  df_dvec2 z = df_fast_two_sum(s.hi, v);
-  df_dvec2 r = df_finish(z, s.hi);
-  return r;
-}
-
 df_dvec2 df_splat_dvec2(df_double s) {
   return df_dvec2(vec2(s.hi), vec2(s.lo));
 }
@@ -243,5 +229,5 @@ void main()
   {
     z = df_add(df_mul(z, df_splat_dvec2(zoom)), center);
   }
-  o = vec4(df_to_float(z), df_to_float(df_add_f(z, -df_to_float(z))));
+  o = vec4(df_to_float(z), z.lo);
 }
