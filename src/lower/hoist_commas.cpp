@@ -6,12 +6,14 @@
 //     a branch of ?:, nor in a loop's condition or step (those keep the WGSL printer's refusal);
 //   - the statement is a direct child of a block (an expression statement, a declaration, a
 //     return, the condition of an if or a switch);
-//   - neither its left operands nor the rest of the statement (less the comma) calls a function of
-//     the user's or a built-in with effects, and no variable one of them writes is used by the
-//     other (a runtime call with an out parameter counts as writing what is passed to it). What
+//   - neither its left operands nor the rest of the statement (less the comma) calls a built-in
+//     with effects, no variable one of them writes is used by the other (a runtime call with an out
+//     parameter counts as writing what is passed to it, a call of the user's as writing all it is
+//     passed), and where one calls a function of the user's the other touches no global. What
 //     encloses the comma (an assignment, a call) takes effect after it: its target counts as read.
 // The pass runs on the lowered IR, so the intermediate GLSL the WGSL is printed from has no such
 // comma left. docs/web.md ("The WGSL target") lists what is still refused.
+#include <algorithm>
 #include <functional>
 #include <set>
 #include <vector>
@@ -45,10 +47,21 @@ bool writes_arguments(const Expr& call, const Context& ctx) {
 }
 
 // What a part of a statement reads and writes; `opaque` when it has an effect this pass does not
-// follow (a call of the user's, a built-in with effects, a write through an expression).
+// follow (a built-in with effects, a write through an expression). A call of the user's may read and
+// write any global (a buffer, a private global) and what is passed to it, nothing else: a function
+// cannot reach its caller's locals but through its out parameters.
 struct Access {
   std::set<const ir::Var*> reads, writes;
-  bool opaque = false;
+  std::set<const ir::Var*> targets;  // written by an enclosing assignment, after the comma
+  bool opaque = false, calls = false;
+  bool touches_globals() const {
+    auto global = [](const ir::Var* v) {
+      const ir::Storage s = v->storage;
+      return s != ir::Storage::Local && s != ir::Storage::ParamIn && s != ir::Storage::ParamOut &&
+             s != ir::Storage::ParamInOut && s != ir::Storage::Const;
+    };
+    return calls || std::any_of(reads.begin(), reads.end(), global) || std::any_of(writes.begin(), writes.end(), global);
+  }
 };
 
 // Collects over `e`, leaving out the subtree `skip`. The effects of `after` (the comma's ancestors:
@@ -59,10 +72,24 @@ void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const
   if (!e || e == skip) return;
   if (e->kind == Kind::Sym) a.reads.insert(e->var.get());
   if (after.count(e.get())) {
+    // An enclosing plain assignment writes its target once the comma is evaluated: the target's
+    // variable is kept apart (indices in it are read as usual).
+    if (e->kind == Kind::Binary && e->op == "=" && e->args[0]->kind != Kind::Sym)
+      if (const ir::Var* v = ir::root_variable(e->args[0])) {
+        a.targets.insert(v);
+        for (ir::ExprPtr part = e->args[0]; part->kind == Kind::Index || part->kind == Kind::Member; part = part->args[0])
+          if (part->kind == Kind::Index) collect(part->args[1], skip, after, ctx, a);
+        collect(e->args[1], skip, after, ctx, a);
+        return;
+      }
     for (const auto& arg : e->args) collect(arg, skip, after, ctx, a);
     return;
   }
-  if (e->kind == Kind::Call && !is_runtime_call(*e)) a.opaque = true;
+  if (e->kind == Kind::Call && !is_runtime_call(*e)) {
+    a.calls = true;
+    for (const auto& arg : e->args)
+      if (const ir::Var* v = ir::root_variable(arg)) a.writes.insert(v);
+  }
   if (is_runtime_call(*e) && writes_arguments(*e, ctx))
     for (const auto& arg : e->args)
       if (const ir::Var* v = ir::root_variable(arg)) a.writes.insert(v);
@@ -147,8 +174,10 @@ class CommaHoister {
     path_to(statement->expr, comma, ancestors);
     collect(statement->expr, comma, ancestors, ctx_, rest);
     if (statement->kind == ir::Stmt::Kind::Decl && statement->var) rest.reads.insert(statement->var.get());
-    return !left.opaque && !rest.opaque && !meet(left.writes, rest.reads) && !meet(left.writes, rest.writes) &&
-           !meet(left.reads, rest.writes);
+    return !left.opaque && !rest.opaque && !meet(left.writes, rest.reads) && !meet(left.writes, rest.targets) &&
+           !meet(left.reads, rest.targets) && !meet(left.writes, rest.writes) &&
+           !meet(left.reads, rest.writes) && !(left.calls && rest.touches_globals()) &&
+           !(rest.calls && left.touches_globals());
   }
 
   ir::Module& module_;

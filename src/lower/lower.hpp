@@ -81,6 +81,8 @@ int df_width(const ir::Type& t);
 // A component of a double vector or matrix passed to an out/inout parameter goes through a
 // temporary (after lowering it is no longer an lvalue); runs before lower_doubles.
 bool out_argument_temporaries(ir::Module& module, Context& context);
+// The same for --target wgsl, after lowering: out/inout arguments that are not whole local variables.
+bool wgsl_out_argument_temporaries(ir::Module& module, Context& context);
 bool lower_doubles(ir::Module& module, Context& context);
 // Uniform initializers: recorded for the manifest; kept in the text where the target has them
 // (desktop), dropped with one warning where it has not (ES, WGSL, and mode exact's words).

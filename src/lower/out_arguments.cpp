@@ -13,6 +13,11 @@
 // same access, so it is rewritten only when evaluating that access twice reads the same place: its
 // indices are constants or local variables that the call cannot write. Others keep the lowering's
 // diagnostic ("use a temporary").
+//
+// For --target wgsl the same rewrite runs again after lowering on every out/inout argument that is
+// not a whole local variable (`f(buf[i])`, `f(g)` with g a global): WGSL passes them as pointers,
+// which may point to function memory only. The comma form is then moved before its statement by
+// hoist-commas where it can be; what stays keeps the WGSL printer's refusal.
 #include <algorithm>
 #include <functional>
 #include <string>
@@ -55,9 +60,19 @@ ir::ExprPtr assign(const ir::ExprPtr& target, const ir::ExprPtr& value) {
   return e;
 }
 
+// A whole local variable or parameter: what a WGSL pointer argument may point to (function memory).
+bool is_whole_local(const ir::ExprPtr& e) {
+  if (e->kind != Kind::Sym) return false;
+  const ir::Storage s = e->var->storage;
+  return s == ir::Storage::Local || s == ir::Storage::ParamIn || s == ir::Storage::ParamOut || s == ir::Storage::ParamInOut;
+}
+
 class OutArgumentRewriter {
  public:
-  explicit OutArgumentRewriter(ir::Module& m) : module_(m) {}
+  // wgsl: after lowering, every out/inout argument that is not a whole local variable (WGSL's
+  // pointers point to function memory only: a buffer element, a global, a component); else, before
+  // lowering, a component of a double vector or matrix.
+  OutArgumentRewriter(ir::Module& m, bool wgsl) : module_(m), wgsl_(wgsl) {}
 
   void run() {
     for (const auto& f : module_.functions) {
@@ -74,21 +89,21 @@ class OutArgumentRewriter {
       if (f->name != call->name || f->params.size() != call->args.size()) continue;
       bool match = true;
       for (size_t i = 0; i < f->params.size() && match; ++i)
-        match = same_type(f->params[i]->declared_type, call->args[i]->type);
+        match = same_type(wgsl_ ? f->params[i]->type : f->params[i]->declared_type, call->args[i]->type);
       if (match) return f.get();
     }
     return nullptr;
   }
 
   // Evaluating `arg` again after the call reads the same place: every index in it is a constant or
-  // a local variable that is not itself an argument of the call (an out argument could change it).
-  static bool stable(const ir::ExprPtr& arg, const ir::ExprPtr& call) {
+  // a local variable that is not what another out/inout argument of the call writes.
+  static bool stable(const ir::ExprPtr& arg, const ir::ExprPtr& call, const ir::Function& f) {
     if (!ir::is_pure(arg)) return false;
     bool ok = true;
     std::vector<const ir::Var*> passed;
-    for (const auto& a : call->args) ir::visit(a, [&](const ir::ExprPtr& e) {
-        if (e->kind == Kind::Sym && a != arg) passed.push_back(e->var.get());
-      });
+    for (size_t i = 0; i < call->args.size(); ++i)
+      if (call->args[i] != arg && writes(f.params[i]))
+        if (const ir::Var* v = ir::root_variable(call->args[i])) passed.push_back(v);
     std::function<void(const ir::ExprPtr&)> check = [&](const ir::ExprPtr& e) {
       if (e->kind == Kind::Index) {
         ir::visit(e->args[1], [&](const ir::ExprPtr& i) {
@@ -131,7 +146,8 @@ class OutArgumentRewriter {
     ir::ExprPtr rewritten = ir::make_node(Kind::Call, call->name, call->type, call->args, call->loc);
     for (size_t i = 0; i < f->params.size(); ++i) {
       const ir::ExprPtr& arg = call->args[i];
-      if (!writes(f->params[i]) || !is_double_component(arg) || !stable(arg, call)) continue;
+      const bool needs_copy = wgsl_ ? !is_whole_local(arg) : is_double_component(arg);
+      if (!writes(f->params[i]) || !needs_copy || !stable(arg, call, *f)) continue;
       ir::VarPtr tmp = temporary(arg->type, arg->loc);
       if (f->params[i]->storage == ir::Storage::ParamInOut) parts.before.push_back(assign(sym(tmp, arg->loc), ir::clone(arg)));
       parts.after.push_back(assign(ir::clone(arg), sym(tmp, arg->loc)));
@@ -196,6 +212,7 @@ class OutArgumentRewriter {
   }
 
   ir::Module& module_;
+  const bool wgsl_;
   std::vector<ir::StmtPtr> temporaries_;
   int counter_ = 0;
 };
@@ -203,7 +220,12 @@ class OutArgumentRewriter {
 }  // namespace
 
 bool out_argument_temporaries(ir::Module& module, Context& context) {
-  OutArgumentRewriter(module).run();
+  OutArgumentRewriter(module, false).run();
+  return !context.failed;
+}
+
+bool wgsl_out_argument_temporaries(ir::Module& module, Context& context) {
+  OutArgumentRewriter(module, true).run();
   return !context.failed;
 }
 

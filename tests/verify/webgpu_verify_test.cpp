@@ -133,6 +133,24 @@ TEST(WebGpuVerify, Std140ArraysAreReadAtStd140Strides) {
   EXPECT_LT(min_bits(dropped), 30) << dropped.out;
 }
 
+// Buffer elements passed to out/inout parameters, inside an expression and as a statement: WGSL's
+// pointers point to function memory only, so they go through temporaries (wgsl-out-arguments, then
+// hoist-commas). Before, the expression form was refused. drop-lo shows the check can fail.
+TEST(WebGpuVerify, BufferElementsAsOutArgumentsKeep44Bits) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  const std::string shader = std::string(DOUBLET_VERIFY_SHADERS) + "/webgpu/out_arguments.comp";
+  const CliRun kept = verify(shader + " --min-bits 44 --backend webgpu");
+  ASSERT_EQ(kept.exit_code, 0) << kept.out;
+  int outputs = 0;
+  for (const auto& o : kept.report.at("runs").at(0).at("outputs")) {
+    EXPECT_GE(o.at("min_bits").get<double>(), 44) << o.at("name") << "\n" << kept.out;
+    ++outputs;
+  }
+  EXPECT_EQ(outputs, 3) << kept.out;
+  const CliRun dropped = verify(shader + " --min-bits 44 --backend webgpu --sabotage drop-lo");
+  EXPECT_EQ(dropped.exit_code, 1) << dropped.out;
+}
+
 TEST(WebGpuVerify, VertexShaderAndManyDispatchesAreInputErrors) {
   const CliRun vertex = verify(std::string(DOUBLET_VERIFY_SHADERS) + "/pairs.vert --backend webgpu");
   EXPECT_EQ(vertex.exit_code, 2) << vertex.out;

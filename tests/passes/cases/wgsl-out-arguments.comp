@@ -1,0 +1,12 @@
+// target: wgsl
+#version 450
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) buffer B { double v[]; };
+double accumulate(inout double total, double x) { total += x; return total * 2.0lf; }
+void scale(out double y, double x) { y = x * 3.0lf; }
+void main() {
+  double local = v[1];
+  v[2] = accumulate(v[0], 1.5lf) + 1.0lf;  // a buffer element: a temporary, copied back
+  scale(v[3], local);                      // the statement form
+  scale(local, v[4]);                      // a whole local variable: passed as it is
+}
