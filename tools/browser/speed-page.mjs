@@ -1,10 +1,14 @@
 // The page of the browser speed benchmark (tools/browser/speed-suite.mjs writes the job next to it and
-// names it in ?job=): WebGL2 programs that run one kernel per pixel of a size x size framebuffer,
-// timed in interleaved rounds, and their outputs compared with the same kernel in JavaScript doubles.
-// Job: {size, rounds, draws (0: per contender, enough for targetMs), targetMs, seed,
-//       kernels: [{name, contenders: [{name, flavour: 'fp32'|'doublet'|'luma', code, blocks}]}]}.
+// names it in ?job=): one kernel per pixel of a size x size framebuffer in WebGL2 (job.api 'webgl2'),
+// or per element of size x size in WebGPU compute (job.api 'webgpu'), timed in interleaved rounds,
+// and the outputs compared with the same kernel in JavaScript doubles.
+// Job: {api, size, rounds, draws (0: per contender, enough for targetMs), targetMs, seed,
+//       kernels: [{name, contenders: [{name, flavour: 'fp32'|'doublet'|'luma', code, blocks}]}]};
+//       WebGPU contenders also carry bindings: [{binding, role: 'input'|'output'|'uniforms'|'luma',
+//       members (role 'uniforms' of doublet's: the manifest's df_uniforms members), values (role 'luma')}].
 // Reports window.doubletResult = {renderer, kernels: [{name, contenders: [{name, draws, ms: [per
-// round], best_ms, median_ms, bits_min, bits_median, values}]}]} or throws with the error.
+// round], best_ms, median_ms, bits_min, bits_median, values}]}]} (WebGPU: renderer is the adapter,
+// draws are dispatches) or throws with the error.
 
 // Deterministic inputs (mulberry32): every run measures the same numbers.
 function random(seed) {
@@ -23,8 +27,8 @@ const hi = (x) => Math.fround(x);
 const lo = (x) => Math.fround(x - Math.fround(x));
 const joined = (x) => hi(x) + lo(x);  // what the shader's (hi, lo) pair denotes, as a double
 
-// Each kernel: its per-pixel input words (texel 2x and 2x + 1 of row y, as the shaders read them), its
-// double uniforms (GLSL order; `luma` the order of the luma.gl kernel's vec2 array when it differs),
+// Each kernel: its per-pixel input words (texel 2x and 2x + 1 of row y, as the shaders read them; the
+// compute shaders read the first `doubles` (hi, lo) pairs of each pixel's 8 words), its double uniforms (GLSL order; `luma` the order of the luma.gl kernel's vec2 array when it differs),
 // the number of double components it writes (two per output), and the JavaScript reference.
 const kernels = {
   // Relative to eye: an eye 6,378 km from the origin, positions within 2 km of it, a dense matrix of
@@ -42,7 +46,7 @@ const kernels = {
       words.set([hi(p[0]), lo(p[0]), hi(p[1]), lo(p[1]), hi(p[2]), lo(p[2]), 0, 0], 8 * i);
     }
     return {
-      words, components: 4,
+      words, doubles: 3, components: 4,
       uniforms: {
         eye: { values: eye },
         mvp: { values: [0, 1, 2, 3].flatMap((c) => m.map((row) => row[c])), luma: m.flat() },  // GLSL: column after column
@@ -66,7 +70,7 @@ const kernels = {
       words.set(s.flatMap((x) => [hi(x), lo(x)]), 8 * i);
     }
     return {
-      words, components: 2,
+      words, doubles: 4, components: 2,
       uniforms: { mu: { values: [mu] }, dt: { values: [dt] } },
       reference(i) {
         let [px, py, vx, vy] = states.subarray(4 * i, 4 * i + 4);
@@ -279,7 +283,162 @@ function run(job) {
   return result;
 }
 
+// WebGPU: the kernels as compute shaders (tests/browser-speed/*.comp lowered --target wgsl, and
+// *.luma.wgsl assembled by luma.gl), one invocation per element, doubles as (hi, lo) f32 pairs in
+// storage buffers (doublet's df_double, luma.gl's vec2f: the same bytes). Uniform buffers: doublet's
+// df_uniforms packed at the manifest's offsets (the guard left at 0, docs/web.md); luma.gl's Params
+// one vec4f (hi, lo, -, -) per double in declaration order, then count (tests/browser-speed/*.luma.wgsl);
+// luma.gl's fp64arithmetic uniforms (ONE, SPLIT: f32, f32) with the values luma.gl uploads.
+function doubletUniforms(contender, members, values) {
+  const end = Math.max(...members.map((m) => m.offset + m.size));
+  const bytes = new ArrayBuffer(Math.ceil(end / 16) * 16);
+  const f32 = new Float32Array(bytes), u32 = new Uint32Array(bytes);
+  const used = new Set();
+  for (const m of members) {
+    if (m.name === 'df_guard') continue;  // doublet's guard: 0, as a fresh buffer holds (docs/web.md)
+    const data = values[m.name];
+    if (!data) throw new Error(`${contender.name}: uniform ${m.name} is not fed`);
+    used.add(m.name);
+    if (m.lowered_type === 'u32') u32[m.offset / 4] = data[0];
+    else if (/^(f32|vec[234]<f32>|mat4x4<f32>)$/.test(m.lowered_type)) {
+      if (data.length * 4 !== m.size) throw new Error(`${contender.name}: uniform ${m.name}: ${data.length} values for ${m.size} bytes`);
+      f32.set(data, m.offset / 4);  // mat4x4<f32>: columns 16 bytes apart, as GLSL's column order gives them
+    } else throw new Error(`${contender.name}: uniform ${m.name} of type ${m.lowered_type}`);
+  }
+  for (const name of Object.keys(values))
+    if (!used.has(name)) throw new Error(`${contender.name}: uniform ${name} is not in df_uniforms`);
+  return bytes;
+}
+
+function lumaParams(values) {
+  const doubles = Object.entries(values).filter(([name]) => name !== 'count').flatMap(([, pairs]) => pairs);
+  const bytes = new ArrayBuffer(Math.ceil((8 * doubles.length + 4) / 16) * 16);
+  const f32 = new Float32Array(bytes);
+  for (let k = 0; k < doubles.length / 2; ++k) f32.set(doubles.slice(2 * k, 2 * k + 2), 4 * k);
+  new Uint32Array(bytes)[doubles.length * 2] = values.count[0];
+  return bytes;
+}
+
+async function runWebGPU(job) {
+  if (!navigator.gpu) throw new Error('navigator.gpu is missing: no WebGPU in this browser');
+  const adapter = await navigator.gpu.requestAdapter();
+  if (!adapter) throw new Error('no WebGPU adapter');
+  const device = await adapter.requestDevice();
+  let lost = null;
+  device.lost.then((info) => { lost = info.message || info.reason; });
+  const uncaptured = [];
+  device.addEventListener('uncapturederror', (e) => uncaptured.push(e.error.message));
+  const info = adapter.info || {};
+  const result = { renderer: [info.vendor, info.architecture, info.device, info.description].filter((x) => x).join(' / '), kernels: [] };
+  const size = job.size;
+  const count = size * size;
+  const groups = Math.ceil(count / 64);  // every kernel: @workgroup_size(64)
+  const check = async (what) => {
+    if (lost) throw new Error(`${what}: the WebGPU device was lost: ${lost}`);
+    if (uncaptured.length) throw new Error(`${what}: WebGPU error: ${uncaptured.join('; ')}`);
+  };
+  const buffer = (bytes, usage) => {
+    const b = device.createBuffer({ size: Math.max(16, Math.ceil(bytes.byteLength / 16) * 16), usage: usage | GPUBufferUsage.COPY_DST });
+    device.queue.writeBuffer(b, 0, bytes);
+    return b;
+  };
+  for (const k of job.kernels) {
+    const kernel = kernels[k.name](random(job.seed), size);
+    // Inputs: each element's doubles as (hi, lo) pairs, the words the fragment shaders read less the padding.
+    const inputs = new Float32Array(count * 2 * kernel.doubles);
+    for (let i = 0; i < count; ++i) inputs.set(kernel.words.subarray(8 * i, 8 * i + 2 * kernel.doubles), 2 * kernel.doubles * i);
+    const input = buffer(inputs, GPUBufferUsage.STORAGE);
+    const outputBytes = count * kernel.components * 8;
+    const output = device.createBuffer({ size: outputBytes, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST });
+    const readBack = device.createBuffer({ size: outputBytes, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+
+    const dispatch = async (c, n) => {
+      const start = performance.now();
+      const encoder = device.createCommandEncoder();
+      const pass = encoder.beginComputePass();
+      pass.setPipeline(c.pipeline);
+      pass.setBindGroup(0, c.group);
+      for (let d = 0; d < n; ++d) pass.dispatchWorkgroups(groups);
+      pass.end();
+      device.queue.submit([encoder.finish()]);
+      await device.queue.onSubmittedWorkDone();
+      return (performance.now() - start) / n;
+    };
+
+    const reference = new Float64Array(count * kernel.components);
+    for (let i = 0; i < count; ++i) reference.set(kernel.reference(i), kernel.components * i);
+
+    // Pipeline (awaited), the first dispatch, then, unless the job fixes them, dispatches doubled
+    // until one measurement takes targetMs.
+    const contenders = [];
+    for (const c of k.contenders) {
+      device.pushErrorScope('validation');
+      const module = device.createShaderModule({ code: c.code });
+      const messages = (await module.getCompilationInfo()).messages.filter((m) => m.type === 'error')
+        .map((m) => `${m.lineNum}:${m.linePos}: ${m.message}`);
+      if (messages.length) throw new Error(`${c.name}: WGSL errors:\n${messages.join('\n')}`);
+      const pipeline = await device.createComputePipelineAsync({ layout: 'auto', compute: { module, entryPoint: 'main' } });
+      const values = { ...uniformValues(c.flavour, kernel.uniforms, c.sabotage), count: [count] };
+      const entries = c.bindings.map((b) => {
+        let resource;
+        if (b.role === 'input') resource = input;
+        else if (b.role === 'output') resource = output;
+        else if (b.role === 'uniforms') resource = buffer(c.flavour === 'luma' ? lumaParams(values) : doubletUniforms(c, b.members, values), GPUBufferUsage.UNIFORM);
+        else if (b.role === 'luma') resource = buffer(new Float32Array(b.values), GPUBufferUsage.UNIFORM);
+        else throw new Error(`${c.name}: binding ${b.binding} of role ${b.role}`);
+        return { binding: b.binding, resource: { buffer: resource } };
+      });
+      const group = device.createBindGroup({ layout: pipeline.getBindGroupLayout(0), entries });
+      const error = await device.popErrorScope();
+      if (error) throw new Error(`${c.name}: WebGPU validation: ${error.message}`);
+      const contender = { ...c, pipeline, group, ms: [] };
+      await dispatch(contender, 1);
+      let draws = job.draws;
+      if (!draws)
+        for (draws = 1; draws < 4096 && draws * (await dispatch(contender, draws)) < job.targetMs;) draws *= 2;
+      await check(c.name);
+      contenders.push({ ...contender, draws });
+    }
+    // Interleaved rounds: round r starts at contender r (mod n), so none always runs first or last.
+    for (let r = 0; r < job.rounds; ++r)
+      for (let j = 0; j < contenders.length; ++j) {
+        const c = contenders[(r + j) % contenders.length];
+        c.ms.push(await dispatch(c, c.draws));
+      }
+    // Bits: one dispatch into a cleared output, read back whole; got = hi + lo in doubles.
+    const rows = [];
+    for (const c of contenders) {
+      const encoder = device.createCommandEncoder();
+      encoder.clearBuffer(output);
+      const pass = encoder.beginComputePass();
+      pass.setPipeline(c.pipeline);
+      pass.setBindGroup(0, c.group);
+      pass.dispatchWorkgroups(groups);
+      pass.end();
+      encoder.copyBufferToBuffer(output, 0, readBack, 0, outputBytes);
+      device.queue.submit([encoder.finish()]);
+      await readBack.mapAsync(GPUMapMode.READ);
+      const words = new Float32Array(readBack.getMappedRange().slice(0));
+      readBack.unmap();
+      await check(c.name);
+      const bits = new Float64Array(count * kernel.components);
+      for (let v = 0; v < bits.length; ++v) {
+        const got = words[2 * v] + words[2 * v + 1];
+        const error = Math.abs(got - reference[v]) / Math.abs(reference[v]);
+        // NaN (a broken kernel) counts as 0 bits; an exact result as 53.
+        bits[v] = error === 0 ? 53 : Number.isNaN(error) ? 0 : Math.min(53, Math.max(0, -Math.log2(error)));
+      }
+      rows.push({ name: c.name, draws: c.draws, ms: c.ms.map((x) => +x.toFixed(4)), best_ms: Math.min(...c.ms),
+                  median_ms: median(c.ms), bits_min: bits.reduce((a, b) => Math.min(a, b), 53), bits_median: median(bits),
+                  values: bits.length });
+    }
+    result.kernels.push({ name: k.name, size, contenders: rows });
+  }
+  device.destroy();
+  return result;
+}
+
 window.doubletResult = (async () => {
   const job = await (await fetch(new URLSearchParams(location.search).get('job'))).json();
-  return run(job);
+  return job.api === 'webgpu' ? runWebGPU(job) : run(job);
 })();
