@@ -34,6 +34,10 @@ bool is_documented_wgsl_refusal(const std::string& error) {
          error.find("runs one browser page per dispatch") != std::string::npos;
 }
 
+// Samples of a WebGPU comparison whose inputs are uniforms: verify runs one browser page per
+// sample there (docs/verify.md), so a few.
+constexpr int kWebGpuPagedSamples = 4;
+
 // Float-float's range: beyond this a df64 pair overflows where native does not (docs/accuracy.md).
 constexpr double kPairRange = 1e30;
 
@@ -304,8 +308,28 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
                        &result.findings);
         }
         if (options.webgpu && stage == Stage::Compute) {  // verify runs WGSL for compute only
-          const verify::VerifyReport web = run_verify(glsl, spec, stage, base, {runner::Backend::WebGpu}, options, &result);
-          if (is_documented_wgsl_refusal(web.input_error))
+          // The same lowering as the reference, printed as WGSL (sabotaged on request, to show a
+          // difference is found).
+          const Lowering wgsl{.mode = Mode::Df64, .target = Target::Es320, .sabotaged = true};
+          verify::VerifyReport web = run_verify(glsl, spec, stage, wgsl, {runner::Backend::WebGpu}, options, &result);
+          const verify::BackendRun* reference = &df64.runs[0];
+          verify::VerifyReport few_reference;
+          bool reference_ran = true;
+          if (web.input_error.find("runs one browser page per dispatch") != std::string::npos) {
+            // Uniform inputs: one page per sample in the browser, so a few samples, against es320
+            // on lavapipe with the same few.
+            CheckOptions few = options;
+            few.samples = kWebGpuPagedSamples;
+            few_reference = run_verify(glsl, spec, stage, base, {runner::Backend::Vulkan}, few, &result);
+            reference_ran = !failed(few_reference, base.label(), &result);
+            if (reference_ran) {
+              web = run_verify(glsl, spec, stage, wgsl, {runner::Backend::WebGpu}, few, &result);
+              reference = &few_reference.runs[0];
+            }
+          }
+          if (!reference_ran)
+            all_ran = false;
+          else if (is_documented_wgsl_refusal(web.input_error))
             // A documented limit of the WGSL target: named in the run's output, not a finding
             // (docs/robustness.md, "Differential testing").
             result.notes.push_back("WebGPU not compared: " + web.input_error.substr(web.input_error.find('\n') + 1));
@@ -316,7 +340,7 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
             // WebGPU (SwiftShader) divides by a constant differently from lavapipe, which moves the
             // last bits of a float-float quotient (docs/robustness.md, findings). So WebGPU's pairs
             // must agree within 2^-40 relative, not bit for bit.
-            compare_runs(web.runs[0], df64.runs[0], "targets", "df64 wgsl in WebGPU against es320 on lavapipe",
+            compare_runs(web.runs[0], *reference, "targets", "df64 wgsl in WebGPU against es320 on lavapipe",
                          [](double want, double a, double b) {
                            return outside_pair_range(want, a, b) || std::fabs(a - b) <= 0x1p-40 * std::max(std::fabs(a), std::fabs(b));
                          },

@@ -8,6 +8,7 @@
 
 #include "difftest/generator.hpp"
 #include "difftest/oracles.hpp"
+#include "../runner/browser_test_util.hpp"
 
 namespace doublet::difftest {
 namespace {
@@ -115,6 +116,48 @@ TEST(DiffOracles, TessellationProgramsHoldAndDroppedLowWordsAreFound) {
     o.sabotage = "drop-lo";
     const CheckResult broken = run(p, o);
     EXPECT_TRUE(has_finding(broken, "int")) << p.stage << describe(broken);
+  }
+}
+
+// Oracle 4 in Chromium's WebGPU: the wgsl lowering agrees with es320 on lavapipe for buffer inputs
+// and, with a few samples (one browser page each), for uniform inputs; the wgsl run sabotaged with
+// drop-lo is found by it.
+TEST(DiffOracles, WebGpuAgreesAndDroppedLowWordsAreFound) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  Program buffers;
+  buffers.glsl = R"(#version 450
+layout(local_size_x = 64) in;
+layout(std140, binding = 0) readonly buffer In0 { double in0[]; };
+layout(std430, binding = 1) writeonly buffer Out0 { double r0[]; };
+void main() {
+  uint gid = gl_GlobalInvocationID.x;
+  r0[gid] = in0[gid] * 1.1lf + in0[gid] / 3.0lf;
+}
+)";
+  buffers.spec_json = R"({ "inputs": { "in0": { "range": [0.25, 4] } } })";
+  Program uniforms = buffers;
+  uniforms.glsl = R"(#version 450
+layout(local_size_x = 64) in;
+uniform double u0 = 1.5lf;
+layout(std430, binding = 1) writeonly buffer Out0 { double r0[]; };
+void main() {
+  r0[gl_GlobalInvocationID.x] = u0 * 1.1lf + u0 / 3.0lf;
+}
+)";
+  uniforms.spec_json = R"({ "inputs": { "u0": { "range": [0.25, 4] } } })";
+  for (const Program& p : {buffers, uniforms}) {
+    CheckOptions o = quick();
+    o.webgpu = true;
+    o.oracles = {"targets"};
+    const CheckResult r = run(p, o);
+    EXPECT_TRUE(r.findings.empty()) << p.glsl << describe(r);
+    EXPECT_TRUE(r.notes.empty()) << p.glsl << (r.notes.empty() ? "" : r.notes[0]);
+    EXPECT_EQ(r.checked, std::vector<std::string>{"targets"}) << p.glsl;
+    o.sabotage = "drop-lo";
+    const CheckResult broken = run(p, o);
+    bool found = false;
+    for (const Finding& f : broken.findings) found |= f.oracle == "targets" && f.detail.find("WebGPU") != std::string::npos;
+    EXPECT_TRUE(found) << p.glsl << describe(broken);
   }
 }
 
