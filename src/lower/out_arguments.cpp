@@ -11,8 +11,8 @@
 // expression, so it is right inside a loop condition or a && operand). The temporaries are declared,
 // uninitialised, at the top of the enclosing function. The argument is written back through the
 // same access, so it is rewritten only when evaluating that access twice reads the same place: its
-// indices are constants or local variables that the call cannot write. Others keep the lowering's
-// diagnostic ("use a temporary").
+// indices are computed by operators from constants and local variables that the call cannot write.
+// Others keep the lowering's diagnostic ("use a temporary").
 //
 // For --target wgsl the same rewrite runs again after lowering on every out/inout argument that is
 // not a whole local variable (`f(buf[i])`, `f(g)` with g a global): WGSL passes them as pointers,
@@ -95,10 +95,37 @@ class OutArgumentRewriter {
     return nullptr;
   }
 
-  // Evaluating `arg` again after the call reads the same place: every index in it is a constant or
-  // a local variable that is not what another out/inout argument of the call writes.
+  // An index computed without effects: constants and variables joined by operators (`i + 4u`).
+  static bool is_plain_index(const ir::ExprPtr& e) {
+    switch (e->kind) {
+      case Kind::Sym:
+      case Kind::Const: return true;
+      case Kind::Unary:
+        if (e->op.size() == 3) return false;  // ++x, x--
+        break;
+      case Kind::Binary:
+        if (ir::is_assignment_operator(e->op)) return false;
+        break;
+      case Kind::Member:
+      case Kind::Index:
+      case Kind::Construct: break;
+      default: return false;
+    }
+    return std::all_of(e->args.begin(), e->args.end(), is_plain_index);
+  }
+
+  // An access path (variable, members, indices) whose indices are plain.
+  static bool is_plain_access(const ir::ExprPtr& e) {
+    if (e->kind == Kind::Sym) return true;
+    if (e->kind == Kind::Member) return is_plain_access(e->args[0]);
+    if (e->kind == Kind::Index) return is_plain_access(e->args[0]) && is_plain_index(e->args[1]);
+    return false;
+  }
+
+  // Evaluating `arg` again after the call reads the same place: every variable in its indices is a
+  // constant or a local variable that is not what another out/inout argument of the call writes.
   static bool stable(const ir::ExprPtr& arg, const ir::ExprPtr& call, const ir::Function& f) {
-    if (!ir::is_pure(arg)) return false;
+    if (!is_plain_access(arg)) return false;
     bool ok = true;
     std::vector<const ir::Var*> passed;
     for (size_t i = 0; i < call->args.size(); ++i)

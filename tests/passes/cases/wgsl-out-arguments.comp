@@ -8,5 +8,7 @@ void main() {
   double local = v[1];
   v[2] = accumulate(v[0], 1.5lf) + 1.0lf;  // a buffer element: a temporary, copied back
   scale(v[3], local);                      // the statement form
+  uint k = uint(v.length());
+  scale(v[k - 1u], local);                 // an index computed from locals: copied back to the same place
   scale(local, v[4]);                      // a whole local variable: passed as it is
 }
