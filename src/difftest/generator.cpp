@@ -489,7 +489,17 @@ class Generator {
             feature("fn:cross");
             *out = {"cross(" + a.s + ", " + b.s + ")", 2 * a.b * b.b};
             return true;
-          case 2: feature("fn:reflect"); *out = {"reflect(" + a.s + ", " + b.s + ")", a.b * (1 + 8 * b.b * b.b)}; return true;
+          case 2: {
+            // A constant normal: lavapipe folds it into its expansion of reflect, whose last bit
+            // then differs from the written I - 2 dot(N, I) N (seed 70272, docs/robustness.md); the
+            // normal reads the program's values.
+            Ex n = b;
+            for (int tries = 0; tries < 8 && !reads_a_variable(n.s); ++tries) n = gen(t, d);
+            if (!reads_a_variable(n.s)) return false;
+            feature("fn:reflect");
+            *out = {"reflect(" + a.s + ", " + n.s + ")", a.b * (1 + 8 * n.b * n.b)};
+            return true;
+          }
           case 3: {
             const Ex c = gen(t, d);
             feature("fn:faceforward");

@@ -146,6 +146,14 @@ void compare_runs(const verify::BackendRun& a, const verify::BackendRun& b, cons
 // Samples where native is not finite or beyond float-float's range make no claim about pairs.
 bool outside_pair_range(double want, double, double) { return !std::isfinite(want) || std::fabs(want) > kPairRange; }
 
+// Below 2^-100 a pair's lo word is under float's normal range (2^-126): the error terms of the
+// integer and the float error-free transformations underflow, each rounded its own way (rules/int.glsl,
+// df_int_prod_error's range; docs/accuracy.md), so df64-int and df64 need not agree there (seed
+// 70349: 2 and 7 of 16384 results near 1e-38 differ in the last bits of hi).
+bool outside_int_range(double want, double a, double b) {
+  return outside_pair_range(want, a, b) || (want != 0 && std::fabs(want) < 0x1p-100);
+}
+
 // An output's own name: "r0" for verify's "r0[].x", "r0.y" or "r0 (hi+lo)".
 std::string base_name(const std::string& output) { return output.substr(0, output.find_first_of(".[ ")); }
 
@@ -280,7 +288,7 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
           for (size_t b = 0; b < df64.runs.size() && b < with_int.runs.size(); ++b)
             compare_runs(with_int.runs[b], df64.runs[b], "int",
                          std::string("df64-int against df64 on ") + runner::backend_name(df64.runs[b].backend),
-                         outside_pair_range, &result.findings);
+                         outside_int_range, &result.findings);
         }
       }
       if (wants("bound") && (stage == Stage::Compute || stage == Stage::Vertex) && is_continuous(glsl)) {
