@@ -7,17 +7,18 @@
 // JavaScript doubles. With --apis ...,webgpu the same in Chromium's WebGPU: the kernels as compute
 // shaders (tests/browser-speed/*.comp lowered --target wgsl, one invocation per element of size x
 // size, doubles in storage buffers), luma.gl's peer written on its WGSL fp64 arithmetic
-// (tests/browser-speed/*.luma.wgsl, assembled by luma.gl's own WGSL assembler from the npm package). Prints ms per draw (best and median of the rounds), the speed against luma.gl
-// (the median over rounds of luma.gl's ms / the contender's ms in the same round: on a shared machine
-// a round's neighbours see the same load, while the best of each may come from different moments)
-// and the bits.
-//   node speed-suite.mjs --doublet build/bin/doublet [--apis webgl2,webgpu] [--modes df64,df64-fast,df64-int] [--size 256]
-//        [--draws N] [--target-ms 100] [--rounds 5] [--kernels straight,loop] [--json FILE]
+// (tests/browser-speed/*.luma.wgsl, assembled by luma.gl's own WGSL assembler from the npm package).
+// Prints ms per draw or dispatch (best and median of the rounds), the speed against luma.gl (the
+// median over rounds of luma.gl's ms / the contender's ms in the same round: on a shared machine a
+// round's neighbours see the same load, while the best of each may come from different moments) and
+// the bits.
+//   node speed-suite.mjs --doublet build/bin/doublet [--apis webgl2,webgpu] [--modes df64,df64-fast,df64-int]
+//        [--size 256] [--draws N] [--target-ms 100] [--rounds 5] [--kernels straight,loop] [--json FILE]
 //        [--sabotage drop-lo] [--timeout-ms 3600000]
 // --apis: webgl2 (default), webgpu or both (one page each, one table each). --draws 0 (default): per
 // contender, as many draws (WebGPU: dispatches) as take --target-ms. --sabotage drop-lo feeds
-// doublet's NAME_lo uniforms (WebGPU: df_uniforms' NAME_lo members) zeros (a check that the bits floor catches broken wiring). --timeout-ms:
-// how long the page may take in all.
+// doublet's NAME_lo uniforms (WebGPU: df_uniforms' NAME_lo members) zeros (a check that the bits
+// floor catches broken wiring). --timeout-ms: how long each page may take in all.
 // Exit 0 when everything ran (speed is reported, never judged), 1 on a lowering, compile, link or
 // run-time error or bits below the sanity floor (median: df64, df64-int < 40; df64-fast, luma.gl < 35), 2 when
 // there is no browser or no luma.gl here; with DOUBLET_REQUIRE_BROWSER=1 a missing one is 1.
