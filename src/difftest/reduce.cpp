@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <regex>
 #include <vector>
 
 namespace doublet::difftest {
@@ -38,6 +39,13 @@ size_t block_end(const std::vector<std::string>& lines, size_t open) {
 
 }  // namespace
 
+bool keeps_loop_steps(const std::string& glsl) {
+  static const std::regex loop(R"(while \((\w+) <)");
+  for (std::sregex_iterator it(glsl.begin(), glsl.end(), loop), end; it != end; ++it)
+    if (glsl.find((*it)[1].str() + "++") == std::string::npos) return false;
+  return true;
+}
+
 Reduction reduce(const std::string& glsl, const std::string& spec_json, const std::string& stage, const std::string& oracle,
                  CheckOptions options,
                  double seconds, const std::function<void(const std::string&)>& progress) {
@@ -47,6 +55,7 @@ Reduction reduce(const std::string& glsl, const std::string& spec_json, const st
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   auto interesting = [&](const std::vector<std::string>& candidate) {
     if (std::chrono::steady_clock::now() > deadline && !r.finding.oracle.empty()) return false;
+    if (!keeps_loop_steps(join_lines(candidate))) return false;
     ++r.checks;
     bool timed_out = false;
     const CheckResult c = check_in_child(join_lines(candidate), spec_json, stage, options, 120, &timed_out);

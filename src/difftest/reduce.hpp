@@ -23,4 +23,9 @@ struct Reduction {
 Reduction reduce(const std::string& glsl, const std::string& spec_json, const std::string& stage, const std::string& oracle,
                  CheckOptions options, double seconds, const std::function<void(const std::string&)>& progress);
 
+// Whether every counter of the generator's while and do-while loops (`while (w < N)`) is still
+// incremented (`w++`): the reducer keeps only candidates that do, since a loop that never ends lets
+// a driver return anything (seed 70349's reduction, docs/robustness.md).
+bool keeps_loop_steps(const std::string& glsl);
+
 }  // namespace doublet::difftest

@@ -3,11 +3,13 @@
 // oracles run; together the programs reach the operators, built-ins and statements it lists.
 #include <gtest/gtest.h>
 
+#include <regex>
 #include <set>
 #include <string>
 
 #include "difftest/generator.hpp"
 #include "difftest/oracles.hpp"
+#include "difftest/reduce.hpp"
 #include "doublet/doublet.hpp"
 
 namespace doublet::difftest {
@@ -127,6 +129,23 @@ TEST(DiffGenerator, NoReflectHasAConstantNormal) {
       EXPECT_TRUE(reads_a_variable(args[1])) << "seed " << seed << ": reflect(" << args[0] << ", " << args[1] << ")";
     }
   EXPECT_GT(reflects, 10);
+}
+
+// The reducer keeps only candidates whose while/do-while counters are still incremented: seed
+// 70349's reduction dropped `w12++;` and gave a program that never ends (docs/robustness.md).
+TEST(DiffReducer, KeepsTheStepsOfTheGeneratorsLoops) {
+  const std::regex step(R"(\n *(w\d+)\+\+;)");  // a while or do-while counter's increment
+  int loops = 0;
+  for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
+    const std::string glsl = generate(seed).glsl;
+    EXPECT_TRUE(keeps_loop_steps(glsl)) << "seed " << seed;
+    std::smatch m;
+    if (!std::regex_search(glsl, m, step)) continue;
+    ++loops;
+    const std::string without = m.prefix().str() + "\n" + m.suffix().str();
+    EXPECT_FALSE(keeps_loop_steps(without)) << "seed " << seed << ": without " << m[1] << "++\n" << without;
+  }
+  EXPECT_GT(loops, 5);
 }
 
 }  // namespace
