@@ -88,6 +88,13 @@ std::vector<std::vector<std::string>> calls_of(const std::string& glsl, const st
   return calls;
 }
 
+// The seed a run found a construct at, then the first 360 seeds.
+std::vector<uint64_t> found_and_first_seeds(uint64_t found) {
+  std::vector<uint64_t> seeds = {found};
+  for (uint64_t seed = 1; seed <= 3 * kSeeds; ++seed) seeds.push_back(seed);
+  return seeds;
+}
+
 TEST(DiffGenerator, ReadsAVariableTellsConstantsFromVariables) {
   for (const std::string constant : {"dvec3(2.0lf)", "(dvec3(2.76lf, -1.37lf, 2.89lf) + 1.0lf)", "1e-3lf", "-0.5lf",
                                      "double(true)"})
@@ -101,10 +108,8 @@ TEST(DiffGenerator, ReadsAVariableTellsConstantsFromVariables) {
 // that exact follows (the written formula is bit-identical). The generator no longer writes a float
 // mix whose ends are both constants; seed 70089 did before.
 TEST(DiffGenerator, NoMixHasTwoConstantEnds) {
-  std::vector<uint64_t> seeds = {70089};
-  for (uint64_t seed = 1; seed <= 3 * kSeeds; ++seed) seeds.push_back(seed);
   int mixes = 0;
-  for (uint64_t seed : seeds)
+  for (uint64_t seed : found_and_first_seeds(70089))
     for (const auto& args : calls_of(generate(seed).glsl, "mix")) {
       if (args.size() != 3 || args[2].find("clamp(") == std::string::npos) continue;  // mix(x, y, bvec)
       ++mixes;
@@ -119,10 +124,8 @@ TEST(DiffGenerator, NoMixHasTwoConstantEnds) {
 // a normal read from the program's values (or the formula written out) gives native's bits. The
 // generator's normals read a variable; seed 70272's did not before.
 TEST(DiffGenerator, NoReflectHasAConstantNormal) {
-  std::vector<uint64_t> seeds = {70272};
-  for (uint64_t seed = 1; seed <= 3 * kSeeds; ++seed) seeds.push_back(seed);
   int reflects = 0;
-  for (uint64_t seed : seeds)
+  for (uint64_t seed : found_and_first_seeds(70272))
     for (const auto& args : calls_of(generate(seed).glsl, "reflect")) {
       ++reflects;
       ASSERT_EQ(args.size(), 2u) << "seed " << seed;
