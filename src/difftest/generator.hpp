@@ -29,7 +29,7 @@ Program generate(uint64_t seed);
 const std::vector<std::string>& all_features();
 
 // Built-ins whose native lavapipe results are not IEEE (docs/extremes.md, "Native fp64 is not the
-// oracle for rounding to an integer"; smoothstep: docs/robustness.md, findings): the
+// oracle for rounding to an integer"; smoothstep, reflect: docs/robustness.md, findings): the
 // exact-equals-native oracle skips a program that uses one of them.
 bool uses_native_non_ieee(const Program&);
 
