@@ -55,10 +55,11 @@ Reduction reduce(const std::string& glsl, const std::string& spec_json, const st
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   auto interesting = [&](const std::vector<std::string>& candidate) {
     if (std::chrono::steady_clock::now() > deadline && !r.finding.oracle.empty()) return false;
-    if (!keeps_loop_steps(join_lines(candidate))) return false;
+    const std::string text = join_lines(candidate);
+    if (!keeps_loop_steps(text)) return false;
     ++r.checks;
     bool timed_out = false;
-    const CheckResult c = check_in_child(join_lines(candidate), spec_json, stage, options, 120, &timed_out);
+    const CheckResult c = check_in_child(text, spec_json, stage, options, 120, &timed_out);
     if (timed_out || !c.invalid.empty()) return false;
     for (const Finding& f : c.findings)
       if (f.oracle == oracle) {

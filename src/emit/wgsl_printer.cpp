@@ -864,8 +864,7 @@ class WgslPrinter {
   }
 
   static bool is_local_root(const ir::ExprPtr& arg) {
-    return arg->kind == Kind::Sym && (arg->var->storage == ir::Storage::Local || arg->var->storage == ir::Storage::ParamIn ||
-                                      arg->var->storage == ir::Storage::ParamOut || arg->var->storage == ir::Storage::ParamInOut);
+    return arg->kind == Kind::Sym && ir::is_function_local(arg->var->storage);
   }
 
   // f(buffer[i], ...) as a statement, where an out/inout argument is not a local variable: WGSL

@@ -82,6 +82,12 @@ enum class Storage {
   BuiltIn,   // gl_* variables; printed by name, never declared
 };
 
+// A function's own variable (a local or a parameter): what no other function can reach but through
+// an out parameter, and what a WGSL pointer argument may point to (function memory).
+inline bool is_function_local(Storage s) {
+  return s == Storage::Local || s == Storage::ParamIn || s == Storage::ParamOut || s == Storage::ParamInOut;
+}
+
 struct Var {
   int id = 0;
   std::string name;

@@ -55,11 +55,7 @@ struct Access {
   std::set<const ir::Var*> targets;  // written by an enclosing assignment, after the comma
   bool opaque = false, calls = false;
   bool touches_globals() const {
-    auto global = [](const ir::Var* v) {
-      const ir::Storage s = v->storage;
-      return s != ir::Storage::Local && s != ir::Storage::ParamIn && s != ir::Storage::ParamOut &&
-             s != ir::Storage::ParamInOut && s != ir::Storage::Const;
-    };
+    auto global = [](const ir::Var* v) { return !ir::is_function_local(v->storage) && v->storage != ir::Storage::Const; };
     return calls || std::any_of(reads.begin(), reads.end(), global) || std::any_of(writes.begin(), writes.end(), global);
   }
 };

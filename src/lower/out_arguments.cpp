@@ -61,11 +61,7 @@ ir::ExprPtr assign(const ir::ExprPtr& target, const ir::ExprPtr& value) {
 }
 
 // A whole local variable or parameter: what a WGSL pointer argument may point to (function memory).
-bool is_whole_local(const ir::ExprPtr& e) {
-  if (e->kind != Kind::Sym) return false;
-  const ir::Storage s = e->var->storage;
-  return s == ir::Storage::Local || s == ir::Storage::ParamIn || s == ir::Storage::ParamOut || s == ir::Storage::ParamInOut;
-}
+bool is_whole_local(const ir::ExprPtr& e) { return e->kind == Kind::Sym && ir::is_function_local(e->var->storage); }
 
 class OutArgumentRewriter {
  public:
@@ -136,8 +132,7 @@ class OutArgumentRewriter {
         ir::visit(e->args[1], [&](const ir::ExprPtr& i) {
           if (i->kind != Kind::Sym) return;
           const ir::Storage s = i->var->storage;
-          const bool local = s == ir::Storage::Local || s == ir::Storage::ParamIn || s == ir::Storage::ParamOut ||
-                             s == ir::Storage::ParamInOut || s == ir::Storage::Const;
+          const bool local = ir::is_function_local(s) || s == ir::Storage::Const;
           if (!local || std::find(passed.begin(), passed.end(), i->var.get()) != passed.end()) ok = false;
         });
       }
