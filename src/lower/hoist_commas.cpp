@@ -37,15 +37,6 @@ bool is_runtime_call(const Expr& e) {
   return e.kind == Kind::Call && (e.name.rfind("df_", 0) == 0 || e.name.rfind("ex_", 0) == 0);
 }
 
-// Whether a runtime call may write its arguments: a generated helper declared with an out/inout
-// parameter (df_assign_* for swizzle and column assignments, ...), or the rules with one (frexp's
-// exponent, modf's whole part: rules/common.glsl, rules/exact.glsl).
-bool writes_arguments(const Expr& call, const Context& ctx) {
-  if (auto h = ctx.helpers.find(call.name); h != ctx.helpers.end())
-    return h->second.head.find("out ") != std::string::npos;
-  return call.name.find("frexp") != std::string::npos || call.name.find("modf") != std::string::npos;
-}
-
 // What a part of a statement reads and writes; `opaque` when it has an effect this pass does not
 // follow (a built-in with effects, a write through an expression). A call of the user's may read and
 // write any global (a buffer, a private global) and what is passed to it, nothing else: a function
@@ -86,7 +77,7 @@ void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const
     for (const auto& arg : e->args)
       if (const ir::Var* v = ir::root_variable(arg)) a.writes.insert(v);
   }
-  if (is_runtime_call(*e) && writes_arguments(*e, ctx))
+  if (is_runtime_call(*e) && ctx.runtime_call_writes_arguments(*e))
     for (const auto& arg : e->args)
       if (const ir::Var* v = ir::root_variable(arg)) a.writes.insert(v);
   if (e->kind == Kind::Builtin && ir::builtin_has_side_effects(e->name)) a.opaque = true;

@@ -70,6 +70,10 @@ struct Context {
   // Adds a generated helper whose body holds `expression`, spelled by the runtime linker.
   void add_helper(const std::string& name, const std::string& head, const ir::ExprPtr& expression,
                   const std::string& tail);
+  // Whether a call of doublet's runtime (df_/ex_) may write its arguments: a generated helper
+  // declared with an out/inout parameter (df_assign_* for swizzle and column assignments, ...), or
+  // the rules with one (frexp's exponent, modf's whole part: rules/common.glsl, rules/exact.glsl).
+  bool runtime_call_writes_arguments(const ir::Expr& call) const;
 };
 
 // Name of the float-float struct for a vector width: df_double, df_dvec2...

@@ -49,6 +49,11 @@ void Context::add_helper(const std::string& name, const std::string& head, const
   helper_order.push_back(name);
 }
 
+bool Context::runtime_call_writes_arguments(const ir::Expr& call) const {
+  if (auto h = helpers.find(call.name); h != helpers.end()) return h->second.head.find("out ") != std::string::npos;
+  return call.name.find("frexp") != std::string::npos || call.name.find("modf") != std::string::npos;
+}
+
 std::string df_type_name(int width) { return width == 1 ? "df_double" : "df_dvec" + std::to_string(width); }
 
 ir::Type df_type(int width) {

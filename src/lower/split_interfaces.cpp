@@ -134,23 +134,16 @@ ExprPtr index_by_invocation(const ExprPtr& array) {
   return e;
 }
 
-// A tessellation control shader's double outputs live in private copies until main's end, where
-// each invocation stores its own vertex (index_by_invocation). That is right only when the shader
-// reads and writes its own vertex alone, and has no per-patch double output (which any invocation
-// may write, so a store of every invocation's copy would race): anything else is refused by name.
+// A tessellation control shader's per-vertex double outputs live in private copies until main's
+// end, where each invocation stores its own vertex (index_by_invocation). That is right only when
+// the shader reads and writes its own vertex alone: anything else is refused by name. Per-patch
+// outputs, which any invocation may write, are written through instead (PatchOutput).
 bool tessellation_control_outputs_are_own(const ir::Module& module, const std::vector<Split>& splits,
                                           const std::vector<WordSplit>& word_splits, Context& ctx) {
   if (module.stage != ir::StageKind::TessControl) return true;
   std::set<const ir::Var*> outputs;
   auto note = [&](const ir::VarPtr& v, ir::Storage storage) {
-    if (storage != ir::Storage::Out) return;
-    if (!v->type.is_array() || v->patch) {
-      ctx.error(v->loc, "the per-patch double output '" + v->name + "' of a tessellation control shader is not "
-                        "lowered yet: pass it as a per-vertex output (out double " + v->name + "[]), or as two float "
-                        "patch outputs that hold its hi and lo words");
-      return;
-    }
-    outputs.insert(v.get());
+    if (storage == ir::Storage::Out && !v->patch) outputs.insert(v.get());
   };
   for (const auto& s : splits) note(s.original, s.storage);
   for (const auto& s : word_splits) note(s.original, s.storage);
@@ -168,6 +161,100 @@ bool tessellation_control_outputs_are_own(const ir::Module& module, const std::v
       }
     });
   return !ctx.failed;
+}
+
+// A per-patch double output of a tessellation control shader: any invocation may write it, and
+// after barrier() every invocation reads what was written. So its split variables are stored
+// right after each statement that writes the private copy (copy_out: only that variable, so that
+// no invocation stores a stale value over another's write), and the private copy is joined again
+// from them at main's start and after every barrier() (copy_in).
+struct PatchOutput {
+  const ir::Var* var = nullptr;
+  std::vector<ir::StmtPtr> copy_in, copy_out;
+};
+
+bool is_increment(const Expr& e) {
+  return e.kind == Kind::Unary && (e.op == "++x" || e.op == "--x" || e.op == "x++" || e.op == "x--");
+}
+
+// Whether `e` may write `v`: an assignment or increment of it (or of a part of it), or an out
+// argument of a call (the shader's functions by their parameters, the runtime's helpers by theirs).
+bool writes_variable(const ExprPtr& e, const ir::Var* v, const ir::Module& module, const Context& ctx) {
+  if (!e) return false;
+  bool found = false;
+  ir::visit(e, [&](const ExprPtr& x) {
+    if (found) return;
+    if ((x->kind == Kind::Binary && ir::is_assignment_operator(x->op)) || is_increment(*x)) {
+      found = ir::root_variable(x->args[0]) == v;
+      return;
+    }
+    if (x->kind != Kind::Call) return;
+    const bool runtime = x->name.rfind("df_", 0) == 0 || x->name.rfind("ex_", 0) == 0;
+    for (size_t i = 0; i < x->args.size() && !found; ++i) {
+      if (ir::root_variable(x->args[i]) != v) continue;
+      if (runtime) {
+        found = ctx.runtime_call_writes_arguments(*x);
+        continue;
+      }
+      for (const auto& f : module.functions)
+        if (f->name == x->name && i < f->params.size() &&
+            (f->params[i]->storage == ir::Storage::ParamOut || f->params[i]->storage == ir::Storage::ParamInOut))
+          found = true;
+    }
+  });
+  return found;
+}
+
+// Puts `p.copy_out` after every statement below `s` that writes p's variable. A write in a
+// condition, a loop's header or a return has no statement to follow: refused by name.
+void add_copy_out_after_writes(const ir::StmtPtr& s, const PatchOutput& p, const ir::Module& module, Context& ctx) {
+  if (!s) return;
+  using SK = ir::Stmt::Kind;
+  auto refuse = [&](ir::Loc loc) {
+    ctx.error(loc, "the per-patch double output '" + p.var->name + "' is written inside a condition, a loop's "
+                   "header or a return; doublet stores a per-patch output after the statement that writes it: "
+                   "write it in a statement of its own");
+  };
+  if (s->kind != SK::Expr && s->kind != SK::Decl && (writes_variable(s->expr, p.var, module, ctx) ||
+                                                     writes_variable(s->step, p.var, module, ctx)))
+    refuse(s->loc);
+  if (s->kind == SK::Loop && !s->body.empty() && s->body[0] &&
+      writes_variable(s->body[0]->expr, p.var, module, ctx))
+    refuse(s->body[0]->loc);
+  for (size_t k = 0; k < s->body.size(); ++k) {
+    ir::StmtPtr& child = s->body[k];
+    if (!child) continue;
+    if (s->kind == SK::Loop && k == 0) continue;  // the loop's init, checked above
+    const bool statement = child->kind == SK::Expr || child->kind == SK::Decl;
+    if (!statement || !writes_variable(child->expr, p.var, module, ctx)) {
+      add_copy_out_after_writes(child, p, module, ctx);
+    } else if (s->kind == SK::Block) {  // in place: a declaration keeps its scope
+      s->body.insert(s->body.begin() + static_cast<long>(k) + 1, p.copy_out.begin(), p.copy_out.end());
+      k += p.copy_out.size();
+    } else {  // the single statement of an if or a loop
+      auto block = ir::Stmt::make(SK::Block, child->loc);
+      block->body.push_back(child);
+      block->body.insert(block->body.end(), p.copy_out.begin(), p.copy_out.end());
+      child = block;
+    }
+  }
+}
+
+// Puts `copy_in` after every barrier() below `s`.
+void add_copy_in_after_barriers(const ir::StmtPtr& s, const std::vector<ir::StmtPtr>& copy_in) {
+  if (!s) return;
+  for (size_t k = 0; k < s->body.size(); ++k) {
+    const ir::StmtPtr& child = s->body[k];
+    if (!child) continue;
+    const bool barrier = child->kind == ir::Stmt::Kind::Expr && child->expr && child->expr->kind == Kind::Builtin &&
+                         child->expr->name == "barrier";
+    if (barrier && s->kind == ir::Stmt::Kind::Block) {
+      s->body.insert(s->body.begin() + static_cast<long>(k) + 1, copy_in.begin(), copy_in.end());
+      k += copy_in.size();
+    } else {
+      add_copy_in_after_barriers(child, copy_in);
+    }
+  }
 }
 
 // Geometry: the outputs are the values at each EmitVertex()/EmitStreamVertex(n), so the split
@@ -484,45 +571,63 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   }
   std::vector<ir::StmtPtr> copy_in, copy_out;
   if (!tessellation_control_outputs_are_own(module, splits, word_splits, ctx)) return false;
-  auto elements = [&](const ExprPtr& whole, bool out, std::vector<ExprPtr>& into) {
-    // A tessellation control shader writes only its own vertex of a per-vertex output.
-    if (out && module.stage == ir::StageKind::TessControl && whole->type.is_array())
-      return into.push_back(index_by_invocation(whole));
+  // A tessellation control shader writes only its own vertex of a per-vertex output.
+  auto own_vertex = [&](const ir::Var& v, bool out) {
+    return out && module.stage == ir::StageKind::TessControl && v.type.is_array() && !v.patch;
+  };
+  auto elements = [&](const ExprPtr& whole, bool own, std::vector<ExprPtr>& into) {
+    if (own) return into.push_back(index_by_invocation(whole));
     for_each_element(whole, [&](const ExprPtr& e) { into.push_back(e); });
+  };
+  std::vector<PatchOutput> patch_outputs;
+  patch_outputs.reserve(splits.size() + word_splits.size());  // lists_for's pointers stay valid
+  // Where an output's stores and an input's joins go: a per-patch output of a control shader has
+  // its own lists (PatchOutput), whose joins also read it back at main's start.
+  auto lists_for = [&](const ir::VarPtr& v, bool out) -> std::pair<std::vector<ir::StmtPtr>*, std::vector<ir::StmtPtr>*> {
+    if (!(out && module.stage == ir::StageKind::TessControl && v->patch)) return {&copy_in, &copy_out};
+    patch_outputs.push_back({v.get(), {}, {}});
+    return {&patch_outputs.back().copy_in, &patch_outputs.back().copy_out};
   };
   for (const auto& s : splits) {
     bool out = s.storage == ir::Storage::Out;
+    const bool own = own_vertex(*s.original, out);
+    auto [ins, outs] = lists_for(s.original, out);
+    const bool patch = ins != &copy_in;
     ExprPtr whole = sym(s.original), hi = sym(s.hi), lo = sym(s.lo);
     std::vector<ExprPtr> elems_df, elems_hi, elems_lo;
-    elements(whole, out, elems_df);
-    elements(hi, out, elems_hi);
-    elements(lo, out, elems_lo);
+    elements(whole, own, elems_df);
+    elements(hi, own, elems_hi);
+    elements(lo, own, elems_lo);
     for (size_t k = 0; k < elems_df.size(); ++k) {
       const ir::Type& ft = elems_hi[k]->type;
       if (out) {
-        copy_out.push_back(assign(elems_hi[k], member(elems_df[k], "hi", ft)));
-        copy_out.push_back(assign(elems_lo[k], member(elems_df[k], "lo", ft)));
-      } else {
+        outs->push_back(assign(elems_hi[k], member(elems_df[k], "hi", ft)));
+        outs->push_back(assign(elems_lo[k], member(elems_df[k], "lo", ft)));
+      }
+      if (!out || patch) {
         auto join = Expr::make(Kind::Construct, elems_df[k]->type);
         join->args = {elems_hi[k], elems_lo[k]};
-        copy_in.push_back(assign(elems_df[k], join));
+        ins->push_back(assign(elems_df[k], join));
       }
     }
   }
   for (const auto& s : word_splits) {
     std::vector<ExprPtr> elems_df;
     const bool out = s.storage == ir::Storage::Out;
-    elements(sym(s.original), out, elems_df);
+    const bool own = own_vertex(*s.original, out);
+    auto [ins, outs] = lists_for(s.original, out);
+    const bool patch = ins != &copy_in;
+    elements(sym(s.original), own, elems_df);
     std::vector<std::vector<ExprPtr>> elems_parts(s.parts.size());
-    for (size_t k = 0; k < s.parts.size(); ++k) elements(sym(s.parts[k]), out, elems_parts[k]);
+    for (size_t k = 0; k < s.parts.size(); ++k) elements(sym(s.parts[k]), own, elems_parts[k]);
     for (size_t i = 0; i < elems_df.size(); ++i) {
-      if (s.storage == ir::Storage::Out) {
+      if (out)
         for (size_t k = 0; k < s.parts.size(); ++k)
-          copy_out.push_back(assign(elems_parts[k][i], exact_io::words_of(elems_df[i], s.width, static_cast<int>(k))));
-      } else {
+          outs->push_back(assign(elems_parts[k][i], exact_io::words_of(elems_df[i], s.width, static_cast<int>(k))));
+      if (!out || patch) {
         std::vector<ExprPtr> words;
         for (const auto& p : elems_parts) words.push_back(p[i]);
-        copy_in.push_back(assign(elems_df[i], exact_io::value_of(words, s.width)));
+        ins->push_back(assign(elems_df[i], exact_io::value_of(words, s.width)));
       }
     }
   }
@@ -533,6 +638,13 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       copy_in.push_back(assign(elems_df[e], matrix_value(s, static_cast<int>(e) * s.cols * s.rows)));
   }
   auto& body = (*main)->body->body;
+  std::vector<ir::StmtPtr> patch_copy_in;
+  for (const PatchOutput& p : patch_outputs) {
+    for (const auto& f : module.functions) add_copy_out_after_writes(f->body, p, module, ctx);
+    patch_copy_in.insert(patch_copy_in.end(), p.copy_in.begin(), p.copy_in.end());
+  }
+  add_copy_in_after_barriers((*main)->body, patch_copy_in);
+  body.insert(body.begin(), patch_copy_in.begin(), patch_copy_in.end());
   body.insert(body.begin(), copy_in.begin(), copy_in.end());
   if (module.stage == ir::StageKind::Geometry) {
     for (const auto& f : module.functions) add_copy_out_before_emits(f->body, copy_out);

@@ -1,6 +1,7 @@
-// GLES graphics backend: the wrapped stage pair (graphics_wrapper.hpp) linked by Mesa's GLES compiler
-// and drawn as points on llvmpipe into a framebuffer without attachments (the wrapper stores its
-// outputs in a storage buffer, so nothing is rendered).
+// GLES graphics backend: the wrapped stages (graphics_wrapper.hpp) linked by Mesa's GLES compiler
+// and drawn on llvmpipe into a framebuffer without attachments (the wrapper stores its outputs in a
+// storage buffer, so nothing is rendered): points for vertex and fragment jobs, the geometry
+// shader's input primitives, or patches for tessellation (ES 3.2 has both stages).
 #include <algorithm>
 #include <cstring>
 
@@ -11,7 +12,7 @@ namespace doublet::runner::detail {
 namespace {
 
 struct GlGraphicsObjects {
-  GLuint shaders[2] = {}, program = 0, framebuffer = 0, vertex_array = 0, buffers[2] = {};
+  GLuint shaders[5] = {}, program = 0, framebuffer = 0, vertex_array = 0, buffers[2] = {};
   std::vector<std::string> block_names;  // active named uniform blocks; block i uses binding i
   std::vector<GLuint> block_buffers, textures;
   ~GlGraphicsObjects() {
@@ -106,19 +107,34 @@ std::string upload_blocks(GlGraphicsObjects& gl, const GraphicsJob& job) {
   return gl_error("uploading uniform blocks");
 }
 
+const char* stage_name(GLenum type) {
+  switch (type) {
+    case GL_VERTEX_SHADER: return "vertex";
+    case GL_TESS_CONTROL_SHADER: return "tessellation control";
+    case GL_TESS_EVALUATION_SHADER: return "tessellation evaluation";
+    case GL_GEOMETRY_SHADER: return "geometry";
+    default: return "fragment";
+  }
+}
+
 std::string link(const WrappedProgram& w, GlGraphicsObjects& gl, const std::string& device) {
-  const GLenum types[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-  const std::string* texts[2] = {&w.vertex, &w.fragment};
+  const std::pair<GLenum, const std::string*> stages[5] = {{GL_VERTEX_SHADER, &w.vertex},
+                                                           {GL_TESS_CONTROL_SHADER, &w.tess_control},
+                                                           {GL_TESS_EVALUATION_SHADER, &w.tess_evaluation},
+                                                           {GL_GEOMETRY_SHADER, &w.geometry},
+                                                           {GL_FRAGMENT_SHADER, &w.fragment}};
   gl.program = glCreateProgram();
-  for (int i = 0; i < 2; ++i) {
-    gl.shaders[i] = glCreateShader(types[i]);
-    const char* text = texts[i]->c_str();
+  for (int i = 0; i < 5; ++i) {
+    const auto& [type, source] = stages[i];
+    if (source->empty()) continue;
+    gl.shaders[i] = glCreateShader(type);
+    const char* text = source->c_str();
     glShaderSource(gl.shaders[i], 1, &text, nullptr);
     glCompileShader(gl.shaders[i]);
     GLint status = 0;
     glGetShaderiv(gl.shaders[i], GL_COMPILE_STATUS, &status);
     if (!status)
-      return std::string("GLSL compile failed (GLES ") + (i ? "fragment" : "vertex") + ", " + device + "):\n" +
+      return std::string("GLSL compile failed (GLES ") + stage_name(type) + ", " + device + "):\n" +
              info_log(gl.shaders[i], false);
     glAttachShader(gl.program, gl.shaders[i]);
   }
@@ -157,10 +173,24 @@ std::string draw(const WrappedProgram& w, GlGraphicsObjects& gl, const GraphicsJ
   }
   if (std::string e = gl_error("uploading buffers"); !e.empty()) return e;
 
-  const bool vertex = job.stage == GraphicsStage::Vertex;
-  if (vertex) glEnable(GL_RASTERIZER_DISCARD);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
-  if (vertex) glDisable(GL_RASTERIZER_DISCARD);
+  // Geometry: one input primitive per sample; tessellation: one patch per sample.
+  GLenum primitive = GL_POINTS;
+  if (!w.tess_control.empty()) {
+    primitive = GL_PATCHES;
+    glPatchParameteri(GL_PATCH_VERTICES, static_cast<GLint>(w.iface.input_vertices));
+  } else if (!w.geometry.empty()) {
+    switch (w.iface.input_vertices) {
+      case 2: primitive = GL_LINES; break;
+      case 3: primitive = GL_TRIANGLES; break;
+      case 4: primitive = GL_LINES_ADJACENCY; break;
+      case 6: primitive = GL_TRIANGLES_ADJACENCY; break;
+      default: break;
+    }
+  }
+  const bool discard = job.stage != GraphicsStage::Fragment;
+  if (discard) glEnable(GL_RASTERIZER_DISCARD);
+  glDrawArrays(primitive, 0, static_cast<GLsizei>(count * std::max<uint32_t>(w.iface.input_vertices, 1)));
+  if (discard) glDisable(GL_RASTERIZER_DISCARD);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   if (std::string e = gl_error("glDrawArrays"); !e.empty()) return e;
 

@@ -124,8 +124,8 @@ std::vector<GraphicsResult> run_graphics_batch(Backend backend, const std::vecto
     failed.error = e;
     return {failed};
   }
-  if (backend != Backend::Vulkan && (!wrapped.geometry.empty() || !wrapped.tess_control.empty())) {
-    failed.error = "geometry and tessellation jobs run on Vulkan only";
+  if (backend != Backend::Vulkan && backend != Backend::Gles && (!wrapped.geometry.empty() || !wrapped.tess_control.empty())) {
+    failed.error = "geometry and tessellation jobs run on Vulkan and GLES only";
     return {failed};
   }
   if (backend == Backend::Gles) {

@@ -212,6 +212,9 @@ uint32_t tessellation_output_vertices(const std::string& glsl) {
 std::string rename_primitive_builtins(const std::string& line) {
   static const Renames kRenames = {{std::regex(R"(\bgl_in\b)"), "doublet_gl_in"},
                                    {std::regex(R"(\bgl_out\b)"), "doublet_gl_out"},
+                                   // members of the stand-in structs: GLES compilers refuse gl_ names there
+                                   {std::regex(R"(\.\s*gl_Position\b)"), ".doublet_position"},
+                                   {std::regex(R"(\.\s*gl_PointSize\b)"), ".doublet_point_size"},
                                    {std::regex(R"(\bgl_TessCoord\b)"), "doublet_tess_coord"},
                                    {std::regex(R"(\bgl_TessLevelOuter\b)"), "doublet_tess_level_outer"},
                                    {std::regex(R"(\bgl_TessLevelInner\b)"), "doublet_tess_level_inner"},
@@ -263,11 +266,11 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
     if (elements == 0) return "a tessellation control shader needs its output patch size declared (layout(vertices = 3) out;)";
     preamble = "void doublet_barrier() {}\nfloat doublet_tess_level_outer[4];\nfloat doublet_tess_level_inner[2];\n";
     if (std::regex_search(glsl, writes_gl_out))
-      preamble += "struct doublet_PerVertexOut { vec4 gl_Position; float gl_PointSize; };\ndoublet_PerVertexOut doublet_gl_out[" +
+      preamble += "struct doublet_PerVertexOut { vec4 doublet_position; float doublet_point_size; };\ndoublet_PerVertexOut doublet_gl_out[" +
                   std::to_string(elements) + "];\n";
   }
   if (per_primitive && std::regex_search(glsl, reads_gl_in))
-    preamble += "struct doublet_PerVertex { vec4 gl_Position; };\ndoublet_PerVertex doublet_gl_in[" +
+    preamble += "struct doublet_PerVertex { vec4 doublet_position; };\ndoublet_PerVertex doublet_gl_in[" +
                 std::to_string(elements) + "];\n";
   while (std::getline(in, line)) {
     ++line_number;

@@ -181,13 +181,59 @@ TEST(Targets, ConstructsTheTargetLacksAreDiagnosedByConstructAndTarget) {
                      "layout(passthrough) in Inputs { vec2 texcoord; };\nvoid main() {}\n",
                      doublet::Stage::Geometry, doublet::Target::Es310),
                {"passthrough input block 'Inputs'", "es320 or glsl450"});
-  // A tessellation control shader's double outputs: each invocation stores only its own vertex.
-  expect_error(lower(control + "patch out double e;\nvoid main() { e = d[0]; }\n", doublet::Stage::TessControl,
-                     doublet::Target::Glsl450),
-               {"per-patch double output 'e' of a tessellation control shader"});
+  // A tessellation control shader's per-patch double output is stored after the statement that
+  // writes it: one in a loop's header has no statement to follow.
+  expect_error(lower(control + "patch out double e;\nvoid main() { for (int k = 0; k < 2; e += d[0]) ++k; }\n",
+                     doublet::Stage::TessControl, doublet::Target::Glsl450),
+               {"per-patch double output 'e' is written inside a condition, a loop's header or a return",
+                "write it in a statement of its own"});
   expect_error(lower(control + "out double e[];\nvoid main() { e[gl_InvocationID] = d[0]; barrier(); gl_TessLevelOuter[0] = float(e[0]); }\n",
                      doublet::Stage::TessControl, doublet::Target::Es320),
                {"'e' of a tessellation control shader is used other than as e[gl_InvocationID]"});
+}
+
+size_t count(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// A per-patch double output of a tessellation control shader, which any invocation may write and
+// every invocation reads after barrier(): its words are stored right after each statement that
+// writes it (an assignment, a component, an out argument; not after a read, which would store a
+// stale value over another invocation's write) and read back after barrier().
+TEST(Tessellation, PerPatchDoubleOutputsAreStoredAfterEachWriteAndReadAfterBarrier) {
+  const std::string shader =
+      "#version 450\nlayout(vertices = 3) out;\nin dvec3 d[];\npatch out double e;\npatch out dvec2 c;\n"
+      "void set(out double x) { x = d[1].y; }\n"
+      "void main() {\n"
+      "  if (gl_InvocationID == 0) { e = d[0].x; c.y = d[2].z; }\n"
+      "  else if (gl_InvocationID == 1) set(e);\n"
+      "  float before = float(e);\n"
+      "  barrier();\n"
+      "  gl_TessLevelOuter[gl_InvocationID] = float(e + c.y) + before;\n"
+      "}\n";
+  for (doublet::Mode mode : {doublet::Mode::Df64, doublet::Mode::Exact}) {
+    doublet::Options o;
+    o.stage = doublet::Stage::TessControl;
+    o.target = doublet::Target::Es320;
+    o.mode = mode;
+    const doublet::Result r = doublet::lower(shader, o);
+    ASSERT_TRUE(r.ok) << messages(r);
+    const std::string& out = r.output;
+    if (mode == doublet::Mode::Exact) {  // words: stored after the same two writes
+      EXPECT_NE(out.find("patch out uvec2 e;"), std::string::npos) << out;
+      continue;
+    }
+    EXPECT_NE(out.find("patch out float e_hi;"), std::string::npos) << out;
+    EXPECT_NE(out.find("patch out vec2 c_lo;"), std::string::npos) << out;
+    EXPECT_EQ(count(out, "e_hi = e.hi;"), 2u) << out;  // after `e = ...` and after `set(e)`, not after the read
+    EXPECT_EQ(count(out, "c_hi = c.hi;"), 1u) << out;
+    const size_t barrier = out.find("barrier();");
+    ASSERT_NE(barrier, std::string::npos) << out;
+    EXPECT_NE(out.find("e = df_double(e_hi, e_lo);", barrier), std::string::npos) << out;
+    EXPECT_LT(out.find("set(e);"), out.find("e_hi = e.hi;", out.find("set(e);"))) << out;
+  }
 }
 
 TEST(Targets, Es100LimitsAreDiagnosedByConstruct) {
