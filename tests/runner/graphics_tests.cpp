@@ -140,13 +140,19 @@ INSTANTIATE_TEST_SUITE_P(Stages, Graphics,
                                             ::testing::Values(GraphicsStage::Vertex, GraphicsStage::Fragment)),
                          param_name);
 
+// Geometry and tessellation jobs run on lavapipe (desktop 4.50 text) and on Mesa's GLES (ES 3.20
+// text: all five stages linked, input primitives or patches drawn).
+class GraphicsPrimitiveStages : public ::testing::TestWithParam<Backend> {};
+
+std::string version_line(Backend b) { return b == Backend::Gles ? "#version 320 es" : "#version 450"; }
+
 // Geometry jobs: one triangle per sample, its per-vertex inputs one input per element; every
 // EmitVertex() stores one output record of the sample, and a record never emitted reads as NaN.
-TEST(GraphicsGeometry, EachEmitVertexStoresOneRecordOfItsSample) {
-  REQUIRE_BACKEND(Backend::Vulkan);
+TEST_P(GraphicsPrimitiveStages, EachEmitVertexStoresOneRecordOfItsSample) {
+  REQUIRE_BACKEND(GetParam());
   GraphicsJob job;
   job.stage = GraphicsStage::Geometry;
-  job.glsl = R"(#version 450
+  job.glsl = version_line(GetParam()) + R"(
 layout(triangles) in;
 layout(points, max_vertices = 3) out;
 in float a[];
@@ -168,7 +174,7 @@ void main() {
   job.inputs["a[2]"] = {4, 40};
   job.inputs["gl_in[0].gl_Position"] = {0.5, 0, 0, 0, 0.25, 0, 0, 0};
   job.inputs["gl_in[1].gl_Position"] = {0.125, 0, 0, 0, 8, 0, 0, 0};
-  const GraphicsResult r = run_graphics(Backend::Vulkan, job);
+  const GraphicsResult r = run_graphics(GetParam(), job);
   ASSERT_TRUE(r.ok) << r.error;
   const std::vector<double>& sum = r.outputs.at("sum");
   const std::vector<double>& corner = r.outputs.at("corner");
@@ -187,11 +193,11 @@ void main() {
 
 // Tessellation control jobs: one patch per sample; invocation k stores record k (its own element of
 // a per-vertex output, the levels it wrote, 0 for the ones it did not).
-TEST(GraphicsTessellation, ControlInvocationsStoreTheirOwnRecord) {
-  REQUIRE_BACKEND(Backend::Vulkan);
+TEST_P(GraphicsPrimitiveStages, ControlInvocationsStoreTheirOwnRecord) {
+  REQUIRE_BACKEND(GetParam());
   GraphicsJob job;
   job.stage = GraphicsStage::TessControl;
-  job.glsl = R"(#version 450
+  job.glsl = version_line(GetParam()) + R"(
 layout(vertices = 2) out;
 in float a[];
 out float twice[];
@@ -203,7 +209,7 @@ void main() {
   job.count = 2;
   job.inputs["a[0]"] = {1, 10};
   job.inputs["a[1]"] = {3, 30};
-  const GraphicsResult r = run_graphics(Backend::Vulkan, job);
+  const GraphicsResult r = run_graphics(GetParam(), job);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.outputs.at("twice"), (std::vector<double>{5, 7, 50, 70}));
   const std::vector<double>& outer = r.outputs.at("gl_TessLevelOuter");
@@ -214,11 +220,11 @@ void main() {
 
 // Tessellation evaluation jobs: the user's code runs at the sample's own gl_TessCoord, with the
 // domain's corner elements of its per-vertex inputs.
-TEST(GraphicsTessellation, EvaluationRunsAtTheSamplesTessCoord) {
-  REQUIRE_BACKEND(Backend::Vulkan);
+TEST_P(GraphicsPrimitiveStages, EvaluationRunsAtTheSamplesTessCoord) {
+  REQUIRE_BACKEND(GetParam());
   GraphicsJob job;
   job.stage = GraphicsStage::TessEvaluation;
-  job.glsl = R"(#version 450
+  job.glsl = version_line(GetParam()) + R"(
 layout(triangles, equal_spacing, ccw) in;
 in float h[];
 patch in float base;
@@ -234,10 +240,13 @@ void main() {
   job.inputs["h[2]"] = {4, 400};
   job.inputs["base"] = {0.5, 0.25};
   job.inputs["gl_TessCoord"] = {0.5, 0.25, 0.25, 0, 0, 1};
-  const GraphicsResult r = run_graphics(Backend::Vulkan, job);
+  const GraphicsResult r = run_graphics(GetParam(), job);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.outputs.at("value"), (std::vector<double>{0.5 + 0.5 + 0.5 + 1, 400.25}));
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, GraphicsPrimitiveStages, ::testing::Values(Backend::Vulkan, Backend::Gles),
+                         backend_param_name);
 
 }  // namespace
 }  // namespace doublet::runner::test

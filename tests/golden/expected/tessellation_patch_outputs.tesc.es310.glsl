@@ -1,0 +1,672 @@
+#version 310 es
+#extension GL_EXT_tessellation_shader : require
+precision highp float;
+precision highp int;
+layout(vertices = 3) out;
+
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+
+// doublet float-float runtime: 33 functions from rules/*.glsl, guard: uniform df_guard
+struct df_double { float hi; float lo; };
+struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard;  // never set: GL zero-fills it at link
+
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_dvec3 df_neg(df_dvec3 a) {
+  vec3 h = (-a.hi);
+  vec3 l = (-a.lo);
+  return df_dvec3(h, l);
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_dvec3 df_two_sum(vec3 a, vec3 b) {
+  vec3 s = ((a + b) - df_guard);
+  vec3 bb = ((s - a) - df_guard);
+  vec3 ab = (s - bb);
+  vec3 da = (a - ab);
+  vec3 db = (b - bb);
+  vec3 e = (da + db);
+  return df_dvec3(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
+  vec3 s = ((a + b) - df_guard);
+  vec3 z = ((s - a) - df_guard);
+  vec3 e = (b - z);
+  return df_dvec3(s, e);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+df_double df_finish(df_double z, float f) {
+  float az = (abs(z.hi));
+  bool regular = all(bvec2(az > 0.0, az <= 3.40282347e38));
+  float h = (mix(f, z.hi, regular));
+  float l = (mix(0.0, z.lo, regular));
+  return df_double(h, l);
+}
+
+// df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
+// the caller's plain float result on the high words. One select per component, so the common
+// path pays one abs and two comparisons. The comparisons use the guarded |z.hi| (not isinf/isnan,
+// which a fast-math optimizer may fold): false for NaN, so NaN takes the (f, 0) branch too.
+// Algorithm: finiteness and zero test of hi, then selection
+// Source: IEEE 754-2008 sections 6.1-6.3 (infinity, NaN, signed zero); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 1 (plus 2 comparisons)
+// (width 3: the width-1 df_finish applied to each component)
+df_dvec3 df_finish(df_dvec3 z, vec3 f) {
+  df_double r0 = df_finish(df_double(z.hi.x, z.lo.x), f.x);
+  df_double r1 = df_finish(df_double(z.hi.y, z.lo.y), f.y);
+  df_double r2 = df_finish(df_double(z.hi.z, z.lo.z), f.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_dvec3 df_add(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 s = df_two_sum(a.hi, b.hi);
+  df_dvec3 t = df_two_sum(a.lo, b.lo);
+  vec3 c = (s.lo + t.hi);
+  df_dvec3 v = df_fast_two_sum(s.hi, c);
+  vec3 w = (t.lo + v.lo);
+  df_dvec3 z = df_fast_two_sum(v.hi, w);
+  df_dvec3 r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 23
+df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 nb = df_neg(b);
+  df_dvec3 z = df_add(a, nb);
+  return z;
+}
+
+// df_norm_scale: (s, 1/s), powers of two that bring the largest component of hi into
+// [2^-36, 2^60] (as hypot does): s = 2^-90 when some |hi_i| > 2^60, 2^90 when every |hi_i| < 2^-36,
+// else 1. Then the squares of the scaled vector neither overflow (4 * 2^120 < 2^128) nor lose
+// their error terms to underflow (the largest square is >= 2^-72, its low words >= ~2^-120),
+// and scaling is exact. Values in [2^-36, 2^60] take s = 1: bit for bit the unscaled result.
+// +-Inf scales to +-Inf; NaN fails both tests and is not scaled.
+// Algorithm: two threshold tests on abs(hi), selection of power-of-two constants
+// Source: IEEE 754-2008 section 9.2 (hypot: scaling to avoid spurious overflow and underflow); Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, section 5 (scaled norms)
+// Bound: exact
+// Flops: 4 (W = 4: one abs per component; plus 2 vector comparisons and 4 selects)
+vec2 df_norm_scale(vec3 h) {
+  vec3 ah = (abs(h));
+  bool big = any(greaterThan(ah, vec3(1.152921504606846976e18)));
+  bool small = all(lessThan(ah, vec3(1.4551915228366851806640625e-11)));
+  float down = (mix(1.0, 8.0779356694631608874161005085933746e-28, big));
+  float s = (mix(down, 1.237940039285380274899124224e27, small));
+  float up = (mix(1.0, 1.237940039285380274899124224e27, big));
+  float back = (mix(up, 8.0779356694631608874161005085933746e-28, small));
+  return vec2(s, back);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_dvec3 df_scale_pow2(df_dvec3 a, float s) {
+  vec3 h = (a.hi * s);
+  vec3 l = (a.lo * s);
+  return df_dvec3(h, l);
+}
+
+// df_scale_pow2: a * s for a power of two s: both words scaled, exact while no word over- or
+// underflows.
+// Algorithm: scaling of hi and lo by a power of two
+// Source: IEEE 754-2008 section 5.3.3 (scaleB); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 2 (per component)
+df_double df_scale_pow2(df_double a, float s) {
+  float h = (a.hi * s);
+  float l = (a.lo * s);
+  return df_double(h, l);
+}
+
+// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
+// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
+// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
+// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// Bound: exact
+// Flops: 4
+// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
+// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
+// df_two_prod scales its operands by powers of two so that it never splits such a value.
+df_double df_split(float a) {
+  float g = ((a * 4097.0) - df_guard);
+  float d = ((a - g) - df_guard);
+  float hi = (g + d);
+  float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
+df_double df_two_prod(float a, float b) {
+  float p = ((a * b) - df_guard);
+  float aa = (abs(a));
+  float ab = (abs(b));
+  bool big_a = aa > 1.0e34;
+  bool big_b = ab > 1.0e34;
+  float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
+  float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
+  float as = (a * ka);
+  float bs = (b * kb);
+  df_double sa = df_split(as);
+  df_double sb = df_split(bs);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
+  return df_double(p, e);
+}
+
+// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// Bound: exact
+// Flops: 21 (plus 2 comparisons and 2 selects)
+// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
+//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
+//        (every product of halves and every partial sum is exact).
+// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
+// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
+// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
+// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
+// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
+// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
+// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
+// (width 3: the width-1 df_two_prod applied to each component)
+df_dvec3 df_two_prod(vec3 a, vec3 b) {
+  df_double r0 = df_two_prod(a.x, b.x);
+  df_double r1 = df_two_prod(a.y, b.y);
+  df_double r2 = df_two_prod(a.z, b.z);
+  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+}
+
+// df_mul: a * b.
+// Algorithm: DWTimesDW1 (JMP Algorithm 10) with Dekker's TwoProd (Veltkamp split of scaled operands, C = 4097), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2)
+// Bound: 7u^2
+// Flops: 29
+// Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
+//        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3); df_finish(z, ch).
+// The 7u^2 of JMP 2017 was later proved to be 5u^2/(1+u)^2 < 5u^2 (MR 2022, Theorem 2.6).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+// Special values: ch = RN(ah*bh) gives overflow to +-Inf, 0 * Inf = NaN and the sign of a zero.
+df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 c = df_two_prod(a.hi, b.hi);
+  vec3 tl = (a.hi * b.lo);
+  vec3 th = (a.lo * b.hi);
+  vec3 cl2 = (th + tl);
+  vec3 cl3 = (c.lo + cl2);
+  df_dvec3 z = df_fast_two_sum(c.hi, cl3);
+  df_dvec3 r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
+// Algorithm: TwoSum (branch-free, 6 operations)
+// Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 Theorem B; HFPA (2018) Algorithm 4.4
+// Bound: exact
+// Flops: 6
+// Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
+df_double df_two_sum(float a, float b) {
+  float s = ((a + b) - df_guard);
+  float bb = ((s - a) - df_guard);
+  float ab = (s - bb);
+  float da = (a - ab);
+  float db = (b - bb);
+  float e = (da + db);
+  return df_double(s, e);
+}
+
+// df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
+// exponent(a) >= exponent(b) (true whenever |a| >= |b|). Callers guarantee it.
+// Algorithm: Fast2Sum
+// Source: Dekker 1971, Theorem 4.3; HFPA (2018) Algorithm 4.3
+// Bound: exact
+// Flops: 3
+// Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
+df_double df_fast_two_sum(float a, float b) {
+  float s = ((a + b) - df_guard);
+  float z = ((s - a) - df_guard);
+  float e = (b - z);
+  return df_double(s, e);
+}
+
+// df_add: a + b.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 21
+// Steps: (sh,sl) = TwoSum(ah,bh); (th,tl) = TwoSum(al,bl); c = RN(sl+th);
+//        (vh,vl) = Fast2Sum(sh,c); w = RN(tl+vl); (zh,zl) = Fast2Sum(vh,w); df_finish(z, sh).
+// The bound holds for all signs (the "sloppy" 11-flop variant is unbounded under cancellation).
+// Special values: sh = RN(ah+bh) is +-Inf, NaN or the signed zero IEEE gives (x + Inf = Inf,
+// Inf - Inf = NaN, -0 + -0 = -0, x - x = +0). A finite sum above FLT_MAX is Inf (float's range).
+df_double df_add(df_double a, df_double b) {
+  df_double s = df_two_sum(a.hi, b.hi);
+  df_double t = df_two_sum(a.lo, b.lo);
+  float c = (s.lo + t.hi);
+  df_double v = df_fast_two_sum(s.hi, c);
+  float w = (t.lo + v.lo);
+  df_double z = df_fast_two_sum(v.hi, w);
+  df_double r = df_finish(z, s.hi);
+  return r;
+}
+
+// df_dot: (a.x*b.x + a.y*b.y) + a.z*b.z.
+// Algorithm: vector DWTimesDW1 (JMP Algorithm 10), then 2 AccurateDWPlusDW (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Higham 2002, section 4.2
+// Bound: 13u^2 * S, S = sum of abs(a_i*b_i) (absolute error; relative when no cancellation)
+// Flops: 129
+df_double df_dot(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 m = df_mul(a, b);
+  df_double x = df_double(m.hi.x, m.lo.x);
+  df_double y = df_double(m.hi.y, m.lo.y);
+  df_double z = df_double(m.hi.z, m.lo.z);
+  df_double xy = df_add(x, y);
+  df_double r = df_add(xy, z);
+  return r;
+}
+
+// df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN
+// (IEEE 754-2008 section 5.4.1; GLSL leaves a < 0 undefined, the drivers give NaN).
+// Algorithm: SQRTDWtoDW (LLMPR Algorithm 8), FMA step replaced by an exact Dekker square, then df_finish
+// Source: Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023, Algorithm 8 and its theorem
+// Bound: 25/8 u^2
+// Flops: 31
+// Steps (LLMPR Algorithm 8, our no-FMA form):
+//   sh   = RN(sqrt(ah))
+//   (p,e)= TwoProd(sh, sh)           p + e == sh^2 exactly
+//   r0   = RN(ah - p)                exact: ah/2 <= p <= 2ah (Sterbenz)
+//   rho1 = RN(r0 - e)                == RN(ah - sh^2), the value fma(-sh, sh, ah) returns
+//   rho2 = RN(al + rho1)
+//   sl   = RN(rho2 / (2 sh))
+//   (zh,zl) = Fast2Sum(sh, sl)
+// sh is guarded too: Mesa rewrites sqrt(x)*sqrt(x) to |x|, which would zero the residual.
+// So every value equals the FMA version's and the 25/8 u^2 bound carries over, given a
+// correctly rounded float sqrt and division (x86 llvmpipe). With a k-ulp sqrt (GLSL permits a
+// few ulp) the step is still a Newton correction: about (25/8 + k + k^2/2) u^2 (estimate,
+// not proved). Special values end in df_finish(z, sh): a = +-0 gives sl = 0/0 = NaN and so
+// (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
+// Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
+df_double df_sqrt(df_double a) {
+  float sh = ((sqrt(a.hi)) - df_guard);
+  df_double sq = df_two_prod(sh, sh);
+  float r0 = (a.hi - sq.hi);
+  float rho1 = (r0 - sq.lo);
+  float rho2 = (a.lo + rho1);
+  float sh2 = (sh * 2.0);
+  float sl = (rho2 / sh2);
+  df_double z = df_fast_two_sum(sh, sl);
+  df_double r = df_finish(z, sh);
+  return r;
+}
+
+// df_length: sqrt(dot(a, a)), W = 2..4, on a scaled by df_norm_scale and scaled back, so any
+// vector whose length is within float range gets it (the squares alone would overflow above
+// |a| ~ 1.8e19 and underflow below ~1e-19). No cancellation in dot(a, a), so its error is
+// relative: (7 + 3d)u^2 with d = ceil(log2 W); sqrt halves that and adds 25/8 u^2:
+// 8.125u^2 for W = 2, 9.625u^2 for W = 3, 4 (first order). A length beyond float range is
+// (+Inf, 0) (df_finish); one below it tapers into float's subnormals as the scaled-back words
+// round.
+// Algorithm: df_norm_scale, df_dot(a, a), SQRTDWtoDW (LLMPR Algorithm 8), scaled back, df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 9.625u^2
+// Flops: 225 (W = 4; 119 for W = 2, 172 for W = 3)
+// Range: every vector (scaled); exact scaling, so the bound holds for lengths in [2^-100, FLT_MAX].
+df_double df_length(df_dvec3 a) {
+  vec2 k = (df_norm_scale(a.hi));
+  df_dvec3 b = df_scale_pow2(a, k.x);
+  df_double d = df_dot(b, b);
+  df_double n = df_sqrt(d);
+  df_double z = df_scale_pow2(n, k.y);
+  df_double r = df_finish(z, z.hi);
+  return r;
+}
+
+// df_distance: length(a - b). The difference of exact inputs is one AccurateDWPlusDW per
+// component (3u^2 relative), which adds 3u^2 to df_length's relative bound.
+// Algorithm: AccurateDWPlusDW (JMP Algorithm 6), then df_length
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017; Lefevre, Louvet, Muller, Picot, Rideau, ACM TOMS 49(1), 2023
+// Bound: 12.625u^2
+// Flops: 248 (W = 4)
+df_double df_distance(df_dvec3 a, df_dvec3 b) {
+  df_dvec3 d = df_sub(a, b);
+  df_double r = df_length(d);
+  return r;
+}
+
+// df_lt: a < b.
+// Algorithm: lexicographic comparison of (hi, lo)
+// Source: JMP 2017, Definition 1.4 (double-word uniqueness); Knuth TAOCP vol. 2, 4.2.2
+// Bound: exact
+// Flops: 0 (3 comparisons)
+bool df_lt(df_double a, df_double b) {
+  return any(bvec2(a.hi < b.hi, all(bvec2(a.hi == b.hi, a.lo < b.lo))));
+}
+
+// df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
+// ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
+// early return or a short-circuit inside a rule that is inlined into a loop body multiplies the
+// control flow the browser's shader compilers have to handle (docs/performance.md, "Compile time in
+// the browser").
+// Algorithm: selection
+// Source: GLSL 4.60 (2019) section 8.3 (mix with genBType)
+// Bound: exact
+// Flops: 0
+df_double df_select(bool c, df_double a, df_double b) {
+  float h = (mix(b.hi, a.hi, c));
+  float l = (mix(b.lo, a.lo, c));
+  return df_double(h, l);
+}
+
+// df_max: component-wise max(a, b) = a < b ? b : a (GLSL definition).
+// Algorithm: lexicographic compare (df_lt) and select; widths 2-4 per component
+// Source: GLSL ES 3.20 section 8.3 (max); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+df_double df_max(df_double a, df_double b) {
+  bool take = df_lt(a, b);
+  df_double r = df_select(take, b, a);
+  return r;
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 30
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+df_dvec3 df_mul_f(df_dvec3 a, vec3 b) {
+  df_dvec3 c = df_two_prod(a.hi, b);
+  vec3 cl2 = (a.lo * b);
+  df_dvec3 t = df_fast_two_sum(c.hi, cl2);
+  vec3 tl2 = (t.lo + c.lo);
+  df_dvec3 z = df_fast_two_sum(t.hi, tl2);
+  df_dvec3 r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 39
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
+df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
+  vec3 th = ((a.hi / b.hi) - df_guard);
+  df_dvec3 r = df_mul_f(b, th);
+  vec3 pih = (a.hi - r.hi);
+  vec3 dl = (a.lo - r.lo);
+  vec3 d = (pih + dl);
+  vec3 tl = (d / b.hi);
+  df_dvec3 z = df_fast_two_sum(th, tl);
+  df_dvec3 q = df_finish(z, th);
+  return q;
+}
+
+// df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
+// Algorithm: sign flip of both words
+// Source: Dekker 1971 (trivial); JMP section 1
+// Bound: exact
+// Flops: 2
+df_double df_neg(df_double a) {
+  float h = (-a.hi);
+  float l = (-a.lo);
+  return df_double(h, l);
+}
+
+// df_sub: a - b = a + (-b); negation is exact, so the df_add bound applies unchanged.
+// Algorithm: AccurateDWPlusDW on (a, -b) (JMP Algorithm 6)
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 3.1
+// Bound: 3u^2 + 13u^3
+// Flops: 23
+df_double df_sub(df_double a, df_double b) {
+  df_double nb = df_neg(b);
+  df_double z = df_add(a, nb);
+  return z;
+}
+
+// df_mul_f: a * b with b a plain float.
+// Algorithm: DWTimesFP1 (JMP Algorithm 7) with Dekker's TwoProd, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 4.1
+// Bound: 1.5u^2 + 4u^3
+// Flops: 30
+// Steps: (ch,cl1) = TwoProd(ah,b); cl2 = RN(al*b); (th,tl1) = Fast2Sum(ch,cl2);
+//        tl2 = RN(tl1+cl1); (zh,zl) = Fast2Sum(th,tl2); df_finish(z, ch).
+// Range: any finite operands whose product is within float range (TwoProd scales them).
+df_double df_mul_f(df_double a, float b) {
+  df_double c = df_two_prod(a.hi, b);
+  float cl2 = (a.lo * b);
+  df_double t = df_fast_two_sum(c.hi, cl2);
+  float tl2 = (t.lo + c.lo);
+  df_double z = df_fast_two_sum(t.hi, tl2);
+  df_double r = df_finish(z, c.hi);
+  return r;
+}
+
+// df_div: a / b.
+// Algorithm: DWDivDW2 (JMP Algorithm 17; same results as Algorithm 16) with DWTimesFP1, then df_finish
+// Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Theorem 7.1
+// Bound: 15u^2 + 56u^3
+// Flops: 39
+// Steps: th = RN(ah/bh); (rh,rl) = DWTimesFP1(bh,bl,th); pih = RN(ah-rh) (exact, Sterbenz);
+//        dl = RN(al-rl); d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl);
+//        df_finish(z, th).
+// The proof assumes a correctly rounded float division; GLSL only promises 2.5 ulp for '/',
+// which adds about 2.5u^2 (tl carries the error).
+// Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
+// Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
+df_double df_div(df_double a, df_double b) {
+  float th = ((a.hi / b.hi) - df_guard);
+  df_double r = df_mul_f(b, th);
+  float pih = (a.hi - r.hi);
+  float dl = (a.lo - r.lo);
+  float d = (pih + dl);
+  float tl = (d / b.hi);
+  df_double z = df_fast_two_sum(th, tl);
+  df_double q = df_finish(z, th);
+  return q;
+}
+
+// df_min: component-wise min(a, b) = b < a ? b : a (GLSL definition).
+// Algorithm: lexicographic compare (df_lt) and select; widths 2-4 per component
+// Source: GLSL ES 3.20 section 8.3 (min); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (3 comparisons per component)
+df_double df_min(df_double a, df_double b) {
+  bool take = df_lt(b, a);
+  df_double r = df_select(take, b, a);
+  return r;
+}
+
+// df_clamp: min(max(x, lo), hi).
+// Algorithm: df_max then df_min (lexicographic compare and select)
+// Source: GLSL 4.60 (2019) section 8.3 (clamp); JMP 2017, Definition 1.4
+// Bound: exact
+// Flops: 0 (6 comparisons per component)
+df_double df_clamp(df_double x, df_double lo, df_double hi) {
+  df_double m = df_max(x, lo);
+  df_double r = df_min(m, hi);
+  return r;
+}
+
+// df_to_float: the float nearest to hi + lo (one correctly rounded addition; for a
+// double-word number this is hi itself, but the addition also rounds unnormalized pairs).
+// Values beyond float range are already +-Inf in hi (the rules saturate), so they stay +-Inf;
+// df_finish keeps hi where the sum is zero (-0 + 0 would be +0), infinite or NaN.
+// Algorithm: RN(hi + lo), then df_finish for zeros and non-finite values
+// Source: JMP 2017, Definition 1.4 (hi = RN(hi + lo)); IEEE 754-2008 section 5.4.2 (formatOf conversions)
+// Bound: 0.5 ulp (correctly rounded to float)
+// Flops: 2
+float df_to_float(df_double a) {
+  float f = ((a.hi + a.lo) - df_guard);
+  df_double r = df_finish(df_double(f, float(0.0)), a.hi);
+  return r.hi;
+}
+
+df_dvec3 df_splat_dvec3(df_double s) {
+  return df_dvec3(vec3(s.hi), vec3(s.lo));
+}
+
+df_double df_assign_component_dvec3(inout df_dvec3 v, int i, df_double x) {
+  v.hi[i] = x.hi;
+  v.lo[i] = x.lo;
+  return x;
+}
+
+in vec3 p_hi[32];
+in vec3 p_lo[32];
+df_dvec3 p[32];
+out vec3 q_hi[3];
+out vec3 q_lo[3];
+df_dvec3 q[3];
+patch out vec3 center_hi;
+patch out vec3 center_lo;
+df_dvec3 center;
+patch out float spread_hi;
+patch out float spread_lo;
+df_double spread;
+df_dvec3 eye;
+
+void widest(out df_double w);
+
+void widest(out df_double w)
+{
+  w = df_max(df_distance(p[0], p[1]), df_distance(p[1], p[2]));
+}
+
+void main()
+{
+  p[0] = df_dvec3(p_hi[0], p_lo[0]);
+  p[1] = df_dvec3(p_hi[1], p_lo[1]);
+  p[2] = df_dvec3(p_hi[2], p_lo[2]);
+  p[3] = df_dvec3(p_hi[3], p_lo[3]);
+  p[4] = df_dvec3(p_hi[4], p_lo[4]);
+  p[5] = df_dvec3(p_hi[5], p_lo[5]);
+  p[6] = df_dvec3(p_hi[6], p_lo[6]);
+  p[7] = df_dvec3(p_hi[7], p_lo[7]);
+  p[8] = df_dvec3(p_hi[8], p_lo[8]);
+  p[9] = df_dvec3(p_hi[9], p_lo[9]);
+  p[10] = df_dvec3(p_hi[10], p_lo[10]);
+  p[11] = df_dvec3(p_hi[11], p_lo[11]);
+  p[12] = df_dvec3(p_hi[12], p_lo[12]);
+  p[13] = df_dvec3(p_hi[13], p_lo[13]);
+  p[14] = df_dvec3(p_hi[14], p_lo[14]);
+  p[15] = df_dvec3(p_hi[15], p_lo[15]);
+  p[16] = df_dvec3(p_hi[16], p_lo[16]);
+  p[17] = df_dvec3(p_hi[17], p_lo[17]);
+  p[18] = df_dvec3(p_hi[18], p_lo[18]);
+  p[19] = df_dvec3(p_hi[19], p_lo[19]);
+  p[20] = df_dvec3(p_hi[20], p_lo[20]);
+  p[21] = df_dvec3(p_hi[21], p_lo[21]);
+  p[22] = df_dvec3(p_hi[22], p_lo[22]);
+  p[23] = df_dvec3(p_hi[23], p_lo[23]);
+  p[24] = df_dvec3(p_hi[24], p_lo[24]);
+  p[25] = df_dvec3(p_hi[25], p_lo[25]);
+  p[26] = df_dvec3(p_hi[26], p_lo[26]);
+  p[27] = df_dvec3(p_hi[27], p_lo[27]);
+  p[28] = df_dvec3(p_hi[28], p_lo[28]);
+  p[29] = df_dvec3(p_hi[29], p_lo[29]);
+  p[30] = df_dvec3(p_hi[30], p_lo[30]);
+  p[31] = df_dvec3(p_hi[31], p_lo[31]);
+  eye = df_dvec3(eye_hi, eye_lo);
+  center = df_dvec3(center_hi, center_lo);
+  spread = df_double(spread_hi, spread_lo);
+  if (gl_InvocationID == 0)
+  {
+    center = df_div(df_add(df_add(p[0], p[1]), p[2]), df_splat_dvec3(df_double(3.0, 0.0)));
+    center_hi = center.hi;
+    center_lo = center.lo;
+    df_assign_component_dvec3(center, 2, df_sub(df_double(center.hi.z, center.lo.z), df_double(eye.hi.z, eye.lo.z)));
+    center_hi = center.hi;
+    center_lo = center.lo;
+  }
+  else
+  {
+    if (gl_InvocationID == 1)
+    {
+      widest(spread);
+      spread_hi = spread.hi;
+      spread_lo = spread.lo;
+    }
+  }
+  barrier();
+  center = df_dvec3(center_hi, center_lo);
+  spread = df_double(spread_hi, spread_lo);
+  q[gl_InvocationID] = df_sub(p[gl_InvocationID], center);
+  float level = df_to_float(df_clamp(df_div(spread, df_length(df_sub(center, eye))), df_double(1.0, 0.0), df_double(16.0, 0.0)));
+  gl_TessLevelOuter[gl_InvocationID] = level;
+  gl_TessLevelInner[0] = level;
+  q_hi[gl_InvocationID] = q[gl_InvocationID].hi;
+  q_lo[gl_InvocationID] = q[gl_InvocationID].lo;
+}
