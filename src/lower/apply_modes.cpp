@@ -38,6 +38,11 @@ constexpr const char* kDf64IntWholeShader =
     "mode df64-int applies to the whole shader only (--mode df64-int): it replaces the runtime's error-free "
     "transformations, which every float-float operation shares";
 
+// Mode exact per declaration: a function's body in binary64 words (lower/exact_functions.cpp).
+constexpr const char* kExactFunctionsOnly =
+    "mode exact applies to a whole shader (--mode exact) or to functions (--mode-for FUNCTION=exact, or the pragma "
+    "before a function), not to a variable: its doubles would need both representations";
+
 // Float arithmetic in fp32 and rte; float-float in df64-fast and df64.
 Base arithmetic_base(Mode m) { return m == Mode::Fp32 || m == Mode::Rte ? Base::Float : Base::Double; }
 
@@ -55,8 +60,10 @@ class ModeApplier {
   }
 
   void run() {
-    for (const auto& f : module_.functions)
+    for (const auto& f : module_.functions) {
       if (function_mode(f.get()) == Mode::Df64Fast) ctx_.fast_functions.insert(f.get());
+      if (function_mode(f.get()) == Mode::Exact) ctx_.exact_functions.insert(f.get());
+    }
     ctx_.fast_global_inits = global_ == Mode::Df64Fast;
     if (!any_float_mode()) return;  // all float-float: nothing to retype, output unchanged
 
@@ -150,7 +157,12 @@ class ModeApplier {
                                   spelled + " is not followed by a declaration; it has no effect"});
       return;
     }
-    if (p.mode == Mode::Native || p.mode == Mode::Exact || p.mode == Mode::RteExact) {
+    if (p.mode == Mode::Exact && !function) {
+      error_at(p.line, p.column, kExactFunctionsOnly);
+      return;
+    }
+    if (p.mode == Mode::Exact && !exact_allowed(p.line, p.column)) return;
+    if (p.mode == Mode::Native || p.mode == Mode::RteExact) {
       error_at(p.line, p.column, "mode " + std::string(to_string(p.mode)) + " applies to the whole shader only (--mode " +
                                      std::string(to_string(p.mode)) + "), not to one declaration");
       return;
@@ -167,7 +179,16 @@ class ModeApplier {
   }
 
   void apply_name(const std::string& name, Mode mode) {
-    if (mode == Mode::Native || mode == Mode::Exact || mode == Mode::RteExact) {
+    if (mode == Mode::Exact) {
+      const bool function = std::any_of(module_.functions.begin(), module_.functions.end(),
+                                        [&](const ir::FunctionPtr& f) { return f->name == name; });
+      if (!function) {
+        error_at(0, 0, "--mode-for " + name + "=exact: " + kExactFunctionsOnly);
+        return;
+      }
+      if (!exact_allowed(0, 0)) return;
+    }
+    if (mode == Mode::Native || mode == Mode::RteExact) {
       const std::string m(to_string(mode));
       error_at(0, 0, "--mode-for " + name + "=" + m + ": mode " + m + " applies to the whole shader only (--mode " + m + ")");
       return;
@@ -197,6 +218,16 @@ class ModeApplier {
       error_at(0, 0, "--mode-for " + name + "=" + std::string(to_string(mode)) + ": the shader declares no " +
                          (dot == std::string::npos ? "global variable or function '" + name + "'"
                                                    : "parameter or local variable '" + name + "'"));
+  }
+
+  // Per function, exact needs a float-float shader around it (the conversions at its calls are
+  // between float-float and binary64 words).
+  bool exact_allowed(int line, int column) {
+    const Mode m = ctx_.config.requested_mode;
+    if (m == Mode::Df64 || m == Mode::Df64Fast || m == Mode::Df64Int) return true;
+    error_at(line, column, "mode exact for one function needs the shader in a float-float mode (df64, df64-fast or "
+                           "df64-int), not --mode " + std::string(to_string(m)));
+    return false;
   }
 
   void error_at(int line, int column, const std::string& message) {

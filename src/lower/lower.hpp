@@ -46,6 +46,8 @@ struct Context {
   // uses the cheaper df64-fast rules (rules/fast.glsl) instead of the accurate ones.
   std::set<const ir::Function*> fast_functions;
   bool fast_global_inits = false;
+  // Functions whose mode is exact in a float-float shader (lower/exact_functions.cpp).
+  std::set<const ir::Function*> exact_functions;
   // flatten_io_blocks: each variable made from an in/out block's member → the block's name.
   std::map<const ir::Var*, std::string> flattened_blocks;
   // exact_block_words: each block's members as the manifest lists them, and the GLSL of the

@@ -9,6 +9,7 @@
 #include "frontend/import.hpp"
 #include "ir/check.hpp"
 #include "lower/apply_modes.hpp"
+#include "lower/exact_functions.hpp"
 #include "lower/lints.hpp"
 #include "lower/optimize_df.hpp"
 #include "pipeline/runtime_linker.hpp"
@@ -25,6 +26,7 @@ namespace {
 
 bool always(const Config&) { return true; }
 bool lowers_doubles(const Config& c) { return !c.native(); }
+bool float_float(const Config& c) { return !c.native() && !c.binary64_words(); }
 
 bool parse(State& s) {
   auto& diags = s.result.diagnostics;
@@ -57,6 +59,13 @@ bool import(State& s) {
 bool link_runtime_pass(State& s) {
   LinkedRuntime linked = link_runtime(s.config, s.ctx, s.result.diagnostics);
   if (!linked.ok) return false;
+  if (s.exact) {  // the exact functions' runtime, under its own names, then the conversions
+    LinkedRuntime exact = link_runtime(s.exact->config, *s.exact->ctx, s.result.diagnostics);
+    if (!exact.ok) return false;
+    linked.types += passes::rename_exact_runtime(exact.types);
+    linked.text += passes::rename_exact_runtime(exact.text) + passes::exact_conversions(*s.exact);
+    linked.after_structs += passes::rename_exact_runtime(exact.after_structs);
+  }
   s.print_options.runtime_types = std::move(linked.types);
   s.print_options.runtime = std::move(linked.text);
   s.print_options.after_structs = std::move(linked.after_structs);
@@ -99,11 +108,14 @@ const std::vector<Pass>& pass_table() {
       // On the IR as imported, before any pass rewrites it.
       IR_PASS("lints", "lints", always, (passes::run_lints(s.module, s.source, s.ctx), true)),
       IR_PASS("modes", "modes", lowers_doubles, passes::apply_modes(s.module, s.ctx, s.pragmas)),
+      IR_PASS("exact-functions", "lower", float_float, passes::extract_exact_functions(s.module, s.ctx, s.exact)),
       IR_PASS("out-argument-temporaries", "lower", lowers_doubles, passes::out_argument_temporaries(s.module, s.ctx)),
       IR_PASS("lower-doubles", "lower", lowers_doubles, passes::lower_doubles(s.module, s.ctx)),
       // Rewrites float-float rule calls; binary64 words have none.
       IR_PASS("optimize", "optimize", [](const Config& c) { return c.optimize && !c.binary64_words() && !c.native(); },
               passes::optimize_df(s.module, s.ctx)),
+      IR_PASS("exact-functions-join", "optimize", float_float,
+              !s.exact || passes::join_exact_functions(s.module, s.ctx, *s.exact)),
       IR_PASS("global-inits", "interfaces", always, passes::move_global_initialisers(s.module, s.ctx)),
       IR_PASS("exact-block-words", "interfaces", [](const Config& c) { return c.binary64_words(); },
               passes::exact_block_words(s.module, s.ctx)),

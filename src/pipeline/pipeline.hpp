@@ -3,6 +3,7 @@
 // run() — which can stop after any pass and checks the IR between passes when asked.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "frontend/frontend.hpp"
 #include "frontend/mode_pragmas.hpp"
 #include "ir/ir.hpp"
+#include "lower/exact_functions.hpp"
 #include "lower/lower.hpp"
 #include "pipeline/config.hpp"
 
@@ -31,6 +33,7 @@ struct State {
   std::vector<std::string> user_extensions;  // the shader's #extension lines, carried
   ir::Module module;
   passes::Context ctx;  // the passes' requests of the runtime linker, and their diagnostics
+  std::unique_ptr<passes::ExactPart> exact;  // exact functions of a float-float shader, if any
   emit::PrintOptions print_options;
   emit::PrintResult printed;
 };
