@@ -155,7 +155,6 @@ bool extract_exact_functions(ir::Module& module, Context& ctx, std::unique_ptr<E
   }
   // The same passes as the shader's functions get before lower-doubles, in binary64 words.
   if (!out_argument_temporaries(part->module, *part->ctx) || !lower_doubles(part->module, *part->ctx)) return false;
-  for (const std::string& rule : {"ex_from_ff", "ex_to_ff", "ex_bits", "ex_from_bits"}) part->ctx->use_rule(rule, 1);
   for (auto& f : part->module.functions) rename_exact_ir(*f);
   return !ctx.failed;
 }
@@ -186,7 +185,10 @@ bool join_exact_functions(ir::Module& module, Context& ctx, ExactPart& part) {
       return call("df_from_exact", pair, e);
     });
   }
+  if (part.converted_widths.empty()) return !ctx.failed;  // no call passes a double: no conversion
+  ctx.use_width(1);  // the vectors convert component by component
   for (int w : part.converted_widths) ctx.use_width(w);
+  for (const std::string& rule : {"ex_from_ff", "ex_to_ff", "ex_bits", "ex_from_bits"}) part.ctx->use_rule(rule, 1);
   return !ctx.failed;
 }
 
@@ -208,6 +210,7 @@ std::string rename_exact_runtime(std::string_view text) {
 }
 
 std::string exact_conversions(const ExactPart& part) {
+  if (part.converted_widths.empty()) return "";
   std::string out =
       "\n// The calls of exact functions (docs/modes.md, \"Exact functions\"): a float-float pair to the binary64\n"
       "// nearest hi + lo, and a binary64 value to its nearest pair.\n";
