@@ -227,6 +227,14 @@ double Analysis::rounding(const Expr* e, const Node& n, const Candidate& c) cons
       if (op == "/") return by_mode(5);  // GLSL ES: 2.5 ulp
       return 0;
     }
+    case Expr::Kind::Call: {
+      // An exact function's result, back in float-float code, is its nearest float-float pair
+      // (df_from_exact, docs/modes.md "Exact functions"); its arguments convert exactly.
+      if (exact) return 0;
+      for (const auto& f : module_->functions)
+        if (f->name == e->name && c.mode_of(f.get()) == Mode::Exact) return float_float_error(m, kDf64Repr);
+      return 0;
+    }
     case Expr::Kind::Builtin: {
       const std::string& f = e->name;
       if (f == "abs" || f == "min" || f == "max" || f == "clamp" || f == "sign" || f == "floor" || f == "ceil" ||

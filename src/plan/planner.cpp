@@ -1,6 +1,7 @@
 #include "plan/planner.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -146,12 +147,46 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
   const bool exact_keeps_all = std::all_of(out.outputs.begin(), out.outputs.end(),
                                            [](const OutputRow& r) { return r.estimate_exact <= r.required; });
   const bool exact_target = options.target != Target::Es100;
+  // Before the whole shader: df64 with exact functions (docs/modes.md, "Exact functions"), when the
+  // outputs' promises hold with main in df64. Start from every function but main exact, give back
+  // to df64 each one the promises do not need, and keep the result only if doublet lowers it (an
+  // exact function must not read double globals, ...); else the whole shader goes exact.
+  std::optional<Candidate> mixed_exact;
+  if (!out.feasible && exact_keeps_all && exact_target && options.target != Target::Wgsl) {
+    Candidate mixed = all_df64;
+    for (const ir::Function* f : functions)
+      if (f->name != "main") mixed.function_mode[f] = Mode::Exact;
+    auto keeps_all = [&](const Candidate& c) {
+      return std::all_of(scene.outputs.begin(), scene.outputs.end(),
+                         [&](const auto& o) { return a.error_estimate(o.first, c) <= o.second.abs_error; });
+    };
+    if (!mixed.function_mode.empty() && keeps_all(mixed)) {
+      for (const ir::Function* f : functions) {
+        if (f->name == "main") continue;
+        Candidate c = mixed;
+        c.function_mode.erase(f);
+        if (keeps_all(c)) mixed = c;
+      }
+      Options trial = options;
+      trial.target = Target::Glsl450;  // has every stage: what is tried is the exact functions' limits
+      trial.mode = Mode::Df64;
+      trial.mode_for.clear();
+      for (const auto& [f, m] : mixed.function_mode) trial.mode_for.emplace_back(f->name, m);
+      if (lower(source, trial).ok) {
+        out.feasible = true;
+        mixed_exact = mixed;
+        for (const auto& [name, req] : scene.outputs) base[name] = a.error_estimate(name, mixed);
+        for (const std::string& miss : df64_misses)
+          out.notes.push_back(miss + "; binary64 in the functions the plan makes exact keeps it");
+      }
+    }
+  }
   if (!out.feasible && exact_keeps_all && exact_target) {
     out.feasible = true;
     out.mode = Mode::Exact;
     for (const std::string& miss : df64_misses)
       out.notes.push_back(miss + "; binary64 (mode exact) keeps it: the plan is mode exact for the whole shader");
-  } else {
+  } else if (!mixed_exact) {
     for (const std::string& miss : df64_misses) {
       std::string why = ": everything stays df64";
       if (exact_keeps_all && !exact_target)
@@ -163,9 +198,10 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
 
   // Cheapest first: whole functions in float (fp32, then rte), then df64-fast where no operand
   // can cancel; then, inside df64 functions, each declaration stored as float.
-  Candidate plan = out.mode == Mode::Exact ? all_exact : all_df64;
+  Candidate plan = out.mode == Mode::Exact ? all_exact : mixed_exact ? *mixed_exact : all_df64;
   if (out.feasible && out.mode != Mode::Exact) {
     for (const ir::Function* f : functions) {
+      if (plan.mode_of(f) == Mode::Exact) continue;
       for (Mode m : {Mode::Fp32, Mode::Rte, Mode::Df64Fast}) {
         if (m == Mode::Df64Fast && a.may_cancel(f)) continue;
         Candidate c = plan;
@@ -181,7 +217,7 @@ PlanOutcome make_plan(std::string_view source, const Options& options, const Sce
     for (const ir::Var* v : vars) {
       if (is_interface(v) || v->declared_type.is_array() || v->declared_type.base != ir::Base::Double) continue;
       const ir::Function* f = a.owner(v);
-      if (f && (plan.mode_of(f) == Mode::Fp32 || plan.mode_of(f) == Mode::Rte)) continue;
+      if (f && (plan.mode_of(f) == Mode::Fp32 || plan.mode_of(f) == Mode::Rte || plan.mode_of(f) == Mode::Exact)) continue;
       Candidate c = plan;
       // Every declaration of the same qualified name moves together (mode_for names them so).
       for (const ir::Var* w : vars)

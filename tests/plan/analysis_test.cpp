@@ -190,6 +190,33 @@ void main() { r = x; }
   EXPECT_NE(p.diagnostics[0].message.find("'nope'"), std::string::npos);
 }
 
+// The same overflow inside a function that main calls: df64 with that function exact
+// (docs/modes.md, "Exact functions") keeps the promise, so the plan stays df64 elsewhere; the
+// function's result comes back as its nearest float-float pair, which the estimate counts.
+TEST(PlanAnalysis, AFunctionBeyondFloatRangeAloneBecomesExact) {
+  const std::string shader = R"(#version 450
+uniform double a;
+uniform double b;
+out double r;
+double scaled(double x, double y) { double p = x * y; return p * 1e-40; }
+void main() { r = scaled(a, b) + 1.0lf; }
+)";
+  const std::string scene = R"({"inputs": {"a": {"min": 1e20, "max": 1e25}, "b": {"min": 1e20, "max": 1e25}},
+        "outputs": {"r": {"abs_error": 1e-3}}})";
+  const PlanOutcome p = run(shader, scene);
+  ASSERT_TRUE(p.ok);
+  EXPECT_TRUE(std::isinf(p.outputs[0].estimate_df64));
+  EXPECT_TRUE(p.feasible);
+  EXPECT_EQ(p.mode, Mode::Df64);
+  ASSERT_EQ(p.mode_for.size(), 1u);
+  EXPECT_EQ(p.mode_for[0].first, "scaled");
+  EXPECT_EQ(p.mode_for[0].second, Mode::Exact);
+  // r <= 1e10 + 1 comes back as a float-float pair: its representation error, 2^-48 relative, is
+  // in the estimate (about 3.6e-5), above binary64's own roundings (about 2e-6).
+  EXPECT_GT(p.outputs[0].estimate, 1e-5);
+  EXPECT_LT(p.outputs[0].estimate, 1e-3);
+}
+
 // Values beyond float's range (3.4e38): float-float overflows there, so its estimate is infinite
 // (before, df64 was estimated at 2^-44 relative and chosen: inf at run time), and the plan is mode
 // exact where the target has 32-bit integers.

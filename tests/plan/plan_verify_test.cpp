@@ -93,4 +93,23 @@ TEST(PlanVerify, GravityInSiUnitsPlansExactAndDf64Overflows) {
   EXPECT_NE(r.out.find("EXCEEDED"), std::string::npos) << r.out;
 }
 
+// The same physics in functions: only they pass beyond float's range, so the plan makes them exact
+// and keeps main float-float (docs/modes.md, "Exact functions"); the run keeps the scene's promise
+// within the estimate, and df64 everywhere overflows.
+TEST(PlanVerify, GravityInFunctionsPlansExactFunctionsAndKeepsItsPromise) {
+  const std::string plan = make_plan("gravity_si_functions.comp", "gravity_si_functions.scene.json", "gravity_fn.plan.json");
+  const std::string text = read_file(plan);
+  EXPECT_NE(text.find("\"mode\": \"df64\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"force_of\": \"exact\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"energy_of\": \"exact\""), std::string::npos) << text;
+  const std::string base = "verify " + kScenes + "/gravity_si_functions.comp --target es310 --samples 1024 --scene " +
+                           kScenes + "/gravity_si_functions.scene.json ";
+  CliRun r = run_doublet(base + "--plan " + plan);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find("EXCEEDED"), std::string::npos) << r.out;
+  r = run_doublet(base);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("measured inf"), std::string::npos) << r.out;
+}
+
 }  // namespace
