@@ -1,9 +1,9 @@
 #include "plan/planner.hpp"
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <set>
 #include <string_view>
 #include <nlohmann/json.hpp>
