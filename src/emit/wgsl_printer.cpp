@@ -366,7 +366,7 @@ class WgslPrinter {
     for (size_t i = 0; i < f.params.size(); ++i) {
       const ir::Var& p = *f.params[i];
       out_ << (i ? ", " : "") << ident(p.name) << ": ";
-      if (p.storage == ir::Storage::ParamOut || p.storage == ir::Storage::ParamInOut) {
+      if (ir::is_out_parameter(p.storage)) {
         pointer_params_.insert(&p);
         out_ << "ptr<function, " << type(p.type, p.loc) << ">";
       } else {
@@ -390,7 +390,7 @@ class WgslPrinter {
       // swizzle assignments are such calls too.
       if (const ir::Function* callee = e->kind == Kind::Call ? callee_of(*e) : nullptr)
         for (size_t i = 0; i < e->args.size(); ++i)
-          if (callee->params[i]->storage == ir::Storage::ParamOut || callee->params[i]->storage == ir::Storage::ParamInOut)
+          if (ir::is_out_parameter(callee->params[i]->storage))
             mark(e->args[i]);
       if (assign) mark(e->args[0]);
     });
@@ -481,7 +481,6 @@ class WgslPrinter {
           return;
         }
         indent(depth);
-        if (s->expr->kind == Kind::Call && copy_in_out_call(*s->expr, depth)) return;
         out_ << simple_statement(s->expr) << ";\n";
         return;
       case Stmt::Kind::Decl:
@@ -867,44 +866,6 @@ class WgslPrinter {
     return arg->kind == Kind::Sym && ir::is_function_local(arg->var->storage);
   }
 
-  // f(buffer[i], ...) as a statement, where an out/inout argument is not a local variable: WGSL
-  // pointers to function memory only, so the argument is copied to a local and back (GLSL's own
-  // copy-in/copy-out semantics for out parameters).
-  bool copy_in_out_call(const Expr& e, int depth) {
-    const std::string pad(static_cast<size_t>(depth + 1) * 2, ' ');
-    const ir::Function* callee = callee_of(e);
-    if (!callee) return false;
-    std::vector<size_t> copied;
-    for (size_t i = 0; i < e.args.size(); ++i) {
-      const auto st = callee->params[i]->storage;
-      if ((st == ir::Storage::ParamOut || st == ir::Storage::ParamInOut) && !is_local_root(e.args[i])) copied.push_back(i);
-    }
-    if (copied.empty()) return false;
-    auto rewritten = std::make_shared<Expr>(e);
-    out_ << "{\n";
-    std::vector<std::pair<std::string, ir::ExprPtr>> back;
-    for (size_t i : copied) {
-      if (!ir::is_pure(e.args[i])) {
-        error(e.args[i]->loc, "an out/inout argument with side effects cannot be expressed in WGSL; assign it to a local first");
-        continue;
-      }
-      auto tmp = std::make_shared<ir::Var>();
-      tmp->name = "df_arg" + std::to_string(++temp_counter_);
-      tmp->type = e.args[i]->type;
-      tmp->storage = ir::Storage::Local;
-      out_ << pad << "var " << tmp->name << ": " << type(tmp->type) << " = " << expr(e.args[i]) << ";\n";
-      auto sym = ir::Expr::make(Kind::Sym, tmp->type, e.args[i]->loc);
-      sym->var = tmp;
-      back.emplace_back(lvalue(e.args[i]), sym);
-      rewritten->args[i] = sym;
-    }
-    out_ << pad << call(*rewritten) << ";\n";
-    for (const auto& [target, sym] : back) out_ << pad << target << " = " << sym->var->name << ";\n";
-    indent(depth);
-    out_ << "}\n";
-    return true;
-  }
-
   std::string call(const Expr& e) {
     std::vector<ir::Type> types;
     for (const auto& a : e.args) types.push_back(a->type);
@@ -912,8 +873,7 @@ class WgslPrinter {
     std::string s = function_name(e.name, types) + "(";
     for (size_t i = 0; i < e.args.size(); ++i) {
       s += i ? ", " : "";
-      const bool pointer = callee && (callee->params[i]->storage == ir::Storage::ParamOut ||
-                                      callee->params[i]->storage == ir::Storage::ParamInOut);
+      const bool pointer = callee && ir::is_out_parameter(callee->params[i]->storage);
       if (!pointer) {
         s += expr(e.args[i]);
         continue;

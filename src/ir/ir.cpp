@@ -77,6 +77,10 @@ bool is_assignment_operator(const std::string& op) {
   return !op.empty() && op.back() == '=' && op != "==" && op != "!=" && op != "<=" && op != ">=";
 }
 
+bool is_increment(const Expr& e) {
+  return e.kind == Expr::Kind::Unary && (e.op == "++x" || e.op == "--x" || e.op == "x++" || e.op == "x--");
+}
+
 bool builtin_has_side_effects(const std::string& name) {
   static const char* const kPrefixes[] = {"atomic", "imageAtomic", "imageStore", "memoryBarrier", "EmitVertex",
                                           "EndPrimitive", "subgroupBarrier", "subgroupMemoryBarrier"};

@@ -84,6 +84,9 @@ enum class Storage {
 
 // A function's own variable (a local or a parameter): what no other function can reach but through
 // an out parameter, and what a WGSL pointer argument may point to (function memory).
+// A parameter the callee writes (out or inout): its argument must be an lvalue.
+inline bool is_out_parameter(Storage s) { return s == Storage::ParamOut || s == Storage::ParamInOut; }
+
 inline bool is_function_local(Storage s) {
   return s == Storage::Local || s == Storage::ParamIn || s == Storage::ParamOut || s == Storage::ParamInOut;
 }
@@ -171,6 +174,8 @@ ExprPtr clone(const ExprPtr& e);
 bool is_compound_arithmetic(const std::string& op);
 // "=", "+=", "<<=", ...: every operator ending in '=' except the comparisons.
 bool is_assignment_operator(const std::string& op);
+// ++x, --x, x++, x--.
+bool is_increment(const Expr& e);
 
 struct Stmt;
 using StmtPtr = std::shared_ptr<Stmt>;

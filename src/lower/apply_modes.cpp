@@ -456,7 +456,7 @@ class ModeApplier {
     if (!f) return e;
     for (size_t i = 0; i < e->args.size(); ++i) {
       const ir::Var& p = *f->params[i];
-      bool writes = p.storage == ir::Storage::ParamOut || p.storage == ir::Storage::ParamInOut;
+      bool writes = ir::is_out_parameter(p.storage);
       if (!writes) {
         e->args[i] = convert_to(e->args[i], p.type);
       } else if (is_real(p.type) && e->args[i]->type.base != p.type.base) {

@@ -747,7 +747,7 @@ class BlockWords {
     for (const auto& f : module_.functions) {
       if (f->name != n || f->params.size() != call->args.size()) continue;
       for (size_t i = 0; i < f->params.size(); ++i)
-        out[i] = f->params[i]->storage == ir::Storage::ParamOut || f->params[i]->storage == ir::Storage::ParamInOut;
+        out[i] = ir::is_out_parameter(f->params[i]->storage);
       return out;
     }
     if (auto it = ctx_.helpers.find(n); it != ctx_.helpers.end()) {  // generated: read its parameter list

@@ -10,7 +10,9 @@
 //     with effects, no variable one of them writes is used by the other (a runtime call with an out
 //     parameter counts as writing what is passed to it, a call of the user's as writing all it is
 //     passed), and where one calls a function of the user's the other touches no global. What
-//     encloses the comma (an assignment, a call) takes effect after it: its target counts as read.
+//     encloses the comma (an assignment, a call) takes effect after it, hoisted or not: a call
+//     counts as reading its arguments, the variable an enclosing assignment writes is free to
+//     be read or written by the comma (`v[6] = (t2 = modf(x, t1), v[8] = t1, t2)`).
 // The pass runs on the lowered IR, so the intermediate GLSL the WGSL is printed from has no such
 // comma left. docs/web.md ("The WGSL target") lists what is still refused.
 #include <algorithm>
@@ -26,16 +28,6 @@ namespace {
 
 using ir::Expr;
 using Kind = ir::Expr::Kind;
-
-bool is_increment(const Expr& e) {
-  return e.kind == Kind::Unary && (e.op == "++x" || e.op == "--x" || e.op == "x++" || e.op == "x--");
-}
-
-// A call of doublet's runtime (the df_/ex_ prefixes are reserved): no effect but on the variables
-// passed to its out parameters.
-bool is_runtime_call(const Expr& e) {
-  return e.kind == Kind::Call && (e.name.rfind("df_", 0) == 0 || e.name.rfind("ex_", 0) == 0);
-}
 
 // What a part of a statement reads and writes; `opaque` when it has an effect this pass does not
 // follow (a built-in with effects, a write through an expression). A call of the user's may read and
@@ -81,7 +73,7 @@ void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const
     for (const auto& arg : e->args)
       if (const ir::Var* v = ir::root_variable(arg)) a.writes.insert(v);
   if (e->kind == Kind::Builtin && ir::builtin_has_side_effects(e->name)) a.opaque = true;
-  if ((e->kind == Kind::Binary && ir::is_assignment_operator(e->op)) || is_increment(*e)) {
+  if ((e->kind == Kind::Binary && ir::is_assignment_operator(e->op)) || ir::is_increment(*e)) {
     if (const ir::Var* v = ir::root_variable(e->args[0])) a.writes.insert(v);
     else a.opaque = true;
   }
@@ -161,8 +153,8 @@ class CommaHoister {
     path_to(statement->expr, comma, ancestors);
     collect(statement->expr, comma, ancestors, ctx_, rest);
     if (statement->kind == ir::Stmt::Kind::Decl && statement->var) rest.reads.insert(statement->var.get());
-    return !left.opaque && !rest.opaque && !meet(left.writes, rest.reads) && !meet(left.writes, rest.targets) &&
-           !meet(left.reads, rest.targets) && !meet(left.writes, rest.writes) &&
+    // rest.targets are written after the comma is evaluated, hoisted or not: no conflict.
+    return !left.opaque && !rest.opaque && !meet(left.writes, rest.reads) && !meet(left.writes, rest.writes) &&
            !meet(left.reads, rest.writes) && !(left.calls && rest.touches_globals()) &&
            !(rest.calls && left.touches_globals());
   }

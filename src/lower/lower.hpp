@@ -76,7 +76,13 @@ struct Context {
   // declared with an out/inout parameter (df_assign_* for swizzle and column assignments, ...), or
   // the rules with one (frexp's exponent, modf's whole part: rules/common.glsl, rules/exact.glsl).
   bool runtime_call_writes_arguments(const ir::Expr& call) const;
+  // The storage of each parameter of such a call (ParamIn, ParamOut or ParamInOut, from the
+  // helper's head or the rule's signature); empty for a call of neither.
+  std::vector<ir::Storage> runtime_parameters(const ir::Expr& call) const;
 };
+
+// A call of doublet's runtime: a rule or a generated helper (the df_/ex_ prefixes are reserved).
+bool is_runtime_call(const ir::Expr& e);
 
 // Name of the float-float struct for a vector width: df_double, df_dvec2...
 std::string df_type_name(int width);

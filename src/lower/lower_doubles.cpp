@@ -50,8 +50,38 @@ void Context::add_helper(const std::string& name, const std::string& head, const
 }
 
 bool Context::runtime_call_writes_arguments(const ir::Expr& call) const {
-  if (auto h = helpers.find(call.name); h != helpers.end()) return h->second.head.find("out ") != std::string::npos;
-  return call.name.find("frexp") != std::string::npos || call.name.find("modf") != std::string::npos;
+  const std::vector<ir::Storage> params = runtime_parameters(call);
+  return std::any_of(params.begin(), params.end(), ir::is_out_parameter);
+}
+
+std::vector<ir::Storage> Context::runtime_parameters(const ir::Expr& call) const {
+  auto storage = [](std::string_view qualifier) {
+    return qualifier == "out" ? ir::Storage::ParamOut : qualifier == "inout" ? ir::Storage::ParamInOut : ir::Storage::ParamIn;
+  };
+  std::vector<ir::Storage> params;
+  auto h = helpers.find(call.name);
+  if (h == helpers.end()) {
+    for (const auto& q : rules::RuleLibrary::builtin().parameter_qualifiers(call.name)) params.push_back(storage(q));
+    return params;
+  }
+  // The head's parameter list: "T NAME(inout df_dvec3 v, int i, df_double x) {..."
+  const std::string& head = h->second.head;
+  const size_t open = head.find(call.name + "(");
+  if (open == std::string::npos) return params;
+  const size_t from = open + call.name.size() + 1, close = head.find(')', from);
+  std::string_view list(head.data() + from, close - from);
+  while (!list.empty()) {
+    const size_t comma = list.find(',');
+    std::string_view param = list.substr(0, comma);
+    while (!param.empty() && param.front() == ' ') param.remove_prefix(1);
+    params.push_back(storage(param.substr(0, param.find(' '))));
+    list = comma == std::string_view::npos ? std::string_view() : list.substr(comma + 1);
+  }
+  return params;
+}
+
+bool is_runtime_call(const ir::Expr& e) {
+  return e.kind == ir::Expr::Kind::Call && (e.name.rfind("df_", 0) == 0 || e.name.rfind("ex_", 0) == 0);
 }
 
 std::string df_type_name(int width) { return width == 1 ? "df_double" : "df_dvec" + std::to_string(width); }
@@ -1058,7 +1088,7 @@ class DoubleLowering {
     for (const auto& f : module_.functions) {
       if (f->name != e->name || f->params.size() != e->args.size()) continue;
       for (size_t i = 0; i < f->params.size(); ++i) {
-        bool writes = f->params[i]->storage == ir::Storage::ParamOut || f->params[i]->storage == ir::Storage::ParamInOut;
+        bool writes = ir::is_out_parameter(f->params[i]->storage);
         if (writes && is_df(f->params[i]->type) && e->args[i]->kind == Kind::Construct)
           ctx_.error(e->args[i]->loc, "passing one component of a double vector as an out/inout argument is not "
                                       "supported; use a temporary");

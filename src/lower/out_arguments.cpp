@@ -32,10 +32,6 @@ namespace {
 using ir::Expr;
 using Kind = ir::Expr::Kind;
 
-bool writes(const ir::VarPtr& param) {
-  return param->storage == ir::Storage::ParamOut || param->storage == ir::Storage::ParamInOut;
-}
-
 bool same_type(const ir::Type& a, const ir::Type& b) {
   return a.base == b.base && a.vec == b.vec && a.cols == b.cols && a.array_dims == b.array_dims && a.name == b.name;
 }
@@ -68,7 +64,7 @@ class OutArgumentRewriter {
   // wgsl: after lowering, every out/inout argument that is not a whole local variable (WGSL's
   // pointers point to function memory only: a buffer element, a global, a component); else, before
   // lowering, a component of a double vector or matrix.
-  OutArgumentRewriter(ir::Module& m, bool wgsl) : module_(m), wgsl_(wgsl) {}
+  OutArgumentRewriter(ir::Module& m, const Context& context, bool wgsl) : module_(m), context_(context), wgsl_(wgsl) {}
 
   void run() {
     for (const auto& f : module_.functions) {
@@ -89,6 +85,20 @@ class OutArgumentRewriter {
       if (match) return f.get();
     }
     return nullptr;
+  }
+
+  // The storage of each parameter of `call`: a user function's, or (wgsl, after lowering) a
+  // generated helper's or a rule's (df_assign_component_* on a buffer element, modf's whole part);
+  // empty for anything else.
+  std::vector<ir::Storage> parameters(const ir::ExprPtr& call) const {
+    std::vector<ir::Storage> params;
+    if (const ir::Function* f = callee(call)) {
+      for (const auto& p : f->params) params.push_back(p->storage);
+    } else if (wgsl_) {
+      params = context_.runtime_parameters(*call);
+      if (params.size() != call->args.size()) params.clear();
+    }
+    return params;
   }
 
   // An index computed without effects: constants and variables joined by operators (`i + 4u`).
@@ -120,12 +130,12 @@ class OutArgumentRewriter {
 
   // Evaluating `arg` again after the call reads the same place: every variable in its indices is a
   // constant or a local variable that is not what another out/inout argument of the call writes.
-  static bool stable(const ir::ExprPtr& arg, const ir::ExprPtr& call, const ir::Function& f) {
+  static bool stable(const ir::ExprPtr& arg, const ir::ExprPtr& call, const std::vector<ir::Storage>& params) {
     if (!is_plain_access(arg)) return false;
     bool ok = true;
     std::vector<const ir::Var*> passed;
     for (size_t i = 0; i < call->args.size(); ++i)
-      if (call->args[i] != arg && writes(f.params[i]))
+      if (call->args[i] != arg && ir::is_out_parameter(params[i]))
         if (const ir::Var* v = ir::root_variable(call->args[i])) passed.push_back(v);
     std::function<void(const ir::ExprPtr&)> check = [&](const ir::ExprPtr& e) {
       if (e->kind == Kind::Index) {
@@ -163,15 +173,15 @@ class OutArgumentRewriter {
   };
   bool split(const ir::ExprPtr& call, Parts& parts) {
     if (call->kind != Kind::Call) return false;
-    const ir::Function* f = callee(call);
-    if (!f) return false;
+    const std::vector<ir::Storage> params = parameters(call);
+    if (params.empty()) return false;
     ir::ExprPtr rewritten = ir::make_node(Kind::Call, call->name, call->type, call->args, call->loc);
-    for (size_t i = 0; i < f->params.size(); ++i) {
+    for (size_t i = 0; i < params.size(); ++i) {
       const ir::ExprPtr& arg = call->args[i];
       const bool needs_copy = wgsl_ ? !is_whole_local(arg) : is_double_component(arg);
-      if (!writes(f->params[i]) || !needs_copy || !stable(arg, call, *f)) continue;
+      if (!ir::is_out_parameter(params[i]) || !needs_copy || !stable(arg, call, params)) continue;
       ir::VarPtr tmp = temporary(arg->type, arg->loc);
-      if (f->params[i]->storage == ir::Storage::ParamInOut) parts.before.push_back(assign(sym(tmp, arg->loc), ir::clone(arg)));
+      if (params[i] == ir::Storage::ParamInOut) parts.before.push_back(assign(sym(tmp, arg->loc), ir::clone(arg)));
       parts.after.push_back(assign(ir::clone(arg), sym(tmp, arg->loc)));
       rewritten->args[i] = sym(tmp, arg->loc);
     }
@@ -185,9 +195,13 @@ class OutArgumentRewriter {
       const ir::StmtPtr child = s->body[i];
       if (!child) continue;
       Parts parts;
-      // A call that is a whole statement: the copies become statements around it.
-      if (s->kind == ir::Stmt::Kind::Block && child->kind == ir::Stmt::Kind::Expr && child->expr &&
-          child->expr->kind == Kind::Call && !has_nested_call(child->expr->args) && split(child->expr, parts)) {
+      // A call that is a whole statement: the copies become statements around it (calls nested in
+      // its arguments first, in the comma form).
+      const bool call_statement = s->kind == ir::Stmt::Kind::Block && child->kind == ir::Stmt::Kind::Expr &&
+                                  child->expr && child->expr->kind == Kind::Call;
+      if (call_statement)
+        for (auto& arg : child->expr->args) arg = rewrite_expr(arg);
+      if (call_statement && split(child->expr, parts)) {
         auto block = ir::Stmt::make(ir::Stmt::Kind::Block, child->loc);
         auto statement = [&](const ir::ExprPtr& e) {
           auto st = ir::Stmt::make(ir::Stmt::Kind::Expr, e->loc);
@@ -204,15 +218,6 @@ class OutArgumentRewriter {
     }
     if (s->expr) s->expr = rewrite_expr(s->expr);
     if (s->step) s->step = rewrite_expr(s->step);
-  }
-
-  // A call nested in an argument is left to rewrite_expr (post-order), so the statement form
-  // only handles calls whose arguments hold no such call.
-  bool has_nested_call(const std::vector<ir::ExprPtr>& args) const {
-    bool found = false;
-    for (const auto& a : args)
-      ir::visit(a, [&](const ir::ExprPtr& e) { found |= e->kind == Kind::Call; });
-    return found;
   }
 
   ir::ExprPtr rewrite_expr(const ir::ExprPtr& root) {
@@ -234,6 +239,7 @@ class OutArgumentRewriter {
   }
 
   ir::Module& module_;
+  const Context& context_;
   const bool wgsl_;
   std::vector<ir::StmtPtr> temporaries_;
   int counter_ = 0;
@@ -242,12 +248,12 @@ class OutArgumentRewriter {
 }  // namespace
 
 bool out_argument_temporaries(ir::Module& module, Context& context) {
-  OutArgumentRewriter(module, false).run();
+  OutArgumentRewriter(module, context, false).run();
   return !context.failed;
 }
 
 bool wgsl_out_argument_temporaries(ir::Module& module, Context& context) {
-  OutArgumentRewriter(module, true).run();
+  OutArgumentRewriter(module, context, true).run();
   return !context.failed;
 }
 

@@ -173,10 +173,6 @@ struct PatchOutput {
   std::vector<ir::StmtPtr> copy_in, copy_out;
 };
 
-bool is_increment(const Expr& e) {
-  return e.kind == Kind::Unary && (e.op == "++x" || e.op == "--x" || e.op == "x++" || e.op == "x--");
-}
-
 // Whether `e` may write `v`: an assignment or increment of it (or of a part of it), or an out
 // argument of a call (the shader's functions by their parameters, the runtime's helpers by theirs).
 bool writes_variable(const ExprPtr& e, const ir::Var* v, const ir::Module& module, const Context& ctx) {
@@ -184,21 +180,21 @@ bool writes_variable(const ExprPtr& e, const ir::Var* v, const ir::Module& modul
   bool found = false;
   ir::visit(e, [&](const ExprPtr& x) {
     if (found) return;
-    if ((x->kind == Kind::Binary && ir::is_assignment_operator(x->op)) || is_increment(*x)) {
+    if ((x->kind == Kind::Binary && ir::is_assignment_operator(x->op)) || ir::is_increment(*x)) {
       found = ir::root_variable(x->args[0]) == v;
       return;
     }
     if (x->kind != Kind::Call) return;
-    const bool runtime = x->name.rfind("df_", 0) == 0 || x->name.rfind("ex_", 0) == 0;
+    const std::vector<ir::Storage> runtime = is_runtime_call(*x) ? ctx.runtime_parameters(*x) : std::vector<ir::Storage>();
     for (size_t i = 0; i < x->args.size() && !found; ++i) {
       if (ir::root_variable(x->args[i]) != v) continue;
-      if (runtime) {
-        found = ctx.runtime_call_writes_arguments(*x);
+      if (is_runtime_call(*x)) {
+        found = i < runtime.size() && ir::is_out_parameter(runtime[i]);
         continue;
       }
       for (const auto& f : module.functions)
         if (f->name == x->name && i < f->params.size() &&
-            (f->params[i]->storage == ir::Storage::ParamOut || f->params[i]->storage == ir::Storage::ParamInOut))
+            ir::is_out_parameter(f->params[i]->storage))
           found = true;
     }
   });

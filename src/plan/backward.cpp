@@ -59,7 +59,7 @@ struct Backward {
     // Out parameters receive the callee's final value: their weight flows into the parameter.
     for (size_t i = 0; i < f->params.size(); ++i) {
       const Var* p = f->params[i].get();
-      if (p->storage == ir::Storage::ParamOut || p->storage == ir::Storage::ParamInOut)
+      if (ir::is_out_parameter(p->storage))
         W[p] = assigned_weight(e.args[i], 0, true);
       else
         W[p] = 0;

@@ -252,7 +252,7 @@ struct Forward {
     fn_stack.pop_back();
     for (size_t i = 0; i < f->params.size(); ++i) {
       const Var* p = f->params[i].get();
-      if (p->storage == ir::Storage::ParamOut || p->storage == ir::Storage::ParamInOut) assign(e.args[i], read(p));
+      if (ir::is_out_parameter(p->storage)) assign(e.args[i], read(p));
     }
     --depth;
     return ret.empty() ? top(e.type) : ret;

@@ -672,6 +672,18 @@ const RuleLibrary& RuleLibrary::builtin() {
 
 bool RuleLibrary::has(const RuleRef& ref) const { return impl_ && impl_->find(ref.name, ref.width) != nullptr; }
 
+std::vector<std::string> RuleLibrary::parameter_qualifiers(const std::string& name) const {
+  std::vector<std::string> qualifiers;
+  if (!impl_) return qualifiers;
+  for (const auto& c : impl_->chunks) {
+    if (c.name != name) continue;
+    for (const auto& p : c.params)
+      qualifiers.push_back(p.type.rfind("out ", 0) == 0 ? "out" : p.type.rfind("inout ", 0) == 0 ? "inout" : "");
+    break;
+  }
+  return qualifiers;
+}
+
 std::vector<RuleRef> RuleLibrary::all() const {
   // Names in order of first appearance in the files, each name's widths ascending.
   std::vector<RuleRef> out;

@@ -92,6 +92,9 @@ class RuleLibrary {
                                           std::string* error);
 
   bool has(const RuleRef& ref) const;
+  // Each parameter's qualifier in the rule `name` (any width): "", "out" or "inout"; empty when no
+  // rule has that name.
+  std::vector<std::string> parameter_qualifiers(const std::string& name) const;
   // Emits the transitive closure of `used` (plus the df_* struct types they
   // need), each function exactly once, callees before callers.
   EmitResult emit(const EmitRequest& request) const;

@@ -1,15 +1,20 @@
 #version 450
 // Buffer elements as out/inout arguments, inside an expression and as a statement
 // (tests/verify/webgpu_verify_test.cpp): WGSL's pointers point to function memory only, so they are
-// copied through temporaries.
+// copied through temporaries: the user's functions' parameters and the generated helpers' (a
+// component assignment). A rule's out parameter (modf) is in tests/passes: its float form, which
+// --sabotage drop-lo makes, has no WGSL translation.
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) buffer B { double v[]; };
 layout(std430, binding = 1) buffer R { double r[]; };
 layout(std430, binding = 2) buffer S { double s[]; };
+layout(std430, binding = 3) buffer W { dvec2 w[]; };
 double accumulate(inout double total, double x) { total += x; return total * 2.0lf; }
 void scale(out double y, double x) { y = x * 3.0lf; }
 void main() {
   uint i = gl_GlobalInvocationID.x;
   r[i] = accumulate(v[i], 1.5lf) + 1.0lf;
   scale(s[i], v[i]);
+  w[i].x = r[i] * 0.375lf;                     // generated helpers with an inout parameter
+  w[i][1] = w[i].x * v[i];
 }
