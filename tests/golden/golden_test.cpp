@@ -10,12 +10,17 @@
 //                                          line (first, or after the targets line) sets
 //                                          the precision modes; it is removed too.
 //   expected/<name>.<stage>.<target>.glsl  expected output, one per target
+//   expected/<name>.<stage>.wgsl           the same for target wgsl
+//   expected/<name>.<stage>.<target>.errors  instead, for a case the target refuses: the
+//                                          formatted diagnostics (each file:line:col: error:);
+//                                          create it empty, then update
 //
 // For every case and target (one test each) the harness lowers the case with
 // the library and compares the result with the expected file byte for byte.
-// Independently of the compiler under test, every expected file is compiled
+// Independently of the compiler under test, every expected GLSL file is compiled
 // with glslang for the target's version and profile and must contain no
-// double/dvec/dmat token.
+// double/dvec/dmat token; expected WGSL must have no f64 (WGSL has none): a real
+// WGSL front end, Chromium's WebGPU, compiles it in tests/wgsl/wgsl_browser_test.cpp.
 //
 // DOUBLET_UPDATE_GOLDEN=1 writes the expected files instead of comparing:
 //   DOUBLET_UPDATE_GOLDEN=1 ctest --test-dir build -R '^golden\.'
@@ -59,7 +64,7 @@ const std::vector<std::string> kDefaultTargets = {"es300", "es310", "es320", "gl
 // library, so that validation does not trust the code under test.
 struct TargetInfo {
   doublet::Target target;
-  int version;
+  int version;  // 0: WGSL
   bool es;
 };
 const std::map<std::string, TargetInfo> kTargets = {
@@ -70,6 +75,7 @@ const std::map<std::string, TargetInfo> kTargets = {
     {"glsl330", {doublet::Target::Glsl330, 330, false}},
     {"glsl450", {doublet::Target::Glsl450, 450, false}},
     {"webgl2", {doublet::Target::Webgl2, 300, true}},  // GLSL ES 3.00 text
+    {"wgsl", {doublet::Target::Wgsl, 0, false}},
 };
 
 struct StageInfo {
@@ -91,7 +97,8 @@ struct GoldenParam {
   std::string target;  // as written in the targets line (may be unknown)
 
   std::string case_file() const { return name + "." + stage; }
-  std::string expected_file() const { return name + "." + stage + "." + target + ".glsl"; }
+  std::string expected_file() const { return name + "." + stage + (target == "wgsl" ? ".wgsl" : "." + target + ".glsl"); }
+  std::string errors_file() const { return name + "." + stage + "." + target + ".errors"; }
 };
 
 // Short form for test listings (instead of a byte dump).
@@ -240,6 +247,10 @@ void validate_expected(const std::string& file, const std::string& text, const S
                        const TargetInfo& target, bool keeps_doubles = false) {
   SCOPED_TRACE("validating expected/" + file);
 
+  if (target.version == 0) {  // WGSL
+    EXPECT_EQ(text.find("f64"), std::string::npos) << "WGSL has no f64";
+    return;
+  }
   const std::string code = strip_comments(text);
   static const std::regex doubles(R"(\b(double|dvec[234]|dmat[234](x[234])?)\b)");
   std::smatch m;
@@ -306,6 +317,25 @@ TEST_P(Golden, Matches) {
   doublet::Result result = doublet::lower(case_source_for_lowering(*source), options);
   std::string diagnostics;
   for (const doublet::Diagnostic& d : result.diagnostics) diagnostics += doublet::format_diagnostic(d) + "\n";
+
+  // A case the target refuses: the errors, each positioned, are the expected output (to add one,
+  // create the empty .errors file, then update).
+  const fs::path errors_path = kExpectedDir / p.errors_file();
+  if (std::optional<std::string> errors = read_file(errors_path)) {
+    std::string error_lines;
+    for (const doublet::Diagnostic& d : result.diagnostics)
+      if (d.severity == doublet::Severity::Error) error_lines += doublet::format_diagnostic(d) + "\n";
+    EXPECT_FALSE(result.ok) << "expected the errors of expected/" << p.errors_file() << ", got output";
+    if (update_mode()) {
+      std::ofstream(errors_path, std::ios::binary | std::ios::trunc) << error_lines;
+      return;
+    }
+    EXPECT_EQ(*errors, error_lines);
+    std::istringstream lines(error_lines);
+    for (std::string line; std::getline(lines, line);)
+      EXPECT_TRUE(std::regex_search(line, std::regex(R"(^cases/[^:]+:\d+:\d+: error: )"))) << line;
+    return;
+  }
   EXPECT_TRUE(result.ok) << "doublet::lower failed:\n" << diagnostics;
 
   const fs::path expected_path = kExpectedDir / p.expected_file();
@@ -344,7 +374,7 @@ GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Golden);
 // Expected files must belong to an existing case and one of its targets.
 TEST(GoldenFiles, NoOrphanedExpectedFiles) {
   std::set<std::string> wanted;
-  for (const GoldenParam& p : discover()) wanted.insert(p.expected_file());
+  for (const GoldenParam& p : discover()) wanted.insert({p.expected_file(), p.errors_file()});
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(kExpectedDir, ec)) {
     std::string name = e.path().filename().string();

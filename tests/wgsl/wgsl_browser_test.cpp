@@ -1,6 +1,6 @@
 // --target wgsl in a real WGSL front end and on a real WebGPU: headless Chromium (Dawn, here on
 // SwiftShader). Skipped without a browser unless DOUBLET_REQUIRE_BROWSER=1.
-//  - every golden WGSL file (tests/wgsl/expected) compiles and makes a pipeline, in one page run;
+//  - every golden WGSL file (tests/golden/expected/*.wgsl) compiles and makes a pipeline, in one page run;
 //    a module with an f64 (WGSL has none) is rejected there, so the check can fail;
 //  - the accuracy kernel (cases/arith.comp: + - * / sqrt, (x+y)-x, (x*y+x)/y on exact
 //    float-float inputs from the host) keeps >= 44 bits lowered to WGSL; the same kernel demoted
@@ -24,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using doublet::runner::WebGpuBuffer;
 
-const fs::path kDir = DOUBLET_WGSL_DIR;
+const fs::path kGolden = DOUBLET_GOLDEN_DIR;
 
 std::string read(const fs::path& p) {
   std::ifstream f(p, std::ios::binary);
@@ -36,7 +36,7 @@ std::string read(const fs::path& p) {
 TEST(WgslBrowser, EveryGoldenWgslCompilesInChromiumWebGpu) {
   DOUBLET_REQUIRE_BROWSER_OR_SKIP();
   std::vector<doublet::runner::WgslModule> modules;
-  for (const auto& e : fs::directory_iterator(kDir / "expected")) {
+  for (const auto& e : fs::directory_iterator(kGolden / "expected")) {
     const std::string name = e.path().filename().string();
     if (e.path().extension() != ".wgsl") continue;
     const std::string stem = e.path().stem().string();  // name.stage
@@ -139,7 +139,7 @@ std::vector<double> measured_bits(doublet::Mode mode, doublet::GuardKind guard, 
   options.mode = mode;
   options.guard = guard;
   options.file_name = "arith.comp";
-  doublet::Result lowered = doublet::lower(read(kDir / "cases" / "arith.comp"), options);
+  doublet::Result lowered = doublet::lower(read(kGolden / "cases" / "arith.comp"), options);
   std::string diags;
   for (const auto& d : lowered.diagnostics) diags += doublet::format_diagnostic(d) + "\n";
   if (!lowered.ok) ADD_FAILURE() << diags;

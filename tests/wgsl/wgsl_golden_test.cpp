@@ -1,8 +1,7 @@
-// Golden tests of `--target wgsl`: every tests/wgsl/cases/<name>.<vert|frag|comp> is lowered to
-// WGSL and compared byte for byte with expected/<name>.<stage>.wgsl; a case the target refuses
-// has expected/<name>.<stage>.errors instead (the formatted diagnostics). The expected WGSL is
-// compiled by a real WGSL front end (Chromium's WebGPU) in wgsl_browser_test.cpp.
-//   DOUBLET_UPDATE_GOLDEN=1 ctest --test-dir build -R '^wgsl_golden\.'   rewrites the expected files.
+// `--target wgsl` beyond its golden files (tests/golden/cases with `wgsl` in the targets line,
+// expected in tests/golden/expected/<name>.<stage>.wgsl): the manifest, refusals by position, the
+// std140 layout. The expected WGSL is compiled by a real WGSL front end (Chromium's WebGPU) in
+// wgsl_browser_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,67 +19,27 @@
 namespace {
 namespace fs = std::filesystem;
 
-const fs::path kDir = DOUBLET_WGSL_DIR;
+const fs::path kCases = DOUBLET_GOLDEN_CASES_DIR;
 
-std::vector<std::string> cases() {
+// The golden cases lowered for wgsl: `wgsl` in their targets line.
+std::vector<std::string> wgsl_cases() {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(kDir / "cases")) names.push_back(e.path().filename().string());
+  for (const auto& e : fs::directory_iterator(kCases)) {
+    if (!e.is_regular_file()) continue;
+    const std::string text = doublet::test::file_text(e.path());
+    const std::string first = text.substr(0, text.find('\n'));
+    if (std::regex_search(first, std::regex(R"(^//\s*targets\s*:.*\bwgsl\b)"))) names.push_back(e.path().filename().string());
+  }
   std::sort(names.begin(), names.end());
   return names;
 }
-
-class WgslGolden : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(WgslGolden, Matches) {
-  const std::string file = GetParam();
-  const std::string stage_name = file.substr(file.rfind('.') + 1);
-  doublet::Options options;
-  options.stage = doublet::parse_stage(stage_name);
-  options.target = doublet::Target::Wgsl;
-  options.file_name = "cases/" + file;
-  options.check_ir = true;  // the IR is checked after every pass (src/ir/check.hpp)
-  doublet::Result result = doublet::lower(doublet::test::file_text(kDir / "cases" / file), options);
-  std::string diagnostics;
-  for (const auto& d : result.diagnostics)
-    if (d.severity == doublet::Severity::Error) diagnostics += doublet::format_diagnostic(d) + "\n";
-  const fs::path wgsl = kDir / "expected" / (file + ".wgsl"), errors = kDir / "expected" / (file + ".errors");
-  const bool update = std::getenv("DOUBLET_UPDATE_GOLDEN") && std::string(std::getenv("DOUBLET_UPDATE_GOLDEN")) == "1";
-  if (update) {
-    fs::remove(wgsl);
-    fs::remove(errors);
-    std::ofstream(result.ok ? wgsl : errors, std::ios::binary) << (result.ok ? result.output : diagnostics);
-    return;
-  }
-  if (fs::exists(errors)) {
-    EXPECT_FALSE(result.ok) << "expected errors, got WGSL";
-    EXPECT_EQ(doublet::test::file_text(errors), diagnostics);
-    // Every refusal is positioned: file:line:col: error:
-    std::istringstream lines(diagnostics);
-    for (std::string line; std::getline(lines, line);)
-      EXPECT_TRUE(std::regex_search(line, std::regex(R"(^cases/[^:]+:\d+:\d+: error: )"))) << line;
-    return;
-  }
-  ASSERT_TRUE(result.ok) << diagnostics;
-  EXPECT_EQ(result.manifest.target, "wgsl");
-  EXPECT_EQ(doublet::test::file_text(wgsl), result.output) << "update with DOUBLET_UPDATE_GOLDEN=1 and review the diff";
-  // WGSL has no f64 and doublet never prints a double in it.
-  EXPECT_EQ(result.output.find("f64"), std::string::npos);
-}
-
-INSTANTIATE_TEST_SUITE_P(Cases, WgslGolden, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string s = info.param;
-                           for (char& c : s)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return s;
-                         });
 
 // The loose uniforms (the guard among them) are one uniform buffer whose place the manifest gives.
 TEST(WgslManifest, UniformBufferBindingAndOffsets) {
   doublet::Options options;
   options.stage = doublet::Stage::Compute;
   options.target = doublet::Target::Wgsl;
-  doublet::Result result = doublet::lower(doublet::test::file_text(kDir / "cases" / "add_dvec2.comp"), options);
+  doublet::Result result = doublet::lower(doublet::test::file_text(kCases / "add_dvec2.comp"), options);
   ASSERT_TRUE(result.ok);
   const auto& vars = result.manifest.variables;
   auto it = std::find_if(vars.begin(), vars.end(), [](const auto& v) { return v.name == "df_uniforms"; });
@@ -99,13 +58,13 @@ TEST(WgslManifest, UniformBufferBindingAndOffsets) {
 // text, independently of how the compiler chose them. Split doubles list hi then lo.
 TEST(WgslManifest, EveryInterfaceVariableHasTheLocationsOfTheText) {
   int checked = 0;
-  for (const std::string& file : cases()) {
+  for (const std::string& file : wgsl_cases()) {
     const std::string stage_name = file.substr(file.rfind('.') + 1);
     if (stage_name == "comp") continue;
     doublet::Options options;
     options.stage = doublet::parse_stage(stage_name);
     options.target = doublet::Target::Wgsl;
-    doublet::Result result = doublet::lower(doublet::test::file_text(kDir / "cases" / file), options);
+    doublet::Result result = doublet::lower(doublet::test::file_text(kCases / file), options);
     if (!result.ok) continue;  // a case the target refuses (its .errors golden)
     for (const auto& v : result.manifest.variables) {
       if (v.storage != "in" && v.storage != "out") continue;

@@ -1,4 +1,4 @@
-// targets: es310 es320 glsl450
+// targets: es310 es320 glsl450 wgsl
 #version 310 es
 // Sum of two dvec2 uniforms written to a float buffer.
 layout(local_size_x = 1) in;

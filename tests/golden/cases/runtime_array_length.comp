@@ -1,4 +1,4 @@
-// targets: es310 es320 glsl450
+// targets: es310 es320 glsl450 wgsl
 #version 450
 // .length() of runtime-sized buffer arrays, of floats and of doubles: passed through as .length()
 // (issue 24: it was refused with "unsupported operation" in every mode and target).

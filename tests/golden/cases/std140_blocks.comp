@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // std140 blocks (docs/web.md, "std140 blocks in WGSL"): a uniform block and std140 storage blocks
 // whose arrays of doubles and floats WGSL would pack tighter than std140 (elements padded through

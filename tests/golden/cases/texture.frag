@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // Textures are refused with a position (WGSL separates textures and samplers).
 uniform sampler2D image;

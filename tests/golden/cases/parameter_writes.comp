@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // A parameter written through a swizzle (doublet's df_assign_* helper takes it by pointer) and
 // passed to an out parameter: WGSL parameters are immutable and have no address, so each gets a

@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // Language features WGSL spells differently (INT_MIN, infinity, const arrays, loose uniform
 // arrays, struct locals, while, grouped case labels, shifts, atan2, bool mix).

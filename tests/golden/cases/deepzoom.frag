@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // Deep-zoom Mandelbrot iteration in doubles (the fragment path, gl_FragCoord).
 uniform dvec2 center;

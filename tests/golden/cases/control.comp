@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // Control flow and language features WGSL spells differently: loops, do-while, out parameters,
 // ternaries, ++, mod, compound assignment, swizzle assignment, shared memory and barriers.

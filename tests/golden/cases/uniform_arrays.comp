@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // Loose uniform arrays of scalars and 2-vectors: WGSL pads their elements to vec4 (array_stride
 // 16 in the manifest) and reads each through its first components (src/emit/wgsl_printer.cpp).

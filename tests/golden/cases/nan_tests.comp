@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // isnan/isinf on a double (the runtime's df_isnan/df_isinf) and on a float (a bit-pattern helper,
 // WGSL's isnan being gone) in one shader: WGSL has no overloading, so the two helpers need two

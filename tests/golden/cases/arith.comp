@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // The numeric kernel of the WebGPU accuracy tests: element i applies operation op = i / per_op
 // (0 add, 1 sub, 2 mul, 3 div, 4 sqrt, 5 (x+y)-x, 6 (x*y+x)/y) to doubles stored as float pairs.

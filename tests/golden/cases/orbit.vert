@@ -1,3 +1,4 @@
+// targets: wgsl
 #version 450
 // A vertex shader with a double uniform and attributes split into hi/lo (relative to eye).
 layout(location = 0) in vec3 position_hi;

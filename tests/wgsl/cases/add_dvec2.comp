@@ -1,9 +1,0 @@
-#version 310 es
-// Sum of two dvec2 uniforms written to a float buffer (loose uniforms -> df_uniforms).
-layout(local_size_x = 1) in;
-uniform dvec2 a;
-uniform dvec2 b;
-layout(std430, binding = 0) buffer Result { vec2 result; };
-void main() {
-  result = vec2(a + b);
-}
