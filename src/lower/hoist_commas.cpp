@@ -6,13 +6,15 @@
 //     a branch of ?:, nor in a loop's condition or step (those keep the WGSL printer's refusal);
 //   - the statement is a direct child of a block (an expression statement, a declaration, a
 //     return, the condition of an if or a switch);
-//   - neither its left operands nor the rest of the statement (less the comma) calls a built-in
-//     with effects, no variable one of them writes is used by the other (a runtime call with an out
-//     parameter counts as writing what is passed to it, a call of the user's as writing all it is
-//     passed), and where one calls a function of the user's the other touches no global. What
-//     encloses the comma (an assignment, a call) takes effect after it, hoisted or not: a call
-//     counts as reading its arguments, the variable an enclosing assignment writes is free to
-//     be read or written by the comma (`v[6] = (t2 = modf(x, t1), v[8] = t1, t2)`).
+//   - its left operands and what the statement evaluates before the comma (left to right, as
+//     glslang and WGSL do: the operands left of the comma's at each level, an assignment's target
+//     indices) call no built-in with effects, no variable one of them writes is used by the other
+//     (a runtime call with an out parameter counts as writing what is passed to it, a call of the
+//     user's as writing all it is passed), and where one calls a function of the user's the other
+//     touches no global. What the statement evaluates after the comma stays after its left
+//     operands once they are hoisted, so `s = take(w.z) + take(w.x)` moves both calls' commas, and
+//     the variable an enclosing assignment writes is free to be used by the comma
+//     (`v[6] = (t2 = modf(x, t1), v[8] = t1, t2)`).
 // The pass runs on the lowered IR, so the intermediate GLSL the WGSL is printed from has no such
 // comma left. docs/web.md ("The WGSL target") lists what is still refused.
 #include <algorithm>
@@ -35,7 +37,6 @@ using Kind = ir::Expr::Kind;
 // cannot reach its caller's locals but through its out parameters.
 struct Access {
   std::set<const ir::Var*> reads, writes;
-  std::set<const ir::Var*> targets;  // written by an enclosing assignment, after the comma
   bool opaque = false, calls = false;
   bool touches_globals() const {
     auto global = [](const ir::Var* v) { return !ir::is_function_local(v->storage) && v->storage != ir::Storage::Const; };
@@ -43,27 +44,10 @@ struct Access {
   }
 };
 
-// Collects over `e`, leaving out the subtree `skip`. The effects of `after` (the comma's ancestors:
-// a call, an assignment) happen once their operands, the comma among them, are evaluated: they
-// count as reads only.
-void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const Expr*>& after, const Context& ctx,
-             Access& a) {
-  if (!e || e == skip) return;
+// Collects what `e` reads and writes.
+void collect(const ir::ExprPtr& e, const Context& ctx, Access& a) {
+  if (!e) return;
   if (e->kind == Kind::Sym) a.reads.insert(e->var.get());
-  if (after.count(e.get())) {
-    // An enclosing plain assignment writes its target once the comma is evaluated: the target's
-    // variable is kept apart (indices in it are read as usual).
-    if (e->kind == Kind::Binary && e->op == "=" && e->args[0]->kind != Kind::Sym)
-      if (const ir::Var* v = ir::root_variable(e->args[0])) {
-        a.targets.insert(v);
-        for (ir::ExprPtr part = e->args[0]; part->kind == Kind::Index || part->kind == Kind::Member; part = part->args[0])
-          if (part->kind == Kind::Index) collect(part->args[1], skip, after, ctx, a);
-        collect(e->args[1], skip, after, ctx, a);
-        return;
-      }
-    for (const auto& arg : e->args) collect(arg, skip, after, ctx, a);
-    return;
-  }
   if (e->kind == Kind::Call && !is_runtime_call(*e)) {
     a.calls = true;
     for (const auto& arg : e->args)
@@ -77,16 +61,7 @@ void collect(const ir::ExprPtr& e, const ir::ExprPtr& skip, const std::set<const
     if (const ir::Var* v = ir::root_variable(e->args[0])) a.writes.insert(v);
     else a.opaque = true;
   }
-  for (const auto& arg : e->args) collect(arg, skip, after, ctx, a);
-}
-
-// The nodes from `root` down to `target` (both included); empty when `target` is not under it.
-bool path_to(const ir::ExprPtr& root, const ir::ExprPtr& target, std::set<const Expr*>& path) {
-  if (!root) return false;
-  if (root == target) return path.insert(root.get()), true;
-  for (const auto& arg : root->args)
-    if (path_to(arg, target, path)) return path.insert(root.get()), true;
-  return false;
+  for (const auto& arg : e->args) collect(arg, ctx, a);
 }
 
 bool meet(const std::set<const ir::Var*>& x, const std::set<const ir::Var*>& y) {
@@ -145,18 +120,43 @@ class CommaHoister {
   }
 
   // The conditions of the header comment, for `comma` inside `statement`: its left operands and
-  // the rest of the statement (less the comma) touch no variable one writes and the other uses.
+  // what the statement evaluates before it touch no variable one writes and the other uses.
   bool movable(const ir::StmtPtr& statement, const ir::ExprPtr& comma) const {
-    Access left, rest;
-    for (size_t a = 0; a + 1 < comma->args.size(); ++a) collect(comma->args[a], nullptr, {}, ctx_, left);
-    std::set<const Expr*> ancestors;
-    path_to(statement->expr, comma, ancestors);
-    collect(statement->expr, comma, ancestors, ctx_, rest);
-    if (statement->kind == ir::Stmt::Kind::Decl && statement->var) rest.reads.insert(statement->var.get());
-    // rest.targets are written after the comma is evaluated, hoisted or not: no conflict.
-    return !left.opaque && !rest.opaque && !meet(left.writes, rest.reads) && !meet(left.writes, rest.writes) &&
-           !meet(left.reads, rest.writes) && !(left.calls && rest.touches_globals()) &&
-           !(rest.calls && left.touches_globals());
+    Access left, before;
+    for (size_t a = 0; a + 1 < comma->args.size(); ++a) collect(comma->args[a], ctx_, left);
+    collect_before(statement->expr, comma, before);
+    if (statement->kind == ir::Stmt::Kind::Decl && statement->var) before.reads.insert(statement->var.get());
+    return !left.opaque && !before.opaque && !meet(left.writes, before.reads) && !meet(left.writes, before.writes) &&
+           !meet(left.reads, before.writes) && !(left.calls && before.touches_globals()) &&
+           !(before.calls && left.touches_globals());
+  }
+
+  // What is evaluated before `comma` inside `e`, left to right (glslang's order, and WGSL's): at
+  // each node on the way down, the operands left of the one holding the comma. An assignment's
+  // target counts as evaluated before its value (its indices read, the variable not: it is written
+  // after the comma either way). What follows the comma keeps its place after the comma's left
+  // operands once they are hoisted, so it needs no check.
+  void collect_before(const ir::ExprPtr& e, const ir::ExprPtr& comma, Access& a) const {
+    if (!e || e == comma) return;
+    size_t holder = 0;
+    while (holder < e->args.size() && !contains(e->args[holder], comma)) ++holder;
+    if (holder == e->args.size()) return;
+    const bool assignment = e->kind == Kind::Binary && ir::is_assignment_operator(e->op);
+    for (size_t i = 0; i < holder; ++i) {
+      if (assignment && i == 0 && e->op == "=" && ir::root_variable(e->args[0])) {
+        for (ir::ExprPtr part = e->args[0]; part->kind == Kind::Index || part->kind == Kind::Member; part = part->args[0])
+          if (part->kind == Kind::Index) collect(part->args[1], ctx_, a);
+        continue;
+      }
+      collect(e->args[i], ctx_, a);
+    }
+    collect_before(e->args[holder], comma, a);
+  }
+
+  static bool contains(const ir::ExprPtr& e, const ir::ExprPtr& target) {
+    if (!e) return false;
+    if (e == target) return true;
+    return std::any_of(e->args.begin(), e->args.end(), [&](const ir::ExprPtr& x) { return contains(x, target); });
   }
 
   ir::Module& module_;
