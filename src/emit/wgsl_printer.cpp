@@ -945,6 +945,25 @@ class WgslPrinter {
     return s + ")";
   }
 
+  // modf(x, out whole) and frexp(x, out exponent) on floats: WGSL's return a struct (fract and
+  // whole; fract and exp, GLSL's meanings), so a helper stores the second part through a pointer to
+  // function memory (wgsl-out-arguments gives a buffer element or global a local temporary).
+  std::string split_result_builtin(const Expr& e) {
+    const auto& a = e.args;
+    const std::string t = type(a[0]->type), part_type = type(a[1]->type);
+    const std::string fn = "df_float_" + e.name + (a[0]->type.vec > 1 ? std::to_string(a[0]->type.vec) : std::string());
+    const std::string part = e.name == "modf" ? "whole" : "exp";
+    helpers_[fn] = "fn " + fn + "(x: " + t + ", " + part + ": ptr<function, " + part_type + ">) -> " + t + " {\n  let r = " +
+                   e.name + "(x);\n  *" + part + " = r." + part + ";\n  return r.fract;\n}\n";
+    if (!is_local_root(a[1])) {
+      error(a[1]->loc, e.name + "'s out argument must be a local variable in WGSL (it becomes a pointer to function "
+                       "memory); pass a local and copy it");
+      return "0";
+    }
+    const ir::Var& root = *a[1]->var;
+    return fn + "(" + expr(a[0]) + ", " + (pointer_params_.count(&root) ? ident(root.name) : "&" + expr(a[1])) + ")";
+  }
+
   std::string builtin(const Expr& e) {
     const std::string& n = e.name;
     const auto& a = e.args;
@@ -985,6 +1004,7 @@ class WgslPrinter {
       return type(e.type) + "(" + wgsl + "(" + expr(a[0]) + "))";
     }
     if (n == "umulExtended" && a.size() == 4) return umul_extended(e);
+    if ((n == "modf" || n == "frexp") && a.size() == 2) return split_result_builtin(e);
     if (n == "atan") return a.size() == 2 ? "atan2(" + args_text(a) + ")" : "atan(" + expr(a[0]) + ")";
     if (n == "uintBitsToFloat" || n == "intBitsToFloat") {
       // A constant argument would make this a const-expression, where WGSL rejects an infinite or

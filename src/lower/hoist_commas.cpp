@@ -56,7 +56,13 @@ void collect(const ir::ExprPtr& e, const Context& ctx, Access& a) {
   if (is_runtime_call(*e) && ctx.runtime_call_writes_arguments(*e))
     for (const auto& arg : e->args)
       if (const ir::Var* v = ir::root_variable(arg)) a.writes.insert(v);
-  if (e->kind == Kind::Builtin && ir::builtin_has_side_effects(e->name)) a.opaque = true;
+  const bool writes_second = e->kind == Kind::Builtin && (e->name == "modf" || e->name == "frexp") && e->args.size() == 2;
+  if (writes_second) {
+    if (const ir::Var* v = ir::root_variable(e->args[1])) a.writes.insert(v);
+    else a.opaque = true;
+  } else if (e->kind == Kind::Builtin && ir::builtin_has_side_effects(e->name)) {
+    a.opaque = true;
+  }
   if ((e->kind == Kind::Binary && ir::is_assignment_operator(e->op)) || ir::is_increment(*e)) {
     if (const ir::Var* v = ir::root_variable(e->args[0])) a.writes.insert(v);
     else a.opaque = true;

@@ -92,7 +92,11 @@ class OutArgumentRewriter {
   // empty for anything else.
   std::vector<ir::Storage> parameters(const ir::ExprPtr& call) const {
     std::vector<ir::Storage> params;
-    if (const ir::Function* f = callee(call)) {
+    if (call->kind == Kind::Builtin) {
+      // modf's whole part, frexp's exponent (the float forms; the double ones are rules by now).
+      if (wgsl_ && (call->name == "modf" || call->name == "frexp") && call->args.size() == 2)
+        params = {ir::Storage::ParamIn, ir::Storage::ParamOut};
+    } else if (const ir::Function* f = callee(call)) {
       for (const auto& p : f->params) params.push_back(p->storage);
     } else if (wgsl_) {
       params = context_.runtime_parameters(*call);
@@ -172,10 +176,10 @@ class OutArgumentRewriter {
     ir::ExprPtr call;
   };
   bool split(const ir::ExprPtr& call, Parts& parts) {
-    if (call->kind != Kind::Call) return false;
+    if (call->kind != Kind::Call && call->kind != Kind::Builtin) return false;
     const std::vector<ir::Storage> params = parameters(call);
     if (params.empty()) return false;
-    ir::ExprPtr rewritten = ir::make_node(Kind::Call, call->name, call->type, call->args, call->loc);
+    ir::ExprPtr rewritten = ir::make_node(call->kind, call->name, call->type, call->args, call->loc);
     for (size_t i = 0; i < params.size(); ++i) {
       const ir::ExprPtr& arg = call->args[i];
       const bool needs_copy = wgsl_ ? !is_whole_local(arg) : is_double_component(arg);
