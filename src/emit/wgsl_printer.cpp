@@ -783,7 +783,7 @@ class WgslPrinter {
     const std::string& op = e.op;
     const ir::Type& lt = e.args[0]->type;
     const ir::Type& rt = e.args[1]->type;
-    if (op.size() >= 2 && op.back() == '=' && op != "==" && op != "!=" && op != "<=" && op != ">=") {
+    if (ir::is_assignment_operator(op)) {  // "=" too: WGSL assigns in statements only
       error(e.loc, "an assignment inside an expression cannot be expressed in WGSL; make it a statement of its own");
       return "0";
     }

@@ -148,8 +148,10 @@ class CommaHoister {
     while (holder < e->args.size() && !contains(e->args[holder], comma)) ++holder;
     if (holder == e->args.size()) return;
     const bool assignment = e->kind == Kind::Binary && ir::is_assignment_operator(e->op);
+    // `a[i][f()]`: before the index, the access's own indices are evaluated, no element is read.
+    const bool access = e->kind == Kind::Index && holder == 1 && ir::root_variable(e->args[0]);
     for (size_t i = 0; i < holder; ++i) {
-      if (assignment && i == 0 && e->op == "=" && ir::root_variable(e->args[0])) {
+      if ((access || (assignment && e->op == "=")) && i == 0 && ir::root_variable(e->args[0])) {
         for (ir::ExprPtr part = e->args[0]; part->kind == Kind::Index || part->kind == Kind::Member; part = part->args[0])
           if (part->kind == Kind::Index) collect(part->args[1], ctx_, a);
         continue;

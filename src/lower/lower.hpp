@@ -121,6 +121,9 @@ bool select_structs(ir::Module& module, Context& context);
 // hoist_commas.cpp (--target wgsl): a comma inside an expression becomes statements before it, where
 // that cannot change what the statement computes.
 bool hoist_commas(ir::Module& module, Context& context);
+// wgsl_expression_effects.cpp (--target wgsl): an increment or assignment inside an expression
+// (`r[n++] = x`) becomes a comma over a temporary, then hoist-commas moves it before its statement.
+bool wgsl_expression_effects(ir::Module& module, Context& context);
 // Diagnoses, by construct and target, what the lowered shader needs but the target lacks.
 bool check_target(const ir::Module& module, Context& context);
 

@@ -128,6 +128,8 @@ const std::vector<Pass>& pass_table() {
       IR_PASS("rename-builtins", "interfaces", [](const Config& c) { return !c.facts->overloads_builtin_names; },
               passes::rename_functions_named_like_builtins(s.module, s.ctx)),
       IR_PASS("select-structs", "interfaces", always, passes::select_structs(s.module, s.ctx)),
+      IR_PASS("wgsl-expression-effects", "interfaces", [](const Config& c) { return target::facts(c.output).wgsl; },
+              passes::wgsl_expression_effects(s.module, s.ctx)),
       IR_PASS("wgsl-out-arguments", "interfaces", [](const Config& c) { return target::facts(c.output).wgsl; },
               passes::wgsl_out_argument_temporaries(s.module, s.ctx)),
       IR_PASS("hoist-commas", "interfaces", [](const Config& c) { return target::facts(c.output).wgsl; },

@@ -155,6 +155,25 @@ TEST(WebGpuVerify, BufferElementsAsOutArgumentsKeep44Bits) {
   EXPECT_NE(dropped.out.find("FAIL (< 44.0)"), std::string::npos) << dropped.out;
 }
 
+// Increments and assignments inside expressions (`tmp[n++] = ...`, `tmp[m++] - tmp[m++]`,
+// `(acc = v * 3) + acc`): refused for WGSL before; now temporaries hoisted in GLSL's order. Both
+// operand orders matter to r[].w (3v - 6v, not 6v - 3v). drop-lo shows the check can fail.
+TEST(WebGpuVerify, IncrementsAndAssignmentsInsideExpressionsKeep44Bits) {
+  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
+  const std::string shader = std::string(DOUBLET_VERIFY_SHADERS) + "/webgpu/expression_effects.comp";
+  const CliRun kept = verify(shader + " --min-bits 44 --backend webgpu");
+  ASSERT_EQ(kept.exit_code, 0) << kept.out;
+  int outputs = 0;
+  for (const auto& o : kept.report.at("runs").at(0).at("outputs")) {
+    EXPECT_GE(o.at("min_bits").get<double>(), 44) << o.at("name") << "\n" << kept.out;
+    ++outputs;
+  }
+  EXPECT_EQ(outputs, 6) << kept.out;
+  const CliRun dropped = verify(shader + " --min-bits 44 --backend webgpu --sabotage drop-lo");
+  EXPECT_EQ(dropped.exit_code, 1) << dropped.out;
+  EXPECT_NE(dropped.out.find("FAIL (< 44.0)"), std::string::npos) << dropped.out;
+}
+
 TEST(WebGpuVerify, VertexShaderAndManyDispatchesAreInputErrors) {
   const CliRun vertex = verify(std::string(DOUBLET_VERIFY_SHADERS) + "/pairs.vert --backend webgpu");
   EXPECT_EQ(vertex.exit_code, 2) << vertex.out;

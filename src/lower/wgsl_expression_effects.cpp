@@ -1,0 +1,192 @@
+// wgsl_expression_effects (--target wgsl only): WGSL's `x++` and assignments are statements, never
+// parts of an expression. An increment or an assignment whose value the statement uses
+// (`r[n++] = x`, `v[m++] + v[m++]`, `(acc = a * b) + acc`) becomes a comma over a temporary the
+// pass declares at the top of the function, which evaluates to the same value:
+//
+//   x++      →  (t = x, x = x + 1, t)          ++x     →  (x = x + 1, t = x, t)
+//   a = b    →  (t = b, a = t, t)               a += b  →  (t = a + b, a = t, t)
+//
+// and an index with effects, `x[next(c)]`, becomes `x[(t = next(c), t)]`; then hoist-commas moves
+// those commas before their statement, where it can (its conditions), so that `r[n++] = x` prints
+// as `t = n; n = n + 1; r[t] = x;`. It runs before wgsl-out-arguments,
+// whose copies need the index of a buffer element free of effects (`r[n++] += y` through the
+// compound-assignment helper). Only the operands evaluated whenever the statement is are rewritten
+// (not under the right of && or ||, nor in a branch of ?:, nor in a loop's header): there a
+// comma could not move, and the WGSL printer keeps its refusal naming the increment. The assigned
+// place is written back through the same access, so an access whose indices have effects is left
+// as it is (it has been rewritten first, inner operands before outer ones). Increments of integer
+// and float scalars and vectors only (a double's is a call of the runtime by now); assignments of
+// any type (a float-float pair's too).
+#include <string>
+#include <vector>
+
+#include "ir/walk.hpp"
+#include "lower/lower.hpp"
+
+namespace doublet::passes {
+namespace {
+
+using ir::Expr;
+using ir::ExprPtr;
+using Kind = ir::Expr::Kind;
+
+// What `x = x + 1` can step: integer and float scalars and vectors.
+bool steppable(const ir::Type& t) {
+  return (t.base == ir::Base::Int || t.base == ir::Base::Uint || t.base == ir::Base::Float) && !t.is_array() &&
+         !t.is_matrix();
+}
+
+ExprPtr sym(const ir::VarPtr& v, ir::Loc loc) {
+  auto e = Expr::make(Kind::Sym, v->type, loc);
+  e->var = v;
+  return e;
+}
+
+ExprPtr binary(const std::string& op, const ExprPtr& a, const ExprPtr& b, const ir::Type& type) {
+  auto e = ir::make_node(Kind::Binary, "", type, {a, b}, a->loc);
+  e->op = op;
+  return e;
+}
+
+ExprPtr one_like(const ir::Type& t, ir::Loc loc) {
+  ir::Type scalar = t;
+  scalar.vec = 1;
+  auto c = Expr::make(Kind::Const, scalar, loc);
+  ir::Scalar v;
+  v.base = t.base;
+  v.d = 1.0;
+  v.i = 1;
+  c->values = {v};
+  return c;
+}
+
+// An access whose evaluation has no effect and reads the same place when repeated.
+bool plain_access(const ExprPtr& e) {
+  if (e->kind == Kind::Sym) return true;
+  if (e->kind == Kind::Member) return plain_access(e->args[0]);
+  if (e->kind == Kind::Index) return plain_access(e->args[0]) && ir::is_pure(e->args[1]) && !ir::has_side_effects(e->args[1]);
+  return false;
+}
+
+class EffectRewriter {
+ public:
+  explicit EffectRewriter(ir::Module& m) : module_(m) {}
+
+  void run() {
+    for (const auto& f : module_.functions) {
+      temporaries_.clear();
+      rewrite_block(f->body);
+      auto& body = f->body->body;
+      body.insert(body.begin(), temporaries_.begin(), temporaries_.end());
+    }
+  }
+
+ private:
+  void rewrite_block(const ir::StmtPtr& s) {
+    if (!s) return;
+    for (const auto& child : s->body) rewrite_block(child);
+    if (s->kind != ir::Stmt::Kind::Block) return;
+    for (const auto& statement : s->body) {
+      if (!statement || !statement->expr) continue;
+      const auto k = statement->kind;
+      if (k != ir::Stmt::Kind::Expr && k != ir::Stmt::Kind::Decl && k != ir::Stmt::Kind::Return &&
+          k != ir::Stmt::Kind::If && k != ir::Stmt::Kind::Switch)
+        continue;
+      // An expression statement's own assignment or increment (or a whole-statement comma's
+      // operands) is a statement already: only what is below it is rewritten.
+      ExprPtr& root = statement->expr;
+      const bool statement_level = k == ir::Stmt::Kind::Expr;
+      if (statement_level && root->kind == Kind::Comma) {
+        for (auto& operand : root->args) rewrite_below(operand);
+      } else if (statement_level && is_effect(*root)) {
+        rewrite_below(root);
+      } else {
+        root = rewrite(root);
+      }
+    }
+  }
+
+  static bool is_effect(const Expr& e) {
+    return (e.kind == Kind::Binary && ir::is_assignment_operator(e.op)) || ir::is_increment(e);
+  }
+
+  void rewrite_below(ExprPtr& e) {
+    if (!is_effect(*e)) {
+      e = rewrite(e);
+      return;
+    }
+    for (size_t a = 0; a < unconditional_operands(*e); ++a) e->args[a] = rewrite(e->args[a]);
+  }
+
+  static size_t unconditional_operands(const Expr& e) {
+    if ((e.kind == Kind::Binary && (e.op == "&&" || e.op == "||")) || e.kind == Kind::Ternary) return 1;
+    return e.args.size();
+  }
+
+  // Post-order over the unconditional operands: inner effects first, so an index's increment is a
+  // temporary before its access is judged.
+  ExprPtr rewrite(const ExprPtr& e) {
+    if (!e) return e;
+    if (e->kind == Kind::Comma) {  // its left operands' values are dropped: statements once hoisted
+      for (size_t a = 0; a + 1 < e->args.size(); ++a) rewrite_below(e->args[a]);
+      e->args.back() = rewrite(e->args.back());
+      return e;
+    }
+    for (size_t a = 0; a < unconditional_operands(*e); ++a) e->args[a] = rewrite(e->args[a]);
+    // An index with effects (`x[next(c)] *= y`) is computed once into a temporary, so that the
+    // access can be repeated (wgsl-out-arguments' copy back, a compound assignment).
+    if (e->kind == Kind::Index && e->args[1]->kind != Kind::Comma && ir::has_side_effects(e->args[1])) {
+      const ExprPtr& index = e->args[1];
+      ir::VarPtr t = temporary(index->type, index->loc);
+      e->args[1] = ir::make_node(Kind::Comma, "", index->type,
+                                 {binary("=", sym(t, index->loc), index, index->type), sym(t, index->loc)}, index->loc);
+      return e;
+    }
+    if (!is_effect(*e) || !plain_access(e->args[0]) || e->type.base == ir::Base::Void) return e;
+    if (ir::is_increment(*e) && !steppable(e->type)) return e;
+    const ExprPtr& place = e->args[0];
+    ir::VarPtr t = temporary(e->type, e->loc);
+    std::vector<ExprPtr> sequence;
+    if (ir::is_increment(*e)) {
+      const std::string op = e->op.find("++") != std::string::npos ? "+" : "-";
+      const ExprPtr step = binary("=", ir::clone(place), binary(op, ir::clone(place), one_like(e->type, e->loc), e->type), e->type);
+      if (e->op[0] == 'x') {  // x++: the old value
+        sequence = {binary("=", sym(t, e->loc), ir::clone(place), e->type), step};
+      } else {
+        sequence = {step, binary("=", sym(t, e->loc), ir::clone(place), e->type)};
+      }
+    } else {
+      ExprPtr value = e->args[1];
+      if (e->op != "=") value = binary(e->op.substr(0, e->op.size() - 1), ir::clone(place), value, e->type);
+      sequence = {binary("=", sym(t, e->loc), value, e->type), binary("=", ir::clone(place), sym(t, e->loc), e->type)};
+    }
+    sequence.push_back(sym(t, e->loc));
+    return ir::make_node(Kind::Comma, "", e->type, sequence, e->loc);
+  }
+
+  ir::VarPtr temporary(const ir::Type& type, ir::Loc loc) {
+    auto tmp = std::make_shared<ir::Var>();
+    tmp->name = "df_value" + std::to_string(++counter_);
+    tmp->type = type;
+    tmp->declared_type = type;
+    tmp->storage = ir::Storage::Local;
+    tmp->loc = loc;
+    auto decl = ir::Stmt::make(ir::Stmt::Kind::Decl, loc);
+    decl->var = tmp;
+    temporaries_.push_back(decl);
+    return tmp;
+  }
+
+  ir::Module& module_;
+  std::vector<ir::StmtPtr> temporaries_;
+  int counter_ = 0;
+};
+
+}  // namespace
+
+bool wgsl_expression_effects(ir::Module& module, Context& context) {
+  EffectRewriter(module).run();
+  return hoist_commas(module, context);
+}
+
+}  // namespace doublet::passes
