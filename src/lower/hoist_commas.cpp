@@ -76,6 +76,51 @@ bool meet(const std::set<const ir::Var*>& x, const std::set<const ir::Var*>& y) 
   return false;
 }
 
+bool contains(const ir::ExprPtr& e, const ir::ExprPtr& target) {
+  if (!e) return false;
+  if (e == target) return true;
+  return std::any_of(e->args.begin(), e->args.end(), [&](const ir::ExprPtr& x) { return contains(x, target); });
+}
+
+// What is evaluated before `comma` inside `e`, left to right (glslang's order, and WGSL's): at
+// each node on the way down, the operands left of the one holding the comma. An assignment's
+// target counts as evaluated before its value (its indices read, the variable not: it is written
+// after the comma either way). What follows the comma keeps its place after the comma's left
+// operands once they are hoisted, so it needs no check.
+void collect_before(const ir::ExprPtr& e, const ir::ExprPtr& comma, const Context& ctx, Access& a) {
+  if (!e || e == comma) return;
+  size_t holder = 0;
+  while (holder < e->args.size() && !contains(e->args[holder], comma)) ++holder;
+  if (holder == e->args.size()) return;
+  const bool assignment = e->kind == Kind::Binary && ir::is_assignment_operator(e->op);
+  // `a[i][f()]`: before the index, the access's own indices are evaluated, no element is read.
+  const bool access = e->kind == Kind::Index && holder == 1 && ir::root_variable(e->args[0]);
+  for (size_t i = 0; i < holder; ++i) {
+    if ((access || (assignment && e->op == "=")) && i == 0 && ir::root_variable(e->args[0])) {
+      for (ir::ExprPtr part = e->args[0]; part->kind == Kind::Index || part->kind == Kind::Member; part = part->args[0])
+        if (part->kind == Kind::Index) collect(part->args[1], ctx, a);
+      continue;
+    }
+    collect(e->args[i], ctx, a);
+  }
+  collect_before(e->args[holder], comma, ctx, a);
+}
+
+}  // namespace
+
+bool can_move_before(const ir::StmtPtr& statement, const ir::ExprPtr& part, const std::vector<ir::ExprPtr>& evaluated,
+                     const Context& ctx) {
+  Access left, before;
+  for (const auto& e : evaluated) collect(e, ctx, left);
+  collect_before(statement->expr, part, ctx, before);
+  if (statement->kind == ir::Stmt::Kind::Decl && statement->var) before.reads.insert(statement->var.get());
+  return !left.opaque && !before.opaque && !meet(left.writes, before.reads) && !meet(left.writes, before.writes) &&
+         !meet(left.reads, before.writes) && !(left.calls && before.touches_globals()) &&
+         !(before.calls && left.touches_globals());
+}
+
+namespace {
+
 class CommaHoister {
  public:
   CommaHoister(ir::Module& m, const Context& c) : module_(m), ctx_(c) {}
@@ -125,46 +170,9 @@ class CommaHoister {
     return nullptr;
   }
 
-  // The conditions of the header comment, for `comma` inside `statement`: its left operands and
-  // what the statement evaluates before it touch no variable one writes and the other uses.
   bool movable(const ir::StmtPtr& statement, const ir::ExprPtr& comma) const {
-    Access left, before;
-    for (size_t a = 0; a + 1 < comma->args.size(); ++a) collect(comma->args[a], ctx_, left);
-    collect_before(statement->expr, comma, before);
-    if (statement->kind == ir::Stmt::Kind::Decl && statement->var) before.reads.insert(statement->var.get());
-    return !left.opaque && !before.opaque && !meet(left.writes, before.reads) && !meet(left.writes, before.writes) &&
-           !meet(left.reads, before.writes) && !(left.calls && before.touches_globals()) &&
-           !(before.calls && left.touches_globals());
-  }
-
-  // What is evaluated before `comma` inside `e`, left to right (glslang's order, and WGSL's): at
-  // each node on the way down, the operands left of the one holding the comma. An assignment's
-  // target counts as evaluated before its value (its indices read, the variable not: it is written
-  // after the comma either way). What follows the comma keeps its place after the comma's left
-  // operands once they are hoisted, so it needs no check.
-  void collect_before(const ir::ExprPtr& e, const ir::ExprPtr& comma, Access& a) const {
-    if (!e || e == comma) return;
-    size_t holder = 0;
-    while (holder < e->args.size() && !contains(e->args[holder], comma)) ++holder;
-    if (holder == e->args.size()) return;
-    const bool assignment = e->kind == Kind::Binary && ir::is_assignment_operator(e->op);
-    // `a[i][f()]`: before the index, the access's own indices are evaluated, no element is read.
-    const bool access = e->kind == Kind::Index && holder == 1 && ir::root_variable(e->args[0]);
-    for (size_t i = 0; i < holder; ++i) {
-      if ((access || (assignment && e->op == "=")) && i == 0 && ir::root_variable(e->args[0])) {
-        for (ir::ExprPtr part = e->args[0]; part->kind == Kind::Index || part->kind == Kind::Member; part = part->args[0])
-          if (part->kind == Kind::Index) collect(part->args[1], ctx_, a);
-        continue;
-      }
-      collect(e->args[i], ctx_, a);
-    }
-    collect_before(e->args[holder], comma, a);
-  }
-
-  static bool contains(const ir::ExprPtr& e, const ir::ExprPtr& target) {
-    if (!e) return false;
-    if (e == target) return true;
-    return std::any_of(e->args.begin(), e->args.end(), [&](const ir::ExprPtr& x) { return contains(x, target); });
+    const std::vector<ir::ExprPtr> left(comma->args.begin(), comma->args.end() - 1);
+    return can_move_before(statement, comma, left, ctx_);
   }
 
   ir::Module& module_;

@@ -121,6 +121,11 @@ bool select_structs(ir::Module& module, Context& context);
 // hoist_commas.cpp (--target wgsl): a comma inside an expression becomes statements before it, where
 // that cannot change what the statement computes.
 bool hoist_commas(ir::Module& module, Context& context);
+// Whether `evaluated` (parts of `statement`'s expression, `part` the subexpression holding them) may
+// be evaluated before the statement instead of where `part` stands: the conditions of
+// hoist_commas.cpp, against what the statement evaluates before `part`.
+bool can_move_before(const ir::StmtPtr& statement, const ir::ExprPtr& part, const std::vector<ir::ExprPtr>& evaluated,
+                     const Context& ctx);
 // wgsl_expression_effects.cpp (--target wgsl): an increment or assignment inside an expression
 // (`r[n++] = x`) becomes a comma over a temporary, then hoist-commas moves it before its statement.
 bool wgsl_expression_effects(ir::Module& module, Context& context);

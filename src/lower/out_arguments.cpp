@@ -158,7 +158,8 @@ class OutArgumentRewriter {
 
   ir::VarPtr temporary(const ir::Type& type, ir::Loc loc) {
     auto tmp = std::make_shared<ir::Var>();
-    tmp->name = "df_out" + std::to_string(++counter_);
+    // Its own prefix for --target wgsl: the pass runs again after lowering, in the same functions.
+    tmp->name = (wgsl_ ? "df_arg" : "df_out") + std::to_string(++counter_);
     tmp->type = type;
     tmp->declared_type = type;
     tmp->storage = ir::Storage::Local;

@@ -11,8 +11,11 @@
 // as `t = n; n = n + 1; r[t] = x;`. It runs before wgsl-out-arguments,
 // whose copies need the index of a buffer element free of effects (`r[n++] += y` through the
 // compound-assignment helper). Only the operands evaluated whenever the statement is are rewritten
-// (not under the right of && or ||, nor in a branch of ?:, nor in a loop's header): there a
-// comma could not move, and the WGSL printer keeps its refusal naming the increment. The assigned
+// that way. An operand evaluated only sometimes, with effects (under && or ||, a branch of ?:),
+// makes its whole && / || / ?: statements before the statement, where hoist-commas' conditions
+// allow: `t = a; if (t) { t = b; }`, `if (c) { t = x; } else { t = y; }`, the inner statements
+// rewritten in turn. A for or while condition with effects becomes `if (!(c)) break;` at the top
+// of the body. A loop's step and a do-while's condition keep the WGSL printer's refusal. The assigned
 // place is written back through the same access, so an access whose indices have effects is left
 // as it is (it has been rewritten first, inner operands before outer ones). Increments of integer
 // and float scalars and vectors only (a double's is a call of the runtime by now); assignments of
@@ -70,7 +73,7 @@ bool plain_access(const ExprPtr& e) {
 
 class EffectRewriter {
  public:
-  explicit EffectRewriter(ir::Module& m) : module_(m) {}
+  EffectRewriter(ir::Module& m, const Context& ctx) : module_(m), ctx_(ctx) {}
 
   void run() {
     for (const auto& f : module_.functions) {
@@ -84,14 +87,22 @@ class EffectRewriter {
  private:
   void rewrite_block(const ir::StmtPtr& s) {
     if (!s) return;
+    if (s->kind == ir::Stmt::Kind::Loop) test_inside(*s);
     for (const auto& child : s->body) rewrite_block(child);
     if (s->kind != ir::Stmt::Kind::Block) return;
-    for (const auto& statement : s->body) {
+    for (size_t i = 0; i < s->body.size(); ++i) {
+      const ir::StmtPtr statement = s->body[i];
       if (!statement || !statement->expr) continue;
       const auto k = statement->kind;
       if (k != ir::Stmt::Kind::Expr && k != ir::Stmt::Kind::Decl && k != ir::Stmt::Kind::Return &&
           k != ir::Stmt::Kind::If && k != ir::Stmt::Kind::Switch)
         continue;
+      // A && / || / ?: whose conditional operand has effects: if/else before the statement.
+      while (ExprPtr conditional = find_conditional(statement->expr)) {
+        if (!can_move_before(statement, conditional, {conditional}, ctx_)) break;
+        s->body.insert(s->body.begin() + static_cast<long>(i), as_statements(statement, conditional));
+        ++i;
+      }
       // An expression statement's own assignment or increment (or a whole-statement comma's
       // operands) is a statement already: only what is below it is rewritten.
       ExprPtr& root = statement->expr;
@@ -104,6 +115,82 @@ class EffectRewriter {
         root = rewrite(root);
       }
     }
+  }
+
+  // A for or while loop whose condition has effects tests it at the top of its body instead
+  // (`if (!(cond)) break;`), where it is a statement. `continue` still runs the step, then the
+  // body's test. A do-while's test would follow a `continue` in its body: left as it is.
+  void test_inside(ir::Stmt& loop) {
+    if (!loop.test_first || !loop.expr || !has_effects(loop.expr)) return;
+    auto negated = ir::make_node(Kind::Unary, "", loop.expr->type, {loop.expr}, loop.expr->loc);
+    negated->op = "!";
+    auto test = ir::Stmt::make(ir::Stmt::Kind::If, loop.loc);
+    test->expr = negated;
+    auto leave = ir::Stmt::make(ir::Stmt::Kind::Block, loop.loc);
+    leave->body.push_back(ir::Stmt::make(ir::Stmt::Kind::Break, loop.loc));
+    test->body.push_back(leave);
+    auto body = ir::Stmt::make(ir::Stmt::Kind::Block, loop.loc);
+    body->body = {test, loop.body[1]};
+    loop.body[1] = body;
+    loop.expr = nullptr;
+  }
+
+  // Effects an operand WGSL evaluates only sometimes must not be inside an expression: an
+  // increment, an assignment, a comma, a built-in with effects, a call of the user's, a runtime
+  // call that writes its arguments.
+  bool has_effects(const ExprPtr& e) const {
+    bool found = false;
+    ir::visit(e, [&](const ExprPtr& x) {
+      if (is_effect(*x) || x->kind == Kind::Comma || (x->kind == Kind::Builtin && ir::builtin_has_side_effects(x->name)))
+        found = true;
+      else if (x->kind == Kind::Call)
+        found = found || !is_runtime_call(*x) || ctx_.runtime_call_writes_arguments(*x);
+    });
+    return found;
+  }
+
+  // The first && / || / ?: evaluated whenever `e` is whose conditional operands have effects.
+  ExprPtr find_conditional(const ExprPtr& e) const {
+    if (!e) return nullptr;
+    const bool logical = e->kind == Kind::Binary && (e->op == "&&" || e->op == "||");
+    if ((logical && has_effects(e->args[1])) ||
+        (e->kind == Kind::Ternary && (has_effects(e->args[1]) || has_effects(e->args[2]))))
+      return e;
+    for (size_t a = 0; a < unconditional_operands(*e); ++a)
+      if (ExprPtr c = find_conditional(e->args[a])) return c;
+    return nullptr;
+  }
+
+  // `a && b` → { t = a; if (t) { t = b; } }, `a || b` → { t = a; if (!t) { t = b; } },
+  // `c ? x : y` → { if (c) { t = x; } else { t = y; } }; `conditional` becomes t in `statement`.
+  ir::StmtPtr as_statements(const ir::StmtPtr& statement, const ExprPtr& conditional) {
+    const ir::Loc loc = conditional->loc;
+    ir::VarPtr t = temporary(conditional->type, loc);
+    auto assign_to_t = [&](const ExprPtr& value) {
+      auto block = ir::Stmt::make(ir::Stmt::Kind::Block, loc);
+      auto st = ir::Stmt::make(ir::Stmt::Kind::Expr, loc);
+      st->expr = binary("=", sym(t, loc), value, conditional->type);
+      block->body.push_back(st);
+      return block;
+    };
+    auto result = ir::Stmt::make(ir::Stmt::Kind::Block, loc);
+    auto branch = ir::Stmt::make(ir::Stmt::Kind::If, loc);
+    if (conditional->kind == Kind::Ternary) {
+      branch->expr = conditional->args[0];
+      branch->body = {assign_to_t(conditional->args[1]), assign_to_t(conditional->args[2])};
+    } else {
+      result->body = assign_to_t(conditional->args[0])->body;
+      branch->expr = sym(t, loc);
+      if (conditional->op == "||") {
+        branch->expr = ir::make_node(Kind::Unary, "", conditional->type, {sym(t, loc)}, loc);
+        branch->expr->op = "!";
+      }
+      branch->body = {assign_to_t(conditional->args[1])};
+    }
+    result->body.push_back(branch);
+    statement->expr = ir::rewrite(statement->expr, [&](const ExprPtr& e) { return e == conditional ? sym(t, loc) : nullptr; });
+    rewrite_block(result);
+    return result;
   }
 
   static bool is_effect(const Expr& e) {
@@ -178,6 +265,7 @@ class EffectRewriter {
   }
 
   ir::Module& module_;
+  const Context& ctx_;
   std::vector<ir::StmtPtr> temporaries_;
   int counter_ = 0;
 };
@@ -185,7 +273,7 @@ class EffectRewriter {
 }  // namespace
 
 bool wgsl_expression_effects(ir::Module& module, Context& context) {
-  EffectRewriter(module).run();
+  EffectRewriter(module, context).run();
   return hoist_commas(module, context);
 }
 

@@ -156,11 +156,14 @@ TEST(WebGpuVerify, BufferElementsAsOutArgumentsKeep44Bits) {
 }
 
 // Increments and assignments inside expressions (`tmp[n++] = ...`, `tmp[m++] - tmp[m++]`,
-// `(acc = v * 3) + acc`): refused for WGSL before; now temporaries hoisted in GLSL's order. Both
-// operand orders matter to r[].w (3v - 6v, not 6v - 3v). drop-lo shows the check can fail.
+// `(acc = v * 3) + acc`), under ?: and && and in a loop condition: refused for WGSL before; now
+// temporaries hoisted in GLSL's order, if/else for what is evaluated only sometimes. Both operand
+// orders matter to r[].w (3v - 6v, not 6v - 3v); u[] is 18 v or 30 v only if each branch and
+// test ran as in GLSL. drop-lo shows the check can fail.
 TEST(WebGpuVerify, IncrementsAndAssignmentsInsideExpressionsKeep44Bits) {
   DOUBLET_REQUIRE_BROWSER_OR_SKIP();
-  const std::string shader = std::string(DOUBLET_VERIFY_SHADERS) + "/webgpu/expression_effects.comp";
+  // Both signs of v: both branches of each ?: and loop test.
+  const std::string shader = std::string(DOUBLET_VERIFY_SHADERS) + "/webgpu/expression_effects.comp --range v=-4:4";
   const CliRun kept = verify(shader + " --min-bits 44 --backend webgpu");
   ASSERT_EQ(kept.exit_code, 0) << kept.out;
   int outputs = 0;
@@ -168,7 +171,7 @@ TEST(WebGpuVerify, IncrementsAndAssignmentsInsideExpressionsKeep44Bits) {
     EXPECT_GE(o.at("min_bits").get<double>(), 44) << o.at("name") << "\n" << kept.out;
     ++outputs;
   }
-  EXPECT_EQ(outputs, 6) << kept.out;
+  EXPECT_EQ(outputs, 7) << kept.out;
   const CliRun dropped = verify(shader + " --min-bits 44 --backend webgpu --sabotage drop-lo");
   EXPECT_EQ(dropped.exit_code, 1) << dropped.out;
   EXPECT_NE(dropped.out.find("FAIL (< 44.0)"), std::string::npos) << dropped.out;

@@ -119,8 +119,8 @@ std::vector<doublet::Diagnostic> wgsl_errors(const std::string& body) {
 
 TEST(WgslRefusals, AreErrorsWithPositions) {
   const std::pair<const char*, const char*> cases[] = {
-      // Under &&: evaluated only sometimes, so wgsl-expression-effects cannot move it (v[i++] lowers).
-      {"int i = 0; bool b = v[0] > 0.0 && i++ > 0; v[1] = float(b);", "'x++' inside an expression"},
+      // In a loop's step (v[i++] = 1.0 as a statement, or under &&, lowers).
+      {"for (int i = 0; i < 2; v[i++] = 1.0) {}", "'x++' inside an expression"},
       {"S s = S(1.0lf); S t = s; v[0] = s == t ? 1.0 : 0.0;", "comparing structs"},
       {"int i = int(v[0]); switch (i) { case 0: v[1] = 1.0; case 1: v[2] = 2.0; break; }", "falls through"},
   };

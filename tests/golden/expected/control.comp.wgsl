@@ -180,14 +180,14 @@ fn df_main() {
   { let df_swz1 = vec2<f32>(hi, count); v.x = df_swz1.x; v.z = df_swz1.y; };
   var m: f32 = df_mod_float_float(v[0i], 3.0f);
   {
-    var df_out1: df_dvec2 = df_block_Data.acc[i];
-    _ = df_assign_component_dvec2(&df_out1, 0i, s);
-    df_block_Data.acc[i] = df_out1;
+    var df_arg1: df_dvec2 = df_block_Data.acc[i];
+    _ = df_assign_component_dvec2(&df_arg1, 0i, s);
+    df_block_Data.acc[i] = df_arg1;
   }
   {
-    var df_out2: df_dvec2 = df_block_Data.acc[i];
-    _ = df_assign_component_dvec2(&df_out2, 1i, df_select_df_double(df_mul_pow2(s, 2.0f), df_from_float(m), (i > 3u)));
-    df_block_Data.acc[i] = df_out2;
+    var df_arg2: df_dvec2 = df_block_Data.acc[i];
+    _ = df_assign_component_dvec2(&df_arg2, 1i, df_select_df_double(df_mul_pow2(s, 2.0f), df_from_float(m), (i > 3u)));
+    df_block_Data.acc[i] = df_arg2;
   }
   df_block_Data.f[i] = ((f32(steps((i32(i) + 3i))) + v[2i]) + select(0.0f, 1.0f, df_float_isnan(m)));
 }

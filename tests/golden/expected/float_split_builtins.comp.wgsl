@@ -62,16 +62,16 @@ fn df_mul_pow2(a: df_double, p: f32) -> df_double {
 }
 
 fn df_main() {
-  var df_out1: f32;
-  var df_out3: i32;
+  var df_arg1: f32;
+  var df_arg3: i32;
   var i: u32 = df_GlobalInvocationID[0i];
   var x: f32 = (df_to_float(df_block_B.v[i]) * 7.25f);
-  var df_out2: f32 = df_float_modf(x, &df_out1);
-  df_block_F.whole[i] = df_out1;
-  var fr: f32 = df_out2;
-  var df_out4: f32 = df_float_frexp((x * 3.0f), &df_out3);
-  df_block_E.ex[i] = df_out3;
-  df_block_R.r[i] = vec2<f32>((fr + df_out4), df_to_float(df_mul_pow2(df_block_B.v[i], 2.0f)));
+  var df_arg2: f32 = df_float_modf(x, &df_arg1);
+  df_block_F.whole[i] = df_arg1;
+  var fr: f32 = df_arg2;
+  var df_arg4: f32 = df_float_frexp((x * 3.0f), &df_arg3);
+  df_block_E.ex[i] = df_arg3;
+  df_block_R.r[i] = vec2<f32>((fr + df_arg4), df_to_float(df_mul_pow2(df_block_B.v[i], 2.0f)));
 }
 
 var<private> df_GlobalInvocationID: vec3<u32>;

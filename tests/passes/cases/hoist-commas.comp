@@ -1,8 +1,8 @@
 // target: wgsl
 #version 450
-// WGSL has no comma operator: the first comma moves before its statement; the second stays (it is
-// under &&, evaluated only sometimes), and the printer refuses it later. The two calls of take()
-// (a global as an inout argument: two commas) move in their order.
+// WGSL has no comma operator: the first comma moves before its statement; the second, under &&
+// (evaluated only sometimes), is an if by then (wgsl-expression-effects) and moves inside it. The
+// two calls of take() (a global as an inout argument: two commas) move in their order.
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) buffer B { double x; double y; float f; bool ok; };
 double t;
