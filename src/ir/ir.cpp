@@ -81,6 +81,11 @@ bool is_increment(const Expr& e) {
   return e.kind == Expr::Kind::Unary && (e.op == "++x" || e.op == "--x" || e.op == "x++" || e.op == "x--");
 }
 
+size_t unconditional_operands(const Expr& e) {
+  if ((e.kind == Expr::Kind::Binary && (e.op == "&&" || e.op == "||")) || e.kind == Expr::Kind::Ternary) return 1;
+  return e.args.size();
+}
+
 bool builtin_has_side_effects(const std::string& name) {
   static const char* const kPrefixes[] = {"atomic", "imageAtomic", "imageStore", "memoryBarrier", "EmitVertex",
                                           "EndPrimitive", "subgroupBarrier", "subgroupMemoryBarrier"};

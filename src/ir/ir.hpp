@@ -176,6 +176,9 @@ bool is_compound_arithmetic(const std::string& op);
 bool is_assignment_operator(const std::string& op);
 // ++x, --x, x++, x--.
 bool is_increment(const Expr& e);
+// How many of e's first operands are evaluated whenever e is: 1 for &&, || and ?: (the others
+// only sometimes), all of them otherwise.
+size_t unconditional_operands(const Expr& e);
 
 struct Stmt;
 using StmtPtr = std::shared_ptr<Stmt>;

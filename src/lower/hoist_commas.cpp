@@ -163,9 +163,7 @@ class CommaHoister {
   static ir::ExprPtr find_comma(const ir::ExprPtr& e, bool skip_self) {
     if (!e) return nullptr;
     if (e->kind == Kind::Comma && !skip_self) return e;
-    size_t operands = e->args.size();
-    if ((e->kind == Kind::Binary && (e->op == "&&" || e->op == "||")) || e->kind == Kind::Ternary) operands = 1;
-    for (size_t a = 0; a < operands; ++a)
+    for (size_t a = 0; a < ir::unconditional_operands(*e); ++a)
       if (ir::ExprPtr c = find_comma(e->args[a], false)) return c;
     return nullptr;
   }

@@ -8,6 +8,7 @@
 // Double matrices: matrix_helpers.hpp; block layouts for the manifest: block_layout.hpp.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -83,6 +84,15 @@ struct Context {
 
 // A call of doublet's runtime: a rule or a generated helper (the df_/ex_ prefixes are reserved).
 bool is_runtime_call(const ir::Expr& e);
+
+// For passes that rewrite each function's body and need temporaries: `rewrite` runs on every
+// function's body with an empty list; the declarations it appended (declare_temporary) go to the
+// top of that function.
+void rewrite_functions_with_temporaries(ir::Module& module, std::vector<ir::StmtPtr>& declarations,
+                                        const std::function<void(const ir::StmtPtr& body)>& rewrite);
+// A local named `name`, uninitialised, its declaration appended to `declarations`.
+ir::VarPtr declare_temporary(const std::string& name, const ir::Type& type, ir::Loc loc,
+                             std::vector<ir::StmtPtr>& declarations);
 
 // Name of the float-float struct for a vector width: df_double, df_dvec2...
 std::string df_type_name(int width);

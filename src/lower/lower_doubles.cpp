@@ -84,6 +84,30 @@ bool is_runtime_call(const ir::Expr& e) {
   return e.kind == ir::Expr::Kind::Call && (e.name.rfind("df_", 0) == 0 || e.name.rfind("ex_", 0) == 0);
 }
 
+void rewrite_functions_with_temporaries(ir::Module& module, std::vector<ir::StmtPtr>& declarations,
+                                        const std::function<void(const ir::StmtPtr& body)>& rewrite) {
+  for (const auto& f : module.functions) {
+    declarations.clear();
+    rewrite(f->body);
+    auto& body = f->body->body;
+    body.insert(body.begin(), declarations.begin(), declarations.end());
+  }
+}
+
+ir::VarPtr declare_temporary(const std::string& name, const ir::Type& type, ir::Loc loc,
+                             std::vector<ir::StmtPtr>& declarations) {
+  auto tmp = std::make_shared<ir::Var>();
+  tmp->name = name;
+  tmp->type = type;
+  tmp->declared_type = type;
+  tmp->storage = ir::Storage::Local;
+  tmp->loc = loc;
+  auto decl = ir::Stmt::make(ir::Stmt::Kind::Decl, loc);
+  decl->var = tmp;
+  declarations.push_back(decl);
+  return tmp;
+}
+
 std::string df_type_name(int width) { return width == 1 ? "df_double" : "df_dvec" + std::to_string(width); }
 
 ir::Type df_type(int width) {

@@ -15,8 +15,10 @@
 // Others keep the lowering's diagnostic ("use a temporary").
 //
 // For --target wgsl the same rewrite runs again after lowering on every out/inout argument that is
-// not a whole local variable (`f(buf[i])`, `f(g)` with g a global): WGSL passes them as pointers,
-// which may point to function memory only. The comma form is then moved before its statement by
+// not a whole local variable (`f(buf[i])`, `f(g)` with g a global), of a user's function, a
+// generated helper (its head), a rule (its signature) or float modf/frexp: WGSL passes them as
+// pointers, which may point to function memory only. Its temporaries are df_argN (df_outN are the
+// first run's, in the same functions). The comma form is then moved before its statement by
 // hoist-commas where it can be; what stays keeps the WGSL printer's refusal.
 #include <algorithm>
 #include <functional>
@@ -67,12 +69,7 @@ class OutArgumentRewriter {
   OutArgumentRewriter(ir::Module& m, const Context& context, bool wgsl) : module_(m), context_(context), wgsl_(wgsl) {}
 
   void run() {
-    for (const auto& f : module_.functions) {
-      temporaries_.clear();
-      rewrite_block(f->body);
-      auto& body = f->body->body;
-      body.insert(body.begin(), temporaries_.begin(), temporaries_.end());
-    }
+    rewrite_functions_with_temporaries(module_, temporaries_, [&](const ir::StmtPtr& body) { rewrite_block(body); });
   }
 
  private:
@@ -157,17 +154,8 @@ class OutArgumentRewriter {
   }
 
   ir::VarPtr temporary(const ir::Type& type, ir::Loc loc) {
-    auto tmp = std::make_shared<ir::Var>();
     // Its own prefix for --target wgsl: the pass runs again after lowering, in the same functions.
-    tmp->name = (wgsl_ ? "df_arg" : "df_out") + std::to_string(++counter_);
-    tmp->type = type;
-    tmp->declared_type = type;
-    tmp->storage = ir::Storage::Local;
-    tmp->loc = loc;
-    auto decl = ir::Stmt::make(ir::Stmt::Kind::Decl, loc);
-    decl->var = tmp;
-    temporaries_.push_back(decl);
-    return tmp;
+    return declare_temporary((wgsl_ ? "df_arg" : "df_out") + std::to_string(++counter_), type, loc, temporaries_);
   }
 
   // The copy-in assignments, the call on the temporaries and the copy-out assignments; empty when

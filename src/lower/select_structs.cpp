@@ -86,12 +86,7 @@ class StructSelectRewriter {
   void run() {
     for (size_t i = 0; i < module_.globals.size(); ++i)
       if (module_.global_inits[i]) module_.global_inits[i] = rewrite_global(module_.global_inits[i]);
-    for (const auto& f : module_.functions) {
-      temporaries_.clear();
-      rewrite_block(f->body);
-      auto& body = f->body->body;
-      body.insert(body.begin(), temporaries_.begin(), temporaries_.end());
-    }
+    rewrite_functions_with_temporaries(module_, temporaries_, [&](const ir::StmtPtr& body) { rewrite_block(body); });
   }
 
  private:
@@ -180,15 +175,7 @@ class StructSelectRewriter {
                                "use if/else");
         return nullptr;
       }
-      auto tmp = std::make_shared<ir::Var>();
-      tmp->name = "df_select" + std::to_string(++counter_);
-      tmp->type = e->type;
-      tmp->declared_type = e->type;
-      tmp->storage = ir::Storage::Local;
-      tmp->loc = e->loc;
-      auto decl = ir::Stmt::make(ir::Stmt::Kind::Decl, e->loc);
-      decl->var = tmp;
-      temporaries_.push_back(decl);
+      ir::VarPtr tmp = declare_temporary("df_select" + std::to_string(++counter_), e->type, e->loc, temporaries_);
       auto chosen = [&](const ir::ExprPtr& operand) {
         return ir::make_node(Kind::Comma, "", ir::scalar_type(ir::Base::Bool), {assign(tmp, operand), bool_true(e->loc)},
                              e->loc);

@@ -76,12 +76,7 @@ class EffectRewriter {
   EffectRewriter(ir::Module& m, const Context& ctx) : module_(m), ctx_(ctx) {}
 
   void run() {
-    for (const auto& f : module_.functions) {
-      temporaries_.clear();
-      rewrite_block(f->body);
-      auto& body = f->body->body;
-      body.insert(body.begin(), temporaries_.begin(), temporaries_.end());
-    }
+    rewrite_functions_with_temporaries(module_, temporaries_, [&](const ir::StmtPtr& body) { rewrite_block(body); });
   }
 
  private:
@@ -156,7 +151,7 @@ class EffectRewriter {
     if ((logical && has_effects(e->args[1])) ||
         (e->kind == Kind::Ternary && (has_effects(e->args[1]) || has_effects(e->args[2]))))
       return e;
-    for (size_t a = 0; a < unconditional_operands(*e); ++a)
+    for (size_t a = 0; a < ir::unconditional_operands(*e); ++a)
       if (ExprPtr c = find_conditional(e->args[a])) return c;
     return nullptr;
   }
@@ -202,13 +197,9 @@ class EffectRewriter {
       e = rewrite(e);
       return;
     }
-    for (size_t a = 0; a < unconditional_operands(*e); ++a) e->args[a] = rewrite(e->args[a]);
+    for (size_t a = 0; a < ir::unconditional_operands(*e); ++a) e->args[a] = rewrite(e->args[a]);
   }
 
-  static size_t unconditional_operands(const Expr& e) {
-    if ((e.kind == Kind::Binary && (e.op == "&&" || e.op == "||")) || e.kind == Kind::Ternary) return 1;
-    return e.args.size();
-  }
 
   // Post-order over the unconditional operands: inner effects first, so an index's increment is a
   // temporary before its access is judged.
@@ -219,7 +210,7 @@ class EffectRewriter {
       e->args.back() = rewrite(e->args.back());
       return e;
     }
-    for (size_t a = 0; a < unconditional_operands(*e); ++a) e->args[a] = rewrite(e->args[a]);
+    for (size_t a = 0; a < ir::unconditional_operands(*e); ++a) e->args[a] = rewrite(e->args[a]);
     // An index with effects (`x[next(c)] *= y`) is computed once into a temporary, so that the
     // access can be repeated (wgsl-out-arguments' copy back, a compound assignment).
     if (e->kind == Kind::Index && e->args[1]->kind != Kind::Comma && ir::has_side_effects(e->args[1])) {
@@ -252,16 +243,7 @@ class EffectRewriter {
   }
 
   ir::VarPtr temporary(const ir::Type& type, ir::Loc loc) {
-    auto tmp = std::make_shared<ir::Var>();
-    tmp->name = "df_value" + std::to_string(++counter_);
-    tmp->type = type;
-    tmp->declared_type = type;
-    tmp->storage = ir::Storage::Local;
-    tmp->loc = loc;
-    auto decl = ir::Stmt::make(ir::Stmt::Kind::Decl, loc);
-    decl->var = tmp;
-    temporaries_.push_back(decl);
-    return tmp;
+    return declare_temporary("df_value" + std::to_string(++counter_), type, loc, temporaries_);
   }
 
   ir::Module& module_;
