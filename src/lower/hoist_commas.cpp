@@ -136,11 +136,8 @@ class CommaHoister {
     if (s->kind != ir::Stmt::Kind::Block) return;
     for (size_t i = 0; i < s->body.size(); ++i) {
       const ir::StmtPtr statement = s->body[i];
-      if (!statement || !statement->expr) continue;
+      if (!has_leading_expression(statement)) continue;
       const auto k = statement->kind;
-      if (k != ir::Stmt::Kind::Expr && k != ir::Stmt::Kind::Decl && k != ir::Stmt::Kind::Return &&
-          k != ir::Stmt::Kind::If && k != ir::Stmt::Kind::Switch)
-        continue;
       // The printer writes a whole-statement comma as statements already.
       const bool whole_is_comma = k == ir::Stmt::Kind::Expr && statement->expr->kind == Kind::Comma;
       while (ir::ExprPtr comma = find_comma(statement->expr, whole_is_comma)) {

@@ -90,6 +90,10 @@ bool is_runtime_call(const ir::Expr& e);
 // top of that function.
 void rewrite_functions_with_temporaries(ir::Module& module, std::vector<ir::StmtPtr>& declarations,
                                         const std::function<void(const ir::StmtPtr& body)>& rewrite);
+// A statement whose expression is evaluated once, before anything else of it: an expression
+// statement, a declaration's initialiser, a return's value, an if's or a switch's condition (what
+// hoist-commas and wgsl-expression-effects may move statements before).
+bool has_leading_expression(const ir::StmtPtr& s);
 // A local named `name`, uninitialised, its declaration appended to `declarations`.
 ir::VarPtr declare_temporary(const std::string& name, const ir::Type& type, ir::Loc loc,
                              std::vector<ir::StmtPtr>& declarations);

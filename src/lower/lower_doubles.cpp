@@ -94,6 +94,13 @@ void rewrite_functions_with_temporaries(ir::Module& module, std::vector<ir::Stmt
   }
 }
 
+bool has_leading_expression(const ir::StmtPtr& s) {
+  if (!s || !s->expr) return false;
+  const auto k = s->kind;
+  return k == ir::Stmt::Kind::Expr || k == ir::Stmt::Kind::Decl || k == ir::Stmt::Kind::Return ||
+         k == ir::Stmt::Kind::If || k == ir::Stmt::Kind::Switch;
+}
+
 ir::VarPtr declare_temporary(const std::string& name, const ir::Type& type, ir::Loc loc,
                              std::vector<ir::StmtPtr>& declarations) {
   auto tmp = std::make_shared<ir::Var>();

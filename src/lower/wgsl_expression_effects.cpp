@@ -87,11 +87,8 @@ class EffectRewriter {
     if (s->kind != ir::Stmt::Kind::Block) return;
     for (size_t i = 0; i < s->body.size(); ++i) {
       const ir::StmtPtr statement = s->body[i];
-      if (!statement || !statement->expr) continue;
+      if (!has_leading_expression(statement)) continue;
       const auto k = statement->kind;
-      if (k != ir::Stmt::Kind::Expr && k != ir::Stmt::Kind::Decl && k != ir::Stmt::Kind::Return &&
-          k != ir::Stmt::Kind::If && k != ir::Stmt::Kind::Switch)
-        continue;
       // A && / || / ?: whose conditional operand has effects: if/else before the statement.
       while (ExprPtr conditional = find_conditional(statement->expr)) {
         if (!can_move_before(statement, conditional, {conditional}, ctx_)) break;
