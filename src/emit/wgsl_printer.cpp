@@ -1004,7 +1004,7 @@ class WgslPrinter {
       return type(e.type) + "(" + wgsl + "(" + expr(a[0]) + "))";
     }
     if (n == "umulExtended" && a.size() == 4) return umul_extended(e);
-    if ((n == "modf" || n == "frexp") && a.size() == 2) return split_result_builtin(e);
+    if (ir::builtin_writes_second_argument(e)) return split_result_builtin(e);
     if (n == "atan") return a.size() == 2 ? "atan2(" + args_text(a) + ")" : "atan(" + expr(a[0]) + ")";
     if (n == "uintBitsToFloat" || n == "intBitsToFloat") {
       // A constant argument would make this a const-expression, where WGSL rejects an infinite or

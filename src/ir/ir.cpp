@@ -81,6 +81,10 @@ bool is_increment(const Expr& e) {
   return e.kind == Expr::Kind::Unary && (e.op == "++x" || e.op == "--x" || e.op == "x++" || e.op == "x--");
 }
 
+bool builtin_writes_second_argument(const Expr& e) {
+  return e.kind == Expr::Kind::Builtin && (e.name == "modf" || e.name == "frexp") && e.args.size() == 2;
+}
+
 size_t unconditional_operands(const Expr& e) {
   if ((e.kind == Expr::Kind::Binary && (e.op == "&&" || e.op == "||")) || e.kind == Expr::Kind::Ternary) return 1;
   return e.args.size();

@@ -176,6 +176,8 @@ bool is_compound_arithmetic(const std::string& op);
 bool is_assignment_operator(const std::string& op);
 // ++x, --x, x++, x--.
 bool is_increment(const Expr& e);
+// modf(x, out whole) and frexp(x, out exponent): the built-ins that write their second argument.
+bool builtin_writes_second_argument(const Expr& e);
 // How many of e's first operands are evaluated whenever e is: 1 for &&, || and ?: (the others
 // only sometimes), all of them otherwise.
 size_t unconditional_operands(const Expr& e);

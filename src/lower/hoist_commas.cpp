@@ -56,8 +56,7 @@ void collect(const ir::ExprPtr& e, const Context& ctx, Access& a) {
   if (is_runtime_call(*e) && ctx.runtime_call_writes_arguments(*e))
     for (const auto& arg : e->args)
       if (const ir::Var* v = ir::root_variable(arg)) a.writes.insert(v);
-  const bool writes_second = e->kind == Kind::Builtin && (e->name == "modf" || e->name == "frexp") && e->args.size() == 2;
-  if (writes_second) {
+  if (ir::builtin_writes_second_argument(*e)) {
     if (const ir::Var* v = ir::root_variable(e->args[1])) a.writes.insert(v);
     else a.opaque = true;
   } else if (e->kind == Kind::Builtin && ir::builtin_has_side_effects(e->name)) {
@@ -94,9 +93,10 @@ void collect_before(const ir::ExprPtr& e, const ir::ExprPtr& comma, const Contex
   if (holder == e->args.size()) return;
   const bool assignment = e->kind == Kind::Binary && ir::is_assignment_operator(e->op);
   // `a[i][f()]`: before the index, the access's own indices are evaluated, no element is read.
-  const bool access = e->kind == Kind::Index && holder == 1 && ir::root_variable(e->args[0]);
+  const bool access = e->kind == Kind::Index && holder == 1;
+  const bool path_first = (access || (assignment && e->op == "=")) && ir::root_variable(e->args[0]);
   for (size_t i = 0; i < holder; ++i) {
-    if ((access || (assignment && e->op == "=")) && i == 0 && ir::root_variable(e->args[0])) {
+    if (path_first && i == 0) {
       for (ir::ExprPtr part = e->args[0]; part->kind == Kind::Index || part->kind == Kind::Member; part = part->args[0])
         if (part->kind == Kind::Index) collect(part->args[1], ctx, a);
       continue;

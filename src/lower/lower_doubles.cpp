@@ -1020,7 +1020,7 @@ class DoubleLowering {
       ctx_.error(e->loc, "built-in function '" + n + "' is not defined on doubles in GLSL 4.60; doublet cannot lower it");
       return e;
     }
-    if ((n == "modf" || n == "frexp") && !is_pure(e->args[1])) {
+    if (ir::builtin_writes_second_argument(*e) && !is_pure(e->args[1])) {
       ctx_.error(e->args[1]->loc, "the out argument of " + n + " must be a whole double variable here, not one "
                                   "component of a double vector; use a temporary");
       return e;

@@ -91,7 +91,7 @@ class OutArgumentRewriter {
     std::vector<ir::Storage> params;
     if (call->kind == Kind::Builtin) {
       // modf's whole part, frexp's exponent (the float forms; the double ones are rules by now).
-      if (wgsl_ && (call->name == "modf" || call->name == "frexp") && call->args.size() == 2)
+      if (wgsl_ && ir::builtin_writes_second_argument(*call))
         params = {ir::Storage::ParamIn, ir::Storage::ParamOut};
     } else if (const ir::Function* f = callee(call)) {
       for (const auto& p : f->params) params.push_back(p->storage);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -675,12 +676,12 @@ bool RuleLibrary::has(const RuleRef& ref) const { return impl_ && impl_->find(re
 std::vector<std::string> RuleLibrary::parameter_qualifiers(const std::string& name) const {
   std::vector<std::string> qualifiers;
   if (!impl_) return qualifiers;
-  for (const auto& c : impl_->chunks) {
-    if (c.name != name) continue;
-    for (const auto& p : c.params)
-      qualifiers.push_back(p.type.rfind("out ", 0) == 0 ? "out" : p.type.rfind("inout ", 0) == 0 ? "inout" : "");
-    break;
-  }
+  // The rule's narrowest width (every width declares the same qualifiers): a lookup, not a scan, as
+  // the WGSL passes ask for every runtime call they meet.
+  const auto it = impl_->index.lower_bound({name, std::numeric_limits<int>::min()});
+  if (it == impl_->index.end() || it->first.first != name) return qualifiers;
+  for (const auto& p : impl_->chunks[it->second].params)
+    qualifiers.push_back(p.type.rfind("out ", 0) == 0 ? "out" : p.type.rfind("inout ", 0) == 0 ? "inout" : "");
   return qualifiers;
 }
 
