@@ -109,6 +109,48 @@ std::vector<Sample> samples(int count) {
   return out;
 }
 
+// Inputs that reach each case of the integer residuals (rules/int.glsl), magnitudes 2^-10..2^20 so
+// that no error term underflows (where df64-int rounds and df64's float EFTs may not: docs/modes.md):
+// exponents 20..30 apart (df_int_sum_error's shifts clamp past 25), near and exact cancellation, a
+// power of two minus a small value (the sum drops a binade), halfway cases (ties to even), zeros.
+std::vector<Sample> edge_samples(int count) {
+  std::mt19937_64 rng(20261129);
+  std::uniform_real_distribution<double> exponent(-10.0, 20.0), unit(0.0, 1.0);
+  auto sign = [&] { return unit(rng) < 0.5 ? -1.0 : 1.0; };
+  auto dw = [](double v, float& h, float& l) {
+    h = static_cast<float>(v);
+    l = static_cast<float>(v - static_cast<double>(h));
+  };
+  std::vector<Sample> out;
+  for (int i = 0; i < count; ++i) {
+    Sample s{};
+    double x = std::exp2(exponent(rng)) * sign(), y = 0.0;
+    switch (i % 8) {
+      case 0: y = x * sign() * std::exp2(-(20 + i % 11)) * (1.0 + unit(rng)); break;
+      case 1: y = -x * (1.0 + sign() * std::exp2(-(1 + i % 50))); break;
+      case 2:
+        x = sign() * std::exp2(std::floor(exponent(rng)));
+        y = -x * std::exp2(-(23 + i % 4)) * (1.0 + std::ldexp(unit(rng), -10));
+        break;
+      case 3: y = -x; break;
+      case 4: {  // x a float, y half its ulp: x + y is a tie
+        x = static_cast<float>(x);
+        int e = 0;
+        std::frexp(x, &e);
+        y = sign() * std::ldexp(1.0, e - 25);
+        break;
+      }
+      case 5: y = 0.0; break;
+      default: y = std::exp2(exponent(rng)) * sign();
+    }
+    dw(x, s.xh, s.xl);
+    dw(y, s.yh, s.yl);
+    dw(x * (1.0 + sign() * std::exp2(-(8 + i % 30))), s.zh, s.zl);
+    out.push_back(s);
+  }
+  return out;
+}
+
 // The host's double reference, in the shader's order.
 void reference(const Sample& s, double want[kOps]) {
   const double x = static_cast<double>(s.xh) + s.xl, y = static_cast<double>(s.yh) + s.yl;
@@ -170,13 +212,13 @@ std::string lower(const std::string& shader, doublet::Stage stage, Target target
   return text;
 }
 
-Accuracy compute_accuracy(Backend backend, Target target, const Lowering& how) {
-  constexpr int kCount = 1024;
-  Accuracy m;
-  std::fill(std::begin(m.min_bits), std::end(m.min_bits), 60.0);
-  std::string glsl = lower(compute_shader(), doublet::Stage::Compute, target, how, &m.error);
-  if (glsl.empty() || !m.error.empty()) return m;
-  const auto in = samples(kCount);
+// The compute shader lowered as `how` says, run on `in`: the result words, (hi, lo) per op and sample
+// (empty, with *error set, when lowering or the run fails).
+std::vector<float> compute_words(Backend backend, Target target, const Lowering& how, const std::vector<Sample>& in,
+                                 std::string* error) {
+  const int count = static_cast<int>(in.size());
+  std::string glsl = lower(compute_shader(), doublet::Stage::Compute, target, how, error);
+  if (glsl.empty() || !error->empty()) return {};
   std::vector<float> operands, tiny;
   for (const auto& s : in) {
     operands.insert(operands.end(), {s.xh, s.xl, s.yh, s.yl});
@@ -188,15 +230,25 @@ Accuracy compute_accuracy(Backend backend, Target target, const Lowering& how) {
     const auto* p = reinterpret_cast<const uint8_t*>(v.data());
     return std::vector<uint8_t>(p, p + v.size() * sizeof(float));
   };
-  job.buffers = {bytes(operands), bytes(tiny), std::vector<uint8_t>(static_cast<size_t>(kCount) * kOps * 8, 0)};
-  job.groups_x = kCount / 64;
+  job.buffers = {bytes(operands), bytes(tiny), std::vector<uint8_t>(static_cast<size_t>(count) * kOps * 8, 0)};
+  job.groups_x = static_cast<uint32_t>(count / 64);
   auto run = doublet::runner::run_compute(backend, job);
   if (!run.ok) {
-    m.error = run.error;
-    return m;
+    *error = run.error;
+    return {};
   }
-  std::vector<float> out(static_cast<size_t>(kCount) * kOps * 2);
+  std::vector<float> out(static_cast<size_t>(count) * kOps * 2);
   std::memcpy(out.data(), run.buffers[2].data(), out.size() * sizeof(float));
+  return out;
+}
+
+Accuracy compute_accuracy(Backend backend, Target target, const Lowering& how) {
+  constexpr int kCount = 1024;
+  Accuracy m;
+  std::fill(std::begin(m.min_bits), std::end(m.min_bits), 60.0);
+  const auto in = samples(kCount);
+  const std::vector<float> out = compute_words(backend, target, how, in, &m.error);
+  if (out.empty()) return m;
   for (int i = 0; i < kCount; ++i) {
     double want[kOps];
     reference(in[i], want);
@@ -290,6 +342,46 @@ TEST_P(Df64IntCompute, FailsUnderDropLo) {
   Accuracy a = compute_accuracy(backend, target, {Mode::Df64Int, GuardKind::None, Sabotage::DropLo});
   ASSERT_TRUE(a.error.empty()) << a.error;
   EXPECT_LT(a.worst(), 30.0) << a.report();
+}
+
+// The oracle df64-int == df64 (docs/modes.md: both error terms are exact, so the pairs are the same):
+// every result word equals df64's, bit for bit, on edge_samples; NaNs count as equal. Both are lowered
+// with the same guard (ES 3.10: the uniform, the others: precise), so that their other float operations
+// compile alike: GLSL's '/' is not correctly rounded, and with df64-int's default guard none (no
+// precise) the driver compiles the quotient and the non-EFT products differently, which moved the
+// last bits of 12 (es310) and 825 (glsl450, es320) of these 28,672 results. Shown to fail: with the
+// integer residuals replaced by 0 most words differ.
+int words_differing(const std::vector<float>& a, const std::vector<float>& b, std::string* first) {
+  int differ = 0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    uint32_t wa = 0, wb = 0;
+    std::memcpy(&wa, &a[i], 4);
+    std::memcpy(&wb, &b[i], 4);
+    if (wa == wb || (std::isnan(a[i]) && std::isnan(b[i]))) continue;
+    if (++differ <= 5)
+      *first += std::string(kOpNames[(i / 2) % kOps]) + " sample " + std::to_string(i / 2 / kOps) + (i % 2 ? " lo: " : " hi: ") +
+                std::to_string(a[i]) + " against df64's " + std::to_string(b[i]) + "\n";
+  }
+  return differ;
+}
+
+TEST_P(Df64IntCompute, GivesDf64sPairsBitForBit) {
+  const auto [backend, target] = GetParam();
+  const auto in = edge_samples(4096);
+  std::string error, first;
+  const GuardKind guard = target == Target::Es310 ? GuardKind::Uniform : GuardKind::Precise;
+  const auto df64 = compute_words(backend, target, {Mode::Df64, guard}, in, &error);
+  ASSERT_TRUE(error.empty()) << error;
+  const auto int_mode = compute_words(backend, target, {Mode::Df64Int, guard}, in, &error);
+  ASSERT_TRUE(error.empty()) << error;
+  ASSERT_EQ(int_mode.size(), df64.size());
+  EXPECT_EQ(words_differing(int_mode, df64, &first), 0) << first;
+  Lowering zeroed{Mode::Df64Int, guard};
+  zeroed.zero_int_residuals = true;
+  const auto sabotaged = compute_words(backend, target, zeroed, in, &error);
+  ASSERT_TRUE(error.empty()) << error;
+  first.clear();
+  EXPECT_GT(words_differing(sabotaged, df64, &first), static_cast<int>(in.size()));
 }
 
 INSTANTIATE_TEST_SUITE_P(Drivers, Df64IntCompute,

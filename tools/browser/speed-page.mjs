@@ -85,6 +85,24 @@ const kernels = {
       },
     };
   },
+  // The transcendental kernels (transcendental.frag): four doubles per pixel drawn from the function's
+  // domain of docs/transcendentals.md's luma.gl comparison, no uniforms.
+  ...Object.fromEntries(Object.entries({
+    exp: [Math.exp, (rand) => -60 + 148 * rand()],  // from -60: at -70 the fragment stage flushes lo
+    log: [Math.log, (rand) => 2 ** (-60 + 120 * rand())],
+    sin: [Math.sin, (rand) => Math.PI * (2 * rand() - 1)],
+    cos: [Math.cos, (rand) => Math.PI * (2 * rand() - 1)],
+    tan: [Math.tan, (rand) => Math.PI * (2 * rand() - 1)],
+  }).map(([name, [f, draw]]) => [name, (rand, size) => {
+    const words = new Float32Array(size * size * 8);
+    const x = new Float64Array(size * size * 4);
+    for (let i = 0; i < size * size; ++i) {
+      const xs = [0, 1, 2, 3].map(() => joined(draw(rand)));
+      x.set(xs, 4 * i);
+      words.set(xs.flatMap((v) => [hi(v), lo(v)]), 8 * i);
+    }
+    return { words, doubles: 4, components: 4, uniforms: {}, reference: (i) => [...x.subarray(4 * i, 4 * i + 4)].map(f) };
+  }])),
 };
 
 // The uniform values one flavour of the kernel takes: doublet's NAME_hi/NAME_lo, the float twin's

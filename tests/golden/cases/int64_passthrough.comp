@@ -16,6 +16,8 @@ void main() {
   double back = double(micro) / 7.0lf;
   double huge = 1.0e19lf + abs(v.x);  // past 2^63: uint64_t's top bit
   double wide = double(bits >> 11) + double(uint64_t(huge) >> 11);
-  dvec2 both = dvec2(pair) + dvec2(u64vec2(uint64_t(i) << 40, 3ul));
+  // pair * 3l, not pair: native lavapipe folds double(int64_t(x)) into fp64 trunc(x), which on AVX2-only
+  // machines leaves the fraction of |x| > 2^24 (docs/extremes.md) and would make native the wrong oracle.
+  dvec2 both = dvec2(pair * 3l) + dvec2(u64vec2(uint64_t(i) << 40, 3ul));
   r[i] = dvec4(back, wide, both);
 }

@@ -461,6 +461,6 @@ void main()
   df_double back = df_div(df_from_int64(micro), df_double(7.0, 0.0));
   df_double huge = df_add(df_double(1.0e+19, 1.9493552e+10), df_abs(df_double(v.hi.x, v.lo.x)));
   df_double wide = df_add(df_from_uint64(bits >> 11), df_from_uint64(df_to_uint64(huge) >> 11));
-  df_dvec2 both = df_add(df_from_int64_2(pair), df_from_uint64_2(u64vec2(uint64_t(i) << 40, 3ul)));
+  df_dvec2 both = df_add(df_from_int64_2(pair * 3l), df_from_uint64_2(u64vec2(uint64_t(i) << 40, 3ul)));
   r[i] = df_make_dvec4_1_1_2(back, wide, both);
 }

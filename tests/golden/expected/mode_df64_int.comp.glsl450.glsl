@@ -6,61 +6,60 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 // doublet float-float runtime: 18 functions from rules/*.glsl, guard: none (unprotected), error-free transformations: integer (df64-int)
 struct df_double { float hi; float lo; };
 
-// df_int_exponent: E such that x = m * 2^E with m the integer significand (E = -149 for 0
-// and subnormals).
-// Algorithm: binary32 exponent field minus bias and significand width
+// df_int_unit: the biased exponent u of x's unit in the last place, x = m * 2^(u - 150) with m the
+// integer significand (u = 1 for 0 and subnormals). Callers subtract units; only scaling needs the bias.
+// Algorithm: binary32 exponent field, at least 1
 // Source: IEEE 754-2008 binary32 encoding; HFPA (2018) section 2.1
 // Bound: exact
-// Flops: 0 (integer: 1 shift, 1 and, 1 max, 1 sub)
-int df_int_exponent(float x) {
-  uint bits = floatBitsToUint(x);
-  int field = int((bits >> 23u) & 255u);
-  int e = max(field, 1) - 150;
-  return e;
+// Flops: 0 (integer: 1 shift, 1 and, 1 max)
+int df_int_unit(float x) {
+  int field = int((floatBitsToUint(x) >> 23u) & 255u);
+  int u = max(field, 1);
+  return u;
 }
 
 // df_int_magnitude: the 24-bit integer significand m of |x| (hidden bit restored when x is normal).
-// Algorithm: binary32 significand field plus the hidden bit
+// Algorithm: binary32 significand field plus the hidden bit (min(field, 1) << 23)
 // Source: IEEE 754-2008 binary32 encoding; HFPA (2018) section 2.1
 // Bound: exact
-// Flops: 0 (integer: 1 shift, 2 ands, 1 or, 1 select)
+// Flops: 0 (integer: 1 shift, 2 ands, 1 min, 1 shift, 1 or; the field shared with df_int_unit)
 uint df_int_magnitude(float x) {
   uint bits = floatBitsToUint(x);
   uint field = (bits >> 23u) & 255u;
-  uint hidden = field > 0u ? 8388608u : 0u;
-  uint m = (bits & 8388607u) | hidden;
+  uint m = (bits & 8388607u) | (min(field, 1u) << 23u);
   return m;
 }
 
 // df_int_signed: the integer significand of x with x's sign, two's complement in a uint.
-// Algorithm: df_int_magnitude, negated modulo 2^32 when the sign bit is set
-// Source: ESSL 3.00 (2012) section 4.1.3 (uint arithmetic wraps modulo 2^32)
+// Algorithm: df_int_magnitude, negated modulo 2^32 by (m ^ s) - s with s the sign bit spread over
+// the word (arithmetic shift), no select
+// Source: ESSL 3.00 (2012) sections 4.1.3 (uint arithmetic wraps modulo 2^32) and 5.9 (>> of a
+// signed int extends the sign)
 // Bound: exact
-// Flops: 0 (integer: df_int_magnitude, 1 shift, 1 sub, 1 select)
+// Flops: 0 (integer: df_int_magnitude, 1 shift, 1 xor, 1 sub)
 uint df_int_signed(float x) {
   uint m = df_int_magnitude(x);
-  uint neg = 0u - m;
-  uint r = (floatBitsToUint(x) >> 31u) != 0u ? neg : m;
+  uint s = uint(floatBitsToInt(x) >> 31);
+  uint r = (m ^ s) - s;
   return r;
 }
 
-// df_int_scale: n * 2^k, exact whenever the result is a normal float (one rounding otherwise).
+// df_int_scale: n * 2^k, exact whenever the result is a float (one rounding below 2^-126 otherwise).
 // Algorithm: conversion of n (at most 24 significant bits, so exact), then two multiplications by
-// powers of two built from their bit patterns, k split in halves so neither factor leaves the
-// normal range and the first product cannot underflow or overflow
+// powers of two built from their bit patterns, k split in halves (k >> 1 and the rest) so neither
+// factor leaves the normal range and the first product cannot underflow or overflow
 // Source: HFPA (2018) section 2.2 (multiplication by a power of the radix is exact)
 // Bound: exact
 // Flops: 3
-// Range: -252 <= k <= 252; below that |n * 2^k| < 2^-221 and 0 is returned.
+// Range: -252 <= k <= 253, which the callers guarantee wherever their result is used.
 float df_int_scale(int n, int k) {
-  int k1 = k / 2;
+  int k1 = k >> 1;
   int k2 = k - k1;
   float p1 = (uintBitsToFloat(uint(k1 + 127) << 23u));
   float p2 = (uintBitsToFloat(uint(k2 + 127) << 23u));
   float f = (float(n));
   float f1 = (f * p1);
-  float f2 = (f1 * p2);
-  float r = (mix(f2, 0.0, k < -252));
+  float r = (f1 * p2);
   return r;
 }
 
@@ -71,28 +70,24 @@ float df_int_scale(int n, int k) {
 // because |(a+b) - s| <= ulp(s)/2 and ds <= 26, so the modular result is exact
 // Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 (the error of RN(a+b) is a float); ESSL 3.00 (2012) 4.1.3
 // Bound: exact
-// Flops: 3 (df_int_scale; integer: about 30 operations)
-// Steps: when the exponents differ by more than 25 the smaller operand is below a quarter ulp
-// of the larger, so s is the larger and the error is the smaller operand. Inf/NaN s, or s
-// with a smaller exponent than both operands (exact sum): 0.
+// Flops: 3 (df_int_scale; integer: about 45 operations)
+// Steps: shifts are clamped to 31. When the exponents differ by more than 25 the smaller operand
+// is below a quarter ulp of the larger, so s is the larger: s and the larger operand get the same
+// clamped shift, cancel exactly, and the residual is the smaller operand with no special case.
+// Inf/NaN s, or s with a smaller exponent than both operands (exact sum): 0.
 float df_int_sum_error(float a, float b, float s) {
-  int ea = df_int_exponent(a);
-  int eb = df_int_exponent(b);
-  int es = df_int_exponent(s);
-  int emin = min(ea, eb);
-  int da = ea - emin;
-  int db = eb - emin;
-  int ds = es - emin;
-  bool special = ((floatBitsToUint(s) >> 23u) & 255u) == 255u;
-  bool exact = any(bvec2(special, ds < 0));
-  uint ta = df_int_signed(a) << uint(clamp(da, 0, 31));
-  uint tb = df_int_signed(b) << uint(clamp(db, 0, 31));
-  uint ts = df_int_signed(s) << uint(clamp(ds, 0, 31));
+  int ua = df_int_unit(a);
+  int ub = df_int_unit(b);
+  int us = df_int_unit(s);
+  int umin = min(ua, ub);
+  uint ta = df_int_signed(a) << min(uint(ua - umin), 31u);
+  uint tb = df_int_signed(b) << min(uint(ub - umin), 31u);
+  uint ts = df_int_signed(s) << min(uint(us - umin), 31u);
   int n = int(ta + tb - ts);
-  float e = (df_int_scale(n, emin));
-  float small_b = (mix(e, a, db > 25));
-  float small_a = (mix(small_b, b, da > 25));
-  float r = (mix(small_a, 0.0, exact));
+  bool special = ((floatBitsToUint(s) >> 23u) & 255u) == 255u;
+  bool exact = any(bvec2(special, us < umin));
+  float e = (df_int_scale(n, umin - 150));
+  float r = (mix(e, 0.0, exact));
   return r;
 }
 
@@ -181,26 +176,29 @@ df_double df_sub(df_double a, df_double b) {
 // df_int_prod_error: a*b - p exactly, for p the float product the hardware computed.
 // Algorithm: a*b = ma*mb * 2^(Ea+Eb) and p = mp * 2^Ep with k = Ep - Ea - Eb in 0..25; the
 // residual in units of 2^(Ea+Eb) is ma*mb - mp<<k, below 2^24 in magnitude, so the low 32 bits
-// of the 48-bit product (uint multiplication wraps) give it exactly
+// of the 48-bit product (uint multiplication wraps) give it exactly; p's sign is applied by
+// (n ^ s) - s
 // Source: Dekker 1971 (the error of RN(a*b) is a float); ESSL 3.00 (2012) 4.1.3 (uint multiplication wraps modulo 2^32)
 // Bound: exact
-// Flops: 3 (df_int_scale; integer: about 25 operations)
-// Steps: p zero, subnormal, Inf or NaN: 0 (a*b underflowed, overflowed or was special; the
-// callers' df_finish returns (p, 0) for the last three, as in df64). k < 0: the product had
-// fewer than 24 bits, p is exact, 0.
-// Range: e below 2^-126 is rounded (df_int_scale), as the float TwoProd's error term underflows.
+// Flops: 3 (df_int_scale; integer: about 35 operations)
+// Steps: p zero, subnormal, Inf or NaN (its field minus 1 is 254 or more as a uint): 0 (a*b
+// underflowed, overflowed or was special; the callers' df_finish returns (p, 0) for the last
+// three, as in df64). k outside 0..31 (k < 0: the product had fewer than 24 bits, p is exact): 0.
+// Range: e below 2^-126 is rounded (df_int_scale), as the float TwoProd's error term underflows;
+// where e is used, Ea + Eb >= Ep - 31 >= -180, within df_int_scale's range.
 float df_int_prod_error(float a, float b, float p) {
   uint bp = floatBitsToUint(p);
-  uint field = (bp >> 23u) & 255u;
-  int ea = df_int_exponent(a);
-  int eb = df_int_exponent(b);
-  int k = df_int_exponent(p) - ea - eb;
-  bool none = any(bvec4(field == 0u, field == 255u, k < 0, k > 31));
+  int fp = int((bp >> 23u) & 255u);
+  int ua = df_int_unit(a);
+  int ub = df_int_unit(b);
+  int k = fp - ua - ub + 150;
+  bool none = any(bvec2(uint(fp - 1) >= 254u, uint(k) > 31u));
   uint low = df_int_magnitude(a) * df_int_magnitude(b);
-  uint shifted = df_int_magnitude(p) << uint(clamp(k, 0, 31));
+  uint shifted = ((bp & 8388607u) | 8388608u) << min(uint(k), 31u);
   int n = int(low - shifted);
-  int sn = (bp >> 31u) != 0u ? -n : n;
-  float e = (df_int_scale(sn, ea + eb));
+  int sign = floatBitsToInt(p) >> 31;
+  int sn = (n ^ sign) - sign;
+  float e = (df_int_scale(sn, ua + ub - 300));
   float r = (mix(e, 0.0, none));
   return r;
 }
