@@ -101,7 +101,8 @@ const kernels = {
       x.set(xs, 4 * i);
       words.set(xs.flatMap((v) => [hi(v), lo(v)]), 8 * i);
     }
-    return { words, doubles: 4, components: 4, uniforms: {}, reference: (i) => [...x.subarray(4 * i, 4 * i + 4)].map(f) };
+    return { words, doubles: 4, components: 4, uniforms: {}, reference: (i) => [...x.subarray(4 * i, 4 * i + 4)].map(f),
+             input: (value) => x[value] };
   }])),
 };
 
@@ -223,6 +224,17 @@ function run(job) {
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
     gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, 2 * size, size);
     gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 2 * size, size, gl.RGBA, gl.FLOAT, kernel.words);
+    // Sabotage drop-lo of a kernel without double uniforms (the transcendentals): doublet's contenders
+    // read the input words with every low word zeroed instead.
+    let wordsNoLo = null;
+    if (!Object.keys(kernel.uniforms).length && k.contenders.some((c) => c.sabotage === 'drop-lo')) {
+      wordsNoLo = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, wordsNoLo);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+      gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, 2 * size, size);
+      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 2 * size, size, gl.RGBA, gl.FLOAT, kernel.words.map((w, i) => (i % 2 ? 0 : w)));
+    }
     // Outputs: one RGBA32F attachment per vec4 output.
     const framebuffer = gl.createFramebuffer();
     gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
@@ -252,7 +264,9 @@ function run(job) {
     // Compile, the first draw (ANGLE and SwiftShader build the pipeline there), then, unless the job
     // fixes the draws, doubling them until one measurement takes targetMs.
     const contenders = k.contenders.map((c) => {
-      const bind = setUp(gl, c, kernel);
+      const program = setUp(gl, c, kernel);
+      const texture = c.sabotage === 'drop-lo' && wordsNoLo ? wordsNoLo : words;
+      const bind = () => { program(); gl.bindTexture(gl.TEXTURE_2D, texture); };
       bind();
       timeDraws(1);
       let draws = job.draws;
@@ -276,6 +290,7 @@ function run(job) {
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       const bits = new Float64Array(size * size * kernel.components);
       const texels = new Float32Array(size * size * 4);
+      let worst = null;  // the value with the fewest bits: where a kernel loses them
       for (let o = 0; o < outputs; ++o) {
         gl.readBuffer(gl.COLOR_ATTACHMENT0 + o);
         gl.readPixels(0, 0, size, size, gl.RGBA, gl.FLOAT, texels);
@@ -285,7 +300,10 @@ function run(job) {
             const ref = reference[kernel.components * i + 2 * o + h];
             const error = Math.abs(got - ref) / Math.abs(ref);
             // NaN (a broken kernel) counts as 0 bits; an exact result as 53.
-            bits[kernel.components * i + 2 * o + h] = error === 0 ? 53 : Number.isNaN(error) ? 0 : Math.min(53, Math.max(0, -Math.log2(error)));
+            const at = kernel.components * i + 2 * o + h;
+            bits[at] = error === 0 ? 53 : Number.isNaN(error) ? 0 : Math.min(53, Math.max(0, -Math.log2(error)));
+            if (!worst || bits[at] < worst.bits)
+              worst = { bits: bits[at], pixel: i, value: at, want: ref, got, ...(kernel.input ? { input: kernel.input(at) } : {}) };
           }
       }
       gl.readBuffer(gl.COLOR_ATTACHMENT0);
@@ -294,7 +312,7 @@ function run(job) {
       if (gl.isContextLost()) throw new Error('the WebGL context was lost');
       rows.push({ name: c.name, draws: c.draws, ms: c.ms.map((x) => +x.toFixed(4)), best_ms: Math.min(...c.ms),
                   median_ms: median(c.ms), bits_min: bits.reduce((a, b) => Math.min(a, b), 53), bits_median: median(bits),
-                  values: bits.length });
+                  values: bits.length, worst });
     }
     result.kernels.push({ name: k.name, size, contenders: rows });
   }

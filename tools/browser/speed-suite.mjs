@@ -18,7 +18,8 @@
 //        [--sabotage drop-lo] [--timeout-ms 3600000]
 // --apis: webgl2 (default), webgpu or both (one page each, one table each). --draws 0 (default): per
 // contender, as many draws (WebGPU: dispatches) as take --target-ms. --sabotage drop-lo feeds
-// doublet's NAME_lo uniforms (WebGPU: df_uniforms' NAME_lo members) zeros (a check that the bits
+// doublet's NAME_lo uniforms (WebGPU: df_uniforms' NAME_lo members; the transcendental kernels,
+// which have no double uniforms: the low words of their inputs) zeros (a check that the bits
 // floor catches broken wiring). --timeout-ms: how long each page may take in all.
 // Exit 0 when everything ran (speed is reported, never judged), 1 on a lowering, compile, link or
 // run-time error or bits below the sanity floor (median: df64, df64-int < 40; df64-fast, luma.gl < 35), 2 when
