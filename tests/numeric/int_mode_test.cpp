@@ -87,24 +87,29 @@ struct Sample {
   float xh, xl, yh, yl, zh, zl;  // z = x * (1 +- 2^-k) as a double-word: x - z cancels k bits
 };
 
+// x, y and z as double-words: hi the nearest float, lo the rest, rounded.
+Sample as_words(double x, double y, double z) {
+  auto dw = [](double v, float& h, float& l) {
+    h = static_cast<float>(v);
+    l = static_cast<float>(v - static_cast<double>(h));
+  };
+  Sample s{};
+  dw(x, s.xh, s.xl);
+  dw(y, s.yh, s.yl);
+  dw(z, s.zh, s.zl);
+  return s;
+}
+
 // Log-uniform magnitudes in [2^-20, 2^20], random signs; a quarter of the y close to x.
 std::vector<Sample> samples(int count) {
   std::mt19937_64 rng(20261124);
   std::uniform_real_distribution<double> exponent(-20.0, 20.0), unit(0.0, 1.0);
   auto sign = [&] { return unit(rng) < 0.5 ? -1.0 : 1.0; };
-  auto dw = [](double v, float& h, float& l) {
-    h = static_cast<float>(v);
-    l = static_cast<float>(v - static_cast<double>(h));
-  };
   std::vector<Sample> out;
   for (int i = 0; i < count; ++i) {
-    Sample s{};
-    double x = std::exp2(exponent(rng)) * sign();
-    dw(x, s.xh, s.xl);
-    double y = i % 4 == 3 ? x * (1.0 + sign() * std::exp2(-(1 + i % 40))) : std::exp2(exponent(rng)) * sign();
-    dw(y, s.yh, s.yl);
-    dw(x * (1.0 + sign() * std::exp2(-(8 + i % 30))), s.zh, s.zl);
-    out.push_back(s);
+    const double x = std::exp2(exponent(rng)) * sign();
+    const double y = i % 4 == 3 ? x * (1.0 + sign() * std::exp2(-(1 + i % 40))) : std::exp2(exponent(rng)) * sign();
+    out.push_back(as_words(x, y, x * (1.0 + sign() * std::exp2(-(8 + i % 30)))));
   }
   return out;
 }
@@ -117,13 +122,8 @@ std::vector<Sample> edge_samples(int count) {
   std::mt19937_64 rng(20261129);
   std::uniform_real_distribution<double> exponent(-10.0, 20.0), unit(0.0, 1.0);
   auto sign = [&] { return unit(rng) < 0.5 ? -1.0 : 1.0; };
-  auto dw = [](double v, float& h, float& l) {
-    h = static_cast<float>(v);
-    l = static_cast<float>(v - static_cast<double>(h));
-  };
   std::vector<Sample> out;
   for (int i = 0; i < count; ++i) {
-    Sample s{};
     double x = std::exp2(exponent(rng)) * sign(), y = 0.0;
     switch (i % 8) {
       case 0: y = x * sign() * std::exp2(-(20 + i % 11)) * (1.0 + unit(rng)); break;
@@ -143,10 +143,7 @@ std::vector<Sample> edge_samples(int count) {
       case 5: y = 0.0; break;
       default: y = std::exp2(exponent(rng)) * sign();
     }
-    dw(x, s.xh, s.xl);
-    dw(y, s.yh, s.yl);
-    dw(x * (1.0 + sign() * std::exp2(-(8 + i % 30))), s.zh, s.zl);
-    out.push_back(s);
+    out.push_back(as_words(x, y, x * (1.0 + sign() * std::exp2(-(8 + i % 30)))));
   }
   return out;
 }
