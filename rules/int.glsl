@@ -108,7 +108,7 @@ float df_int_sum_error(float a, float b, float s) {
   uint tb = df_int_signed(b) << min(uint(ub - umin), 31u);
   uint ts = df_int_signed(s) << min(uint(us - umin), 31u);
   int n = int(ta + tb - ts);
-  bool special = ((floatBitsToUint(s) >> 23u) & 255u) == 255u;
+  bool special = us == 255;
   bool exact = any(bvec2(special, us < umin));
   $PRECISE float e = $SAFE(df_int_scale(n, umin - 150));
   $PRECISE float r = $SAFE($SEL(exact, 0.0, e));

@@ -217,24 +217,21 @@ function run(job) {
     const kernel = kernels[k.name](random(job.seed), size);
     const outputs = kernel.components / 2;
     // Inputs: an RGBA32F texture read with texelFetch (NEAREST: a float texture is not filterable).
-    const words = gl.createTexture();
-    gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, words);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, 2 * size, size);
-    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 2 * size, size, gl.RGBA, gl.FLOAT, kernel.words);
-    // Sabotage drop-lo of a kernel without double uniforms (the transcendentals): doublet's contenders
-    // read the input words with every low word zeroed instead.
-    let wordsNoLo = null;
-    if (!Object.keys(kernel.uniforms).length && k.contenders.some((c) => c.sabotage === 'drop-lo')) {
-      wordsNoLo = gl.createTexture();
-      gl.bindTexture(gl.TEXTURE_2D, wordsNoLo);
+    const wordTexture = (data) => {
+      const texture = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, texture);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
       gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, 2 * size, size);
-      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 2 * size, size, gl.RGBA, gl.FLOAT, kernel.words.map((w, i) => (i % 2 ? 0 : w)));
-    }
+      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 2 * size, size, gl.RGBA, gl.FLOAT, data);
+      return texture;
+    };
+    gl.activeTexture(gl.TEXTURE0);
+    const words = wordTexture(kernel.words);
+    // Sabotage drop-lo of a kernel without double uniforms (the transcendentals): doublet's contenders
+    // read the input words with every low word zeroed instead.
+    const wordsNoLo = !Object.keys(kernel.uniforms).length && k.contenders.some((c) => c.sabotage === 'drop-lo')
+      ? wordTexture(kernel.words.map((w, i) => (i % 2 ? 0 : w))) : null;
     // Outputs: one RGBA32F attachment per vec4 output.
     const framebuffer = gl.createFramebuffer();
     gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
