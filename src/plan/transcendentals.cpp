@@ -206,9 +206,9 @@ double transcendental_error_float(const std::string& f, int arity, Interval a, I
 
 double transcendental_flops_df64(const std::string& f, int arity) {
   static const std::map<std::string, double> flops{
-      {"exp", 557},  {"exp2", 528}, {"log", 435},  {"log2", 424},  {"pow", 1021}, {"sin", 590},  {"cos", 590},
-      {"tan", 943},  {"asin", 729}, {"acos", 729}, {"atan", 620},  {"sinh", 645}, {"cosh", 622}, {"tanh", 625}};
-  if (atan2(f, arity)) return 646;
+      {"exp", 460},  {"exp2", 431}, {"log", 380},  {"log2", 369},  {"pow", 869},  {"sin", 524},  {"cos", 524},
+      {"tan", 820},  {"asin", 674}, {"acos", 674}, {"atan", 565},  {"sinh", 548}, {"cosh", 525}, {"tanh", 528}};
+  if (atan2(f, arity)) return 591;
   auto it = flops.find(f);
   return it == flops.end() ? 20 : it->second;
 }
