@@ -6,8 +6,6 @@
 // Sabotages (no ties-to-even; no sticky bit) must make the count of differing results nonzero.
 #include <gtest/gtest.h>
 
-#include <map>
-
 #include <algorithm>
 #include <bit>
 #include <cmath>
