@@ -820,7 +820,7 @@ class Generator {
       if (qualifier == "in") {
         arg = gen(type, 1).s;
       } else {
-        auto candidates = writable([&](const Var& v) {
+        auto candidates = writable([&, &type = type](const Var& v) {
           return v.len == 0 && !v.is_struct && std::find(used.begin(), used.end(), v.name) == used.end() &&
                  (v.ty == type || (type == Ty::D && is_vec(v.ty)));
         });

@@ -128,7 +128,11 @@ bool is_df(const ir::Type& t) {
   return t.base == ir::Base::Struct && !t.is_array() && (t.name == "df_double" || t.name.rfind("df_dvec", 0) == 0);
 }
 
-int df_width(const ir::Type& t) { return t.name == "df_double" ? 1 : t.name.back() - '0'; }
+int df_width(const ir::Type& t) {
+  if (t.name == "df_double") return 1;
+  if (!t.name.empty() && t.name.back() >= '2' && t.name.back() <= '4') return t.name.back() - '0';
+  return t.vec;  // not a float-float struct (an unnamed type's name has no last character to read)
+}
 
 namespace {
 
@@ -435,8 +439,9 @@ class DoubleLowering {
     const std::string& n = e->name;
     const bool to_double = n == "int64BitsToDouble" || n == "uint64BitsToDouble";
     if (!to_double && n != "doubleBitsToInt64" && n != "doubleBitsToUint64") return nullptr;
-    if (ctx_.config.mode == Mode::Fp32) {
-      ctx_.error(e->loc, n + " has no meaning when doubles are demoted to float (--mode fp32)");
+    if (ctx_.config.mode == Mode::Fp32 || ctx_.config.mode == Mode::Rte) {
+      ctx_.error(e->loc, n + " has no meaning when doubles are demoted to float (--mode " +
+                             std::string(to_string(ctx_.config.mode)) + ")");
       return e;
     }
     const int width = to_double ? e->args[0]->type.vec : df_width(e->args[0]->type);

@@ -132,8 +132,13 @@ bool set_integer_vector(GLint location, GLenum type, const std::vector<double>& 
     GLuint u[4] = {};
     const bool is_bool = type == GL_BOOL || type == GL_BOOL_VEC2 || type == GL_BOOL_VEC3 || type == GL_BOOL_VEC4;
     for (size_t c = 0; c < s.count; ++c) {
-      i[c] = is_bool ? values[c] != 0 : static_cast<GLint>(values[c]);
-      u[c] = static_cast<GLuint>(values[c]);
+      // Only the conversion the type needs: a uint above INT_MAX is no int, a negative int no uint.
+      const double lowest = s.is_unsigned ? 0.0 : -2147483648.0;
+      const double highest = s.is_unsigned ? 4294967295.0 : 2147483647.0;
+      if (!is_bool && !(values[c] >= lowest && values[c] <= highest)) return false;
+      if (is_bool) i[c] = values[c] != 0;
+      else if (s.is_unsigned) u[c] = static_cast<GLuint>(values[c]);
+      else i[c] = static_cast<GLint>(values[c]);
     }
     if (s.is_unsigned) {
       if (s.count == 1) glUniform1uiv(location, 1, u);
@@ -168,7 +173,11 @@ std::string set_uniform(GLuint program, const std::string& name, const std::vect
   }
   if (size > 1 && (type == GL_UNSIGNED_INT_VEC4 || type == GL_INT_VEC4) && values->size() == 4 * size_t(size)) {
     std::vector<GLuint> u(values->size());  // an array of uvec4 (mode exact's matrix words), all elements
-    for (size_t c = 0; c < u.size(); ++c) u[c] = static_cast<GLuint>((*values)[c]);
+    for (size_t c = 0; c < u.size(); ++c) {
+      const double v = (*values)[c];  // a word: a uint, or an int whose bits the array carries
+      if (!(v >= -2147483648.0 && v <= 4294967295.0)) return "uniform '" + name + "': " + std::to_string(v) + " is no 32-bit word";
+      u[c] = static_cast<GLuint>(static_cast<long long>(v));
+    }
     if (type == GL_UNSIGNED_INT_VEC4) glUniform4uiv(location, size, u.data());
     else glUniform4iv(location, size, reinterpret_cast<const GLint*>(u.data()));
     return {};

@@ -211,7 +211,7 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
   if (outputs_.empty()) return "the shader writes no float/double buffer member: nothing to compare";
 
   for (const auto& [name, in] : spec.inputs) {
-    auto it = std::find_if(inputs_.begin(), inputs_.end(), [&](const Variable& v) { return v.name == name; });
+    auto it = std::find_if(inputs_.begin(), inputs_.end(), [&name = name](const Variable& v) { return v.name == name; });
     if (it == inputs_.end() && in.from_initializer) continue;
     if (it == inputs_.end()) {
       std::string known;
@@ -221,7 +221,7 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
     it->input = in;
   }
   for (const auto& [name, out] : spec.outputs) {
-    auto it = std::find_if(outputs_.begin(), outputs_.end(), [&](const Variable& v) { return v.name == name; });
+    auto it = std::find_if(outputs_.begin(), outputs_.end(), [&name = name](const Variable& v) { return v.name == name; });
     if (it == outputs_.end()) return "no output named '" + name + "'";
     if (out.join_hi_lo && (it->native.is_double || it->native.components % 2 != 0))
       return "output '" + name + "': join hi_lo needs a vec2 or vec4";

@@ -195,7 +195,7 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
   if (outputs_.empty()) return "the shader has no float/double output: nothing to compare";
 
   for (const auto& [name, in] : spec.inputs) {
-    auto it = std::find_if(inputs_.begin(), inputs_.end(), [&](const Variable& v) { return v.name == name; });
+    auto it = std::find_if(inputs_.begin(), inputs_.end(), [&name = name](const Variable& v) { return v.name == name; });
     if (it == inputs_.end() && in.from_initializer) continue;
     // A per-vertex input array of a geometry or tessellation shader by its own name: every element.
     const std::string element_prefix = name + "[";
@@ -215,7 +215,7 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
     it->input = in;
   }
   for (const auto& [name, out] : spec.outputs) {
-    auto it = std::find_if(outputs_.begin(), outputs_.end(), [&](const Variable& v) { return v.name == name; });
+    auto it = std::find_if(outputs_.begin(), outputs_.end(), [&name = name](const Variable& v) { return v.name == name; });
     if (it == outputs_.end()) return "no output named '" + name + "'";
     if (out.join_hi_lo && (it->is_double || it->components % 2 != 0))
       return "output '" + name + "': join hi_lo needs a vec2 or vec4";

@@ -80,6 +80,29 @@ TEST(Modes, RteKeepsHiLoStorageAndOnlyTheDifferenceOfTwoDoublesIsFloatFloat) {
   EXPECT_TRUE(contains(r.output, R"(df_double y = df_from_float\()")) << r.output;
 }
 
+// A double's 64-bit pattern does not exist where doubles are floats: fp32 and rte refuse the bit
+// casts at their position (rte read a float's type as a float-float one before: clang's UBSan,
+// scripts/check-sanitizers); the float-float modes lower them (golden int64_bit_casts.comp).
+TEST(Modes, BitCastsOfDoublesAreRefusedWhereDoublesAreFloats) {
+  const std::string src = R"(#version 450
+#extension GL_ARB_gpu_shader_int64 : require
+uniform double a;
+out vec4 color;
+void main() {
+  uint64_t bits = doubleBitsToUint64(a);
+  color = vec4(float(bits & 1ul), 0.0, 0.0, 1.0);
+}
+)";
+  for (Mode mode : {Mode::Fp32, Mode::Rte}) {
+    auto r = doublet::lower(src, options(mode, doublet::Target::Glsl450));
+    EXPECT_FALSE(r.ok) << doublet::to_string(mode);
+    EXPECT_TRUE(contains(messages(r), R"(modes\.frag:6:\d+: error: doubleBitsToUint64 has no meaning when doubles are demoted to float \(--mode )" +
+                                          std::string(doublet::to_string(mode)) + R"(\))"))
+        << messages(r);
+  }
+  EXPECT_TRUE(doublet::lower(src, options(Mode::Df64, doublet::Target::Glsl450)).ok);
+}
+
 TEST(Modes, Df64FastCallsTheFastRules) {
   auto r = doublet::lower(kShader, options(Mode::Df64Fast));
   ASSERT_TRUE(r.ok) << messages(r);
