@@ -70,6 +70,7 @@ LinkedRuntime link_runtime(const Config& config, const passes::Context& requests
   request.es_version = config.facts->es ? config.facts->version : 320;
   request.integer_eft = config.integer_eft;
   request.integer_functions = config.facts->integer_functions;
+  request.bit_casts = config.facts->bit_casts;
   if (words)  // an operation rules/exact.glsl does not have yet: said where the shader first uses it
     for (const auto& ref : requests.rules_used)
       if (!rules::RuleLibrary::builtin().has(ref)) {

@@ -26,6 +26,13 @@ struct Param {
   std::string name;
 };
 
+// Which "@variant" chunks replace the plain ones of the same name (EmitRequest's flags).
+struct Variants {
+  bool integer_eft = false;
+  bool integer_functions = false;
+  bool bit_casts = false;
+};
+
 struct Chunk {
   std::string name;
   std::string file;
@@ -38,7 +45,8 @@ struct Chunk {
   int min_es = 100;
   bool per_component = false;
   std::string variant;  // "int": replaces the same-named chunk when EmitRequest::integer_eft;
-                        // "integer-functions": when EmitRequest::integer_functions
+                        // "integer-functions": when EmitRequest::integer_functions;
+                        // "bit-casts": when EmitRequest::bit_casts
   std::vector<std::pair<std::string, std::vector<std::string>>> uses;  // callee -> widths ("2", "W")
   std::vector<std::string> callees;  // chunk names referenced by the definition, first use order
   std::map<std::string, std::string> fields;  // Algorithm, Source, Bound, Flops
@@ -259,27 +267,26 @@ struct RuleLibrary::Impl {
   std::map<std::pair<std::string, int>, size_t> index;  // (name, width) -> chunk
   std::map<std::pair<std::string, int>, size_t> int_index;  // (name, width) -> "@variant int" chunk
   std::map<std::pair<std::string, int>, size_t> intfn_index;  // -> "@variant integer-functions" chunk
+  std::map<std::pair<std::string, int>, size_t> casts_index;  // -> "@variant bit-casts" chunk
   std::set<std::string> names;
   std::string init_error;  // builtin() only: the embedded rules failed to parse
 
-  // integer_eft: the "@variant int" chunk of that name and width when there is one;
-  // integer_functions: the "@variant integer-functions" one.
-  const Chunk* find(const std::string& name, int width, bool integer_eft = false, bool integer_functions = false) const {
-    if (integer_functions) {
-      auto v = intfn_index.find({name, width});
-      if (v != intfn_index.end()) return &chunks[v->second];
-    }
-    if (integer_eft) {
-      auto v = int_index.find({name, width});
-      if (v != int_index.end()) return &chunks[v->second];
+  // The "@variant" chunk of that name and width the request selects, most specific first
+  // ("int", then "integer-functions", then "bit-casts"), else the plain one.
+  const Chunk* find(const std::string& name, int width, const Variants& v = {}) const {
+    for (const auto& [wanted, variant_index] : {std::make_pair(v.integer_eft, &int_index),
+                                                std::make_pair(v.integer_functions, &intfn_index),
+                                                std::make_pair(v.bit_casts, &casts_index)}) {
+      if (!wanted) continue;
+      auto it = variant_index->find({name, width});
+      if (it != variant_index->end()) return &chunks[it->second];
     }
     auto it = index.find({name, width});
     return it == index.end() ? nullptr : &chunks[it->second];
   }
 
   // Direct dependencies of one instance.
-  bool deps(const Chunk& c, int width, std::vector<RuleRef>& out, std::string* error, bool integer_eft = false,
-            bool integer_functions = false) const {
+  bool deps(const Chunk& c, int width, std::vector<RuleRef>& out, std::string* error, const Variants& v = {}) const {
     if (c.per_component && width > 1) {
       out.push_back({c.name, 1});
       return true;
@@ -288,7 +295,7 @@ struct RuleLibrary::Impl {
       auto u = std::find_if(c.uses.begin(), c.uses.end(), [&](const auto& p) { return p.first == callee; });
       if (u != c.uses.end()) {
         for (const auto& spec : u->second) out.push_back({callee, spec == "W" ? width : std::stoi(spec)});
-      } else if (find(callee, width, integer_eft, integer_functions)) {
+      } else if (find(callee, width, v)) {
         out.push_back({callee, width});
       } else {
         *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " (width " + std::to_string(width) +
@@ -505,8 +512,8 @@ bool parse_file(const std::string& file, const std::string& text, std::vector<Ch
             return fail(start, c.name + ": @min-es takes one of 100 300 310 320");
           c.min_es = std::stoi(w[0]);
         } else if (key == "@variant") {
-          if (w.size() != 1 || (w[0] != "int" && w[0] != "integer-functions"))
-            return fail(start, c.name + ": @variant takes 'int' or 'integer-functions'");
+          if (w.size() != 1 || (w[0] != "int" && w[0] != "integer-functions" && w[0] != "bit-casts"))
+            return fail(start, c.name + ": @variant takes 'int', 'integer-functions' or 'bit-casts'");
           c.variant = w[0];
         } else if (key == "@per-component") {
           if (!w.empty()) return fail(start, c.name + ": @per-component takes no value");
@@ -577,7 +584,10 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       const Chunk& c = im.chunks[i];
       im.names.insert(c.name);
       for (int w : c.widths) {
-        auto& index = c.variant.empty() ? im.index : c.variant == "int" ? im.int_index : im.intfn_index;
+        auto& index = c.variant.empty()               ? im.index
+                      : c.variant == "int"               ? im.int_index
+                      : c.variant == "integer-functions" ? im.intfn_index
+                                                         : im.casts_index;
         if (!index.emplace(std::make_pair(c.name, w), i).second) {
           *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(w) +
                    " is defined twice";
@@ -604,7 +614,7 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       }
     }
     // Every instance: dependencies exist, placeholders substitute, no cycles.
-    for (const auto* variants : {&im.int_index, &im.intfn_index})
+    for (const auto* variants : {&im.int_index, &im.intfn_index, &im.casts_index})
       for (const auto& [key, idx] : *variants)
         if (!im.index.count(key)) {
           const Chunk& c = im.chunks[idx];
@@ -612,13 +622,13 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
                    ": @variant " + c.variant + " replaces nothing (no plain chunk of that name and width)";
           return std::nullopt;
         }
-    bool integer_eft = false, integer_functions = false;
+    Variants selected;
     std::map<std::pair<std::string, int>, int> state;  // 1 visiting, 2 done
     std::vector<RuleRef> stack;
     std::function<bool(const RuleRef&)> visit = [&](const RuleRef& r) -> bool {
       auto key = std::make_pair(r.name, r.width);
       if (state[key] == 2) return true;
-      const Chunk* c = im.find(r.name, r.width, integer_eft, integer_functions);
+      const Chunk* c = im.find(r.name, r.width, selected);
       if (!c) {
         *error = "rule " + r.name + " has no width " + std::to_string(r.width);
         return false;
@@ -630,7 +640,7 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       }
       state[key] = 1;
       std::vector<RuleRef> ds;
-      if (!im.deps(*c, r.width, ds, error, integer_eft, integer_functions)) return false;
+      if (!im.deps(*c, r.width, ds, error, selected)) return false;
       for (const auto& d : ds)
         if (!visit(d)) return false;
       for (GuardStyle g : {GuardStyle::Precise, GuardStyle::Uniform, GuardStyle::None}) {
@@ -640,9 +650,11 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       state[key] = 2;
       return true;
     };
-    for (int variant : {0, 1, 2}) {
-      integer_eft = variant == 1;
-      integer_functions = variant == 2;
+    // Each variant alone, and all of them (df64-int on a target with integer functions).
+    for (int variant : {0, 1, 2, 3, 4}) {
+      selected.integer_eft = variant == 1 || variant == 4;
+      selected.integer_functions = variant == 2 || variant == 4;
+      selected.bit_casts = variant == 3 || variant == 4;
       state.clear();
       for (const auto& [key, idx] : im.index)
         if (!visit({key.first, key.second})) return std::nullopt;
@@ -751,7 +763,10 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     }
     // Mode exact has no optimizer guard: the float-float rules its bridges call (rules/exact.glsl,
     // transcendentals) take the integer error-free transformations of df64-int, which need none.
-    const bool integer_eft = request.integer_eft || request.exact_words;
+    Variants selected;
+    selected.integer_eft = request.integer_eft || request.exact_words;
+    selected.integer_functions = request.integer_functions;
+    selected.bit_casts = request.bit_casts;
     // Post-order DFS: callees before callers, each instance once.
     std::vector<RuleRef> order;
     std::map<std::pair<std::string, int>, int> state;
@@ -765,9 +780,9 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return false;
       }
       state[key] = 1;
-      const Chunk* c = im.find(r.name, r.width, integer_eft, request.integer_functions);
+      const Chunk* c = im.find(r.name, r.width, selected);
       std::vector<RuleRef> ds;
-      if (!c || !im.deps(*c, r.width, ds, &error, integer_eft, request.integer_functions)) {
+      if (!c || !im.deps(*c, r.width, ds, &error, selected)) {
         if (error.empty()) error = "rule " + r.name + " has no width " + std::to_string(r.width);
         return false;
       }
@@ -785,7 +800,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
         return result;
       }
     for (const auto& r : order) {
-      const Chunk* c = im.find(r.name, r.width, integer_eft, request.integer_functions);
+      const Chunk* c = im.find(r.name, r.width, selected);
       if (c->min_es > request.es_version) {
         std::string msg = r.name + " is not available on " + es_name(request.es_version) + " (it needs " +
                           es_name(c->min_es) + " or later)";
@@ -808,7 +823,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     std::vector<std::string> functions;
     std::set<int> struct_widths, ff_struct_widths;
     for (const auto& r : order) {
-      const Chunk& c = *im.find(r.name, r.width, integer_eft, request.integer_functions);
+      const Chunk& c = *im.find(r.name, r.width, selected);
       // Mode exact: a float-float rule (a bridge's callee) keeps float words, as ff_* types.
       const bool float_float = request.exact_words && !holds_binary64_words(c);
       Subst sc = s;
@@ -830,7 +845,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     if (!order.empty()) {
       if (request.exact_words) {
         const size_t bridged = size_t(std::count_if(order.begin(), order.end(), [&](const RuleRef& r) {
-          return !holds_binary64_words(*im.find(r.name, r.width, integer_eft, request.integer_functions));
+          return !holds_binary64_words(*im.find(r.name, r.width, selected));
         }));
         out += "// doublet exact binary64 runtime (mode exact): " + std::to_string(order.size() - bridged) +
                " functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)";

@@ -20,6 +20,9 @@
 //   // @variant int           replaces the same-named chunk when EmitRequest::integer_eft
 //   // @variant integer-functions   replaces the same-named chunk when
 //                             EmitRequest::integer_functions (umulExtended, findMSB: ES 3.10+, GLSL 4.00+)
+//   // @variant bit-casts    replaces the same-named chunk when EmitRequest::bit_casts
+//                             (floatBitsToUint and friends: every target but ES 1.00)
+//   When several apply, "int" wins over "integer-functions", which wins over "bit-casts".
 // Required header lines: "Algorithm:", "Source:", "Bound:", "Flops:".
 #pragma once
 
@@ -53,6 +56,9 @@ struct EmitRequest {
   // The target has GLSL's integer functions (umulExtended, findMSB, ...: ES 3.10+, GLSL 4.00+):
   // the "@variant integer-functions" chunks (rules/exact.glsl) replace the same-named ones.
   bool integer_functions = false;
+  // The target has floatBitsToUint/uintBitsToFloat (every target but ES 1.00): the
+  // "@variant bit-casts" chunks (TwoProd's split by bits, rules/core.glsl) replace the same-named ones.
+  bool bit_casts = false;
   // Mode exact: the df_* structs hold uint words (binary64 high and low words), not floats. A
   // float-float rule that an exact rule calls (the transcendental bridges) is emitted with its
   // types renamed ff_double/ff_dvecN (float words) and with the integer EFTs (as integer_eft).

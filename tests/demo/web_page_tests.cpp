@@ -187,24 +187,6 @@ TEST(WebDemo, OpensFromFileUrl) {
     EXPECT_EQ(float_float_failures(r, mode), std::vector<std::string>{});
 }
 
-// The sabotage: without the optimizer guard, ANGLE/SwiftShader folds the product's error term
-// (docs/web.md), so df64's Mandelbrot must fail. (Its jitter, a subtraction, survives here.)
-TEST(WebDemo, PageLoweredWithoutTheGuardFailsTheMandelbrotCheck) {
-  DOUBLET_REQUIRE_BROWSER_OR_SKIP();
-  ScratchDir scratch;
-  const fs::path dir = make_page(scratch, {"--sabotage", "no-guard"});
-  EXPECT_EQ(read_file(dir / "index.html").find("df_guard"), std::string::npos);
-  const json r = open_page(dir);
-  ASSERT_FALSE(r.is_null());
-  EXPECT_EQ(r.at("sabotage"), "no-guard");
-  const std::vector<std::string> failed = float_float_failures(r, "df64");
-  ASSERT_FALSE(failed.empty()) << "the unguarded page passed: " << r.dump();
-  for (const std::string& f : failed) EXPECT_NE(f.find("mandelbrot"), std::string::npos) << f;
-  // df64-int needs no guard: its error terms are integer arithmetic, which no float rewrite removes.
-  const std::vector<std::string> int_failed = float_float_failures(r, "df64-int");
-  EXPECT_TRUE(int_failed.empty()) << int_failed.front();
-}
-
 // The sabotage: the page uploads every lo word as 0, so float-float works on float inputs; every
 // float-float mode must fail both demos.
 TEST(WebDemo, PageWithoutLoWordsFailsEveryCheck) {

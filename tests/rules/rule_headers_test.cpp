@@ -98,9 +98,10 @@ TEST(RuleHeaders, DocsTableMatchesHeaders) {
     if (line.rfind("| `", 0) == 0) rows.push_back(line);
   for (const auto& info : RuleLibrary::builtin().info()) {
     SCOPED_TRACE(info.name + " widths " + widths_text(info.widths));
-    const std::string variant = info.variant.empty()    ? ""
-                                : info.variant == "int" ? " (df64-int)"
-                                                        : " (integer functions)";
+    const std::string variant = info.variant.empty()                  ? ""
+                                : info.variant == "int"               ? " (df64-int)"
+                                : info.variant == "integer-functions" ? " (integer functions)"
+                                                                      : " (bit casts)";
     const std::string key = "| `" + info.name + "`" + variant + " | " + widths_text(info.widths) + " |";
     const std::string* row = nullptr;
     for (const auto& r : rows)

@@ -465,7 +465,38 @@ TEST(RuleFormat, IntegerFunctionsVariant) {
   EXPECT_FALSE(parse_one(h + "// @variant integer-functions\nuint lone(uint x) {\n  return x;\n}\n", &err));
   EXPECT_NE(err.find("@variant integer-functions replaces nothing"), std::string::npos) << err;
   EXPECT_FALSE(parse_one(h + "// @variant fast\nuint lead(uint x) {\n  return x;\n}\n", &err));
-  EXPECT_NE(err.find("@variant takes 'int' or 'integer-functions'"), std::string::npos) << err;
+  EXPECT_NE(err.find("@variant takes 'int', 'integer-functions' or 'bit-casts'"), std::string::npos) << err;
+}
+
+// "@variant bit-casts" (TwoProd's split by bits) replaces the plain chunk where the target has bit
+// casts, and yields to the df64-int chunk of the same name when both apply.
+TEST(RuleFormat, BitCastsVariantYieldsToTheIntegerEfts) {
+  std::string err;
+  const std::string h = kHeader;
+  auto l = parse_one(h + "float cut(float x) {\n  return x * 4097.0;\n}\n\n" + h +
+                         "// @min-es 300\n// @variant bit-casts\nfloat cut(float x) {\n  return uintBitsToFloat(floatBitsToUint(x) & 4294963200u);\n}\n\n" +
+                         h + "// @min-es 300\n// @variant int\nfloat cut(float x) {\n  return float(floatBitsToInt(x) >> 12);\n}\n\n" +
+                         h + "float top(float x) {\n  return cut(x);\n}\n",
+                     &err);
+  ASSERT_TRUE(l) << err;
+  EmitRequest req;
+  req.used = {{"top", 1}};
+  req.guard = GuardStyle::None;
+  req.es_version = 300;
+  auto emitted = [&](bool bit_casts, bool integer_eft) {
+    req.bit_casts = bit_casts;
+    req.integer_eft = integer_eft;
+    EmitResult r = l->emit(req);
+    EXPECT_TRUE(r.ok) << r.error;
+    return r.text;
+  };
+  EXPECT_NE(emitted(false, false).find("4097.0"), std::string::npos);
+  const std::string casts = emitted(true, false);
+  EXPECT_NE(casts.find("& 4294963200u"), std::string::npos) << casts;
+  EXPECT_EQ(casts.find("4097.0"), std::string::npos) << casts;
+  const std::string both = emitted(true, true);
+  EXPECT_NE(both.find(">> 12"), std::string::npos) << both;
+  EXPECT_EQ(both.find("4294963200u"), std::string::npos) << both;
 }
 
 TEST(RuleFormat, Errors) {

@@ -1,9 +1,9 @@
 // `doublet verify --backend webgl2` as users run it: the lowered shader in headless Chromium's
 // WebGL2, the original in fp64 on lavapipe. Held-out-style accuracy (add, sub, mul, div, sqrt, a
 // cancelling sum, a three-stage expression) must reach 44 bits in a fragment and a vertex shader,
-// and both sabotages must turn the same check red in the browser: drop-lo (doubles demoted to
-// float) everywhere, drop-guard (no optimizer guard) for the products, quotients and roots that
-// the browser's compiler folds to float (docs/web.md). A shader WebGL rejects is a driver failure
+// and drop-lo (doubles demoted to float) must turn the same check red in the browser everywhere.
+// drop-guard (no optimizer guard) keeps every bit on this stack since TwoProd splits by bits: the
+// browser's compiler folded only Veltkamp's split (docs/web.md). A shader WebGL rejects is a driver failure
 // carrying the browser's log; a compute shader or a target WebGL2 cannot compile is an input error.
 #include <gtest/gtest.h>
 
@@ -111,20 +111,20 @@ TEST_P(WebGl2Verify, DropLoFailsInChromium) {
   for (const auto& [op, b] : measured) EXPECT_LT(b, 30) << op << " kept its bits with doubles demoted\n" << r.out;
 }
 
-TEST_P(WebGl2Verify, DropGuardFailsInChromium) {
+// Without the guard nothing folds here: ANGLE/SwiftShader folded the products, quotients and roots
+// through Veltkamp's split (a*4097 - ...), which the split by bits (rules/core.glsl) does not have.
+// If a browser update starts folding sums, this fails: re-measure and update docs/web.md.
+TEST_P(WebGl2Verify, DropGuardKeepsItsBitsInChromium) {
   DOUBLET_REQUIRE_BROWSER_OR_SKIP();
   const CliRun r = verify(args(GetParam(), "webgl2", "drop-guard"));
-  ASSERT_EQ(r.exit_code, 1) << r.out;
+  ASSERT_EQ(r.exit_code, 0) << r.out;
   const auto measured = bits(r, GetParam(), "webgl2");
   ASSERT_EQ(measured.size(), GetParam().outputs.size()) << r.out;
-  // Without the guard the browser folds the Veltkamp split: these fall to float precision.
-  for (const std::string op : {"mul", "div", "sqrt", "3 stages"})
-    EXPECT_LT(measured.at(op), 30) << op << " kept its bits without the guard\n" << r.out;
+  for (const auto& [op, b] : measured) EXPECT_GE(b, 44) << op << " lost its bits without the guard\n" << r.out;
 }
 
 // df64-int with the guard removed (it has none to begin with) keeps every bit the guarded df64
-// keeps, where df64 without the guard falls to float (DropGuardFailsInChromium): issue 14's
-// "df64-int holds >= 44 bits with the guard removed" in WebGL2.
+// keeps: issue 14's "df64-int holds >= 44 bits with the guard removed" in WebGL2.
 TEST_P(WebGl2Verify, Df64IntNeedsNoGuardInChromium) {
   DOUBLET_REQUIRE_BROWSER_OR_SKIP();
   const CliRun r = verify(args(GetParam(), "webgl2", "drop-guard") + " --mode df64-int");

@@ -69,25 +69,16 @@ fn df_sub(a: df_double, b: df_double) -> df_double {
 }
 
 fn df_split(a: f32) -> df_double {
-  var g: f32 = ((a * 4097.0f) - df_uniforms.df_guard);
-  var d: f32 = ((a - g) - df_uniforms.df_guard);
-  var hi: f32 = (g + d);
+  var rounded: f32 = bitcast<f32>(((bitcast<u32>(a) + 2048u) & 4294963200u));
+  var hi: f32 = clamp(rounded, (-0x1.ffep+127f), 0x1.ffep+127f);
   var lo: f32 = (a - hi);
   return df_double(hi, lo);
 }
 
 fn df_two_prod(a: f32, b: f32) -> df_double {
   var p: f32 = ((a * b) - df_uniforms.df_guard);
-  var aa: f32 = abs(a);
-  var ab: f32 = abs(b);
-  var big_a: bool = (aa > 0x1.ed09bep+112f);
-  var big_b: bool = (ab > 0x1.ed09bep+112f);
-  var ka: f32 = select(select(1.0f, 8192.0f, big_b), 0x1p-13f, big_a);
-  var kb: f32 = select(select(1.0f, 0x1p-13f, big_b), 8192.0f, big_a);
-  var as_: f32 = (a * ka);
-  var bs: f32 = (b * kb);
-  var sa: df_double = df_split(as_);
-  var sb: df_double = df_split(bs);
+  var sa: df_double = df_split(a);
+  var sb: df_double = df_split(b);
   var hh: f32 = (sa.hi * sb.hi);
   var hl: f32 = (sa.hi * sb.lo);
   var lh: f32 = (sa.lo * sb.hi);

@@ -63,26 +63,17 @@ fn df_add_df_dvec2_df_dvec2(a: df_dvec2, b: df_dvec2) -> df_dvec2 {
   return r;
 }
 
-fn df_split(a: f32) -> df_double {
-  var g: f32 = ((a * 4097.0f) - df_uniforms.df_guard);
-  var d: f32 = ((a - g) - df_uniforms.df_guard);
-  var hi: f32 = (g + d);
+fn df_split_float(a: f32) -> df_double {
+  var rounded: f32 = bitcast<f32>(((bitcast<u32>(a) + 2048u) & 4294963200u));
+  var hi: f32 = clamp(rounded, (-0x1.ffep+127f), 0x1.ffep+127f);
   var lo: f32 = (a - hi);
   return df_double(hi, lo);
 }
 
 fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
   var p: f32 = ((a * b) - df_uniforms.df_guard);
-  var aa: f32 = abs(a);
-  var ab: f32 = abs(b);
-  var big_a: bool = (aa > 0x1.ed09bep+112f);
-  var big_b: bool = (ab > 0x1.ed09bep+112f);
-  var ka: f32 = select(select(1.0f, 8192.0f, big_b), 0x1p-13f, big_a);
-  var kb: f32 = select(select(1.0f, 0x1p-13f, big_b), 8192.0f, big_a);
-  var as_: f32 = (a * ka);
-  var bs: f32 = (b * kb);
-  var sa: df_double = df_split(as_);
-  var sb: df_double = df_split(bs);
+  var sa: df_double = df_split_float(a);
+  var sb: df_double = df_split_float(b);
   var hh: f32 = (sa.hi * sb.hi);
   var hl: f32 = (sa.hi * sb.lo);
   var lh: f32 = (sa.lo * sb.hi);
@@ -151,10 +142,26 @@ fn df_to_float(a: df_dvec2) -> vec2<f32> {
   return r.hi;
 }
 
+fn df_split_vec2(a: vec2<f32>) -> df_dvec2 {
+  var rounded: vec2<f32> = bitcast<vec2<f32>>(((bitcast<vec2<u32>>(a) + 2048u) & vec2<u32>(4294963200u)));
+  var hi: vec2<f32> = clamp(rounded, vec2<f32>((-0x1.ffep+127f)), vec2<f32>(0x1.ffep+127f));
+  var lo: vec2<f32> = (a - hi);
+  return df_dvec2(hi, lo);
+}
+
 fn df_two_prod_vec2_vec2(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
-  var r0: df_double = df_two_prod_float_float(a[0i], b[0i]);
-  var r1: df_double = df_two_prod_float_float(a[1i], b[1i]);
-  return df_dvec2(vec2<f32>(r0.hi, r1.hi), vec2<f32>(r0.lo, r1.lo));
+  var p: vec2<f32> = ((a * b) - df_uniforms.df_guard);
+  var sa: df_dvec2 = df_split_vec2(a);
+  var sb: df_dvec2 = df_split_vec2(b);
+  var hh: vec2<f32> = (sa.hi * sb.hi);
+  var hl: vec2<f32> = (sa.hi * sb.lo);
+  var lh: vec2<f32> = (sa.lo * sb.hi);
+  var ll: vec2<f32> = (sa.lo * sb.lo);
+  var t1: vec2<f32> = (hh - p);
+  var t2: vec2<f32> = (t1 + hl);
+  var t3: vec2<f32> = (t2 + lh);
+  var e: vec2<f32> = (t3 + ll);
+  return df_dvec2(p, e);
 }
 
 fn df_mul_f2(a: df_dvec2, b: vec2<f32>) -> df_dvec2 {
@@ -175,7 +182,7 @@ fn df_mul_pow2(a: df_double, p: f32) -> df_double {
 
 fn df_sqr(a: df_double) -> df_double {
   var p: f32 = ((a.hi * a.hi) - df_uniforms.df_guard);
-  var s: df_double = df_split(a.hi);
+  var s: df_double = df_split_float(a.hi);
   var hh: f32 = (s.hi * s.hi);
   var hl: f32 = (s.hi * s.lo);
   var hl2: f32 = (hl + hl);

@@ -12,7 +12,7 @@ struct df_dmat4 {
   mat4 hi;
   mat4 lo;
 };
-// doublet float-float runtime: 29 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 31 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
@@ -123,85 +123,58 @@ df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
   return z;
 }
 
-// df_split: a == hi + lo exactly, hi and lo each fit in 12 significant bits, so any product
-// of two halves is exact in float. Returned as df_double(hi, lo) (not a normalized double-word).
-// Algorithm: Veltkamp splitting, C = 2^12 + 1 = 4097 (s = ceil(24/2) = 12)
-// Source: Dekker 1971, section 5 (attributed to Veltkamp); HFPA (2018) Algorithm 4.9
+// df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
+// Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (2 flops fewer,
+// no range limit, nothing an algebraic optimizer can fold: hi is not a float expression of a).
+// Algorithm: binary32 pattern rounded to 12 significant bits, (bits + 2^11) & ~(2^12 - 1) (ties
+// away from zero; a carry into the exponent field is the rounding up to the next binade), hi
+// clamped to +-H, H = 0x7F7FF000 = 3.4019929e38 (the largest float of 12 significant bits); lo = a - hi
+// Source: Dekker 1971, section 5 (mul12 is exact for halves of at most 12 bits); IEEE 754-2008
+// binary32 encoding; HFPA (2018) section 4.4.2 (splitting)
 // Bound: exact
-// Flops: 4
-// Steps: g = RN(C*a); d = RN(a-g); hi = RN(g+d); lo = RN(a-hi).
-// Range: C*a overflows when |a| > FLT_MAX/4097 (about 8.3e34); the result is then NaN.
-// df_two_prod scales its operands by powers of two so that it never splits such a value.
-df_double df_split(float a) {
-  float g = ((a * 4097.0) - df_guard);
-  float d = ((a - g) - df_guard);
-  float hi = (g + d);
-  float lo = (a - hi);
-  return df_double(hi, lo);
+// Flops: 2 (plus 2 integer operations and a clamp)
+// Steps: hi = clamp(uintBitsToFloat((floatBitsToUint(a) + 0x800u) & 0xFFFFF000u), -H, H);
+//        lo = RN(a - hi), exact (hi is a rounded to a coarser grid: |lo| <= 2^11 ulp(a)).
+// Range: no limit. Where the rounding would carry past FLT_MAX (|a| from 0x7F7FF800) the clamp
+// makes hi a truncated, lo then has 12 bits (0 <= |lo| < 2^12 ulp(a)); mul12 stays exact there
+// (df_two_prod below). a = +-Inf: hi = +-H, lo = +-Inf; NaN: lo is NaN (the callers' df_finish
+// then returns the plain product).
+df_dvec4 df_split(vec4 a) {
+  vec4 rounded = (uintBitsToFloat((floatBitsToUint(a) + 2048u) & 4294963200u));
+  vec4 hi = (clamp(rounded, -3.4019929e38, 3.4019929e38));
+  vec4 lo = (a - hi);
+  return df_dvec4(hi, lo);
 }
 
-// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
+// halves of the split by bits, which needs no scaling of the operands (no range limit).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 21 (plus 2 comparisons and 2 selects)
-// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
-//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
-//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
-//        (every product of halves and every partial sum is exact).
-// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
-// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
-// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
-// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
-// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
-// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
-df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
-  float aa = (abs(a));
-  float ab = (abs(b));
-  bool big_a = aa > 1.0e34;
-  bool big_b = ab > 1.0e34;
-  float ka = (mix(mix(1.0, 8192.0, big_b), 1.220703125e-4, big_a));
-  float kb = (mix(mix(1.0, 1.220703125e-4, big_b), 8192.0, big_a));
-  float as = (a * ka);
-  float bs = (b * kb);
-  df_double sa = df_split(as);
-  df_double sb = df_split(bs);
-  float hh = (sa.hi * sb.hi);
-  float hl = (sa.hi * sb.lo);
-  float lh = (sa.lo * sb.hi);
-  float ll = (sa.lo * sb.lo);
-  float t1 = (hh - p);
-  float t2 = (t1 + hl);
-  float t3 = (t2 + lh);
-  float e = (t3 + ll);
-  return df_double(p, e);
-}
-
-// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
-// Bound: exact
-// Flops: 21 (plus 2 comparisons and 2 selects)
-// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
-//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
-//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
-//        (every product of halves and every partial sum is exact).
-// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
-// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
-// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
-// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
-// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
-// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
-// (width 4: the width-1 df_two_prod applied to each component)
+// Flops: 13 (plus 4 integer operations and 2 clamps)
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b) (df_split, bit-casts);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+// Exactness, with a = A*2^i, b = B*2^j (A, B 24-bit integers), ah = AH*2^(i+12), al = AL*2^i and
+// likewise for b, in units of 2^(i+j): t1 = AB - p - AL*BH*2^12 - AH*BL*2^12 - AL*BL is a multiple of
+// 2^23 below 2^37; t2 = t1 + AH*BL*2^12 a multiple of 2^12 below 2^36; t3 = AB - p - AL*BL an integer
+// of at most 2^24; e = AB - p. Each fits in 24 bits when |AL|, |BL| <= 2^11 (rounded halves), and
+// still when one of them is below 2^12 (the clamped split of |a| >= 0x7F7FF800: a finite product then
+// has |b| < 2, whose split is rounded). So the pairs are those of the Veltkamp version.
+// Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
+// operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec4 df_two_prod(vec4 a, vec4 b) {
-  df_double r0 = df_two_prod(a.x, b.x);
-  df_double r1 = df_two_prod(a.y, b.y);
-  df_double r2 = df_two_prod(a.z, b.z);
-  df_double r3 = df_two_prod(a.w, b.w);
-  return df_dvec4(vec4(r0.hi, r1.hi, r2.hi, r3.hi), vec4(r0.lo, r1.lo, r2.lo, r3.lo));
+  vec4 p = ((a * b) - df_guard);
+  df_dvec4 sa = df_split(a);
+  df_dvec4 sb = df_split(b);
+  vec4 hh = (sa.hi * sb.hi);
+  vec4 hl = (sa.hi * sb.lo);
+  vec4 lh = (sa.lo * sb.hi);
+  vec4 ll = (sa.lo * sb.lo);
+  vec4 t1 = (hh - p);
+  vec4 t2 = (t1 + hl);
+  vec4 t3 = (t2 + lh);
+  vec4 e = (t3 + ll);
+  return df_dvec4(p, e);
 }
 
 // df_fast_two_sum: s + e == a + b exactly, with s = RN(a + b), PROVIDED a == 0 or
@@ -369,28 +342,58 @@ df_double df_scale_pow2(df_double a, float s) {
   return df_double(h, l);
 }
 
-// df_two_prod: p + e == a * b exactly, with p = RN(a * b).
-// Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
-// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
+// df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
+// Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (2 flops fewer,
+// no range limit, nothing an algebraic optimizer can fold: hi is not a float expression of a).
+// Algorithm: binary32 pattern rounded to 12 significant bits, (bits + 2^11) & ~(2^12 - 1) (ties
+// away from zero; a carry into the exponent field is the rounding up to the next binade), hi
+// clamped to +-H, H = 0x7F7FF000 = 3.4019929e38 (the largest float of 12 significant bits); lo = a - hi
+// Source: Dekker 1971, section 5 (mul12 is exact for halves of at most 12 bits); IEEE 754-2008
+// binary32 encoding; HFPA (2018) section 4.4.2 (splitting)
 // Bound: exact
-// Flops: 21 (plus 2 comparisons and 2 selects)
-// Steps: p = RN(a*b); as = a*k, bs = b/k with k = 2^-13 when |a| > 1e34, 2^13 when |b| > 1e34,
-//        else 1 (exact: as*bs == a*b); (ah,al) = split(as); (bh,bl) = split(bs);
-//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl)
-//        (every product of halves and every partial sum is exact).
-// Range: when a*b is finite and one operand exceeds 1e34 the other is below 3.5e4, so both
-// scaled operands stay below FLT_MAX/4097 and nothing underflows; the split never overflows.
-// Exact when |a*b| <= FLT_MAX (minus an ulp); e underflows below ~2^-102. When a*b overflows
-// (or an operand is Inf or NaN) p is the IEEE result and e is not finite: the callers'
-// df_finish then returns (p, 0). The scale factors are selects, not a branch: a branch here
-// let lavapipe's vertex stage delete the error terms under the Uniform guard (stages_test).
-// fma(a, b, -p) would be 2 flops but Mesa/llvmpipe does not fuse it (docs/numerics.md).
-// (width 3: the width-1 df_two_prod applied to each component)
+// Flops: 2 (plus 2 integer operations and a clamp)
+// Steps: hi = clamp(uintBitsToFloat((floatBitsToUint(a) + 0x800u) & 0xFFFFF000u), -H, H);
+//        lo = RN(a - hi), exact (hi is a rounded to a coarser grid: |lo| <= 2^11 ulp(a)).
+// Range: no limit. Where the rounding would carry past FLT_MAX (|a| from 0x7F7FF800) the clamp
+// makes hi a truncated, lo then has 12 bits (0 <= |lo| < 2^12 ulp(a)); mul12 stays exact there
+// (df_two_prod below). a = +-Inf: hi = +-H, lo = +-Inf; NaN: lo is NaN (the callers' df_finish
+// then returns the plain product).
+df_dvec3 df_split(vec3 a) {
+  vec3 rounded = (uintBitsToFloat((floatBitsToUint(a) + 2048u) & 4294963200u));
+  vec3 hi = (clamp(rounded, -3.4019929e38, 3.4019929e38));
+  vec3 lo = (a - hi);
+  return df_dvec3(hi, lo);
+}
+
+// df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
+// halves of the split by bits, which needs no scaling of the operands (no range limit).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 13 (plus 4 integer operations and 2 clamps)
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b) (df_split, bit-casts);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+// Exactness, with a = A*2^i, b = B*2^j (A, B 24-bit integers), ah = AH*2^(i+12), al = AL*2^i and
+// likewise for b, in units of 2^(i+j): t1 = AB - p - AL*BH*2^12 - AH*BL*2^12 - AL*BL is a multiple of
+// 2^23 below 2^37; t2 = t1 + AH*BL*2^12 a multiple of 2^12 below 2^36; t3 = AB - p - AL*BL an integer
+// of at most 2^24; e = AB - p. Each fits in 24 bits when |AL|, |BL| <= 2^11 (rounded halves), and
+// still when one of them is below 2^12 (the clamped split of |a| >= 0x7F7FF800: a finite product then
+// has |b| < 2, whose split is rounded). So the pairs are those of the Veltkamp version.
+// Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
+// operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  df_double r0 = df_two_prod(a.x, b.x);
-  df_double r1 = df_two_prod(a.y, b.y);
-  df_double r2 = df_two_prod(a.z, b.z);
-  return df_dvec3(vec3(r0.hi, r1.hi, r2.hi), vec3(r0.lo, r1.lo, r2.lo));
+  vec3 p = ((a * b) - df_guard);
+  df_dvec3 sa = df_split(a);
+  df_dvec3 sb = df_split(b);
+  vec3 hh = (sa.hi * sb.hi);
+  vec3 hl = (sa.hi * sb.lo);
+  vec3 lh = (sa.lo * sb.hi);
+  vec3 ll = (sa.lo * sb.lo);
+  vec3 t1 = (hh - p);
+  vec3 t2 = (t1 + hl);
+  vec3 t3 = (t2 + lh);
+  vec3 e = (t3 + ll);
+  return df_dvec3(p, e);
 }
 
 // df_mul: a * b.
@@ -427,6 +430,60 @@ df_double df_dot(df_dvec3 a, df_dvec3 b) {
   df_double xy = df_add(x, y);
   df_double r = df_add(xy, z);
   return r;
+}
+
+// df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
+// Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (2 flops fewer,
+// no range limit, nothing an algebraic optimizer can fold: hi is not a float expression of a).
+// Algorithm: binary32 pattern rounded to 12 significant bits, (bits + 2^11) & ~(2^12 - 1) (ties
+// away from zero; a carry into the exponent field is the rounding up to the next binade), hi
+// clamped to +-H, H = 0x7F7FF000 = 3.4019929e38 (the largest float of 12 significant bits); lo = a - hi
+// Source: Dekker 1971, section 5 (mul12 is exact for halves of at most 12 bits); IEEE 754-2008
+// binary32 encoding; HFPA (2018) section 4.4.2 (splitting)
+// Bound: exact
+// Flops: 2 (plus 2 integer operations and a clamp)
+// Steps: hi = clamp(uintBitsToFloat((floatBitsToUint(a) + 0x800u) & 0xFFFFF000u), -H, H);
+//        lo = RN(a - hi), exact (hi is a rounded to a coarser grid: |lo| <= 2^11 ulp(a)).
+// Range: no limit. Where the rounding would carry past FLT_MAX (|a| from 0x7F7FF800) the clamp
+// makes hi a truncated, lo then has 12 bits (0 <= |lo| < 2^12 ulp(a)); mul12 stays exact there
+// (df_two_prod below). a = +-Inf: hi = +-H, lo = +-Inf; NaN: lo is NaN (the callers' df_finish
+// then returns the plain product).
+df_double df_split(float a) {
+  float rounded = (uintBitsToFloat((floatBitsToUint(a) + 2048u) & 4294963200u));
+  float hi = (clamp(rounded, -3.4019929e38, 3.4019929e38));
+  float lo = (a - hi);
+  return df_double(hi, lo);
+}
+
+// df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
+// halves of the split by bits, which needs no scaling of the operands (no range limit).
+// Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 13 (plus 4 integer operations and 2 clamps)
+// Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b) (df_split, bit-casts);
+//        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+// Exactness, with a = A*2^i, b = B*2^j (A, B 24-bit integers), ah = AH*2^(i+12), al = AL*2^i and
+// likewise for b, in units of 2^(i+j): t1 = AB - p - AL*BH*2^12 - AH*BL*2^12 - AL*BL is a multiple of
+// 2^23 below 2^37; t2 = t1 + AH*BL*2^12 a multiple of 2^12 below 2^36; t3 = AB - p - AL*BL an integer
+// of at most 2^24; e = AB - p. Each fits in 24 bits when |AL|, |BL| <= 2^11 (rounded halves), and
+// still when one of them is below 2^12 (the clamped split of |a| >= 0x7F7FF800: a finite product then
+// has |b| < 2, whose split is rounded). So the pairs are those of the Veltkamp version.
+// Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
+// operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
+df_double df_two_prod(float a, float b) {
+  float p = ((a * b) - df_guard);
+  df_double sa = df_split(a);
+  df_double sb = df_split(b);
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
+  return df_double(p, e);
 }
 
 // df_sqrt: sqrt(a) for a >= 0; sqrt(+-0) = +-0, sqrt(+Inf) = +Inf, sqrt(a < 0) and sqrt(NaN) = NaN

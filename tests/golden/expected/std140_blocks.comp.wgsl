@@ -46,26 +46,17 @@ struct df_uniforms_t {
 }
 @group(0) @binding(3) var<uniform> df_uniforms: df_uniforms_t;
 
-fn df_split(a: f32) -> df_double {
-  var g: f32 = ((a * 4097.0f) - df_uniforms.df_guard);
-  var d: f32 = ((a - g) - df_uniforms.df_guard);
-  var hi: f32 = (g + d);
+fn df_split_float(a: f32) -> df_double {
+  var rounded: f32 = bitcast<f32>(((bitcast<u32>(a) + 2048u) & 4294963200u));
+  var hi: f32 = clamp(rounded, (-0x1.ffep+127f), 0x1.ffep+127f);
   var lo: f32 = (a - hi);
   return df_double(hi, lo);
 }
 
 fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
   var p: f32 = ((a * b) - df_uniforms.df_guard);
-  var aa: f32 = abs(a);
-  var ab: f32 = abs(b);
-  var big_a: bool = (aa > 0x1.ed09bep+112f);
-  var big_b: bool = (ab > 0x1.ed09bep+112f);
-  var ka: f32 = select(select(1.0f, 8192.0f, big_b), 0x1p-13f, big_a);
-  var kb: f32 = select(select(1.0f, 0x1p-13f, big_b), 8192.0f, big_a);
-  var as_: f32 = (a * ka);
-  var bs: f32 = (b * kb);
-  var sa: df_double = df_split(as_);
-  var sb: df_double = df_split(bs);
+  var sa: df_double = df_split_float(a);
+  var sb: df_double = df_split_float(b);
   var hh: f32 = (sa.hi * sb.hi);
   var hl: f32 = (sa.hi * sb.lo);
   var lh: f32 = (sa.lo * sb.hi);
@@ -194,11 +185,26 @@ fn df_scale_pow2_df_double_float(a: df_double, s: f32) -> df_double {
   return df_double(h, l);
 }
 
+fn df_split_vec3(a: vec3<f32>) -> df_dvec3 {
+  var rounded: vec3<f32> = bitcast<vec3<f32>>(((bitcast<vec3<u32>>(a) + 2048u) & vec3<u32>(4294963200u)));
+  var hi: vec3<f32> = clamp(rounded, vec3<f32>((-0x1.ffep+127f)), vec3<f32>(0x1.ffep+127f));
+  var lo: vec3<f32> = (a - hi);
+  return df_dvec3(hi, lo);
+}
+
 fn df_two_prod_vec3_vec3(a: vec3<f32>, b: vec3<f32>) -> df_dvec3 {
-  var r0: df_double = df_two_prod_float_float(a[0i], b[0i]);
-  var r1: df_double = df_two_prod_float_float(a[1i], b[1i]);
-  var r2: df_double = df_two_prod_float_float(a[2i], b[2i]);
-  return df_dvec3(vec3<f32>(r0.hi, r1.hi, r2.hi), vec3<f32>(r0.lo, r1.lo, r2.lo));
+  var p: vec3<f32> = ((a * b) - df_uniforms.df_guard);
+  var sa: df_dvec3 = df_split_vec3(a);
+  var sb: df_dvec3 = df_split_vec3(b);
+  var hh: vec3<f32> = (sa.hi * sb.hi);
+  var hl: vec3<f32> = (sa.hi * sb.lo);
+  var lh: vec3<f32> = (sa.lo * sb.hi);
+  var ll: vec3<f32> = (sa.lo * sb.lo);
+  var t1: vec3<f32> = (hh - p);
+  var t2: vec3<f32> = (t1 + hl);
+  var t3: vec3<f32> = (t2 + lh);
+  var e: vec3<f32> = (t3 + ll);
+  return df_dvec3(p, e);
 }
 
 fn df_mul_df_dvec3_df_dvec3(a: df_dvec3, b: df_dvec3) -> df_dvec3 {

@@ -30,41 +30,26 @@ struct df_uniforms_t {
 }
 @group(0) @binding(2) var<uniform> df_uniforms: df_uniforms_t;
 
-fn df_split(a: f32) -> df_double {
-  var g: f32 = ((a * 4097.0f) - df_uniforms.df_guard);
-  var d_1: f32 = ((a - g) - df_uniforms.df_guard);
-  var hi: f32 = (g + d_1);
-  var lo: f32 = (a - hi);
-  return df_double(hi, lo);
+fn df_split(a: vec2<f32>) -> df_dvec2 {
+  var rounded: vec2<f32> = bitcast<vec2<f32>>(((bitcast<vec2<u32>>(a) + 2048u) & vec2<u32>(4294963200u)));
+  var hi: vec2<f32> = clamp(rounded, vec2<f32>((-0x1.ffep+127f)), vec2<f32>(0x1.ffep+127f));
+  var lo: vec2<f32> = (a - hi);
+  return df_dvec2(hi, lo);
 }
 
-fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
-  var p: f32 = ((a * b) - df_uniforms.df_guard);
-  var aa: f32 = abs(a);
-  var ab: f32 = abs(b);
-  var big_a: bool = (aa > 0x1.ed09bep+112f);
-  var big_b: bool = (ab > 0x1.ed09bep+112f);
-  var ka: f32 = select(select(1.0f, 8192.0f, big_b), 0x1p-13f, big_a);
-  var kb: f32 = select(select(1.0f, 0x1p-13f, big_b), 8192.0f, big_a);
-  var as_: f32 = (a * ka);
-  var bs: f32 = (b * kb);
-  var sa: df_double = df_split(as_);
-  var sb: df_double = df_split(bs);
-  var hh: f32 = (sa.hi * sb.hi);
-  var hl: f32 = (sa.hi * sb.lo);
-  var lh: f32 = (sa.lo * sb.hi);
-  var ll: f32 = (sa.lo * sb.lo);
-  var t1: f32 = (hh - p);
-  var t2: f32 = (t1 + hl);
-  var t3: f32 = (t2 + lh);
-  var e: f32 = (t3 + ll);
-  return df_double(p, e);
-}
-
-fn df_two_prod_vec2_vec2(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
-  var r0: df_double = df_two_prod_float_float(a[0i], b[0i]);
-  var r1: df_double = df_two_prod_float_float(a[1i], b[1i]);
-  return df_dvec2(vec2<f32>(r0.hi, r1.hi), vec2<f32>(r0.lo, r1.lo));
+fn df_two_prod(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
+  var p: vec2<f32> = ((a * b) - df_uniforms.df_guard);
+  var sa: df_dvec2 = df_split(a);
+  var sb: df_dvec2 = df_split(b);
+  var hh: vec2<f32> = (sa.hi * sb.hi);
+  var hl: vec2<f32> = (sa.hi * sb.lo);
+  var lh: vec2<f32> = (sa.lo * sb.hi);
+  var ll: vec2<f32> = (sa.lo * sb.lo);
+  var t1: vec2<f32> = (hh - p);
+  var t2: vec2<f32> = (t1 + hl);
+  var t3: vec2<f32> = (t2 + lh);
+  var e: vec2<f32> = (t3 + ll);
+  return df_dvec2(p, e);
 }
 
 fn df_fast_two_sum(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
@@ -89,7 +74,7 @@ fn df_finish_df_dvec2_vec2(z: df_dvec2, f_1: vec2<f32>) -> df_dvec2 {
 }
 
 fn df_mul(a: df_dvec2, b: df_dvec2) -> df_dvec2 {
-  var c: df_dvec2 = df_two_prod_vec2_vec2(a.hi, b.hi);
+  var c: df_dvec2 = df_two_prod(a.hi, b.hi);
   var tl: vec2<f32> = (a.hi * b.lo);
   var th: vec2<f32> = (a.lo * b.hi);
   var cl2: vec2<f32> = (th + tl);
@@ -121,7 +106,7 @@ fn df_add(a: df_dvec2, b: df_dvec2) -> df_dvec2 {
 }
 
 fn df_mul_f2(a: df_dvec2, b: vec2<f32>) -> df_dvec2 {
-  var c: df_dvec2 = df_two_prod_vec2_vec2(a.hi, b);
+  var c: df_dvec2 = df_two_prod(a.hi, b);
   var cl2: vec2<f32> = (a.lo * b);
   var cl3: vec2<f32> = (c.lo + cl2);
   var z: df_dvec2 = df_fast_two_sum(c.hi, cl3);
