@@ -91,6 +91,10 @@ const std::vector<Row>& rows() {
       {"mul_near_max", "x * y",
        {{1.2345678901234e36, 0.25}, {3.0000000001e38, 1.0000001e-3}, {1.1e35, 1.3e-30}, {-2.9e38, 1.1}, {9e34, -3.3}},
        Expect::Match, true},
+      // Operands whose 12-bit rounding would carry past FLT_MAX (|x| >= 0x7F7FF800, 3.4024e38): the
+      // split by bits truncates them instead (rules/core.glsl); rounded, hi is Inf and the low word is lost.
+      {"mul_at_max", "x * y",
+       {{3.4027e38, 0.75}, {-3.40281e38, 0.3}, {0.6, 3.40275e38}, {1.0000001, -3.40269e38}, {3.4028e38, 1.0 / 3.0}}},
       {"square_near_max", "x * x", {{1.8e19, 0}, {-1.3e19, 0}, {1.0e35, 0}}, Expect::Match, true},
       {"div_near_max", "x / y", {{3.0000000001e38, 7.0}, {1.0, 1.0000003e36}, {1e36, 3.3e-2}, {2e38, 1.7e36}}, Expect::Match, true},
       {"sqrt_near_max", "sqrt(x)", {{3.0000000001e38, 0}, {1.0000000007e36, 0}}},

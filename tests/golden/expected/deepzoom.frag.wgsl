@@ -64,8 +64,8 @@ fn df_add_df_dvec2_df_dvec2(a: df_dvec2, b: df_dvec2) -> df_dvec2 {
 }
 
 fn df_split_float(a: f32) -> df_double {
-  var rounded: f32 = bitcast<f32>(((bitcast<u32>(a) + 2048u) & 4294963200u));
-  var hi: f32 = clamp(rounded, (-0x1.ffep+127f), 0x1.ffep+127f);
+  var bits: u32 = bitcast<u32>(a);
+  var hi: f32 = bitcast<f32>((min((bits + 2048u), (bits | 2139092992u)) & 4294963200u));
   var lo: f32 = (a - hi);
   return df_double(hi, lo);
 }
@@ -143,8 +143,8 @@ fn df_to_float(a: df_dvec2) -> vec2<f32> {
 }
 
 fn df_split_vec2(a: vec2<f32>) -> df_dvec2 {
-  var rounded: vec2<f32> = bitcast<vec2<f32>>(((bitcast<vec2<u32>>(a) + 2048u) & vec2<u32>(4294963200u)));
-  var hi: vec2<f32> = clamp(rounded, vec2<f32>((-0x1.ffep+127f)), vec2<f32>(0x1.ffep+127f));
+  var bits: vec2<u32> = bitcast<vec2<u32>>(a);
+  var hi: vec2<f32> = bitcast<vec2<f32>>((min((bits + 2048u), (bits | vec2<u32>(2139092992u))) & vec2<u32>(4294963200u)));
   var lo: vec2<f32> = (a - hi);
   return df_dvec2(hi, lo);
 }

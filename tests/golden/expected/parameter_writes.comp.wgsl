@@ -67,8 +67,8 @@ fn df_add(a: df_dvec2, b: df_dvec2) -> df_dvec2 {
 }
 
 fn df_split(a: vec2<f32>) -> df_dvec2 {
-  var rounded: vec2<f32> = bitcast<vec2<f32>>(((bitcast<vec2<u32>>(a) + 2048u) & vec2<u32>(4294963200u)));
-  var hi: vec2<f32> = clamp(rounded, vec2<f32>((-0x1.ffep+127f)), vec2<f32>(0x1.ffep+127f));
+  var bits: vec2<u32> = bitcast<vec2<u32>>(a);
+  var hi: vec2<f32> = bitcast<vec2<f32>>((min((bits + 2048u), (bits | vec2<u32>(2139092992u))) & vec2<u32>(4294963200u)));
   var lo: vec2<f32> = (a - hi);
   return df_dvec2(hi, lo);
 }

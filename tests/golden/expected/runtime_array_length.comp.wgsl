@@ -57,8 +57,8 @@ fn df_add(a: df_double, b: df_double) -> df_double {
 }
 
 fn df_split(a: f32) -> df_double {
-  var rounded: f32 = bitcast<f32>(((bitcast<u32>(a) + 2048u) & 4294963200u));
-  var hi: f32 = clamp(rounded, (-0x1.ffep+127f), 0x1.ffep+127f);
+  var bits: u32 = bitcast<u32>(a);
+  var hi: f32 = bitcast<f32>((min((bits + 2048u), (bits | 2139092992u)) & 4294963200u));
   var lo: f32 = (a - hi);
   return df_double(hi, lo);
 }

@@ -47,8 +47,8 @@ struct df_uniforms_t {
 @group(0) @binding(3) var<uniform> df_uniforms: df_uniforms_t;
 
 fn df_split_float(a: f32) -> df_double {
-  var rounded: f32 = bitcast<f32>(((bitcast<u32>(a) + 2048u) & 4294963200u));
-  var hi: f32 = clamp(rounded, (-0x1.ffep+127f), 0x1.ffep+127f);
+  var bits: u32 = bitcast<u32>(a);
+  var hi: f32 = bitcast<f32>((min((bits + 2048u), (bits | 2139092992u)) & 4294963200u));
   var lo: f32 = (a - hi);
   return df_double(hi, lo);
 }
@@ -186,8 +186,8 @@ fn df_scale_pow2_df_double_float(a: df_double, s: f32) -> df_double {
 }
 
 fn df_split_vec3(a: vec3<f32>) -> df_dvec3 {
-  var rounded: vec3<f32> = bitcast<vec3<f32>>(((bitcast<vec3<u32>>(a) + 2048u) & vec3<u32>(4294963200u)));
-  var hi: vec3<f32> = clamp(rounded, vec3<f32>((-0x1.ffep+127f)), vec3<f32>(0x1.ffep+127f));
+  var bits: vec3<u32> = bitcast<vec3<u32>>(a);
+  var hi: vec3<f32> = bitcast<vec3<f32>>((min((bits + 2048u), (bits | vec3<u32>(2139092992u))) & vec3<u32>(4294963200u)));
   var lo: vec3<f32> = (a - hi);
   return df_dvec3(hi, lo);
 }

@@ -153,24 +153,28 @@ df_dvec2 df_add_f(df_dvec2 a, vec2 b) {
 }
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
-// Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (2 flops fewer,
+// Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
 // no range limit, nothing an algebraic optimizer can fold: hi is not a float expression of a).
 // Algorithm: binary32 pattern rounded to 12 significant bits, (bits + 2^11) & ~(2^12 - 1) (ties
-// away from zero; a carry into the exponent field is the rounding up to the next binade), hi
-// clamped to +-H, H = 0x7F7FF000 = 3.4019929e38 (the largest float of 12 significant bits); lo = a - hi
+// away from zero; a carry into the exponent field is the rounding up to the next binade), except
+// where that would carry past FLT_MAX: there the pattern is truncated; lo = a - hi
 // Source: Dekker 1971, section 5 (mul12 is exact for halves of at most 12 bits); IEEE 754-2008
 // binary32 encoding; HFPA (2018) section 4.4.2 (splitting)
 // Bound: exact
-// Flops: 2 (plus 2 integer operations and a clamp)
-// Steps: hi = clamp(uintBitsToFloat((floatBitsToUint(a) + 0x800u) & 0xFFFFF000u), -H, H);
-//        lo = RN(a - hi), exact (hi is a rounded to a coarser grid: |lo| <= 2^11 ulp(a)).
-// Range: no limit. Where the rounding would carry past FLT_MAX (|a| from 0x7F7FF800) the clamp
-// makes hi a truncated, lo then has 12 bits (0 <= |lo| < 2^12 ulp(a)); mul12 stays exact there
-// (df_two_prod below). a = +-Inf: hi = +-H, lo = +-Inf; NaN: lo is NaN (the callers' df_finish
-// then returns the plain product).
+// Flops: 1 (plus 4 integer operations)
+// Steps: hi = uintBitsToFloat(min(bits + 0x800u, bits | 0x7F7FF800u) & 0xFFFFF000u), bits the
+//        pattern of a; lo = RN(a - hi), exact (hi is a on a coarser grid: |lo| <= 2^11 ulp(a)).
+//        The min: with a's magnitude m, bits | 0x7F7FF800 exceeds bits + 0x800 while m <
+//        0x7F7FF000, equals it up to 0x7F7FF7FF, and is the pattern itself from 0x7F7FF800 (all of
+//        0x7F7FF800's bits are set there), so only those magnitudes are truncated; the sign bit is
+//        the same on both sides. One unsigned min: float min/max or clamp cost about 20% of a loop
+//        on SwiftShader (docs/performance.md).
+// Range: no limit. From |a| = 0x7F7FF800 (3.4024e38) hi is a truncated to 12 bits and lo has 12
+// bits (0 <= |lo| < 2^12 ulp(a)); mul12 stays exact there (df_two_prod below). +-Inf: hi = +-Inf,
+// lo = NaN; NaN: lo is NaN (the callers' df_finish then returns the plain product).
 df_double df_split(float a) {
-  float rounded = (uintBitsToFloat((floatBitsToUint(a) + 2048u) & 4294963200u));
-  float hi = (clamp(rounded, -3.4019929e38, 3.4019929e38));
+  uint bits = floatBitsToUint(a);
+  float hi = (uintBitsToFloat(min(bits + 2048u, bits | 2139092992u) & 4294963200u));
   float lo = (a - hi);
   return df_double(hi, lo);
 }
@@ -180,15 +184,15 @@ df_double df_split(float a) {
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
 // Bound: exact
-// Flops: 13 (plus 4 integer operations and 2 clamps)
+// Flops: 11 (plus 8 integer operations)
 // Steps: p = RN(a*b); (ah,al) = split(a); (bh,bl) = split(b) (df_split, bit-casts);
 //        t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
 // Exactness, with a = A*2^i, b = B*2^j (A, B 24-bit integers), ah = AH*2^(i+12), al = AL*2^i and
 // likewise for b, in units of 2^(i+j): t1 = AB - p - AL*BH*2^12 - AH*BL*2^12 - AL*BL is a multiple of
 // 2^23 below 2^37; t2 = t1 + AH*BL*2^12 a multiple of 2^12 below 2^36; t3 = AB - p - AL*BL an integer
 // of at most 2^24; e = AB - p. Each fits in 24 bits when |AL|, |BL| <= 2^11 (rounded halves), and
-// still when one of them is below 2^12 (the clamped split of |a| >= 0x7F7FF800: a finite product then
-// has |b| < 2, whose split is rounded). So the pairs are those of the Veltkamp version.
+// still when one of them is below 2^12 (the truncated split of |a| >= 0x7F7FF800: a finite product
+// then has |b| < 2, whose split is rounded). So the pairs are those of the Veltkamp version.
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
