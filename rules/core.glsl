@@ -67,6 +67,27 @@ $DF df_split($F a) {
   return $DF(hi, lo);
 }
 
+// df_mul12_error: a*b - p exactly, for p = RN(a*b) and halves sa of a and sb of b of at most 12
+// significant bits each (df_split): Dekker's partial products, summed in the order in which
+// every partial sum is exact (the proofs are in df_two_prod's headers).
+// Algorithm: the error term of Dekker's mul12 from the four products of the halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 8
+// Steps: t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+// @widths 1 2 3 4
+$F df_mul12_error($DF sa, $DF sb, $F p) {
+  $PRECISE $F hh = $SAFE(sa.hi * sb.hi);
+  $PRECISE $F hl = $SAFE(sa.hi * sb.lo);
+  $PRECISE $F lh = $SAFE(sa.lo * sb.hi);
+  $PRECISE $F ll = $SAFE(sa.lo * sb.lo);
+  $PRECISE $F t1 = $SAFE(hh - p);
+  $PRECISE $F t2 = $SAFE(t1 + hl);
+  $PRECISE $F t3 = $SAFE(t2 + lh);
+  $PRECISE $F e = $SAFE(t3 + ll);
+  return e;
+}
+
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on Veltkamp halves of power-of-two scaled operands
 // Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10; Boldo, "Pitfalls of a full floating-point proof", IJCAR 2006 (overflow of the split)
@@ -97,14 +118,7 @@ $DF df_two_prod($F a, $F b) {
   $PRECISE $F bs = $SAFE(b * kb);
   $DF sa = df_split(as);
   $DF sb = df_split(bs);
-  $PRECISE $F hh = $SAFE(sa.hi * sb.hi);
-  $PRECISE $F hl = $SAFE(sa.hi * sb.lo);
-  $PRECISE $F lh = $SAFE(sa.lo * sb.hi);
-  $PRECISE $F ll = $SAFE(sa.lo * sb.lo);
-  $PRECISE $F t1 = $SAFE(hh - p);
-  $PRECISE $F t2 = $SAFE(t1 + hl);
-  $PRECISE $F t3 = $SAFE(t2 + lh);
-  $PRECISE $F e = $SAFE(t3 + ll);
+  $PRECISE $F e = $SAFE(df_mul12_error(sa, sb, p));
   return $DF(p, e);
 }
 
@@ -161,13 +175,6 @@ $DF df_two_prod($F a, $F b) {
   $PRECISE $F p = $G(a * b);
   $DF sa = df_split(a);
   $DF sb = df_split(b);
-  $PRECISE $F hh = $SAFE(sa.hi * sb.hi);
-  $PRECISE $F hl = $SAFE(sa.hi * sb.lo);
-  $PRECISE $F lh = $SAFE(sa.lo * sb.hi);
-  $PRECISE $F ll = $SAFE(sa.lo * sb.lo);
-  $PRECISE $F t1 = $SAFE(hh - p);
-  $PRECISE $F t2 = $SAFE(t1 + hl);
-  $PRECISE $F t3 = $SAFE(t2 + lh);
-  $PRECISE $F e = $SAFE(t3 + ll);
+  $PRECISE $F e = $SAFE(df_mul12_error(sa, sb, p));
   return $DF(p, e);
 }

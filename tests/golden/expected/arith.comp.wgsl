@@ -75,10 +75,7 @@ fn df_split(a: f32) -> df_double {
   return df_double(hi, lo);
 }
 
-fn df_two_prod(a: f32, b: f32) -> df_double {
-  var p: f32 = ((a * b) - df_uniforms.df_guard);
-  var sa: df_double = df_split(a);
-  var sb: df_double = df_split(b);
+fn df_mul12_error(sa: df_double, sb: df_double, p: f32) -> f32 {
   var hh: f32 = (sa.hi * sb.hi);
   var hl: f32 = (sa.hi * sb.lo);
   var lh: f32 = (sa.lo * sb.hi);
@@ -87,6 +84,14 @@ fn df_two_prod(a: f32, b: f32) -> df_double {
   var t2: f32 = (t1 + hl);
   var t3: f32 = (t2 + lh);
   var e: f32 = (t3 + ll);
+  return e;
+}
+
+fn df_two_prod(a: f32, b: f32) -> df_double {
+  var p: f32 = ((a * b) - df_uniforms.df_guard);
+  var sa: df_double = df_split(a);
+  var sb: df_double = df_split(b);
+  var e: f32 = df_mul12_error(sa, sb, p);
   return df_double(p, e);
 }
 

@@ -70,10 +70,7 @@ fn df_split_float(a: f32) -> df_double {
   return df_double(hi, lo);
 }
 
-fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
-  var p: f32 = ((a * b) - df_uniforms.df_guard);
-  var sa: df_double = df_split_float(a);
-  var sb: df_double = df_split_float(b);
+fn df_mul12_error_df_double_df_double_float(sa: df_double, sb: df_double, p: f32) -> f32 {
   var hh: f32 = (sa.hi * sb.hi);
   var hl: f32 = (sa.hi * sb.lo);
   var lh: f32 = (sa.lo * sb.hi);
@@ -82,6 +79,14 @@ fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
   var t2: f32 = (t1 + hl);
   var t3: f32 = (t2 + lh);
   var e: f32 = (t3 + ll);
+  return e;
+}
+
+fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
+  var p: f32 = ((a * b) - df_uniforms.df_guard);
+  var sa: df_double = df_split_float(a);
+  var sb: df_double = df_split_float(b);
+  var e: f32 = df_mul12_error_df_double_df_double_float(sa, sb, p);
   return df_double(p, e);
 }
 
@@ -149,10 +154,7 @@ fn df_split_vec2(a: vec2<f32>) -> df_dvec2 {
   return df_dvec2(hi, lo);
 }
 
-fn df_two_prod_vec2_vec2(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
-  var p: vec2<f32> = ((a * b) - df_uniforms.df_guard);
-  var sa: df_dvec2 = df_split_vec2(a);
-  var sb: df_dvec2 = df_split_vec2(b);
+fn df_mul12_error_df_dvec2_df_dvec2_vec2(sa: df_dvec2, sb: df_dvec2, p: vec2<f32>) -> vec2<f32> {
   var hh: vec2<f32> = (sa.hi * sb.hi);
   var hl: vec2<f32> = (sa.hi * sb.lo);
   var lh: vec2<f32> = (sa.lo * sb.hi);
@@ -161,6 +163,14 @@ fn df_two_prod_vec2_vec2(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
   var t2: vec2<f32> = (t1 + hl);
   var t3: vec2<f32> = (t2 + lh);
   var e: vec2<f32> = (t3 + ll);
+  return e;
+}
+
+fn df_two_prod_vec2_vec2(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
+  var p: vec2<f32> = ((a * b) - df_uniforms.df_guard);
+  var sa: df_dvec2 = df_split_vec2(a);
+  var sb: df_dvec2 = df_split_vec2(b);
+  var e: vec2<f32> = df_mul12_error_df_dvec2_df_dvec2_vec2(sa, sb, p);
   return df_dvec2(p, e);
 }
 

@@ -7,7 +7,7 @@ struct df_dmat4 {
   mat4 hi;
   mat4 lo;
 };
-// doublet float-float runtime: 31 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 34 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
@@ -144,6 +144,26 @@ df_dvec4 df_split(vec4 a) {
   return df_dvec4(hi, lo);
 }
 
+// df_mul12_error: a*b - p exactly, for p = RN(a*b) and halves sa of a and sb of b of at most 12
+// significant bits each (df_split): Dekker's partial products, summed in the order in which
+// every partial sum is exact (the proofs are in df_two_prod's headers).
+// Algorithm: the error term of Dekker's mul12 from the four products of the halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 8
+// Steps: t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+vec4 df_mul12_error(df_dvec4 sa, df_dvec4 sb, vec4 p) {
+  precise vec4 hh = (sa.hi * sb.hi);
+  precise vec4 hl = (sa.hi * sb.lo);
+  precise vec4 lh = (sa.lo * sb.hi);
+  precise vec4 ll = (sa.lo * sb.lo);
+  precise vec4 t1 = (hh - p);
+  precise vec4 t2 = (t1 + hl);
+  precise vec4 t3 = (t2 + lh);
+  precise vec4 e = (t3 + ll);
+  return e;
+}
+
 // df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
 // halves of the split by bits, which needs no scaling of the operands (no range limit).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
@@ -164,14 +184,7 @@ df_dvec4 df_two_prod(vec4 a, vec4 b) {
   precise vec4 p = (a * b);
   df_dvec4 sa = df_split(a);
   df_dvec4 sb = df_split(b);
-  precise vec4 hh = (sa.hi * sb.hi);
-  precise vec4 hl = (sa.hi * sb.lo);
-  precise vec4 lh = (sa.lo * sb.hi);
-  precise vec4 ll = (sa.lo * sb.lo);
-  precise vec4 t1 = (hh - p);
-  precise vec4 t2 = (t1 + hl);
-  precise vec4 t3 = (t2 + lh);
-  precise vec4 e = (t3 + ll);
+  precise vec4 e = (df_mul12_error(sa, sb, p));
   return df_dvec4(p, e);
 }
 
@@ -367,6 +380,26 @@ df_dvec3 df_split(vec3 a) {
   return df_dvec3(hi, lo);
 }
 
+// df_mul12_error: a*b - p exactly, for p = RN(a*b) and halves sa of a and sb of b of at most 12
+// significant bits each (df_split): Dekker's partial products, summed in the order in which
+// every partial sum is exact (the proofs are in df_two_prod's headers).
+// Algorithm: the error term of Dekker's mul12 from the four products of the halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 8
+// Steps: t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
+  precise vec3 hh = (sa.hi * sb.hi);
+  precise vec3 hl = (sa.hi * sb.lo);
+  precise vec3 lh = (sa.lo * sb.hi);
+  precise vec3 ll = (sa.lo * sb.lo);
+  precise vec3 t1 = (hh - p);
+  precise vec3 t2 = (t1 + hl);
+  precise vec3 t3 = (t2 + lh);
+  precise vec3 e = (t3 + ll);
+  return e;
+}
+
 // df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
 // halves of the split by bits, which needs no scaling of the operands (no range limit).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
@@ -387,14 +420,7 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
   precise vec3 p = (a * b);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
-  precise vec3 hh = (sa.hi * sb.hi);
-  precise vec3 hl = (sa.hi * sb.lo);
-  precise vec3 lh = (sa.lo * sb.hi);
-  precise vec3 ll = (sa.lo * sb.lo);
-  precise vec3 t1 = (hh - p);
-  precise vec3 t2 = (t1 + hl);
-  precise vec3 t3 = (t2 + lh);
-  precise vec3 e = (t3 + ll);
+  precise vec3 e = (df_mul12_error(sa, sb, p));
   return df_dvec3(p, e);
 }
 
@@ -461,6 +487,26 @@ df_double df_split(float a) {
   return df_double(hi, lo);
 }
 
+// df_mul12_error: a*b - p exactly, for p = RN(a*b) and halves sa of a and sb of b of at most 12
+// significant bits each (df_split): Dekker's partial products, summed in the order in which
+// every partial sum is exact (the proofs are in df_two_prod's headers).
+// Algorithm: the error term of Dekker's mul12 from the four products of the halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 8
+// Steps: t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+float df_mul12_error(df_double sa, df_double sb, float p) {
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return e;
+}
+
 // df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
 // halves of the split by bits, which needs no scaling of the operands (no range limit).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
@@ -481,14 +527,7 @@ df_double df_two_prod(float a, float b) {
   precise float p = (a * b);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
-  precise float hh = (sa.hi * sb.hi);
-  precise float hl = (sa.hi * sb.lo);
-  precise float lh = (sa.lo * sb.hi);
-  precise float ll = (sa.lo * sb.lo);
-  precise float t1 = (hh - p);
-  precise float t2 = (t1 + hl);
-  precise float t3 = (t2 + lh);
-  precise float e = (t3 + ll);
+  precise float e = (df_mul12_error(sa, sb, p));
   return df_double(p, e);
 }
 

@@ -22,7 +22,7 @@ struct df_dmat4 {
   mat4 hi;
   mat4 lo;
 };
-// doublet float-float runtime: 40 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 41 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
@@ -44,6 +44,26 @@ df_double df_split(float a) {
   float hi = (g + d);
   float lo = (a - hi);
   return df_double(hi, lo);
+}
+
+// df_mul12_error: a*b - p exactly, for p = RN(a*b) and halves sa of a and sb of b of at most 12
+// significant bits each (df_split): Dekker's partial products, summed in the order in which
+// every partial sum is exact (the proofs are in df_two_prod's headers).
+// Algorithm: the error term of Dekker's mul12 from the four products of the halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 8
+// Steps: t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+float df_mul12_error(df_double sa, df_double sb, float p) {
+  float hh = (sa.hi * sb.hi);
+  float hl = (sa.hi * sb.lo);
+  float lh = (sa.lo * sb.hi);
+  float ll = (sa.lo * sb.lo);
+  float t1 = (hh - p);
+  float t2 = (t1 + hl);
+  float t3 = (t2 + lh);
+  float e = (t3 + ll);
+  return e;
 }
 
 // df_two_prod: p + e == a * b exactly, with p = RN(a * b).
@@ -74,14 +94,7 @@ df_double df_two_prod(float a, float b) {
   float bs = (b * kb);
   df_double sa = df_split(as);
   df_double sb = df_split(bs);
-  float hh = (sa.hi * sb.hi);
-  float hl = (sa.hi * sb.lo);
-  float lh = (sa.lo * sb.hi);
-  float ll = (sa.lo * sb.lo);
-  float t1 = (hh - p);
-  float t2 = (t1 + hl);
-  float t3 = (t2 + lh);
-  float e = (t3 + ll);
+  float e = (df_mul12_error(sa, sb, p));
   return df_double(p, e);
 }
 

@@ -73,10 +73,7 @@ fn df_split(a: vec2<f32>) -> df_dvec2 {
   return df_dvec2(hi, lo);
 }
 
-fn df_two_prod(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
-  var p: vec2<f32> = ((a * b) - df_uniforms.df_guard);
-  var sa: df_dvec2 = df_split(a);
-  var sb: df_dvec2 = df_split(b);
+fn df_mul12_error(sa: df_dvec2, sb: df_dvec2, p: vec2<f32>) -> vec2<f32> {
   var hh: vec2<f32> = (sa.hi * sb.hi);
   var hl: vec2<f32> = (sa.hi * sb.lo);
   var lh: vec2<f32> = (sa.lo * sb.hi);
@@ -85,6 +82,14 @@ fn df_two_prod(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
   var t2: vec2<f32> = (t1 + hl);
   var t3: vec2<f32> = (t2 + lh);
   var e: vec2<f32> = (t3 + ll);
+  return e;
+}
+
+fn df_two_prod(a: vec2<f32>, b: vec2<f32>) -> df_dvec2 {
+  var p: vec2<f32> = ((a * b) - df_uniforms.df_guard);
+  var sa: df_dvec2 = df_split(a);
+  var sb: df_dvec2 = df_split(b);
+  var e: vec2<f32> = df_mul12_error(sa, sb, p);
   return df_dvec2(p, e);
 }
 

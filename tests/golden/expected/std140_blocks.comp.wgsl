@@ -53,10 +53,7 @@ fn df_split_float(a: f32) -> df_double {
   return df_double(hi, lo);
 }
 
-fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
-  var p: f32 = ((a * b) - df_uniforms.df_guard);
-  var sa: df_double = df_split_float(a);
-  var sb: df_double = df_split_float(b);
+fn df_mul12_error_df_double_df_double_float(sa: df_double, sb: df_double, p: f32) -> f32 {
   var hh: f32 = (sa.hi * sb.hi);
   var hl: f32 = (sa.hi * sb.lo);
   var lh: f32 = (sa.lo * sb.hi);
@@ -65,6 +62,14 @@ fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
   var t2: f32 = (t1 + hl);
   var t3: f32 = (t2 + lh);
   var e: f32 = (t3 + ll);
+  return e;
+}
+
+fn df_two_prod_float_float(a: f32, b: f32) -> df_double {
+  var p: f32 = ((a * b) - df_uniforms.df_guard);
+  var sa: df_double = df_split_float(a);
+  var sb: df_double = df_split_float(b);
+  var e: f32 = df_mul12_error_df_double_df_double_float(sa, sb, p);
   return df_double(p, e);
 }
 
@@ -192,10 +197,7 @@ fn df_split_vec3(a: vec3<f32>) -> df_dvec3 {
   return df_dvec3(hi, lo);
 }
 
-fn df_two_prod_vec3_vec3(a: vec3<f32>, b: vec3<f32>) -> df_dvec3 {
-  var p: vec3<f32> = ((a * b) - df_uniforms.df_guard);
-  var sa: df_dvec3 = df_split_vec3(a);
-  var sb: df_dvec3 = df_split_vec3(b);
+fn df_mul12_error_df_dvec3_df_dvec3_vec3(sa: df_dvec3, sb: df_dvec3, p: vec3<f32>) -> vec3<f32> {
   var hh: vec3<f32> = (sa.hi * sb.hi);
   var hl: vec3<f32> = (sa.hi * sb.lo);
   var lh: vec3<f32> = (sa.lo * sb.hi);
@@ -204,6 +206,14 @@ fn df_two_prod_vec3_vec3(a: vec3<f32>, b: vec3<f32>) -> df_dvec3 {
   var t2: vec3<f32> = (t1 + hl);
   var t3: vec3<f32> = (t2 + lh);
   var e: vec3<f32> = (t3 + ll);
+  return e;
+}
+
+fn df_two_prod_vec3_vec3(a: vec3<f32>, b: vec3<f32>) -> df_dvec3 {
+  var p: vec3<f32> = ((a * b) - df_uniforms.df_guard);
+  var sa: df_dvec3 = df_split_vec3(a);
+  var sb: df_dvec3 = df_split_vec3(b);
+  var e: vec3<f32> = df_mul12_error_df_dvec3_df_dvec3_vec3(sa, sb, p);
   return df_dvec3(p, e);
 }
 

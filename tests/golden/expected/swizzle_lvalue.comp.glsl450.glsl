@@ -7,7 +7,7 @@ struct df_dvec4 {
   vec4 hi;
   vec4 lo;
 };
-// doublet float-float runtime: 12 functions from rules/*.glsl, guard: precise
+// doublet float-float runtime: 13 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 
@@ -178,6 +178,26 @@ df_double df_split(float a) {
   return df_double(hi, lo);
 }
 
+// df_mul12_error: a*b - p exactly, for p = RN(a*b) and halves sa of a and sb of b of at most 12
+// significant bits each (df_split): Dekker's partial products, summed in the order in which
+// every partial sum is exact (the proofs are in df_two_prod's headers).
+// Algorithm: the error term of Dekker's mul12 from the four products of the halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 8
+// Steps: t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+float df_mul12_error(df_double sa, df_double sb, float p) {
+  precise float hh = (sa.hi * sb.hi);
+  precise float hl = (sa.hi * sb.lo);
+  precise float lh = (sa.lo * sb.hi);
+  precise float ll = (sa.lo * sb.lo);
+  precise float t1 = (hh - p);
+  precise float t2 = (t1 + hl);
+  precise float t3 = (t2 + lh);
+  precise float e = (t3 + ll);
+  return e;
+}
+
 // df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
 // halves of the split by bits, which needs no scaling of the operands (no range limit).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
@@ -198,14 +218,7 @@ df_double df_two_prod(float a, float b) {
   precise float p = (a * b);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
-  precise float hh = (sa.hi * sb.hi);
-  precise float hl = (sa.hi * sb.lo);
-  precise float lh = (sa.lo * sb.hi);
-  precise float ll = (sa.lo * sb.lo);
-  precise float t1 = (hh - p);
-  precise float t2 = (t1 + hl);
-  precise float t3 = (t2 + lh);
-  precise float e = (t3 + ll);
+  precise float e = (df_mul12_error(sa, sb, p));
   return df_double(p, e);
 }
 

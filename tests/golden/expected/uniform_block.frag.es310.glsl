@@ -6,7 +6,7 @@ struct df_dmat3 {
   mat3 hi;
   mat3 lo;
 };
-// doublet float-float runtime: 17 functions from rules/*.glsl, guard: uniform df_guard
+// doublet float-float runtime: 19 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
@@ -39,6 +39,26 @@ df_dvec3 df_split(vec3 a) {
   return df_dvec3(hi, lo);
 }
 
+// df_mul12_error: a*b - p exactly, for p = RN(a*b) and halves sa of a and sb of b of at most 12
+// significant bits each (df_split): Dekker's partial products, summed in the order in which
+// every partial sum is exact (the proofs are in df_two_prod's headers).
+// Algorithm: the error term of Dekker's mul12 from the four products of the halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 8
+// Steps: t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
+  vec3 hh = (sa.hi * sb.hi);
+  vec3 hl = (sa.hi * sb.lo);
+  vec3 lh = (sa.lo * sb.hi);
+  vec3 ll = (sa.lo * sb.lo);
+  vec3 t1 = (hh - p);
+  vec3 t2 = (t1 + hl);
+  vec3 t3 = (t2 + lh);
+  vec3 e = (t3 + ll);
+  return e;
+}
+
 // df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
 // halves of the split by bits, which needs no scaling of the operands (no range limit).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
@@ -59,14 +79,7 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
   vec3 p = ((a * b) - df_guard);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
-  vec3 hh = (sa.hi * sb.hi);
-  vec3 hl = (sa.hi * sb.lo);
-  vec3 lh = (sa.lo * sb.hi);
-  vec3 ll = (sa.lo * sb.lo);
-  vec3 t1 = (hh - p);
-  vec3 t2 = (t1 + hl);
-  vec3 t3 = (t2 + lh);
-  vec3 e = (t3 + ll);
+  vec3 e = (df_mul12_error(sa, sb, p));
   return df_dvec3(p, e);
 }
 
@@ -230,6 +243,26 @@ df_dvec4 df_split(vec4 a) {
   return df_dvec4(hi, lo);
 }
 
+// df_mul12_error: a*b - p exactly, for p = RN(a*b) and halves sa of a and sb of b of at most 12
+// significant bits each (df_split): Dekker's partial products, summed in the order in which
+// every partial sum is exact (the proofs are in df_two_prod's headers).
+// Algorithm: the error term of Dekker's mul12 from the four products of the halves
+// Source: Dekker 1971, mul12; HFPA (2018) Algorithm 4.10
+// Bound: exact
+// Flops: 8
+// Steps: t1 = RN(ah*bh - p); t2 = RN(t1 + ah*bl); t3 = RN(t2 + al*bh); e = RN(t3 + al*bl).
+vec4 df_mul12_error(df_dvec4 sa, df_dvec4 sb, vec4 p) {
+  vec4 hh = (sa.hi * sb.hi);
+  vec4 hl = (sa.hi * sb.lo);
+  vec4 lh = (sa.lo * sb.hi);
+  vec4 ll = (sa.lo * sb.lo);
+  vec4 t1 = (hh - p);
+  vec4 t2 = (t1 + hl);
+  vec4 t3 = (t2 + lh);
+  vec4 e = (t3 + ll);
+  return e;
+}
+
 // df_two_prod (bit-casts): p + e == a * b exactly, with p = RN(a * b): Dekker's product on the
 // halves of the split by bits, which needs no scaling of the operands (no range limit).
 // Algorithm: Dekker's product (mul12, TwoProd without FMA) on halves split by their bit patterns
@@ -250,14 +283,7 @@ df_dvec4 df_two_prod(vec4 a, vec4 b) {
   vec4 p = ((a * b) - df_guard);
   df_dvec4 sa = df_split(a);
   df_dvec4 sb = df_split(b);
-  vec4 hh = (sa.hi * sb.hi);
-  vec4 hl = (sa.hi * sb.lo);
-  vec4 lh = (sa.lo * sb.hi);
-  vec4 ll = (sa.lo * sb.lo);
-  vec4 t1 = (hh - p);
-  vec4 t2 = (t1 + hl);
-  vec4 t3 = (t2 + lh);
-  vec4 e = (t3 + ll);
+  vec4 e = (df_mul12_error(sa, sb, p));
   return df_dvec4(p, e);
 }
 
