@@ -3,8 +3,10 @@
 #include "rules/rule_library.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -26,12 +28,20 @@ struct Param {
   std::string name;
 };
 
-// Which "@variant" chunks replace the plain ones of the same name (EmitRequest's flags).
-struct Variants {
-  bool integer_eft = false;
-  bool integer_functions = false;
-  bool bit_casts = false;
-};
+// The "@variant" kinds, most specific first: where a request selects several, the first one that
+// has a chunk of the wanted name and width replaces the plain chunk (docs/rules-format.md).
+constexpr const char* kVariantKinds[] = {"int", "integer-functions", "bit-casts"};
+constexpr size_t kVariantKindCount = std::size(kVariantKinds);
+
+// Which "@variant" kinds a request selects, indexed as kVariantKinds (from EmitRequest's
+// integer_eft, integer_functions and bit_casts flags).
+using Variants = std::array<bool, kVariantKindCount>;
+
+int variant_kind(const std::string& name) {
+  for (size_t k = 0; k < kVariantKindCount; ++k)
+    if (name == kVariantKinds[k]) return static_cast<int>(k);
+  return -1;
+}
 
 struct Chunk {
   std::string name;
@@ -44,9 +54,8 @@ struct Chunk {
   std::vector<int> widths;
   int min_es = 100;
   bool per_component = false;
-  std::string variant;  // "int": replaces the same-named chunk when EmitRequest::integer_eft;
-                        // "integer-functions": when EmitRequest::integer_functions;
-                        // "bit-casts": when EmitRequest::bit_casts
+  std::string variant;    // one of kVariantKinds, or empty for a plain chunk
+  int variant_kind = -1;  // its index in kVariantKinds
   std::vector<std::pair<std::string, std::vector<std::string>>> uses;  // callee -> widths ("2", "W")
   std::vector<std::string> callees;  // chunk names referenced by the definition, first use order
   std::map<std::string, std::string> fields;  // Algorithm, Source, Bound, Flops
@@ -265,21 +274,18 @@ std::string_view out_param_type(std::string_view t) {
 struct RuleLibrary::Impl {
   std::vector<Chunk> chunks;
   std::map<std::pair<std::string, int>, size_t> index;  // (name, width) -> chunk
-  std::map<std::pair<std::string, int>, size_t> int_index;  // (name, width) -> "@variant int" chunk
-  std::map<std::pair<std::string, int>, size_t> intfn_index;  // -> "@variant integer-functions" chunk
-  std::map<std::pair<std::string, int>, size_t> casts_index;  // -> "@variant bit-casts" chunk
+  // Per kind of kVariantKinds: (name, width) -> that "@variant" chunk.
+  std::array<std::map<std::pair<std::string, int>, size_t>, kVariantKindCount> variant_index;
   std::set<std::string> names;
   std::string init_error;  // builtin() only: the embedded rules failed to parse
 
   // The "@variant" chunk of that name and width the request selects, most specific first
-  // ("int", then "integer-functions", then "bit-casts"), else the plain one.
+  // (kVariantKinds' order), else the plain one.
   const Chunk* find(const std::string& name, int width, const Variants& v = {}) const {
-    for (const auto& [wanted, variant_index] : {std::make_pair(v.integer_eft, &int_index),
-                                                std::make_pair(v.integer_functions, &intfn_index),
-                                                std::make_pair(v.bit_casts, &casts_index)}) {
-      if (!wanted) continue;
-      auto it = variant_index->find({name, width});
-      if (it != variant_index->end()) return &chunks[it->second];
+    for (size_t k = 0; k < kVariantKindCount; ++k) {
+      if (!v[k]) continue;
+      auto it = variant_index[k].find({name, width});
+      if (it != variant_index[k].end()) return &chunks[it->second];
     }
     auto it = index.find({name, width});
     return it == index.end() ? nullptr : &chunks[it->second];
@@ -512,9 +518,14 @@ bool parse_file(const std::string& file, const std::string& text, std::vector<Ch
             return fail(start, c.name + ": @min-es takes one of 100 300 310 320");
           c.min_es = std::stoi(w[0]);
         } else if (key == "@variant") {
-          if (w.size() != 1 || (w[0] != "int" && w[0] != "integer-functions" && w[0] != "bit-casts"))
-            return fail(start, c.name + ": @variant takes 'int', 'integer-functions' or 'bit-casts'");
+          if (w.size() != 1 || variant_kind(w[0]) < 0) {
+            std::string kinds;
+            for (size_t k = 0; k < kVariantKindCount; ++k)
+              kinds += std::string(k == 0 ? "'" : k + 1 == kVariantKindCount ? " or '" : ", '") + kVariantKinds[k] + "'";
+            return fail(start, c.name + ": @variant takes " + kinds);
+          }
           c.variant = w[0];
+          c.variant_kind = variant_kind(w[0]);
         } else if (key == "@per-component") {
           if (!w.empty()) return fail(start, c.name + ": @per-component takes no value");
           c.per_component = true;
@@ -584,10 +595,7 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       const Chunk& c = im.chunks[i];
       im.names.insert(c.name);
       for (int w : c.widths) {
-        auto& index = c.variant.empty()               ? im.index
-                      : c.variant == "int"               ? im.int_index
-                      : c.variant == "integer-functions" ? im.intfn_index
-                                                         : im.casts_index;
+        auto& index = c.variant_kind < 0 ? im.index : im.variant_index[c.variant_kind];
         if (!index.emplace(std::make_pair(c.name, w), i).second) {
           *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(w) +
                    " is defined twice";
@@ -614,15 +622,15 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       }
     }
     // Every instance: dependencies exist, placeholders substitute, no cycles.
-    for (const auto* variants : {&im.int_index, &im.intfn_index, &im.casts_index})
-      for (const auto& [key, idx] : *variants)
+    for (const auto& variants : im.variant_index)
+      for (const auto& [key, idx] : variants)
         if (!im.index.count(key)) {
           const Chunk& c = im.chunks[idx];
           *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(key.second) +
                    ": @variant " + c.variant + " replaces nothing (no plain chunk of that name and width)";
           return std::nullopt;
         }
-    Variants selected;
+    Variants selected{};
     std::map<std::pair<std::string, int>, int> state;  // 1 visiting, 2 done
     std::vector<RuleRef> stack;
     std::function<bool(const RuleRef&)> visit = [&](const RuleRef& r) -> bool {
@@ -650,11 +658,10 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
       state[key] = 2;
       return true;
     };
-    // Each variant alone, and all of them (df64-int on a target with integer functions).
-    for (int variant : {0, 1, 2, 3, 4}) {
-      selected.integer_eft = variant == 1 || variant == 4;
-      selected.integer_functions = variant == 2 || variant == 4;
-      selected.bit_casts = variant == 3 || variant == 4;
+    // No variant, each kind alone, and all of them (df64-int on a target with integer functions).
+    for (size_t choice = 0; choice <= kVariantKindCount + 1; ++choice) {
+      for (size_t k = 0; k < kVariantKindCount; ++k)
+        selected[k] = choice == k + 1 || choice == kVariantKindCount + 1;
       state.clear();
       for (const auto& [key, idx] : im.index)
         if (!visit({key.first, key.second})) return std::nullopt;
@@ -763,10 +770,8 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     }
     // Mode exact has no optimizer guard: the float-float rules its bridges call (rules/exact.glsl,
     // transcendentals) take the integer error-free transformations of df64-int, which need none.
-    Variants selected;
-    selected.integer_eft = request.integer_eft || request.exact_words;
-    selected.integer_functions = request.integer_functions;
-    selected.bit_casts = request.bit_casts;
+    const Variants selected = {request.integer_eft || request.exact_words, request.integer_functions,
+                               request.bit_casts};  // kVariantKinds' order
     // Post-order DFS: callees before callers, each instance once.
     std::vector<RuleRef> order;
     std::map<std::pair<std::string, int>, int> state;

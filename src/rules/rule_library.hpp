@@ -79,8 +79,7 @@ struct RuleInfo {
   std::vector<int> widths;
   int min_es = 100;
   bool per_component = false;
-  std::string variant;    // "int" for a df64-int replacement (rules/int.glsl), "integer-functions" for
-                          // one used where EmitRequest::integer_functions, else empty
+  std::string variant;    // the "@variant" kind ("int", "integer-functions", "bit-casts"), else empty
   std::string file;       // e.g. "arith.glsl"
   std::string algorithm;  // the "Algorithm:" line
   std::string source;     // the "Source:" line
