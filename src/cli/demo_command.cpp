@@ -114,8 +114,9 @@ Command add_demo_command(CLI::App& app) {
   demo->add_option("--web", args->web_dir,
                    "Write DIR/index.html: both demos in WebGL2 per mode, checked and timed in the browser")
       ->type_name("DIR");
-  // Tests only: a page whose float-float panels must fail (no-guard: lowered without the optimizer
-  // guard; drop-lo: the page uploads lo = 0). An empty group hides it from --help.
+  // Tests and manual checks: drop-lo (the page uploads lo = 0) must fail every float-float panel;
+  // no-guard (lowered without the optimizer guard) shows what a browser folds without it, nothing
+  // on Chromium's stack since the split by bits (docs/demo.md). An empty group hides it from --help.
   demo->add_option("--sabotage", args->web_sabotage, "none | no-guard | drop-lo")->group("");
   const char* modes_help = "fp32 (doubles demoted to float), df64 (doublet), native (fp64 on lavapipe); default: all";
   CLI::App* jitter = demo->add_subcommand("jitter", "Satellites at geostationary distance: vertex wobble per mode");

@@ -209,16 +209,21 @@ bool all_at_least_44_bits(const std::vector<double>& bits) {
   return !bits.empty() && std::all_of(bits.begin(), bits.end(), [](double b) { return b >= 44; });
 }
 
+// Prints each operation's bits under `label` and expects >= 44 of each.
+void expect_each_at_least_44_bits(const std::vector<double>& bits, const std::string& label, const std::string& adapter) {
+  ASSERT_EQ(bits.size(), static_cast<size_t>(kOps));
+  for (int op = 0; op < kOps; ++op) {
+    std::cout << label << " " << kOpNames[op] << ": " << bits[op] << " bits\n";
+    EXPECT_GE(bits[op], 44) << label << " " << kOpNames[op] << ", adapter " << adapter;
+  }
+}
+
 TEST(WgslBrowser, Df64KeepsAtLeast44BitsOnWebGpu) {
   DOUBLET_REQUIRE_BROWSER_OR_SKIP();
   std::string adapter;
   auto bits = measured_bits(doublet::Mode::Df64, doublet::GuardKind::Auto, adapter);
-  ASSERT_EQ(bits.size(), static_cast<size_t>(kOps));
   std::cout << "WebGPU adapter: " << adapter << "\n";
-  for (int op = 0; op < kOps; ++op) {
-    std::cout << "df64 " << kOpNames[op] << ": " << bits[op] << " bits\n";
-    EXPECT_GE(bits[op], 44) << kOpNames[op];
-  }
+  expect_each_at_least_44_bits(bits, "df64", adapter);
   EXPECT_TRUE(all_at_least_44_bits(bits));
 }
 
@@ -242,12 +247,8 @@ TEST(WgslBrowser, DroppingLoFailsThe44BitCheck) {
 TEST(WgslBrowser, GuardRemovedKeepsEveryBitHere) {
   DOUBLET_REQUIRE_BROWSER_OR_SKIP();
   std::string adapter;
-  auto bits = measured_bits(doublet::Mode::Df64, doublet::GuardKind::None, adapter);
-  ASSERT_EQ(bits.size(), static_cast<size_t>(kOps));
-  for (int op = 0; op < kOps; ++op) {
-    std::cout << "df64, no guard, " << kOpNames[op] << ": " << bits[op] << " bits\n";
-    EXPECT_GE(bits[op], 44) << kOpNames[op] << ", adapter " << adapter;
-  }
+  expect_each_at_least_44_bits(measured_bits(doublet::Mode::Df64, doublet::GuardKind::None, adapter),
+                               "df64, no guard,", adapter);
 }
 
 }  // namespace
@@ -260,12 +261,8 @@ namespace {
 TEST(WgslBrowser, Df64IntKeepsAtLeast44BitsWithoutAGuard) {
   DOUBLET_REQUIRE_BROWSER_OR_SKIP();
   std::string adapter;
-  auto bits = measured_bits(doublet::Mode::Df64Int, doublet::GuardKind::None, adapter);
-  ASSERT_EQ(bits.size(), static_cast<size_t>(kOps));
-  for (int op = 0; op < kOps; ++op) {
-    std::cout << "df64-int, no guard, " << kOpNames[op] << ": " << bits[op] << " bits\n";
-    EXPECT_GE(bits[op], 44) << kOpNames[op] << ", adapter " << adapter;
-  }
+  expect_each_at_least_44_bits(measured_bits(doublet::Mode::Df64Int, doublet::GuardKind::None, adapter),
+                               "df64-int, no guard,", adapter);
 }
 
 }  // namespace
