@@ -147,7 +147,7 @@ df_double df_two_prod(float a, float b) {
 // Algorithm: DWTimesDW1 (JMP Algorithm 10; Dekker's mul2) with Dekker's TwoProd, no special-value fix-up
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2); Dekker 1971 (mul2)
 // Bound: 7u^2
-// Flops: 26 (with df_two_prod's 19)
+// Flops: 28 (with df_two_prod's 21 of ES 1.00; 18 with its split by bits, rules/core.glsl)
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
 df_double df_mul_fast(df_double a, df_double b) {
@@ -215,7 +215,7 @@ df_double df_sqrt(df_double a) {
 // Algorithm: DWDivDW2 (JMP Algorithm 17) with the product (bh + bl) * th left as TwoProd(bh,th) + RN(bl*th), unrenormalised
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017, Algorithm 17 and Theorem 7.1 (15u^2 + 56u^3 for the renormalised form); Dekker 1971 (div2)
 // Bound: about 15u^2 + 2u^2 (estimate, not proved: the dropped renormalisation adds one rounding of size u^2 to the remainder)
-// Flops: 29 (with df_two_prod's 19)
+// Flops: 31 (with df_two_prod's 21 of ES 1.00; 21 with its split by bits, rules/core.glsl)
 // Steps: th = RN(ah/bh); (ch,cl1) = TwoProd(bh,th); cl2 = RN(bl*th); rl = RN(cl1+cl2);
 //        pih = RN(ah-ch) (exact, Sterbenz: ch is within a factor 2 of ah); dl = RN(al-rl);
 //        d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).

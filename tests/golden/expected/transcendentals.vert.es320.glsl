@@ -247,7 +247,7 @@ df_double df_trig_reduce(df_double a, out int q) {
 // Algorithm: DWTimesDW1 (JMP Algorithm 10; Dekker's mul2) with Dekker's TwoProd, no special-value fix-up
 // Source: Joldes, Muller, Popescu, ACM TOMS 44(2), 2017 (bound 7u^2); Muller, Rideau, ACM TOMS 48(1), 2022 (5u^2); Dekker 1971 (mul2)
 // Bound: 7u^2
-// Flops: 26 (with df_two_prod's 19)
+// Flops: 28 (with df_two_prod's 21 of ES 1.00; 18 with its split by bits, rules/core.glsl)
 // Steps: (ch,cl1) = TwoProd(ah,bh); tl = RN(ah*bl); th = RN(al*bh); cl2 = RN(th+tl);
 //        cl3 = RN(cl1+cl2); (zh,zl) = Fast2Sum(ch,cl3).
 df_double df_mul_fast(df_double a, df_double b) {
