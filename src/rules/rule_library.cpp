@@ -54,8 +54,7 @@ struct Chunk {
   std::vector<int> widths;
   int min_es = 100;
   bool per_component = false;
-  std::string variant;    // one of kVariantKinds, or empty for a plain chunk
-  int variant_kind = -1;  // its index in kVariantKinds
+  int variant_kind = -1;  // its index in kVariantKinds; -1 for a plain chunk
   std::vector<std::pair<std::string, std::vector<std::string>>> uses;  // callee -> widths ("2", "W")
   std::vector<std::string> callees;  // chunk names referenced by the definition, first use order
   std::map<std::string, std::string> fields;  // Algorithm, Source, Bound, Flops
@@ -524,7 +523,6 @@ bool parse_file(const std::string& file, const std::string& text, std::vector<Ch
               kinds += std::string(k == 0 ? "'" : k + 1 == kVariantKindCount ? " or '" : ", '") + kVariantKinds[k] + "'";
             return fail(start, c.name + ": @variant takes " + kinds);
           }
-          c.variant = w[0];
           c.variant_kind = variant_kind(w[0]);
         } else if (key == "@per-component") {
           if (!w.empty()) return fail(start, c.name + ": @per-component takes no value");
@@ -627,7 +625,7 @@ std::optional<RuleLibrary> RuleLibrary::parse(const std::vector<std::pair<std::s
         if (!im.index.count(key)) {
           const Chunk& c = im.chunks[idx];
           *error = c.file + ":" + std::to_string(c.line) + ": " + c.name + " width " + std::to_string(key.second) +
-                   ": @variant " + c.variant + " replaces nothing (no plain chunk of that name and width)";
+                   ": @variant " + kVariantKinds[c.variant_kind] + " replaces nothing (no plain chunk of that name and width)";
           return std::nullopt;
         }
     Variants selected{};
@@ -726,7 +724,7 @@ std::vector<RuleInfo> RuleLibrary::info() const {
     r.widths = c.widths;
     r.min_es = c.min_es;
     r.per_component = c.per_component;
-    r.variant = c.variant;
+    r.variant = c.variant_kind < 0 ? "" : kVariantKinds[c.variant_kind];
     r.file = c.file;
     r.algorithm = c.fields.at("Algorithm");
     r.source = c.fields.at("Source");
