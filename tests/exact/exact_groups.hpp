@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <iostream>
@@ -168,9 +169,11 @@ inline std::string prelude_for(const std::string& prelude, const std::vector<std
   std::istringstream lines(prelude);
   while (std::getline(lines, line)) {
     std::smatch m;
-    bool used = !std::regex_search(line, m, declaration);
-    for (const auto& r : results)
-      used = used || std::regex_search(r.second, std::regex("\\b" + m[1].str() + "\\b"));
+    bool used = !std::regex_search(line, m, declaration);  // a statement that declares nothing stays
+    if (!used) {
+      const std::regex name("\\b" + m[1].str() + "\\b");
+      used = std::any_of(results.begin(), results.end(), [&](const auto& r) { return std::regex_search(r.second, name); });
+    }
     if (used) kept += line + "\n";
   }
   return kept;
