@@ -2,6 +2,9 @@
 
 #include "frontend/demote.hpp"
 
+#include <string>
+#include <utility>
+
 namespace doublet::verify {
 
 std::string_view to_string(Sabotage s) {
@@ -28,19 +31,19 @@ void apply_sabotage(Sabotage s, std::string* source, Options* options) {
 
 bool apply_output_sabotage(Sabotage s, std::string* lowered) {
   if (s != Sabotage::TiesAway) return true;
-  // rules/exact.glsl's round-and-pack: on an exact tie the last kept bit is cleared (to even).
-  const std::string tie = "if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;";
-  const size_t at = lowered->find(tie);
-  if (at == std::string::npos) {
-    // The same line as the WGSL printer spells it (target wgsl, verify --backend webgpu).
-    const std::string wgsl_tie = "if ((roundBits == 512u)) {\n    sig_v[0i] &= 4294967294u;\n  }";
-    const size_t w = lowered->find(wgsl_tie);
-    if (w == std::string::npos) return false;
-    lowered->erase(w, wgsl_tie.size());
+  // rules/exact.glsl's round-and-pack: on an exact tie the mask clears the last kept bit (to
+  // even); the sabotage keeps every bit (ties away from zero).
+  const std::pair<std::string, std::string> edits[] = {
+      {"uint tie = roundBits == 0x200u ? 0xFFFFFFFEu : 0xFFFFFFFFu;", "uint tie = 0xFFFFFFFFu;"},
+      // The same line as the WGSL printer spells it (target wgsl, verify --backend webgpu).
+      {"var tie: u32 = select(4294967295u, 4294967294u, (roundBits == 512u));", "var tie: u32 = 4294967295u;"}};
+  for (const auto& [from, to] : edits) {
+    const size_t at = lowered->find(from);
+    if (at == std::string::npos) continue;
+    lowered->replace(at, from.size(), to);
     return true;
   }
-  lowered->erase(at, tie.size());
-  return true;
+  return false;
 }
 
 }  // namespace doublet::verify

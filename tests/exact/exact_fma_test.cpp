@@ -140,10 +140,10 @@ TEST(ExactFma, SabotageMakesResultsDiffer) {
   const std::vector<uint64_t> native = run_words(Backend::Vulkan, native_fma_shader(), triples(), 3, 1);
   const std::string library = exact_library({"ex_fma_bits"});
   const std::vector<std::pair<const char*, std::pair<std::string, std::string>>> sabotages = {
-      {"ties away from zero", {"if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;", ""}},
-      {"no sticky bit", {"r.x |= lost != 0u ? 1u : 0u;", ""}},
+      {"ties away from zero", {"uint tie = roundBits == 0x200u ? 0xFFFFFFFEu : 0xFFFFFFFFu;", "uint tie = 0xFFFFFFFFu;"}},
+      {"no sticky bit", {"uint jam = lost ? 1u : 0u;", "uint jam = 0u;"}},
       {"product not rounded (truncated to 53 bits)",
-       {"if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;", "sig.x &= 0xFFFFFC00u;"}},
+       {"uvec2 sig = uvec2((w1 >> 10) | (w2 << 22) | sticky, ", "uvec2 sig = uvec2(((w1 >> 10) | (w2 << 22)) & 0xFFFFFC00u, "}},
   };
   for (const auto& [name, edit] : sabotages) {
     std::string sabotaged = library;

@@ -234,14 +234,14 @@ TEST(ExactSabotage, EachSabotageMakesResultsDiffer) {
   REQUIRE_BACKEND(Backend::Vulkan);
   static const std::vector<uint64_t> ab = make_inputs();
   const std::vector<Sabotage> sabotages = {
-      {"ties-away (no ties-to-even)", {{"if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;", ""}}, {"add", "sub", "mul", "div"}},
+      {"ties-away (no ties-to-even)", {{"uint tie = roundBits == 0x200u ? 0xFFFFFFFEu : 0xFFFFFFFFu;", "uint tie = 0xFFFFFFFFu;"}}, {"add", "sub", "mul", "div"}},
       {"no sticky bit",
-       {{"r.x |= lost != 0u ? 1u : 0u;", ""},
-        {"if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;", ""},
+       {{"uint jam = lost ? 1u : 0u;", "uint jam = 0u;"},
+        {"uint sticky = any(bvec2(p00.x != 0u, (w1 & 0x3FFu) != 0u)) ? 1u : 0u;", "uint sticky = 0u;"},
         {"if ((rem.x | rem.y) != 0u) q.x |= 1u;", ""},
         {"if ((rem.x | rem.y) != 0u) root.x |= 1u;", ""}},
        {"add", "sub", "mul", "div", "sqrt"}},
-      {"flush subnormal results to zero", {{"sig = ex_shr_jam64(sig, -e);", "sig = uvec2(0u);"}}, {"add", "sub", "mul", "div"}},
+      {"flush subnormal results to zero", {{"uvec2 t = ex_shr_jam64(sig, shift);", "uvec2 t = ex_sel64(tiny, uvec2(0u), sig);"}}, {"add", "sub", "mul", "div"}},
       // The square root's digits are float estimates: taking them unchecked must show.
       {"root digits not corrected upwards", {{"while (ex_lt64(ex_shl64(q, 1), r)) {", "if (false) {"}}, {"sqrt"}},
       {"root digits not corrected downwards", {{"while (r.y >= 0x80000000u) {", "if (false) {"}}, {"sqrt"}},

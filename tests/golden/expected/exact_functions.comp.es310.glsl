@@ -13,7 +13,7 @@ struct ex_dvec2 {
   uvec2 hi;
   uvec2 lo;
 };
-// doublet exact binary64 runtime (mode exact): 33 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 35 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct ex_double { uint hi; uint lo; };
 struct ff_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -221,28 +221,72 @@ int ex_clz32(uint x) {
 // Bound: exact
 // Flops: 0
 int ex_clz64(uvec2 a) {
-  return a.y != 0u ? ex_clz32(a.y) : 32 + ex_clz32(a.x);
+  int high = ex_clz32(a.y);
+  int low = 32 + ex_clz32(a.x);
+  return a.y != 0u ? high : low;
+}
+
+// ex_shr64: a >> n for 0 <= n < 64 (bits shifted out are dropped: truncation).
+// Algorithm: both word shifts by k = n mod 32, the bits carried into the low word as (a.y << 1) << (31 - k) (0 when k = 0); n >= 32 selects (a.y >> k, 0). No branch
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
+// Bound: exact
+// Flops: 0
+uvec2 ex_shr64(uvec2 a, int n) {
+  uint k = uint(n & 31);
+  uint carry = (a.y << 1u) << (31u - k);
+  uint low = (a.x >> k) | carry;
+  uint high = a.y >> k;
+  bool far = n >= 32;
+  uint x = far ? high : low;
+  uint y = far ? 0u : high;
+  return uvec2(x, y);
+}
+
+// ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: no shift here reaches 32).
+// Algorithm: both word shifts by k = n mod 32, the bits carried into the high word as (a.x >> 1) >> (31 - k) (0 when k = 0); n >= 32 selects (0, a.x << k). No branch
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
+// Bound: exact
+// Flops: 0 (about 9 integer operations)
+uvec2 ex_shl64(uvec2 a, int n) {
+  uint k = uint(n & 31);
+  uint carry = (a.x >> 1u) >> (31u - k);
+  uint low = a.x << k;
+  uint high = (a.y << k) | carry;
+  bool far = n >= 32;
+  uint x = far ? 0u : low;
+  uint y = far ? low : high;
+  return uvec2(x, y);
 }
 
 // ex_shr_jam64: a >> n for n >= 0, the shifted-out bits ORed into bit 0 (the sticky bit).
-// Algorithm: word shift by case; any nonzero bit shifted out sets bit 0 ("jamming")
+// Algorithm: truncating shift by min(n, 63) (ex_shr64); a bit was lost when shifting back does not give a; n >= 64 leaves only the sticky bit of a != 0 ("jamming"). No branch
 // Source: Hauser, Berkeley SoftFloat 3e, 2018 (shiftRightJam64 semantics)
 // Bound: exact
-// Flops: 0 (up to 10 integer operations)
+// Flops: 0 (about 30 integer operations)
 uvec2 ex_shr_jam64(uvec2 a, int n) {
-  if (n == 0) return a;
-  if (n >= 64) return uvec2((a.x | a.y) != 0u ? 1u : 0u, 0u);
-  uvec2 r;
-  uint lost;
-  if (n >= 32) {
-    r = uvec2(n == 32 ? a.y : a.y >> uint(n - 32), 0u);
-    lost = a.x | (n == 32 ? 0u : a.y << uint(64 - n));
-  } else {
-    r = uvec2((a.x >> uint(n)) | (a.y << uint(32 - n)), a.y >> uint(n));
-    lost = a.x << uint(32 - n);
-  }
-  r.x |= lost != 0u ? 1u : 0u;
-  return r;
+  int m = min(n, 63);
+  uvec2 kept = ex_shr64(a, m);
+  uvec2 back = ex_shl64(kept, m);
+  bool far = n >= 64;
+  bool lostNear = any(notEqual(back, a));
+  bool nonzero = (a.x | a.y) != 0u;
+  bool lost = far ? nonzero : lostNear;
+  uint x = far ? 0u : kept.x;
+  uint y = far ? 0u : kept.y;
+  uint jam = lost ? 1u : 0u;
+  return uvec2(x | jam, y);
+}
+
+// ex_sel64: c ? a : b on 64-bit words, one select per word (no branch: GLSL ES 3.00 has no mix on
+// integers, and a ternary on a uvec2 becomes control flow in SPIR-V 1.0).
+// Algorithm: per-word conditional selection
+// Source: docs/rules-format.md, "No branches in a rule"
+// Bound: exact
+// Flops: 0 (2 selects)
+uvec2 ex_sel64(bool c, uvec2 a, uvec2 b) {
+  uint x = c ? a.x : b.x;
+  uint y = c ? a.y : b.y;
+  return uvec2(x, y);
 }
 
 // ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
@@ -256,44 +300,38 @@ uvec2 ex_add64(uvec2 a, uvec2 b) {
 }
 
 // ex_round_pack: the binary64 nearest (ties to even) to sig * 2^(e - 1084), sign s. sig < 2^63; if e > 0 its top bit must be bit 62.
-// Algorithm: e < 0: jamming shift to e = 0 (subnormal); keep 53 bits, 10 round bits; add half, clear the last bit on an exact tie; the significand's carry runs into the exponent field (up to infinity)
+// Algorithm: e < 0: jamming shift to e = 0 (subnormal); keep 53 bits, 10 round bits; add half, clear the last bit on an exact tie; the significand's carry runs into the exponent field (up to infinity); e > 0x7FD selects infinity. No branch
 // Source: IEEE 754-2019, 4.3.1; Hauser, Berkeley SoftFloat 3e, 2018 (roundPackToF64 scheme)
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (about 30 integer operations)
 uvec2 ex_round_pack(bool s, int e, uvec2 sig) {
   uint signWord = s ? 0x80000000u : 0u;
-  if (e > 0x7FD) return uvec2(0u, signWord | 0x7FF00000u);
-  if (e < 0) {
-    sig = ex_shr_jam64(sig, -e);
-    e = 0;
-  }
-  uint roundBits = sig.x & 0x3FFu;
-  sig = ex_add64(sig, uvec2(0x200u, 0u));
-  sig = uvec2((sig.x >> 10) | (sig.y << 22), sig.y >> 10);
-  if (roundBits == 0x200u) sig.x &= 0xFFFFFFFEu;
-  return ex_add64(uvec2(0u, signWord | (uint(e) << 20)), sig);
-}
-
-// ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: split by case).
-// Algorithm: word shift by case n == 0, n < 32, n >= 32
-// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
-// Bound: exact
-// Flops: 0 (up to 6 integer operations)
-uvec2 ex_shl64(uvec2 a, int n) {
-  if (n == 0) return a;
-  if (n >= 32) return uvec2(0u, a.x << uint(n - 32));
-  return uvec2(a.x << uint(n), (a.y << uint(n)) | (a.x >> uint(32 - n)));
+  bool tiny = e < 0;
+  int shift = tiny ? -e : 0;
+  int field = tiny ? 0 : e;
+  uvec2 t = ex_shr_jam64(sig, shift);
+  uint roundBits = t.x & 0x3FFu;
+  uvec2 u = ex_add64(t, uvec2(0x200u, 0u));
+  uint x = (u.x >> 10) | (u.y << 22);
+  uint tie = roundBits == 0x200u ? 0xFFFFFFFEu : 0xFFFFFFFFu;
+  uvec2 rounded = uvec2(x & tie, u.y >> 10);
+  uvec2 finite = ex_add64(uvec2(0u, signWord | (uint(field) << 20)), rounded);
+  return ex_sel64(e > 0x7FD, uvec2(0u, signWord | 0x7FF00000u), finite);
 }
 
 // ex_norm_round_pack: ex_round_pack for any nonzero 64-bit sig: first moved so its top bit is bit 62.
-// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one
+// Algorithm: count leading zeros; shift left (exact) or jam-shift right by one, both computed and one selected
 // Source: Hauser, Berkeley SoftFloat 3e, 2018 (normRoundPackToF64 scheme)
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0
 uvec2 ex_norm_round_pack(bool s, int e, uvec2 sig) {
   int z = ex_clz64(sig);
-  if (z == 0) return ex_round_pack(s, e + 1, ex_shr_jam64(sig, 1));
-  return ex_round_pack(s, e - (z - 1), ex_shl64(sig, z - 1));
+  bool top = z == 0;
+  uvec2 right = ex_shr_jam64(sig, 1);
+  uvec2 left = ex_shl64(sig, max(z - 1, 0));
+  uvec2 m = ex_sel64(top, right, left);
+  int f = top ? e + 1 : e - (z - 1);
+  return ex_round_pack(s, f, m);
 }
 
 // ex_from_uint_bits: the binary64 pattern of a uint (exact: 32 bits fit in 53).
@@ -321,7 +359,10 @@ ex_double ex_from_int(int i) {
 // Bound: exact
 // Flops: 0
 bool ex_is_nan(uvec2 a) {
-  return (a.y & 0x7FFFFFFFu) > 0x7FF00000u || ((a.y & 0x7FFFFFFFu) == 0x7FF00000u && a.x != 0u);
+  uint m = a.y & 0x7FFFFFFFu;
+  bool above = m > 0x7FF00000u;
+  bool low = all(bvec2(m == 0x7FF00000u, a.x != 0u));
+  return any(bvec2(above, low));
 }
 
 // ex_pick_nan: the NaN result of an operation with a NaN operand: a if it is a NaN, else b, made quiet.
@@ -330,7 +371,7 @@ bool ex_is_nan(uvec2 a) {
 // Bound: exact
 // Flops: 0
 uvec2 ex_pick_nan(uvec2 a, uvec2 b) {
-  uvec2 n = ex_is_nan(a) ? a : b;
+  uvec2 n = ex_sel64(ex_is_nan(a), a, b);
   return uvec2(n.x, n.y | 0x00080000u);
 }
 
@@ -340,24 +381,23 @@ uvec2 ex_pick_nan(uvec2 a, uvec2 b) {
 // Bound: exact
 // Flops: 0
 uvec2 ex_sig(uvec2 a) {
-  uint hi = a.y & 0x000FFFFFu;
-  if ((a.y & 0x7FF00000u) != 0u) hi |= 0x00100000u;
+  uint implicit = (a.y & 0x7FF00000u) != 0u ? 0x00100000u : 0u;
+  uint hi = (a.y & 0x000FFFFFu) | implicit;
   return uvec2(a.x, hi);
 }
 
 // ex_normalize_sig: the 53-bit significand with its top bit at bit 52 and the matching exponent (a finite nonzero a).
-// Algorithm: a normal number's significand as it is; subnormals shifted left by their leading zeros, exponent lowered by the same count
+// Algorithm: a normal number's significand as it is; subnormals shifted left by their leading zeros, exponent lowered by the same count (a zero shifts by 53 and stays 0; no branch)
 // Source: IEEE 754-2019, 3.4
 // Bound: exact
 // Flops: 0
 uvec2 ex_normalize_sig(uvec2 a, out int x) {
   uvec2 m = ex_sig(a);
-  if ((a.y & 0x7FF00000u) != 0u) {
-    x = int((a.y >> 20) & 0x7FFu);
-    return m;
-  }
-  int shift = ex_clz64(m) - 11;
-  x = 1 - shift;
+  bool normal = (a.y & 0x7FF00000u) != 0u;
+  int lead = ex_clz64(m) - 11;
+  int shift = normal ? 0 : lead;
+  int field = int((a.y >> 20) & 0x7FFu);
+  x = normal ? field : 1 - shift;
   return ex_shl64(m, shift);
 }
 
@@ -367,7 +407,9 @@ uvec2 ex_normalize_sig(uvec2 a, out int x) {
 // Bound: exact
 // Flops: 0 (3 integer comparisons)
 bool ex_lt64(uvec2 a, uvec2 b) {
-  return a.y < b.y || (a.y == b.y && a.x < b.x);
+  bool highBelow = a.y < b.y;
+  bool lowBelow = all(bvec2(a.y == b.y, a.x < b.x));
+  return any(bvec2(highBelow, lowBelow));
 }
 
 // ex_u64_to_float: a 64-bit (lo, hi) integer as a float, rounded (an estimate for ex_sqrt_bits).
@@ -482,32 +524,35 @@ int ex_exponent(uvec2 a) {
 }
 
 // ex_add_bits: a + b in binary64, correctly rounded (ties to even).
-// Algorithm: order by magnitude; significands << 10; the smaller jam-shifted by the exponent difference; add or subtract; normalize and round once. Exact cancellation gives +0; (-0) + (-0) = -0
+// Algorithm: order by magnitude; significands << 10; the smaller jam-shifted by the exponent difference; add or subtract; normalize and round once. Exact cancellation gives +0; (-0) + (-0) = -0. One branch: NaN, infinite or two zero operands return early (selected among themselves); the finite path is computed whole, cancellation selected (docs/performance.md, "Mode exact: one branch per operation")
 // Source: IEEE 754-2019, 5.4.1, 6.3; Hauser, Berkeley SoftFloat 3e, 2018 (addMagsF64/subMagsF64 scheme)
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (about 60 integer operations)
 uvec2 ex_add_bits(uvec2 a, uvec2 b) {
-  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
   bool sa = a.y >= 0x80000000u, sb = b.y >= 0x80000000u;
-  bool infA = (a.y & 0x7FFFFFFFu) == 0x7FF00000u, infB = (b.y & 0x7FFFFFFFu) == 0x7FF00000u;
-  if (infA || infB) {
-    if (infA && infB && sa != sb) return uvec2(0u, 0xFFF80000u);
-    return infA ? a : b;
-  }
   uvec2 ma = ex_sig(a), mb = ex_sig(b);
-  int xa = ex_exponent(a), xb = ex_exponent(b);
-  if ((ma.x | ma.y | mb.x | mb.y) == 0u) return uvec2(0u, (sa && sb) ? 0x80000000u : 0u);
-  if (xb > xa || (xb == xa && ex_lt64(ma, mb))) {
-    uvec2 tm = ma; ma = mb; mb = tm;
-    int tx = xa; xa = xb; xb = tx;
-    bool ts = sa; sa = sb; sb = ts;
+  bool zeros = (ma.x | ma.y | mb.x | mb.y) == 0u;
+  bool topA = (a.y & 0x7FF00000u) == 0x7FF00000u, topB = (b.y & 0x7FF00000u) == 0x7FF00000u;
+  if (any(bvec3(topA, topB, zeros))) {
+    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool invalid = all(bvec3(topA, topB, sa != sb));
+    uvec2 infinite = ex_sel64(invalid, uvec2(0u, 0xFFF80000u), ex_sel64(topA, a, b));
+    uint zeroSign = all(bvec2(sa, sb)) ? 0x80000000u : 0u;
+    uvec2 special = ex_sel64(any(bvec2(topA, topB)), infinite, uvec2(0u, zeroSign));
+    return ex_sel64(nan, ex_pick_nan(b, a), special);
   }
-  uvec2 big = ex_shl64(ma, 10);
-  uvec2 small = ex_shr_jam64(ex_shl64(mb, 10), xa - xb);
-  if (sa == sb) return ex_norm_round_pack(sa, xa - 1, ex_add64(big, small));
-  uvec2 d = ex_sub64(big, small);
-  if ((d.x | d.y) == 0u) return uvec2(0u, 0u);
-  return ex_norm_round_pack(sa, xa - 1, d);
+  int xa = ex_exponent(a), xb = ex_exponent(b);
+  bool swap = any(bvec2(xb > xa, all(bvec2(xb == xa, ex_lt64(ma, mb)))));
+  uvec2 m1 = ex_sel64(swap, mb, ma), m2 = ex_sel64(swap, ma, mb);
+  int x1 = swap ? xb : xa, x2 = swap ? xa : xb;
+  bool s1 = swap ? sb : sa, s2 = swap ? sa : sb;
+  uvec2 big = ex_shl64(m1, 10);
+  uvec2 small = ex_shr_jam64(ex_shl64(m2, 10), x1 - x2);
+  bool same = s1 == s2;
+  uvec2 d = ex_sel64(same, ex_add64(big, small), ex_sub64(big, small));
+  bool cancelled = (d.x | d.y) == 0u;
+  uvec2 r = ex_norm_round_pack(s1, x1 - 1, d);
+  return ex_sel64(cancelled, uvec2(0u, 0u), r);
 }
 
 // ex_add: a + b (mode exact), correctly rounded.
@@ -520,20 +565,21 @@ ex_double ex_add(ex_double a, ex_double b) {
 }
 
 // ex_mul_bits: a * b in binary64, correctly rounded (ties to even).
-// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, a one-bit jamming normalization, rounded once
+// Algorithm: 53x53-bit significand product in 32-bit words (ex_mul32), its top 64 bits with the rest as sticky bit, a one-bit jamming normalization, rounded once. One branch: NaN, infinite or zero operands return early (selected among themselves)
 // Source: IEEE 754-2019, 5.4.1, 7.2 (0 * Inf invalid); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm M
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (16 integer multiplications, about 80 other integer operations)
 uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
-  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(b, a);
   uint signWord = (a.y ^ b.y) & 0x80000000u;
   uint absA = a.y & 0x7FFFFFFFu, absB = b.y & 0x7FFFFFFFu;
-  bool zeroA = (absA | a.x) == 0u, zeroB = (absB | b.x) == 0u;
-  if (absA == 0x7FF00000u || absB == 0x7FF00000u) {
-    if (zeroA || zeroB) return uvec2(0u, 0xFFF80000u);
-    return uvec2(0u, signWord | 0x7FF00000u);
+  bool zero = any(bvec2((absA | a.x) == 0u, (absB | b.x) == 0u));
+  bool topA = absA >= 0x7FF00000u, topB = absB >= 0x7FF00000u;
+  if (any(bvec3(topA, topB, zero))) {
+    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    uvec2 infinite = ex_sel64(zero, uvec2(0u, 0xFFF80000u), uvec2(0u, signWord | 0x7FF00000u));
+    uvec2 special = ex_sel64(any(bvec2(topA, topB)), infinite, uvec2(0u, signWord));
+    return ex_sel64(nan, ex_pick_nan(b, a), special);
   }
-  if (zeroA || zeroB) return uvec2(0u, signWord);
   int xa, xb;
   uvec2 ma = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
   uvec2 p00 = ex_mul32(ma.x, mb.x), p01 = ex_mul32(ma.x, mb.y);
@@ -543,15 +589,13 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   uint w1 = mid.x;
   uint w2 = top.x + p11.x;
   uint w3 = p11.y + top.y + (w2 < p11.x ? 1u : 0u);
-  uvec2 sig = uvec2((w1 >> 10) | (w2 << 22), (w2 >> 10) | (w3 << 22));
-  if (p00.x != 0u || (w1 & 0x3FFu) != 0u) sig.x |= 1u;
+  uint sticky = any(bvec2(p00.x != 0u, (w1 & 0x3FFu) != 0u)) ? 1u : 0u;
+  uvec2 sig = uvec2((w1 >> 10) | (w2 << 22) | sticky, (w2 >> 10) | (w3 << 22));
   // The product of two significands in [2^52, 2^53) leaves sig's top bit at 63 or 62.
-  int e = xa + xb - 1024;
-  if (sig.y >= 0x80000000u) {
-    sig = uvec2((sig.x >> 1) | (sig.y << 31) | (sig.x & 1u), sig.y >> 1);
-    e += 1;
-  }
-  return ex_round_pack(signWord != 0u, e, sig);
+  bool carry = sig.y >= 0x80000000u;
+  uvec2 halved = uvec2((sig.x >> 1) | (sig.y << 31) | (sig.x & 1u), sig.y >> 1);
+  int e = xa + xb - 1024 + (carry ? 1 : 0);
+  return ex_round_pack(signWord != 0u, e, ex_sel64(carry, halved, sig));
 }
 
 // ex_mul: a * b (mode exact), correctly rounded.
@@ -641,8 +685,9 @@ uvec2 ex_neg_bits(uvec2 a) {
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0
 uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
-  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
-  return ex_add_bits(a, ex_neg_bits(b));
+  bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+  uvec2 r = ex_add_bits(a, ex_neg_bits(b));
+  return ex_sel64(nan, ex_pick_nan(a, b), r);
 }
 
 // ex_to_ff: the float-float pair nearest a binary64 pattern: hi = float(a), lo = float(a - hi); (float(a), 0) when hi is not finite (|a| > FLT_MAX, Inf, NaN).

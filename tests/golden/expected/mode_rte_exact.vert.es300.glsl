@@ -2,7 +2,7 @@
 precision highp float;
 precision highp int;
 
-// doublet exact binary64 runtime (mode exact): 13 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 14 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct df_double { uint hi; uint lo; };
 struct df_dvec3 { uvec3 hi; uvec3 lo; };
 
@@ -12,39 +12,60 @@ struct df_dvec3 { uvec3 hi; uvec3 lo; };
 // Bound: exact
 // Flops: 0 (3 integer comparisons)
 bool ex_lt64(uvec2 a, uvec2 b) {
-  return a.y < b.y || (a.y == b.y && a.x < b.x);
+  bool highBelow = a.y < b.y;
+  bool lowBelow = all(bvec2(a.y == b.y, a.x < b.x));
+  return any(bvec2(highBelow, lowBelow));
 }
 
-// ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: split by case).
-// Algorithm: word shift by case n == 0, n < 32, n >= 32
+// ex_shl64: a << n for 0 <= n < 64 (GLSL shifts by 32 or more are undefined: no shift here reaches 32).
+// Algorithm: both word shifts by k = n mod 32, the bits carried into the high word as (a.x >> 1) >> (31 - k) (0 when k = 0); n >= 32 selects (0, a.x << k). No branch
 // Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
 // Bound: exact
-// Flops: 0 (up to 6 integer operations)
+// Flops: 0 (about 9 integer operations)
 uvec2 ex_shl64(uvec2 a, int n) {
-  if (n == 0) return a;
-  if (n >= 32) return uvec2(0u, a.x << uint(n - 32));
-  return uvec2(a.x << uint(n), (a.y << uint(n)) | (a.x >> uint(32 - n)));
+  uint k = uint(n & 31);
+  uint carry = (a.x >> 1u) >> (31u - k);
+  uint low = a.x << k;
+  uint high = (a.y << k) | carry;
+  bool far = n >= 32;
+  uint x = far ? 0u : low;
+  uint y = far ? low : high;
+  return uvec2(x, y);
+}
+
+// ex_shr64: a >> n for 0 <= n < 64 (bits shifted out are dropped: truncation).
+// Algorithm: both word shifts by k = n mod 32, the bits carried into the low word as (a.y << 1) << (31 - k) (0 when k = 0); n >= 32 selects (a.y >> k, 0). No branch
+// Source: Knuth TAOCP vol. 2, 1997, 4.3.1 (multiword shifts)
+// Bound: exact
+// Flops: 0
+uvec2 ex_shr64(uvec2 a, int n) {
+  uint k = uint(n & 31);
+  uint carry = (a.y << 1u) << (31u - k);
+  uint low = (a.x >> k) | carry;
+  uint high = a.y >> k;
+  bool far = n >= 32;
+  uint x = far ? high : low;
+  uint y = far ? 0u : high;
+  return uvec2(x, y);
 }
 
 // ex_shr_jam64: a >> n for n >= 0, the shifted-out bits ORed into bit 0 (the sticky bit).
-// Algorithm: word shift by case; any nonzero bit shifted out sets bit 0 ("jamming")
+// Algorithm: truncating shift by min(n, 63) (ex_shr64); a bit was lost when shifting back does not give a; n >= 64 leaves only the sticky bit of a != 0 ("jamming"). No branch
 // Source: Hauser, Berkeley SoftFloat 3e, 2018 (shiftRightJam64 semantics)
 // Bound: exact
-// Flops: 0 (up to 10 integer operations)
+// Flops: 0 (about 30 integer operations)
 uvec2 ex_shr_jam64(uvec2 a, int n) {
-  if (n == 0) return a;
-  if (n >= 64) return uvec2((a.x | a.y) != 0u ? 1u : 0u, 0u);
-  uvec2 r;
-  uint lost;
-  if (n >= 32) {
-    r = uvec2(n == 32 ? a.y : a.y >> uint(n - 32), 0u);
-    lost = a.x | (n == 32 ? 0u : a.y << uint(64 - n));
-  } else {
-    r = uvec2((a.x >> uint(n)) | (a.y << uint(32 - n)), a.y >> uint(n));
-    lost = a.x << uint(32 - n);
-  }
-  r.x |= lost != 0u ? 1u : 0u;
-  return r;
+  int m = min(n, 63);
+  uvec2 kept = ex_shr64(a, m);
+  uvec2 back = ex_shl64(kept, m);
+  bool far = n >= 64;
+  bool lostNear = any(notEqual(back, a));
+  bool nonzero = (a.x | a.y) != 0u;
+  bool lost = far ? nonzero : lostNear;
+  uint x = far ? 0u : kept.x;
+  uint y = far ? 0u : kept.y;
+  uint jam = lost ? 1u : 0u;
+  return uvec2(x | jam, y);
 }
 
 // ex_sub64: 64-bit difference, modulo 2^64.
@@ -67,19 +88,30 @@ uvec2 ex_add64(uvec2 a, uvec2 b) {
 }
 
 // ex_clz32: count of leading zero bits of a 32-bit word (32 for 0); ES 3.00 has no findMSB.
-// Algorithm: binary search over 16, 8, 4, 2, 1 bit halves
+// Algorithm: binary search over 16, 8, 4, 2, 1 bit halves, each step by selects (no branch)
 // Source: H. S. Warren, Hacker's Delight, 2nd ed., 2012, section 5-3 (nlz, binary search)
 // Bound: exact
 // Flops: 0 (about 16 integer operations)
 int ex_clz32(uint x) {
-  if (x == 0u) return 32;
-  int n = 0;
-  if ((x & 0xFFFF0000u) == 0u) { n += 16; x <<= 16; }
-  if ((x & 0xFF000000u) == 0u) { n += 8; x <<= 8; }
-  if ((x & 0xF0000000u) == 0u) { n += 4; x <<= 4; }
-  if ((x & 0xC0000000u) == 0u) { n += 2; x <<= 2; }
-  if ((x & 0x80000000u) == 0u) { n += 1; }
-  return n;
+  bool z16 = (x & 0xFFFF0000u) == 0u;
+  uint y16 = x << 16;
+  uint y = z16 ? y16 : x;
+  int n16 = z16 ? 16 : 0;
+  bool z8 = (y & 0xFF000000u) == 0u;
+  uint y8 = y << 8;
+  y = z8 ? y8 : y;
+  int n8 = z8 ? 8 : 0;
+  bool z4 = (y & 0xF0000000u) == 0u;
+  uint y4 = y << 4;
+  y = z4 ? y4 : y;
+  int n4 = z4 ? 4 : 0;
+  bool z2 = (y & 0xC0000000u) == 0u;
+  uint y2 = y << 2;
+  y = z2 ? y2 : y;
+  int n2 = z2 ? 2 : 0;
+  int n1 = (y & 0x80000000u) == 0u ? 1 : 0;
+  int n = n16 + n8 + n4 + n2 + n1;
+  return x == 0u ? 32 : n;
 }
 
 // ex_clz64: leading zero bits of a 64-bit (lo, hi) value (64 for 0).
@@ -88,7 +120,9 @@ int ex_clz32(uint x) {
 // Bound: exact
 // Flops: 0
 int ex_clz64(uvec2 a) {
-  return a.y != 0u ? ex_clz32(a.y) : 32 + ex_clz32(a.x);
+  int high = ex_clz32(a.y);
+  int low = 32 + ex_clz32(a.x);
+  return a.y != 0u ? high : low;
 }
 
 // ex_sub_to_float_bits: the float bits of RN_float(a - b) for binary64 patterns a, b (uvec2(low, high)), rounded once.
