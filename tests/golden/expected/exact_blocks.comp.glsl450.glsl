@@ -50,7 +50,7 @@ bool ex_is_nan(uvec2 a) {
 // ex_sel64: c ? a : b on 64-bit words, one select per word (no branch: GLSL ES 3.00 has no mix on
 // integers, and a ternary on a uvec2 becomes control flow in SPIR-V 1.0).
 // Algorithm: per-word conditional selection
-// Source: docs/rules-format.md, "No branches in a rule"
+// Source: Khronos, The OpenGL ES Shading Language 3.00.6, 2016, 5.9 (the ternary selection operator); docs/rules-format.md, "No branches in a rule"
 // Bound: exact
 // Flops: 0 (2 selects)
 uvec2 ex_sel64(bool c, uvec2 a, uvec2 b) {
