@@ -466,34 +466,35 @@ uvec4 ex_div_step(uvec4 qr, uvec2 mb, int k) {
 }
 
 // ex_div_bits: a / b in binary64, correctly rounded (ties to even).
-// Algorithm: long division of the normalized significands, 55 quotient bits in three 18-bit ex_div_step digits (float estimates checked in integers), the remainder as sticky bit; rounded once
+// Algorithm: long division of the normalized significands, 55 quotient bits in three 18-bit ex_div_step digits (float estimates checked in integers), the remainder as sticky bit; rounded once. One branch: NaN, infinite or zero operands return early (selected among themselves); the digits' corrections stay loops
 // Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence)
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 24 (estimates: 8 per ex_div_step)
 uvec2 ex_div_bits(uvec2 a, uvec2 b) {
-  if (ex_is_nan(a) || ex_is_nan(b)) return ex_pick_nan(a, b);
   uint signWord = (a.y ^ b.y) & 0x80000000u;
   uint absA = a.y & 0x7FFFFFFFu, absB = b.y & 0x7FFFFFFFu;
   bool zeroA = (absA | a.x) == 0u, zeroB = (absB | b.x) == 0u;
-  bool infA = absA == 0x7FF00000u, infB = absB == 0x7FF00000u;
-  if ((infA && infB) || (zeroA && zeroB)) return uvec2(0u, 0xFFF80000u);
-  if (infA || zeroB) return uvec2(0u, signWord | 0x7FF00000u);
-  if (infB || zeroA) return uvec2(0u, signWord);
-  int xa, xb;
-  uvec2 rem = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
-  int e = xa - xb + 1022;
-  if (ex_lt64(rem, mb)) {
-    rem = ex_shl64(rem, 1);
-    e -= 1;
+  bool topA = absA >= 0x7FF00000u, topB = absB >= 0x7FF00000u;
+  if (any(bvec4(topA, topB, zeroA, zeroB))) {
+    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool invalid = any(bvec2(all(bvec2(topA, topB)), all(bvec2(zeroA, zeroB))));
+    bool infinite = any(bvec2(topA, zeroB));
+    uvec2 special = ex_sel64(infinite, uvec2(0u, signWord | 0x7FF00000u), uvec2(0u, signWord));
+    special = ex_sel64(invalid, uvec2(0u, 0xFFF80000u), special);
+    return ex_sel64(nan, ex_pick_nan(a, b), special);
   }
+  int xa, xb;
+  uvec2 ma = ex_normalize_sig(a, xa), mb = ex_normalize_sig(b, xb);
+  bool below = ex_lt64(ma, mb);
+  uvec2 rem = ex_sel64(below, ex_shl64(ma, 1), ma);
+  int e = xa - xb + 1022 - (below ? 1 : 0);
   // rem in [mb, 2mb): q = floor(rem * 2^54 / mb) has 55 bits.
   uvec4 qr = ex_div_step(uvec4(0u, 0u, rem), mb, 18);
   qr = ex_div_step(qr, mb, 18);
   qr = ex_div_step(qr, mb, 18);
   uvec2 q = ex_shl64(qr.xy, 8);
-  rem = qr.zw;
-  if ((rem.x | rem.y) != 0u) q.x |= 1u;
-  return ex_round_pack(signWord != 0u, e, q);
+  uint remainderBit = (qr.z | qr.w) != 0u ? 1u : 0u;
+  return ex_round_pack(signWord != 0u, e, uvec2(q.x | remainderBit, q.y));
 }
 
 // ex_bits: the binary64 pattern of a mode-exact double as uvec2(low word, high word), the order of unpackDouble2x32.
