@@ -468,29 +468,31 @@ uvec4 ex_root_step(uvec4 qr) {
 }
 
 // ex_sqrt_bits: sqrt(a) in binary64, correctly rounded; sqrt(-0) = -0, sqrt(x < 0) = NaN.
-// Algorithm: the 55-bit integer root Q = floor(sqrt(m * 2^56)) of the significand m (exponent made even) and its exact remainder, the sticky bit: 27 bits from the float sqrt of m with one Newton correction and unit corrections against the exact remainder m - q^2, then two ex_root_step digits of 14 bits; rounded once. Float arithmetic only estimates; every accepted digit is checked in integers
+// Algorithm: the 55-bit integer root Q = floor(sqrt(m * 2^56)) of the significand m (exponent made even) and its exact remainder, the sticky bit: 27 bits from the float sqrt of m with one Newton correction and unit corrections against the exact remainder m - q^2, then two ex_root_step digits of 14 bits; rounded once. Float arithmetic only estimates; every accepted digit is checked in integers. One branch: NaN, zero, negative or infinite operands return early (selected among themselves); the corrections stay loops
 // Source: IEEE 754-2019, 5.4.1, 7.2; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 6 (digit recurrence square root with estimated digits)
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 26 (estimates: 10 here, 8 per ex_root_step)
 // @min-es 300
 uvec2 ex_sqrt_bits(uvec2 a) {
-  if (ex_is_nan(a)) return ex_pick_nan(a, a);
   uint absA = a.y & 0x7FFFFFFFu;
-  if ((absA | a.x) == 0u) return a;
-  if (a.y >= 0x80000000u) return uvec2(0u, 0xFFF80000u);
-  if (absA == 0x7FF00000u) return a;
-  int x;
-  uvec2 m = ex_normalize_sig(a, x);
-  int e2 = x - 1075;
-  if ((e2 & 1) != 0) {
-    m = ex_shl64(m, 1);
-    e2 -= 1;
+  bool zero = (absA | a.x) == 0u, negative = a.y >= 0x80000000u;
+  if (any(bvec3(zero, negative, absA >= 0x7FF00000u))) {
+    // NaN: made quiet; zeros and +Inf: themselves; other negatives, -Inf included: the default NaN.
+    uvec2 special = ex_sel64(any(bvec2(zero, !negative)), a, uvec2(0u, 0xFFF80000u));
+    return ex_sel64(ex_is_nan(a), ex_pick_nan(a, a), special);
   }
+  int x;
+  uvec2 normalized = ex_normalize_sig(a, x);
+  bool odd = ((x - 1075) & 1) != 0;
+  uvec2 m = ex_sel64(odd, ex_shl64(normalized, 1), normalized);
+  int e2 = x - 1075 - (odd ? 1 : 0);
   // m in [2^52, 2^54): q = floor(sqrt(m)) has 27 bits, rem = m - q^2 <= 2q.
   float mf = ex_u64_to_float(m);
   uint q = uint(sqrt(mf));
   uvec2 rem = ex_sub64(m, ex_mul32(q, q));
-  float rf = rem.y >= 0x80000000u ? -ex_u64_to_float(ex_sub64(uvec2(0u), rem)) : ex_u64_to_float(rem);
+  float remBelow = -ex_u64_to_float(ex_sub64(uvec2(0u), rem));
+  float remAbove = ex_u64_to_float(rem);
+  float rf = rem.y >= 0x80000000u ? remBelow : remAbove;
   float correction = floor(rf / (2.0 * float(q)) + 0.5);
   q = uint(int(q) + int(correction));
   rem = ex_sub64(m, ex_mul32(q, q));
@@ -504,9 +506,8 @@ uvec2 ex_sqrt_bits(uvec2 a) {
   }
   uvec4 qr = ex_root_step(ex_root_step(uvec4(q, 0u, rem)));
   uvec2 root = ex_shl64(qr.xy, 8);
-  rem = qr.zw;
-  if ((rem.x | rem.y) != 0u) root.x |= 1u;
-  return ex_round_pack(false, 1048 + e2 / 2, root);
+  uint rootRemainderBit = (qr.z | qr.w) != 0u ? 1u : 0u;
+  return ex_round_pack(false, 1048 + e2 / 2, uvec2(root.x | rootRemainderBit, root.y));
 }
 
 // ex_fma_bits: fma(a, b, c) as native fp64 on lavapipe computes it: a * b rounded to binary64, then + c rounded (two roundings, not IEEE fusedMultiplyAdd).
