@@ -234,6 +234,16 @@ bool ex_is_nan(uvec2 a) {
   return any(bvec2(above, low));
 }
 
+// ex_either_nan: true when a or b is a NaN (the first test of every two-operand operation).
+// Algorithm: ex_is_nan of each, combined by any() on a bvec2 (no short-circuit branch)
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+// @min-es 300
+bool ex_either_nan(uvec2 a, uvec2 b) {
+  return any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+}
+
 // ex_pick_nan: the NaN result of an operation with a NaN operand: a if it is a NaN, else b, made quiet.
 // Algorithm: set the quiet bit (significand bit 51) of a if it is a NaN, else of b. Native fp64 on lavapipe (LLVM, x86 SSE) returns the first source operand's NaN, and LLVM passes a commutative operation's operands swapped: ex_add_bits and ex_mul_bits call ex_pick_nan(b, a), ex_sub_bits and ex_div_bits ex_pick_nan(a, b) (measured by tests/exact)
 // Source: IEEE 754-2019, 6.2.3 (NaN propagation); Intel SDM vol. 1, 2016, 4.8.3.5 (first source)
@@ -279,7 +289,7 @@ uvec2 ex_add_bits(uvec2 a, uvec2 b) {
   bool zeros = (ma.x | ma.y | mb.x | mb.y) == 0u;
   bool topA = (a.y & 0x7FF00000u) == 0x7FF00000u, topB = (b.y & 0x7FF00000u) == 0x7FF00000u;
   if (any(bvec3(topA, topB, zeros))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     bool invalid = all(bvec3(topA, topB, sa != sb));
     uvec2 infinite = ex_sel64(invalid, uvec2(0u, 0xFFF80000u), ex_sel64(topA, a, b));
     uint zeroSign = all(bvec2(sa, sb)) ? 0x80000000u : 0u;
@@ -317,7 +327,7 @@ uvec2 ex_neg_bits(uvec2 a) {
 // Flops: 0
 // @min-es 300
 uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
-  bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+  bool nan = ex_either_nan(a, b);
   uvec2 r = ex_add_bits(a, ex_neg_bits(b));
   return ex_sel64(nan, ex_pick_nan(a, b), r);
 }
@@ -350,7 +360,7 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   bool zero = any(bvec2((absA | a.x) == 0u, (absB | b.x) == 0u));
   bool topA = absA >= 0x7FF00000u, topB = absB >= 0x7FF00000u;
   if (any(bvec3(topA, topB, zero))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     uvec2 infinite = ex_sel64(zero, uvec2(0u, 0xFFF80000u), uvec2(0u, signWord | 0x7FF00000u));
     uvec2 special = ex_sel64(any(bvec2(topA, topB)), infinite, uvec2(0u, signWord));
     return ex_sel64(nan, ex_pick_nan(b, a), special);
@@ -374,7 +384,7 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
 }
 
 // ex_div_step: k more quotient bits of a long division by mb: (q, r) as (q.x, q.y, r.x, r.y), 0 <= r < 2mb, becomes (q * 2^k + d, r * 2^k - d * mb) with the digit d that leaves 0 <= r' < mb (k <= 18, mb < 2^53).
-// Algorithm: d = r * 2^k / mb estimated by one float division (off by at most one here); r' in 64-bit words modulo 2^64 (the true r' is small and signed); unit corrections until 0 <= r' < mb
+// Algorithm: d = r * 2^k / mb estimated by one float division: r and mb reach float with relative errors below 2^-23 each and the quotient is below 2^19, so the estimate is within 0.25 of r * 2^k / mb (also with the 2.5-ulp float division GLSL allows) and d within one of the true digit; r' in 64-bit words modulo 2^64 (the true r' is small and signed); one unit correction each way, by selects (no loop)
 // Source: Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence: high radix, digit selection by an estimate, correction); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm D
 // Bound: exact
 // Flops: 8 (the digit estimate)
@@ -387,19 +397,17 @@ uvec4 ex_div_step(uvec4 qr, uvec2 mb, int k) {
   dm.y += d * mb.y;
   r = ex_sub64(ex_shl64(r, k), dm);
   q = ex_add64(ex_shl64(q, k), uvec2(d, 0u));
-  while (r.y >= 0x80000000u) {
-    q = ex_sub64(q, uvec2(1u, 0u));
-    r = ex_add64(r, mb);
-  }
-  while (!ex_lt64(r, mb)) {
-    r = ex_sub64(r, mb);
-    q = ex_add64(q, uvec2(1u, 0u));
-  }
+  bool quotientTooLarge = r.y >= 0x80000000u;
+  q = ex_sub64(q, uvec2(quotientTooLarge ? 1u : 0u, 0u));
+  r = ex_sel64(quotientTooLarge, ex_add64(r, mb), r);
+  bool quotientTooSmall = !ex_lt64(r, mb);
+  q = ex_add64(q, uvec2(quotientTooSmall ? 1u : 0u, 0u));
+  r = ex_sel64(quotientTooSmall, ex_sub64(r, mb), r);
   return uvec4(q, r);
 }
 
 // ex_div_bits: a / b in binary64, correctly rounded (ties to even).
-// Algorithm: long division of the normalized significands, 55 quotient bits in three 18-bit ex_div_step digits (float estimates checked in integers), the remainder as sticky bit; rounded once. One branch: NaN, infinite or zero operands return early (selected among themselves); the digits' corrections stay loops
+// Algorithm: long division of the normalized significands, 55 quotient bits in three 18-bit ex_div_step digits (float estimates checked in integers), the remainder as sticky bit; rounded once. One branch: NaN, infinite or zero operands return early (selected among themselves); no loop (each digit's correction is one select each way)
 // Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence)
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 24 (estimates: 8 per ex_div_step)
@@ -410,7 +418,7 @@ uvec2 ex_div_bits(uvec2 a, uvec2 b) {
   bool zeroA = (absA | a.x) == 0u, zeroB = (absB | b.x) == 0u;
   bool topA = absA >= 0x7FF00000u, topB = absB >= 0x7FF00000u;
   if (any(bvec4(topA, topB, zeroA, zeroB))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     bool invalid = any(bvec2(all(bvec2(topA, topB)), all(bvec2(zeroA, zeroB))));
     bool infinite = any(bvec2(topA, zeroB));
     uvec2 special = ex_sel64(infinite, uvec2(0u, signWord | 0x7FF00000u), uvec2(0u, signWord));
@@ -442,7 +450,7 @@ float ex_u64_to_float(uvec2 a) {
 }
 
 // ex_root_step: 14 more bits of an integer square root: (q, r) as (q.x, q.y, r.x, r.y), q = floor(sqrt(n)) and r = n - q^2, becomes the root of n * 2^28 and its remainder (2^26 <= q < 2^41).
-// Algorithm: digit d = r * 2^14 / (2q) estimated by one float division (off by at most one here); r' = r * 2^28 - d * (2q * 2^14 + d) in 64-bit words modulo 2^64 (the true r' is small and signed); q' = q * 2^14 + d; then unit corrections until 0 <= r' <= 2q'
+// Algorithm: digit d = r * 2^14 / (2q) estimated by one float division: the estimate is within 2^-7 of r * 2^14 / (2q) (float errors below 2^-21 of a digit below 2^14), which is within 2^-13 of the true digit's real root (q >= 2^26), so d is within one of the true digit; r' = r * 2^28 - d * (2q * 2^14 + d) in 64-bit words modulo 2^64 (the true r' is small and signed); q' = q * 2^14 + d; then one unit correction each way, by selects (no loop), leaves 0 <= r' <= 2q'
 // Source: Ercegovac, Lang, Digital Arithmetic, 2004, ch. 6 (square root by digit recurrence: partial remainder, digit selection by an estimate, correction); Knuth TAOCP vol. 2, 1997, 4.3.1
 // Bound: exact
 // Flops: 8 (the digit estimate)
@@ -456,19 +464,17 @@ uvec4 ex_root_step(uvec4 qr) {
   dt.y += d * t.y;
   r = ex_sub64(ex_shl64(r, 28), dt);
   q = ex_add64(ex_shl64(q, 14), uvec2(d, 0u));
-  while (r.y >= 0x80000000u) {
-    q = ex_sub64(q, uvec2(1u, 0u));
-    r = ex_add64(r, ex_add64(ex_shl64(q, 1), uvec2(1u, 0u)));
-  }
-  while (ex_lt64(ex_shl64(q, 1), r)) {
-    r = ex_sub64(r, ex_add64(ex_shl64(q, 1), uvec2(1u, 0u)));
-    q = ex_add64(q, uvec2(1u, 0u));
-  }
+  bool digitTooLarge = r.y >= 0x80000000u;
+  q = ex_sub64(q, uvec2(digitTooLarge ? 1u : 0u, 0u));
+  r = ex_sel64(digitTooLarge, ex_add64(r, ex_add64(ex_shl64(q, 1), uvec2(1u, 0u))), r);
+  bool digitTooSmall = ex_lt64(ex_shl64(q, 1), r);
+  r = ex_sel64(digitTooSmall, ex_sub64(r, ex_add64(ex_shl64(q, 1), uvec2(1u, 0u))), r);
+  q = ex_add64(q, uvec2(digitTooSmall ? 1u : 0u, 0u));
   return uvec4(q, r);
 }
 
 // ex_sqrt_bits: sqrt(a) in binary64, correctly rounded; sqrt(-0) = -0, sqrt(x < 0) = NaN.
-// Algorithm: the 55-bit integer root Q = floor(sqrt(m * 2^56)) of the significand m (exponent made even) and its exact remainder, the sticky bit: 27 bits from the float sqrt of m with one Newton correction and unit corrections against the exact remainder m - q^2, then two ex_root_step digits of 14 bits; rounded once. Float arithmetic only estimates; every accepted digit is checked in integers. One branch: NaN, zero, negative or infinite operands return early (selected among themselves); the corrections stay loops
+// Algorithm: the 55-bit integer root Q = floor(sqrt(m * 2^56)) of the significand m (exponent made even) and its exact remainder, the sticky bit: 27 bits from the float sqrt of m (within 40 of the root, even with the few-ulp float sqrt GLSL allows) with one Newton correction (then at most one too large) and one unit correction each way against the exact remainder m - q^2, then two ex_root_step digits of 14 bits; rounded once. Float arithmetic only estimates; every accepted digit is checked in integers. One branch: NaN, zero, negative or infinite operands return early (selected among themselves); no loop (corrections by selects)
 // Source: IEEE 754-2019, 5.4.1, 7.2; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 6 (digit recurrence square root with estimated digits)
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 26 (estimates: 10 here, 8 per ex_root_step)
@@ -483,9 +489,10 @@ uvec2 ex_sqrt_bits(uvec2 a) {
   }
   int x;
   uvec2 normalized = ex_normalize_sig(a, x);
-  bool odd = ((x - 1075) & 1) != 0;
+  int unbiased = x - 1075;
+  bool odd = (unbiased & 1) != 0;
   uvec2 m = ex_sel64(odd, ex_shl64(normalized, 1), normalized);
-  int e2 = x - 1075 - (odd ? 1 : 0);
+  int e2 = unbiased - (odd ? 1 : 0);
   // m in [2^52, 2^54): q = floor(sqrt(m)) has 27 bits, rem = m - q^2 <= 2q.
   float mf = ex_u64_to_float(m);
   uint q = uint(sqrt(mf));
@@ -496,14 +503,12 @@ uvec2 ex_sqrt_bits(uvec2 a) {
   float correction = floor(rf / (2.0 * float(q)) + 0.5);
   q = uint(int(q) + int(correction));
   rem = ex_sub64(m, ex_mul32(q, q));
-  while (rem.y >= 0x80000000u) {
-    q -= 1u;
-    rem = ex_add64(rem, uvec2(2u * q + 1u, 0u));
-  }
-  while (ex_lt64(uvec2(2u * q, 0u), rem)) {
-    rem = ex_sub64(rem, uvec2(2u * q + 1u, 0u));
-    q += 1u;
-  }
+  bool rootTooLarge = rem.y >= 0x80000000u;
+  q -= rootTooLarge ? 1u : 0u;
+  rem = ex_sel64(rootTooLarge, ex_add64(rem, uvec2(2u * q + 1u, 0u)), rem);
+  bool rootTooSmall = ex_lt64(uvec2(2u * q, 0u), rem);
+  rem = ex_sel64(rootTooSmall, ex_sub64(rem, uvec2(2u * q + 1u, 0u)), rem);
+  q += rootTooSmall ? 1u : 0u;
   uvec4 qr = ex_root_step(ex_root_step(uvec4(q, 0u, rem)));
   uvec2 root = ex_shl64(qr.xy, 8);
   uint rootRemainderBit = (qr.z | qr.w) != 0u ? 1u : 0u;
@@ -517,7 +522,7 @@ uvec2 ex_sqrt_bits(uvec2 a) {
 // Flops: 0 (integer arithmetic)
 // @min-es 300
 uvec2 ex_fma_bits(uvec2 a, uvec2 b, uvec2 c) {
-  bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+  bool nan = ex_either_nan(a, b);
   uvec2 p = ex_mul_bits(a, b);
   uvec2 r = ex_sel64(ex_is_nan(p), p, ex_add_bits(p, c));
   return ex_sel64(nan, ex_pick_nan(a, b), r);
@@ -1646,7 +1651,7 @@ uvec2 ex_add_first(uvec2 a, uvec2 b) {
 // Flops: 0 (integer arithmetic)
 // @min-es 300
 uvec2 ex_sub_last(uvec2 a, uvec2 b) {
-  bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+  bool nan = ex_either_nan(a, b);
   return ex_sel64(nan, ex_pick_nan(b, a), ex_sub_bits(a, b));
 }
 

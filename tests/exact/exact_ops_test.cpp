@@ -243,10 +243,11 @@ TEST(ExactSabotage, EachSabotageMakesResultsDiffer) {
        {"add", "sub", "mul", "div", "sqrt"}},
       {"flush subnormal results to zero", {{"uvec2 t = ex_shr_jam64(sig, shift);", "uvec2 t = ex_sel64(tiny, uvec2(0u), sig);"}}, {"add", "sub", "mul", "div"}},
       // The square root's digits are float estimates: taking them unchecked must show.
-      {"root digits not corrected upwards", {{"while (ex_lt64(ex_shl64(q, 1), r)) {", "if (false) {"}}, {"sqrt"}},
-      {"root digits not corrected downwards", {{"while (r.y >= 0x80000000u) {", "if (false) {"}}, {"sqrt"}},
-      {"quotient digits not corrected upwards", {{"while (!ex_lt64(r, mb)) {", "if (false) {"}}, {"div"}},
-      {"quotient digits not corrected downwards", {{"while (r.y >= 0x80000000u) {", "if (false) {"}}, {"div"}},
+      {"root digits not corrected upwards", {{"bool digitTooSmall = ex_lt64(ex_shl64(q, 1), r);", "bool digitTooSmall = false;"}}, {"sqrt"}},
+      {"root digits not corrected downwards", {{"bool digitTooLarge = r.y >= 0x80000000u;", "bool digitTooLarge = false;"}}, {"sqrt"}},
+      {"first root digits not corrected downwards", {{"bool rootTooLarge = rem.y >= 0x80000000u;", "bool rootTooLarge = false;"}}, {"sqrt"}},
+      {"quotient digits not corrected upwards", {{"bool quotientTooSmall = !ex_lt64(r, mb);", "bool quotientTooSmall = false;"}}, {"div"}},
+      {"quotient digits not corrected downwards", {{"bool quotientTooLarge = r.y >= 0x80000000u;", "bool quotientTooLarge = false;"}}, {"div"}},
       {"umulExtended's high word dropped", {{"return uvec2(lo, hi);", "return uvec2(lo, 0u);"}}, {"mul", "sqrt"}, true},
       {"findMSB off by one", {{"return 31 - findMSB(x);", "return 30 - findMSB(x);"}}, {"add", "mul", "sqrt"}, true},
   };

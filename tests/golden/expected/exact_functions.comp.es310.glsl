@@ -13,7 +13,7 @@ struct ex_dvec2 {
   uvec2 hi;
   uvec2 lo;
 };
-// doublet exact binary64 runtime (mode exact): 35 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 36 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct ex_double { uint hi; uint lo; };
 struct ff_double { float hi; float lo; };
 uniform highp float df_guard;  // never set: GL zero-fills it at link
@@ -365,6 +365,15 @@ bool ex_is_nan(uvec2 a) {
   return any(bvec2(above, low));
 }
 
+// ex_either_nan: true when a or b is a NaN (the first test of every two-operand operation).
+// Algorithm: ex_is_nan of each, combined by any() on a bvec2 (no short-circuit branch)
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+bool ex_either_nan(uvec2 a, uvec2 b) {
+  return any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+}
+
 // ex_pick_nan: the NaN result of an operation with a NaN operand: a if it is a NaN, else b, made quiet.
 // Algorithm: set the quiet bit (significand bit 51) of a if it is a NaN, else of b. Native fp64 on lavapipe (LLVM, x86 SSE) returns the first source operand's NaN, and LLVM passes a commutative operation's operands swapped: ex_add_bits and ex_mul_bits call ex_pick_nan(b, a), ex_sub_bits and ex_div_bits ex_pick_nan(a, b) (measured by tests/exact)
 // Source: IEEE 754-2019, 6.2.3 (NaN propagation); Intel SDM vol. 1, 2016, 4.8.3.5 (first source)
@@ -442,7 +451,7 @@ uvec2 ex_sub64(uvec2 a, uvec2 b) {
 }
 
 // ex_div_step: k more quotient bits of a long division by mb: (q, r) as (q.x, q.y, r.x, r.y), 0 <= r < 2mb, becomes (q * 2^k + d, r * 2^k - d * mb) with the digit d that leaves 0 <= r' < mb (k <= 18, mb < 2^53).
-// Algorithm: d = r * 2^k / mb estimated by one float division (off by at most one here); r' in 64-bit words modulo 2^64 (the true r' is small and signed); unit corrections until 0 <= r' < mb
+// Algorithm: d = r * 2^k / mb estimated by one float division: r and mb reach float with relative errors below 2^-23 each and the quotient is below 2^19, so the estimate is within 0.25 of r * 2^k / mb (also with the 2.5-ulp float division GLSL allows) and d within one of the true digit; r' in 64-bit words modulo 2^64 (the true r' is small and signed); one unit correction each way, by selects (no loop)
 // Source: Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence: high radix, digit selection by an estimate, correction); Knuth TAOCP vol. 2, 1997, 4.3.1, Algorithm D
 // Bound: exact
 // Flops: 8 (the digit estimate)
@@ -454,19 +463,17 @@ uvec4 ex_div_step(uvec4 qr, uvec2 mb, int k) {
   dm.y += d * mb.y;
   r = ex_sub64(ex_shl64(r, k), dm);
   q = ex_add64(ex_shl64(q, k), uvec2(d, 0u));
-  while (r.y >= 0x80000000u) {
-    q = ex_sub64(q, uvec2(1u, 0u));
-    r = ex_add64(r, mb);
-  }
-  while (!ex_lt64(r, mb)) {
-    r = ex_sub64(r, mb);
-    q = ex_add64(q, uvec2(1u, 0u));
-  }
+  bool quotientTooLarge = r.y >= 0x80000000u;
+  q = ex_sub64(q, uvec2(quotientTooLarge ? 1u : 0u, 0u));
+  r = ex_sel64(quotientTooLarge, ex_add64(r, mb), r);
+  bool quotientTooSmall = !ex_lt64(r, mb);
+  q = ex_add64(q, uvec2(quotientTooSmall ? 1u : 0u, 0u));
+  r = ex_sel64(quotientTooSmall, ex_sub64(r, mb), r);
   return uvec4(q, r);
 }
 
 // ex_div_bits: a / b in binary64, correctly rounded (ties to even).
-// Algorithm: long division of the normalized significands, 55 quotient bits in three 18-bit ex_div_step digits (float estimates checked in integers), the remainder as sticky bit; rounded once. One branch: NaN, infinite or zero operands return early (selected among themselves); the digits' corrections stay loops
+// Algorithm: long division of the normalized significands, 55 quotient bits in three 18-bit ex_div_step digits (float estimates checked in integers), the remainder as sticky bit; rounded once. One branch: NaN, infinite or zero operands return early (selected among themselves); no loop (each digit's correction is one select each way)
 // Source: IEEE 754-2019, 5.4.1, 7.2-7.3; Ercegovac, Lang, Digital Arithmetic, 2004, ch. 5 (division by digit recurrence)
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 24 (estimates: 8 per ex_div_step)
@@ -476,7 +483,7 @@ uvec2 ex_div_bits(uvec2 a, uvec2 b) {
   bool zeroA = (absA | a.x) == 0u, zeroB = (absB | b.x) == 0u;
   bool topA = absA >= 0x7FF00000u, topB = absB >= 0x7FF00000u;
   if (any(bvec4(topA, topB, zeroA, zeroB))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     bool invalid = any(bvec2(all(bvec2(topA, topB)), all(bvec2(zeroA, zeroB))));
     bool infinite = any(bvec2(topA, zeroB));
     uvec2 special = ex_sel64(infinite, uvec2(0u, signWord | 0x7FF00000u), uvec2(0u, signWord));
@@ -535,7 +542,7 @@ uvec2 ex_add_bits(uvec2 a, uvec2 b) {
   bool zeros = (ma.x | ma.y | mb.x | mb.y) == 0u;
   bool topA = (a.y & 0x7FF00000u) == 0x7FF00000u, topB = (b.y & 0x7FF00000u) == 0x7FF00000u;
   if (any(bvec3(topA, topB, zeros))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     bool invalid = all(bvec3(topA, topB, sa != sb));
     uvec2 infinite = ex_sel64(invalid, uvec2(0u, 0xFFF80000u), ex_sel64(topA, a, b));
     uint zeroSign = all(bvec2(sa, sb)) ? 0x80000000u : 0u;
@@ -576,7 +583,7 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   bool zero = any(bvec2((absA | a.x) == 0u, (absB | b.x) == 0u));
   bool topA = absA >= 0x7FF00000u, topB = absB >= 0x7FF00000u;
   if (any(bvec3(topA, topB, zero))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     uvec2 infinite = ex_sel64(zero, uvec2(0u, 0xFFF80000u), uvec2(0u, signWord | 0x7FF00000u));
     uvec2 special = ex_sel64(any(bvec2(topA, topB)), infinite, uvec2(0u, signWord));
     return ex_sel64(nan, ex_pick_nan(b, a), special);
@@ -686,7 +693,7 @@ uvec2 ex_neg_bits(uvec2 a) {
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0
 uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
-  bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+  bool nan = ex_either_nan(a, b);
   uvec2 r = ex_add_bits(a, ex_neg_bits(b));
   return ex_sel64(nan, ex_pick_nan(a, b), r);
 }

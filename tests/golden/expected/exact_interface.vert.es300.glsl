@@ -10,7 +10,7 @@ struct df_dvec4 {
   uvec4 hi;
   uvec4 lo;
 };
-// doublet exact binary64 runtime (mode exact): 30 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 31 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct df_double { uint hi; uint lo; };
 struct df_dvec3 { uvec3 hi; uvec3 lo; };
 
@@ -33,6 +33,15 @@ bool ex_is_nan(uvec2 a) {
   bool above = m > 0x7FF00000u;
   bool low = all(bvec2(m == 0x7FF00000u, a.x != 0u));
   return any(bvec2(above, low));
+}
+
+// ex_either_nan: true when a or b is a NaN (the first test of every two-operand operation).
+// Algorithm: ex_is_nan of each, combined by any() on a bvec2 (no short-circuit branch)
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+bool ex_either_nan(uvec2 a, uvec2 b) {
+  return any(bvec2(ex_is_nan(a), ex_is_nan(b)));
 }
 
 // ex_sel64: c ? a : b on 64-bit words, one select per word (no branch: GLSL ES 3.00 has no mix on
@@ -228,7 +237,7 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   bool zero = any(bvec2((absA | a.x) == 0u, (absB | b.x) == 0u));
   bool topA = absA >= 0x7FF00000u, topB = absB >= 0x7FF00000u;
   if (any(bvec3(topA, topB, zero))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     uvec2 infinite = ex_sel64(zero, uvec2(0u, 0xFFF80000u), uvec2(0u, signWord | 0x7FF00000u));
     uvec2 special = ex_sel64(any(bvec2(topA, topB)), infinite, uvec2(0u, signWord));
     return ex_sel64(nan, ex_pick_nan(b, a), special);
@@ -337,7 +346,7 @@ uvec2 ex_add_bits(uvec2 a, uvec2 b) {
   bool zeros = (ma.x | ma.y | mb.x | mb.y) == 0u;
   bool topA = (a.y & 0x7FF00000u) == 0x7FF00000u, topB = (b.y & 0x7FF00000u) == 0x7FF00000u;
   if (any(bvec3(topA, topB, zeros))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     bool invalid = all(bvec3(topA, topB, sa != sb));
     uvec2 infinite = ex_sel64(invalid, uvec2(0u, 0xFFF80000u), ex_sel64(topA, a, b));
     uint zeroSign = all(bvec2(sa, sb)) ? 0x80000000u : 0u;
@@ -395,7 +404,7 @@ uvec2 ex_neg_bits(uvec2 a) {
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0
 uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
-  bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+  bool nan = ex_either_nan(a, b);
   uvec2 r = ex_add_bits(a, ex_neg_bits(b));
   return ex_sel64(nan, ex_pick_nan(a, b), r);
 }

@@ -31,7 +31,7 @@ struct df_dmat4 {
   uvec4 hi[4];
   uvec4 lo[4];
 };
-// doublet exact binary64 runtime (mode exact): 26 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 27 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct df_double { uint hi; uint lo; };
 struct df_dvec4 { uvec4 hi; uvec4 lo; };
 
@@ -45,6 +45,15 @@ bool ex_is_nan(uvec2 a) {
   bool above = m > 0x7FF00000u;
   bool low = all(bvec2(m == 0x7FF00000u, a.x != 0u));
   return any(bvec2(above, low));
+}
+
+// ex_either_nan: true when a or b is a NaN (the first test of every two-operand operation).
+// Algorithm: ex_is_nan of each, combined by any() on a bvec2 (no short-circuit branch)
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+bool ex_either_nan(uvec2 a, uvec2 b) {
+  return any(bvec2(ex_is_nan(a), ex_is_nan(b)));
 }
 
 // ex_sel64: c ? a : b on 64-bit words, one select per word (no branch: GLSL ES 3.00 has no mix on
@@ -218,7 +227,7 @@ uvec2 ex_mul_bits(uvec2 a, uvec2 b) {
   bool zero = any(bvec2((absA | a.x) == 0u, (absB | b.x) == 0u));
   bool topA = absA >= 0x7FF00000u, topB = absB >= 0x7FF00000u;
   if (any(bvec3(topA, topB, zero))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     uvec2 infinite = ex_sel64(zero, uvec2(0u, 0xFFF80000u), uvec2(0u, signWord | 0x7FF00000u));
     uvec2 special = ex_sel64(any(bvec2(topA, topB)), infinite, uvec2(0u, signWord));
     return ex_sel64(nan, ex_pick_nan(b, a), special);
@@ -305,7 +314,7 @@ uvec2 ex_add_bits(uvec2 a, uvec2 b) {
   bool zeros = (ma.x | ma.y | mb.x | mb.y) == 0u;
   bool topA = (a.y & 0x7FF00000u) == 0x7FF00000u, topB = (b.y & 0x7FF00000u) == 0x7FF00000u;
   if (any(bvec3(topA, topB, zeros))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     bool invalid = all(bvec3(topA, topB, sa != sb));
     uvec2 infinite = ex_sel64(invalid, uvec2(0u, 0xFFF80000u), ex_sel64(topA, a, b));
     uint zeroSign = all(bvec2(sa, sb)) ? 0x80000000u : 0u;
@@ -332,7 +341,7 @@ uvec2 ex_add_bits(uvec2 a, uvec2 b) {
 // Bound: 0.5 ulp per step (two roundings)
 // Flops: 0 (integer arithmetic)
 uvec2 ex_fma_bits(uvec2 a, uvec2 b, uvec2 c) {
-  bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+  bool nan = ex_either_nan(a, b);
   uvec2 p = ex_mul_bits(a, b);
   uvec2 r = ex_sel64(ex_is_nan(p), p, ex_add_bits(p, c));
   return ex_sel64(nan, ex_pick_nan(a, b), r);

@@ -7,7 +7,7 @@ struct df_dvec3 {
   uvec3 hi;
   uvec3 lo;
 };
-// doublet exact binary64 runtime (mode exact): 19 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 20 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct df_double { uint hi; uint lo; };
 
 // ex_from_bits: the mode-exact double of a binary64 pattern uvec2(low word, high word).
@@ -40,6 +40,15 @@ bool ex_is_nan(uvec2 a) {
   bool above = m > 0x7FF00000u;
   bool low = all(bvec2(m == 0x7FF00000u, a.x != 0u));
   return any(bvec2(above, low));
+}
+
+// ex_either_nan: true when a or b is a NaN (the first test of every two-operand operation).
+// Algorithm: ex_is_nan of each, combined by any() on a bvec2 (no short-circuit branch)
+// Source: IEEE 754-2019, 3.4
+// Bound: exact
+// Flops: 0
+bool ex_either_nan(uvec2 a, uvec2 b) {
+  return any(bvec2(ex_is_nan(a), ex_is_nan(b)));
 }
 
 // ex_sel64: c ? a : b on 64-bit words, one select per word (no branch: GLSL ES 3.00 has no mix on
@@ -220,7 +229,7 @@ uvec2 ex_add_bits(uvec2 a, uvec2 b) {
   bool zeros = (ma.x | ma.y | mb.x | mb.y) == 0u;
   bool topA = (a.y & 0x7FF00000u) == 0x7FF00000u, topB = (b.y & 0x7FF00000u) == 0x7FF00000u;
   if (any(bvec3(topA, topB, zeros))) {
-    bool nan = any(bvec2(ex_is_nan(a), ex_is_nan(b)));
+    bool nan = ex_either_nan(a, b);
     bool invalid = all(bvec3(topA, topB, sa != sb));
     uvec2 infinite = ex_sel64(invalid, uvec2(0u, 0xFFF80000u), ex_sel64(topA, a, b));
     uint zeroSign = all(bvec2(sa, sb)) ? 0x80000000u : 0u;
