@@ -15,6 +15,7 @@
 
 #include "doublet/doublet.hpp"
 #include "test_util.hpp"
+#include "verify/sabotage.hpp"
 
 namespace doublet::runner::test {
 namespace {
@@ -185,9 +186,7 @@ TEST(ExactLowering, SabotagedRoundingDiffers) {
   Result lowered = lower_exact(kSource);
   ASSERT_TRUE(lowered.ok);
   std::string sabotaged = lowered.output;
-  const std::string tie = "uint tie = roundBits == 0x200u ? 0xFFFFFFFEu : 0xFFFFFFFFu;";
-  ASSERT_NE(sabotaged.find(tie), std::string::npos);
-  sabotaged.replace(sabotaged.find(tie), tie.size(), "uint tie = 0xFFFFFFFFu;");
+  ASSERT_TRUE(::doublet::verify::apply_output_sabotage(::doublet::verify::Sabotage::TiesAway, &sabotaged));  // `verify --sabotage ties-away`'s edit
   const std::vector<uint64_t> ab = make_pairs();
   const std::vector<uint64_t> native = run(Backend::Vulkan, kSource, ab), got = run(Backend::Vulkan, sabotaged, ab);
   ASSERT_EQ(got.size(), native.size());
