@@ -1172,12 +1172,11 @@ bool reads_a_variable(const std::string& s) {
 }
 
 bool uses_native_non_ieee(const Program& p) {
-  // smoothstep: lavapipe reassociates a constant factor into its expansion (fma(C, smoothstep(..),
-  // C) differs from the written order; a runtime factor of the same value does not). reflect: its
-  // expansion differs from the written I - 2 dot(N, I) N where operands alias (reflect(x.xx, x),
-  // seed 70571), as with a constant normal (seed 70272).
-  return p.features.count("fn:trunc") || p.features.count("fn:round") || p.features.count("fn:roundEven") ||
-         p.features.count("fn:smoothstep") || p.features.count("fn:reflect");
+  // Rounding to an integer: lavapipe's fp64 trunc/round/roundEven are not IEEE for large values
+  // (docs/extremes.md). smoothstep, reflect, refract and mix are checked: since native's built-ins
+  // are NoContraction too (ComputeJob::strict_fp64), lavapipe no longer reassociates or folds their
+  // expansions around constants or aliased operands (tests/difftest/cases).
+  return p.features.count("fn:trunc") || p.features.count("fn:round") || p.features.count("fn:roundEven");
 }
 
 }  // namespace doublet::difftest

@@ -203,7 +203,10 @@ bool compile_glsl(const std::string& glsl, SpirvProgram* out, std::string* error
 void decorate_fp64_no_contraction(std::vector<uint32_t>& words) {
   constexpr uint32_t kOpTypeFloat = 22, kOpTypeVector = 23, kOpTypeMatrix = 24, kOpDecorate = 71;
   constexpr uint32_t kNoContraction = 42;
-  static const std::set<uint32_t> kArithmetic = {127, 129, 131, 133, 136, 140, 141, 142, 143, 144, 145, 146, 147, 148};
+  // OpFNegate ... OpMatrixTimesMatrix, and OpExtInst (12): Mesa expands GLSL.std.450 built-ins
+  // (refract, reflect, normalize, ...) into arithmetic that is exact only when the call's result
+  // is NoContraction; otherwise NIR may reassociate it (docs/robustness.md, "Differential testing").
+  static const std::set<uint32_t> kArithmetic = {12, 127, 129, 131, 133, 136, 140, 141, 142, 143, 144, 145, 146, 147, 148};
   // Before the first instruction that is not a mode-setting, debug or annotation one.
   static const std::set<uint32_t> kPreamble = {2,  3,  4,  5,  6,  7,  8,  10, 11, 14, 15, 16,  17,
                                                71, 72, 73, 74, 317, 330, 331, 332, 5632, 5633};
