@@ -1,6 +1,7 @@
 // `doublet bench --compile-time`: what a driver takes to turn a shader into its first result, per
 // precision mode, on lavapipe and Mesa GLES, for a loop-scaling series (N double operations per
-// iteration of a loop the compiler cannot unroll). The browser's share (Chromium WebGL2 and WebGPU)
+// iteration of a loop the compiler cannot unroll) and for the shaders of a corpus directory (each
+// fed as `doublet verify` feeds it, with its FILE.json spec). The browser's share (Chromium WebGL2 and WebGPU)
 // is tools/browser/compile-time-suite.mjs. docs/performance.md, "Compile time", shows the output.
 #pragma once
 
@@ -19,10 +20,14 @@ struct CompileTimeOptions {
   std::vector<runner::Backend> backends{runner::Backend::Vulkan, runner::Backend::Gles};
   Target target = Target::Es310;
   int rounds = 3;  // each shader compiled this many times, interleaved; the fastest is kept
+  // Directories of shaders (x.vert, x.frag, x.comp, x.geom, x.tesc, x.tese; x.json beside one is its
+  // verify spec, DIR/include its headers): each shader timed per mode too, one sample each.
+  std::vector<std::string> corpus_dirs;
 };
 
 struct CompileTimeRow {
-  int ops = 0;
+  int ops = 0;         // the loop series' row, or
+  std::string shader;  // a corpus shader's file name (ops 0)
   std::string mode;
   runner::Backend backend = runner::Backend::Vulkan;
   bool ok = false, not_applicable = false;

@@ -2,6 +2,7 @@
 // (docs/modes.md). The work is doublet::bench::run_bench(); this file maps the command line to
 // BenchOptions and prints the Markdown table (and the JSON file with --json).
 #include <algorithm>
+#include <filesystem>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -31,6 +32,7 @@ struct BenchArgs {
   bool handwritten = false, compiler = false, transcendentals = false, peer_luma = false, compile_time = false;
   int lines = 5000;
   std::string scaling;  // --compiler: comma list of further sizes
+  std::vector<std::string> corpus;  // --compile-time: shader directories
   int mandelbrot_size = 128, mandelbrot_iterations = 1000;
   std::string peer_mesa_fp64;  // Mesa's float64.glsl: exact vs Mesa's soft-fp64
   int check_inputs = 1 << 16;
@@ -159,6 +161,12 @@ int run_transcendental_command(const CLI::App& cmd, const BenchArgs& a, const st
   return kExitOk;
 }
 
+std::string corpus_arguments(const BenchArgs& a) {
+  std::string out;
+  for (const std::string& dir : a.corpus) out += " --corpus " + dir;
+  return out;
+}
+
 int run_compile_time_command(const CLI::App& cmd, const BenchArgs& a, const std::string& command_line) {
   bench::CompileTimeOptions o;
   if (a.ops != "all") {
@@ -174,6 +182,10 @@ int run_compile_time_command(const CLI::App& cmd, const BenchArgs& a, const std:
     for (const std::string& m : o.modes)
       if (m != "native" && !parse_mode(m)) return usage_error(cmd, "unknown mode '" + m + "'");
   }
+  for (const std::string& dir : a.corpus)
+    if (!std::filesystem::is_directory(dir)) return usage_error(cmd, "--corpus: '" + dir + "' is not a directory");
+  o.corpus_dirs = a.corpus;
+  if (!a.corpus.empty() && a.ops == "all") o.ops.clear();  // the corpus alone unless --ops asks for the series too
   narrow_backends(a, &o.backends);
   const std::optional<Target> target = compute_target(a);
   if (!target) return usage_error(cmd, "--target must be es310, es320 or glsl450 (compute shaders)");
@@ -293,6 +305,9 @@ Command add_bench_command(CLI::App& app) {
                 "time from shader text to first result on lavapipe and Mesa GLES per mode, for a loop series of "
                 "--ops N,... double operations per iteration (default 1,2,4,...,64; --reps rounds, default 3 here; "
                 "docs/performance.md; the browser's share: tools/browser/compile-time-suite.mjs)");
+  cmd->add_option("--corpus", args->corpus,
+                  "--compile-time: also time every shader of DIR (fed as verify feeds it, DIR/x.json its spec, "
+                  "DIR/include its headers); only these unless --ops is given");
   cmd->add_option("--mandelbrot-size", args->mandelbrot_size, "--handwritten: pixels per side (default 128)");
   cmd->add_option("--mandelbrot-iterations", args->mandelbrot_iterations, "--handwritten: iteration limit (default 1000)");
   return {cmd, [cmd, args] {
@@ -300,7 +315,8 @@ Command add_bench_command(CLI::App& app) {
             const BenchArgs& a = *args;
             if (a.compile_time)
               return run_bench_command(*cmd, a,
-                                       "doublet bench --compile-time --ops " + a.ops + " --modes " + a.modes +
+                                       "doublet bench --compile-time" + corpus_arguments(a) +
+                                           (!a.corpus.empty() && a.ops == "all" ? "" : " --ops " + a.ops) + " --modes " + a.modes +
                                            " --backend " + a.backend + " --target " + a.target + " --reps " +
                                            std::to_string(cmd->count("--reps") ? a.reps : 3));
             if (a.compiler)

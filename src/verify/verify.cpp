@@ -442,4 +442,42 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
   return report;
 }
 
+FirstJobs first_jobs(std::string_view source, const VerifyOptions& options) {
+  FirstJobs out;
+  if (!options.lower.stage) return (out.error = "the stage is unknown"), out;
+  const Result lowered = lower(source, options.lower);
+  if (!lowered.ok) return (out.error = "lowering failed:\n" + diagnostics_text(lowered)), out;
+  std::string include_error;
+  const std::string native = as_native_450(source, options.lower, &include_error);
+  if (!include_error.empty()) return (out.error = include_error), out;
+  std::vector<std::string> notes;
+  const Spec spec = with_uniform_defaults(options.spec, lowered.manifest, &notes);
+  if (*options.lower.stage == Stage::Compute) {
+    ComputeHarness harness;
+    if (std::string e = harness.plan(native, lowered.output, lowered.manifest, spec, 1); !e.empty())
+      return (out.error = e), out;
+    harness.generate(options.seed);
+    out.compute = true;
+    out.native_compute = harness.native_jobs().at(0);
+    out.lowered_compute = harness.lowered_jobs().at(0);
+    out.native_compute.strict_fp64 = false;  // native fp64 as users compile it
+    return out;
+  }
+  switch (*options.lower.stage) {
+    case Stage::Vertex: out.graphics_stage = runner::GraphicsStage::Vertex; break;
+    case Stage::Fragment: out.graphics_stage = runner::GraphicsStage::Fragment; break;
+    case Stage::Geometry: out.graphics_stage = runner::GraphicsStage::Geometry; break;
+    case Stage::TessControl: out.graphics_stage = runner::GraphicsStage::TessControl; break;
+    default: out.graphics_stage = runner::GraphicsStage::TessEvaluation; break;
+  }
+  GraphicsHarness harness;
+  if (std::string e = harness.plan(out.graphics_stage, native, lowered.output, lowered.manifest, spec, 1); !e.empty())
+    return (out.error = e), out;
+  harness.generate(options.seed);
+  out.native_graphics = harness.native_jobs().at(0);
+  out.lowered_graphics = harness.lowered_jobs().at(0);
+  out.native_graphics.strict_fp64 = false;
+  return out;
+}
+
 }  // namespace doublet::verify
