@@ -206,7 +206,7 @@ void decorate_fp64_no_contraction(std::vector<uint32_t>& words) {
   // OpFNegate ... OpMatrixTimesMatrix, and OpExtInst (12): Mesa expands GLSL.std.450 built-ins
   // (refract, reflect, normalize, ...) into arithmetic that is exact only when the call's result
   // is NoContraction; otherwise NIR may reassociate it (docs/robustness.md, "Differential testing").
-  static const std::set<uint32_t> kArithmetic = {12, 127, 129, 131, 133, 136, 140, 141, 142, 143, 144, 145, 146, 147, 148};
+  static const std::set<uint32_t> kNoContractionOpcodes = {12, 127, 129, 131, 133, 136, 140, 141, 142, 143, 144, 145, 146, 147, 148};
   // Before the first instruction that is not a mode-setting, debug or annotation one.
   static const std::set<uint32_t> kPreamble = {2,  3,  4,  5,  6,  7,  8,  10, 11, 14, 15, 16,  17,
                                                71, 72, 73, 74, 317, 330, 331, 332, 5632, 5633};
@@ -218,7 +218,7 @@ void decorate_fp64_no_contraction(std::vector<uint32_t>& words) {
     if (!insert_at && !kPreamble.count(opcode)) insert_at = i;
     if (opcode == kOpTypeFloat && words[i + 2] == 64) fp64_types.insert(words[i + 1]);
     if ((opcode == kOpTypeVector || opcode == kOpTypeMatrix) && fp64_types.count(words[i + 2])) fp64_types.insert(words[i + 1]);
-    if (kArithmetic.count(opcode) && count >= 3 && fp64_types.count(words[i + 1])) results.insert(words[i + 2]);
+    if (kNoContractionOpcodes.count(opcode) && count >= 3 && fp64_types.count(words[i + 1])) results.insert(words[i + 2]);
     i += count;
   }
   std::vector<uint32_t> decorations;
