@@ -132,8 +132,8 @@ void add_corpus(const CompileTimeOptions& o, std::vector<Variant>* variants) {
           if (const std::optional<doublet::Mode> m = compiler_mode(mode)) options.lower.mode = *m;
           jobs[mode] = verify::first_jobs(source, options);
         }
-      for (const auto& [mode, j] : jobs)
-        if (j.error.empty()) native = &j;
+      for (const std::string& mode : o.modes)
+        if (!native && jobs.count(mode) && jobs.at(mode).error.empty()) native = &jobs.at(mode);
       for (runner::Backend backend : o.backends)
         for (const std::string& mode : o.modes) {
           Variant v;

@@ -88,13 +88,6 @@ std::vector<std::vector<std::string>> calls_of(const std::string& glsl, const st
   return calls;
 }
 
-// The seed a run found a construct at, then the first 360 seeds.
-std::vector<uint64_t> found_and_first_seeds(uint64_t found) {
-  std::vector<uint64_t> seeds = {found};
-  for (uint64_t seed = 1; seed <= 3 * kSeeds; ++seed) seeds.push_back(seed);
-  return seeds;
-}
-
 TEST(DiffGenerator, ReadsAVariableTellsConstantsFromVariables) {
   for (const std::string constant : {"dvec3(2.0lf)", "(dvec3(2.76lf, -1.37lf, 2.89lf) + 1.0lf)", "1e-3lf", "-0.5lf",
                                      "double(true)"})
