@@ -92,6 +92,12 @@ void add_series(const CompileTimeOptions& o, std::vector<Variant>* variants) {
       }
 }
 
+// A report's first two lines (a compile log's heading and its first message).
+std::string first_two_lines(const std::string& text) {
+  const size_t first = text.find('\n');
+  return first == std::string::npos ? text : text.substr(0, text.find('\n', first + 1));
+}
+
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
@@ -151,7 +157,7 @@ void add_corpus(const CompileTimeOptions& o, std::vector<Variant>* variants) {
                                     : jobs.empty() ? "--modes names no lowering mode (native's interface is planned with one)"
                                                    : jobs.begin()->second.error;
             v.row.not_applicable = true;
-            v.row.error = "not timed, verify cannot feed it: " + why.substr(0, why.find('\n', why.find('\n') + 1));
+            v.row.error = "not timed, verify cannot feed it: " + first_two_lines(why);
           } else {
             const verify::FirstJobs& j = mode == "native" ? *native : jobs.at(mode);
             if (graphics) v.graphics_job = mode == "native" ? j.native_graphics : j.lowered_graphics;
@@ -208,7 +214,7 @@ std::vector<CompileTimeRow> run_compile_time_bench(const CompileTimeOptions& o, 
       const std::optional<double> compile = time_once(v, &error, &device);
       if (!compile) {
         v.row.ok = false;
-        v.row.error = error.substr(0, error.find('\n', error.find('\n') + 1));  // the driver's first line too
+        v.row.error = first_two_lines(error);  // a driver's log starts on the second line
         continue;
       }
       names[v.row.backend] = device;

@@ -338,6 +338,17 @@ void judge_against_float(std::string_view source, const VerifyOptions& options, 
                           std::to_string(int(OutputStats::kFloatIsEnoughBits)));
 }
 
+// The runner's stage for a vertex, fragment, geometry or tessellation shader.
+runner::GraphicsStage graphics_stage(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return runner::GraphicsStage::Vertex;
+    case Stage::Fragment: return runner::GraphicsStage::Fragment;
+    case Stage::Geometry: return runner::GraphicsStage::Geometry;
+    case Stage::TessControl: return runner::GraphicsStage::TessControl;
+    default: return runner::GraphicsStage::TessEvaluation;
+  }
+}
+
 }  // namespace
 
 VerifyReport verify(std::string_view source, const VerifyOptions& options) {
@@ -424,16 +435,10 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options) {
       }
     }
   }
-  switch (*options.lower.stage) {
-    case Stage::Compute: run_compute_stage(native, lowered, wgsl ? &*wgsl : nullptr, options, &report); break;
-    case Stage::Vertex: run_graphics_stage(runner::GraphicsStage::Vertex, native, lowered, options, &report); break;
-    case Stage::Fragment: run_graphics_stage(runner::GraphicsStage::Fragment, native, lowered, options, &report); break;
-    case Stage::Geometry: run_graphics_stage(runner::GraphicsStage::Geometry, native, lowered, options, &report); break;
-    case Stage::TessControl: run_graphics_stage(runner::GraphicsStage::TessControl, native, lowered, options, &report); break;
-    case Stage::TessEvaluation:
-      run_graphics_stage(runner::GraphicsStage::TessEvaluation, native, lowered, options, &report);
-      break;
-  }
+  if (*options.lower.stage == Stage::Compute)
+    run_compute_stage(native, lowered, wgsl ? &*wgsl : nullptr, options, &report);
+  else
+    run_graphics_stage(graphics_stage(*options.lower.stage), native, lowered, options, &report);
   if (options.judge_against_float) judge_against_float(source, options, &report);
   // Mode exact promises native fp64's bits: any output differing is a failure (NaN payloads apart).
   if (options.lower.mode == Mode::Exact)
@@ -457,21 +462,13 @@ FirstJobs first_jobs(std::string_view source, const VerifyOptions& options) {
     if (std::string e = harness.plan(native, lowered.output, lowered.manifest, spec, 1); !e.empty())
       return (out.error = e), out;
     harness.generate(options.seed);
-    out.compute = true;
     out.native_compute = harness.native_jobs().at(0);
     out.lowered_compute = harness.lowered_jobs().at(0);
     out.native_compute.strict_fp64 = false;  // native fp64 as users compile it
     return out;
   }
-  switch (*options.lower.stage) {
-    case Stage::Vertex: out.graphics_stage = runner::GraphicsStage::Vertex; break;
-    case Stage::Fragment: out.graphics_stage = runner::GraphicsStage::Fragment; break;
-    case Stage::Geometry: out.graphics_stage = runner::GraphicsStage::Geometry; break;
-    case Stage::TessControl: out.graphics_stage = runner::GraphicsStage::TessControl; break;
-    default: out.graphics_stage = runner::GraphicsStage::TessEvaluation; break;
-  }
   GraphicsHarness harness;
-  if (std::string e = harness.plan(out.graphics_stage, native, lowered.output, lowered.manifest, spec, 1); !e.empty())
+  if (std::string e = harness.plan(graphics_stage(*options.lower.stage), native, lowered.output, lowered.manifest, spec, 1); !e.empty())
     return (out.error = e), out;
   harness.generate(options.seed);
   out.native_graphics = harness.native_jobs().at(0);

@@ -61,13 +61,11 @@ VerifyReport verify(std::string_view source, const VerifyOptions& options);
 // The first dispatch or draw a verify run would make, native and lowered, not run: what
 // `doublet bench --compile-time --corpus` times (docs/performance.md). One sample; inputs drawn
 // from options.spec and options.seed as verify() draws them. Compute stages fill the compute
-// jobs, the others the graphics jobs; `error` is set (and nothing else) when the shader does not
-// lower or its interface cannot be fed.
+// jobs, the others the graphics jobs (GraphicsJob::stage says which stage); `error` is set (and
+// nothing else) when the shader does not lower or its interface cannot be fed.
 struct FirstJobs {
   std::string error;
-  bool compute = false;
   runner::ComputeJob native_compute, lowered_compute;
-  runner::GraphicsStage graphics_stage = runner::GraphicsStage::Vertex;
   runner::GraphicsJob native_graphics, lowered_graphics;
 };
 FirstJobs first_jobs(std::string_view source, const VerifyOptions& options);
