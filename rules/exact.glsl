@@ -20,6 +20,13 @@
 //          the orders kept here are the ones tests/exact measured to give native's bits).
 //   [JMP]  M. Joldes, J.-M. Muller, V. Popescu, ACM TOMS 44(2), 2017: the float-float arithmetic
 //          (rules/arith.glsl, rules/transcendental.glsl) the transcendental bridges call.
+//
+// Loops: an operation on a vector or matrix runs its per-component (per-element) operation in a
+// loop, so drivers compile one copy of a few hundred integer instructions rather than one per
+// component (the generated @per-component instances and matrix helpers do the same). The index is
+// computed from the loop counter (W - 1 - counter), never the counter itself: Mesa unrolls, whatever
+// the body's size, a loop whose counter indexes a vector or array with as many elements as the loop
+// has iterations (docs/performance.md, "Mode exact: vector and matrix operations as loops").
 
 // ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
 // Algorithm: word sums with the carry of the low word (a.x + b.x < a.x)
@@ -1778,7 +1785,8 @@ df_double ex_frexp(df_double a, out int e) {
 // @uses ex_frexp:1
 $DF ex_frexp($DF a, out $I e) {
   $DF m = a;
-  for (int k = 0; k < $W; ++k) {
+  for (int kk = 0; kk < $W; ++kk) {
+    int k = $W - 1 - kk;  // not the counter: see the file header (loops)
     int ek;
     df_double c = ex_frexp(df_double(a.hi[k], a.lo[k]), ek);
     e[k] = ek;
@@ -1827,7 +1835,8 @@ df_double ex_modf(df_double a, out df_double i) {
 $DF ex_modf($DF a, out $DF i) {
   $DF f = a;
   i = a;
-  for (int k = 0; k < $W; ++k) {
+  for (int kk = 0; kk < $W; ++kk) {
+    int k = $W - 1 - kk;  // not the counter: see the file header (loops)
     uvec2 w;
     uvec2 r = ex_modf_bits(uvec2(a.lo[k], a.hi[k]), w);
     f.hi[k] = r.y;
@@ -1917,7 +1926,8 @@ df_double ex_normalize(df_double a) {
 $DF ex_normalize($DF a) {
   uvec2 len = ex_bits(ex_length(a));
   $DF r = a;
-  for (int k = 0; k < $W; ++k) {
+  for (int kk = 0; kk < $W; ++kk) {
+    int k = $W - 1 - kk;  // not the counter: see the file header (loops)
     uvec2 q = ex_div_bits(uvec2(a.lo[k], a.hi[k]), len);
     r.hi[k] = q.y;
     r.lo[k] = q.x;
@@ -1988,7 +1998,8 @@ df_double ex_reflect(df_double i, df_double n) {
 $DF ex_reflect($DF i, $DF n) {
   uvec2 t = ex_mul_first(uvec2(0u, 0x40000000u), ex_bits(ex_dot(i, n)));
   $DF r = i;
-  for (int k = 0; k < $W; ++k) {
+  for (int kk = 0; kk < $W; ++kk) {
+    int k = $W - 1 - kk;  // not the counter: see the file header (loops)
     uvec2 c = ex_sub_last(uvec2(i.lo[k], i.hi[k]), ex_mul_first(t, uvec2(n.lo[k], n.hi[k])));
     r.hi[k] = c.y;
     r.lo[k] = c.x;
@@ -2045,7 +2056,8 @@ $DF ex_refract($DF i, $DF n, df_double eta) {
   uvec2 k = ex_refract_k(d, e);
   $DF r = $DF($U(0u), $U(0u));
   if (ex_lt_bits(k, uvec2(0u))) return r;
-  for (int c = 0; c < $W; ++c) {
+  for (int cc = 0; cc < $W; ++cc) {
+    int c = $W - 1 - cc;  // not the counter: see the file header (loops)
     uvec2 v = ex_refract_component(uvec2(i.lo[c], i.hi[c]), uvec2(n.lo[c], n.hi[c]), e, d, k);
     r.hi[c] = v.y;
     r.lo[c] = v.x;

@@ -36,6 +36,7 @@ const std::vector<Kernel>& kernels() {
       {"mul", "df_mul", rule_flops("df_mul", 1), 1, 2048},
       {"div", "df_div", rule_flops("df_div", 1), 1, 2048},
       {"sqrt", "df_sqrt", rule_flops("df_sqrt", 1), 1, 2048},
+      {"add3", "df_add (3 components)", 3 * rule_flops("df_add", 1), 3, 1024},
       {"dot3", "df_dot (3)", rule_flops("df_dot", 3), 5, 1024},
       {"length3", "df_length (2-4)", rule_flops("df_length", 3), 6, 1024},
       {"mat4", "df_mul_dmatCxR_dvecC (4 × df_dot 4)", 4 * rule_flops("df_dot", 4), 28, 256},
@@ -73,6 +74,8 @@ Body body(const std::string& op) {
   if (op == "mul") return {"double x = p.x; double y = 1.0 + p.y * 0.001;", "x = x * y;", "vec4(float(x))"};
   if (op == "div") return {"double x = p.x; double y = 1.0 + p.y * 0.001;", "x = x / y;", "vec4(float(x))"};
   if (op == "sqrt") return {"double x = p.x + p.y;", "x = sqrt(x);", "vec4(float(x))"};
+  // add3: a vector operation (mode exact runs its components in a loop, docs/performance.md).
+  if (op == "add3") return {"dvec3 v = p.xyz; dvec3 w = p.wzy;", "v = v + w;", "vec4(vec3(v), 0.0)"};
   if (op == "dot3") return {"dvec3 v = p.xyz; dvec3 w = p.wzy * 0.3;", "v.x = dot(v, w);", "vec4(vec3(v), 0.0)"};
   if (op == "length3") return {"dvec3 v = p.xyz;", "v.x = length(v);", "vec4(vec3(v), 0.0)"};
   // Fixed points keep these chains bounded: exp(-x) -> 0.567, log(x + 2) -> 1.146, cos(x) -> 0.739,
@@ -90,7 +93,7 @@ Body body(const std::string& op) {
 std::string kernel_step(const Kernel& k) { return body(k.op).step; }
 
 std::string kernel_accuracy_source(const Kernel& k) {
-  const std::string r = k.op == "dot3" || k.op == "length3" || k.op == "mat4" ? "v.x" : "x";
+  const std::string r = k.op == "add3" || k.op == "dot3" || k.op == "length3" || k.op == "mat4" ? "v.x" : "x";
   const std::string plain = "outp[i] = " + std::string(body(k.op).store) + ";";
   std::string s = kernel_source(k, kUnroll);
   s.replace(s.find(plain), plain.size(),

@@ -274,7 +274,7 @@ Command add_bench_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bench", "Measure throughput per precision mode (fp32, df64, native fp64)");
   cmd->add_option("SHADER", args->shader, "a #version 450 compute shader with doubles (default: per-op kernels)");
   cmd->add_option("-I", args->include_dirs, "include directory for SHADER's #include \"...\"");
-  cmd->add_option("--ops", args->ops, "all, or a comma list of add,sub,mul,div,sqrt,dot3,length3,mat4");
+  cmd->add_option("--ops", args->ops, "all, or a comma list of add,sub,mul,div,sqrt,add3,dot3,length3,mat4");
   cmd->add_option("--modes", args->modes, "all, or a comma list of fp32,rte,df64-fast,df64,df64-int,native,exact (the compiler's --mode; all = every mode but exact)");
   cmd->add_option("--backend", args->backend, "vulkan|gles|both")->check(CLI::IsMember({"vulkan", "gles", "both"}));
   cmd->add_option("--target", args->target, "df64 lowering target: es310 (uniform guard), es320 (precise), glsl450");

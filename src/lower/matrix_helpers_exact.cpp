@@ -28,17 +28,42 @@ std::string dvec(int w) { return df_type_name(w); }
 std::string suffix(int cols, int rows) { return type_name(cols, rows).substr(3); }  // dmat4
 const char* kOne = "uvec2(0u, 0x3FF00000u)";
 
-// The binary64 pattern (uvec2 low, high) of element (column j, row i).
-std::string elem(const std::string& m, int j, int i) {
-  return "uvec2(" + m + ".lo[" + n(j) + "][" + n(i) + "], " + m + ".hi[" + n(j) + "][" + n(i) + "])";
+// The binary64 pattern (uvec2 low, high) of element (column j, row i); j and i may be expressions.
+std::string elem(const std::string& m, const std::string& j, const std::string& i) {
+  return "uvec2(" + m + ".lo[" + j + "][" + i + "], " + m + ".hi[" + j + "][" + i + "])";
+}
+std::string elem(const std::string& m, int j, int i) { return elem(m, n(j), n(i)); }
+
+// `for` over `count` values of `index`, from count - 1 down to 0, at indentation `pad`; the caller
+// closes the brace. Mode exact keeps its matrix operations as loops so that drivers compile one
+// copy of an operation of a few hundred integer instructions, not one per element (docs/performance.md,
+// "Mode exact: vector and matrix operations as loops"). The index is computed from the counter, not
+// the counter itself: Mesa unrolls, whatever its size, a loop whose counter indexes an array or
+// vector with as many elements as the loop has iterations.
+std::string loop_down(const std::string& index, int count, const std::string& pad, const std::string& counter = "k") {
+  return pad + "for (int " + counter + " = 0; " + counter + " < " + n(count) + "; ++" + counter + ") {\n" + pad + "  int " +
+         index + " = " + n(count - 1) + " - " + counter + ";\n";
+}
+// The value `t` of 0..size-2 skipping `skipped` (an expression): t below it, t + 1 from it on.
+std::string skipping(int t, const std::string& skipped) {
+  return "(" + n(t) + " < " + skipped + " ? " + n(t) + " : " + n(t + 1) + ")";
 }
 // Component i of a df vector of width w, as a pattern.
 std::string comp(const std::string& v, int w, int i) {
   if (w == 1) return "uvec2(" + v + ".lo, " + v + ".hi)";
   return "uvec2(" + v + ".lo[" + n(i) + "], " + v + ".hi[" + n(i) + "])";
 }
-std::string col(const std::string& m, int j, int rows) {
-  return dvec(rows) + "(" + m + ".hi[" + n(j) + "], " + m + ".lo[" + n(j) + "])";
+std::string col(const std::string& m, const std::string& j, int rows) {
+  return dvec(rows) + "(" + m + ".hi[" + j + "], " + m + ".lo[" + j + "])";
+}
+std::string col(const std::string& m, int j, int rows) { return col(m, n(j), rows); }
+// Statements storing the df vector `value` as column `at` of `m`.
+std::string store_column(const std::string& m, const std::string& at, const std::string& value, const std::string& pad) {
+  return pad + m + ".hi[" + at + "] = " + value + ".hi;\n" + pad + m + ".lo[" + at + "] = " + value + ".lo;\n";
+}
+// Statements storing the pattern `value` (uvec2 low, high) as `target.hi<at>` and `target.lo<at>`.
+std::string store_pattern(const std::string& target, const std::string& at, const std::string& value, const std::string& pad) {
+  return pad + target + ".hi" + at + " = " + value + ".y;\n" + pad + target + ".lo" + at + " = " + value + ".x;\n";
 }
 // df_dvecW from patterns named prefix0..prefix{W-1}.
 std::string from_patterns(const std::string& prefix, int w) {
@@ -78,10 +103,14 @@ void use_bits(Context& ctx, std::initializer_list<const char*> rules) {
   for (const char* r : rules) ctx.use_rule(r, 1);
 }
 
-// fma(a0, b0, fma(a1, b1, ... a[k-1] * b[k-1])): native's matrix-product chain, last term first.
-std::string chain(const std::vector<std::string>& a, const std::vector<std::string>& b) {
-  std::string s = "ex_mul_first(" + a.back() + ", " + b.back() + ")";
-  for (size_t k = a.size() - 1; k-- > 0;) s = "ex_fma_bits(" + a[k] + ", " + b[k] + ", " + s + ")";
+// Statements leaving fma(a(0), b(0), fma(a(1), b(1), ... a(len-1) * b(len-1))) in the pattern `s`:
+// native's matrix-product chain, last term first, the fmas in a loop over t (its counter indexes
+// arrays of len elements len - 1 times, so drivers keep the loop).
+std::string chain(int len, const std::function<std::string(const std::string&)>& a,
+                  const std::function<std::string(const std::string&)>& b, const std::string& pad) {
+  std::string s = pad + "uvec2 s = ex_mul_first(" + a(n(len - 1)) + ", " + b(n(len - 1)) + ");\n";
+  if (len > 1)
+    s += pad + "for (int t = " + n(len - 2) + "; t >= 0; --t) s = ex_fma_bits(" + a("t") + ", " + b("t") + ", s);\n";
   return s;
 }
 
@@ -95,7 +124,7 @@ std::string elementwise(Context& ctx, const std::string& rule, int c, int r, Ope
   if (ctx.helpers.count(name)) return name;
   ctx.use_rule(ex_rule, r);
   ctx.use_matrix(c, r);
-  auto arg = [&](Operand o, const std::string& v, int j) {
+  auto arg = [&](Operand o, const std::string& v, const std::string& j) {
     return o == Operand::Matrix ? col(v, j, r) : dvec(r) + "(" + uvec(r) + "(" + v + ".hi), " + uvec(r) + "(" + v + ".lo))";
   };
   auto param = [&](Operand o, const std::string& v) {
@@ -117,10 +146,9 @@ std::string elementwise(Context& ctx, const std::string& rule, int c, int r, Ope
                      (by_reciprocal ? " (m / s = m * (1 / s), as native)" : "") + ".\n" + type_name(c, r) + " " + name +
                      "(" + param(a, "a") + ", " + param(b, "b") + ") {\n";
   if (by_reciprocal) body += "  b = ex_div(df_double(0x3FF00000u, 0u), b);\n";
-  for (int j = 0; j < c; ++j)
-    body += "  " + dvec(r) + " c" + n(j) + " = " + op + "(" + arg(first_kind, first, j) + ", " +
-            arg(second_kind, second, j) + ");\n";
-  body += "  return " + from_columns("c", c, r) + ";\n}\n";
+  body += "  " + type_name(c, r) + " m;\n" + loop_down("j", c, "  ") + "    " + dvec(r) + " cj = " + op + "(" +
+          arg(first_kind, first, "j") + ", " + arg(second_kind, second, "j") + ");\n" + store_column("m", "j", "cj", "    ") +
+          "  }\n  return m;\n}\n";
   ctx.add_helper(name, body);
   return name;
 }
@@ -146,13 +174,11 @@ std::string times_vector(Context& ctx, int c, int r) {
   ctx.use_width(r);
   std::string body = "// " + name + ": (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column\n"
                      "// first, every step rounded as native's (each fma twice).\n" +
-                     dvec(r) + " " + name + "(" + type_name(c, r) + " m, " + dvec(c) + " v) {\n";
-  for (int i = 0; i < r; ++i) {
-    std::vector<std::string> a, b;
-    for (int j = 0; j < c; ++j) a.push_back(elem("m", j, i)), b.push_back(comp("v", c, j));
-    body += "  uvec2 p" + n(i) + " = " + chain(a, b) + ";\n";
-  }
-  body += "  return " + from_patterns("p", r) + ";\n}\n";
+                     dvec(r) + " " + name + "(" + type_name(c, r) + " m, " + dvec(c) + " v) {\n  " + dvec(r) + " p;\n" +
+                     loop_down("i", r, "  ") +
+                     chain(c, [](const std::string& j) { return elem("m", j, "i"); },
+                           [](const std::string& j) { return "uvec2(v.lo[" + j + "], v.hi[" + j + "])"; }, "    ") +
+                     store_pattern("p", "[i]", "s", "    ") + "  }\n  return p;\n}\n";
   ctx.add_helper(name, body);
   return name;
 }
@@ -166,13 +192,11 @@ std::string vector_times(Context& ctx, int c, int r) {
   ctx.use_width(r);
   std::string body = "// " + name + ": (v * m)[j] = fma(m[j][0], v[0], fma(m[j][1], v[1], ...)), the last row first,\n"
                      "// as native's product with the transposed matrix.\n" +
-                     dvec(c) + " " + name + "(" + dvec(r) + " v, " + type_name(c, r) + " m) {\n";
-  for (int j = 0; j < c; ++j) {
-    std::vector<std::string> a, b;
-    for (int i = 0; i < r; ++i) a.push_back(elem("m", j, i)), b.push_back(comp("v", r, i));
-    body += "  uvec2 p" + n(j) + " = " + chain(a, b) + ";\n";
-  }
-  body += "  return " + from_patterns("p", c) + ";\n}\n";
+                     dvec(c) + " " + name + "(" + dvec(r) + " v, " + type_name(c, r) + " m) {\n  " + dvec(c) + " p;\n" +
+                     loop_down("j", c, "  ") +
+                     chain(r, [](const std::string& i) { return elem("m", "j", i); },
+                           [](const std::string& i) { return "uvec2(v.lo[" + i + "], v.hi[" + i + "])"; }, "    ") +
+                     store_pattern("p", "[j]", "s", "    ") + "  }\n  return p;\n}\n";
   ctx.add_helper(name, body);
   return name;
 }
@@ -185,8 +209,8 @@ std::string times_matrix(Context& ctx, int inner, int r, int c) {
   ctx.use_matrix(c, r);
   std::string body = "// " + name + ": column j of a * b is a * (column j of b) (" + mv + ").\n" + type_name(c, r) + " " +
                      name + "(" + type_name(inner, r) + " a, " + type_name(c, inner) + " b) {\n";
-  for (int j = 0; j < c; ++j) body += "  " + dvec(r) + " c" + n(j) + " = " + mv + "(a, " + col("b", j, inner) + ");\n";
-  body += "  return " + from_columns("c", c, r) + ";\n}\n";
+  body += "  " + type_name(c, r) + " m;\n" + loop_down("j", c, "  ") + "    " + dvec(r) + " cj = " + mv + "(a, " +
+          col("b", "j", inner) + ");\n" + store_column("m", "j", "cj", "    ") + "  }\n  return m;\n}\n";
   ctx.add_helper(name, body);
   return name;
 }
@@ -199,11 +223,10 @@ std::string outer_product(Context& ctx, int c, int r) {
   ctx.use_width(r);
   ctx.use_matrix(c, r);
   std::string body = "// " + name + ": element (j, i) = a[i] * b[j], one rounding.\n" + type_name(c, r) + " " + name + "(" +
-                     dvec(r) + " a, " + dvec(c) + " b) {\n  return " +
-                     from_elements(c, r, [&](int j, int i) {
-                       return "ex_mul_bits(" + comp("a", r, i) + ", " + comp("b", c, j) + ")";
-                     }) +
-                     ";\n}\n";
+                     dvec(r) + " a, " + dvec(c) + " b) {\n  " + type_name(c, r) + " m;\n" + loop_down("j", c, "  ") +
+                     loop_down("i", r, "    ", "l") +
+                     "      uvec2 e = ex_mul_bits(uvec2(a.lo[i], a.hi[i]), uvec2(b.lo[j], b.hi[j]));\n" +
+                     store_pattern("m", "[j][i]", "e", "      ") + "    }\n  }\n  return m;\n}\n";
   ctx.add_helper(name, body);
   return name;
 }
@@ -242,18 +265,31 @@ std::string det_of(const std::vector<std::string>& e) {
   return call(e.size() == 4 ? "ex_det2_bits" : "ex_det3_bits", e);
 }
 
-// Statements that leave the determinant of m (size x size) in the pattern `det`.
+// The patterns of the (size - 1)^2 elements of m outside row `skip_row` and column `skip_col` (int
+// expressions), column-major, through the index variables j0, j1, ... (columns) and i0, i1, ...
+// (rows) whose declarations are appended to `indices`.
+std::vector<std::string> minor_elements(int size, const std::string& skip_row, const std::string& skip_col,
+                                        std::string& indices, const std::string& pad) {
+  std::vector<std::string> out;
+  for (int t = 0; t + 1 < size; ++t)
+    indices += pad + "int j" + n(t) + " = " + skipping(t, skip_col) + ", i" + n(t) + " = " + skipping(t, skip_row) + ";\n";
+  for (int j = 0; j + 1 < size; ++j)
+    for (int i = 0; i + 1 < size; ++i) out.push_back(elem("m", "j" + n(j), "i" + n(i)));
+  return out;
+}
+
+// Statements that leave the determinant of m (size x size) in the pattern `det`; for 4 x 4 the four
+// products p[r] of a 3 x 3 sub-determinant and m[0][r] in a loop.
 std::string determinant_statements(int size) {
   if (size < 4) return "  uvec2 det = " + det_of(minor_elements(size, -1, -1)) + ";\n";
-  std::string s;
-  for (int i = 0; i < 4; ++i) {
-    std::vector<std::string> e;
-    for (int j = 1; j < 4; ++j)
-      for (int k = 0; k < 4; ++k)
-        if (k != i) e.push_back(elem("m", j, k));
-    s += "  uvec2 p" + n(i) + " = ex_mul_first(" + det_of(e) + ", " + elem("m", 0, i) + ");\n";
-  }
-  return s + "  uvec2 det = ex_sub_bits(ex_add_first(p0, ex_sub_bits(p2, p3)), p1);\n";
+  std::string s = "  uvec2 p[4];\n" + loop_down("r", 4, "  ");
+  // Rows other than r of columns 1-3: the minor of row r and column 0.
+  std::vector<std::string> e;
+  for (int j = 1; j < 4; ++j)
+    for (int t = 0; t < 3; ++t) e.push_back(elem("m", n(j), "i" + n(t)));
+  for (int t = 0; t < 3; ++t) s += "    int i" + n(t) + " = " + skipping(t, "r") + ";\n";
+  s += "    p[r] = ex_mul_first(" + det_of(e) + ", " + elem("m", "0", "r") + ");\n  }\n";
+  return s + "  uvec2 det = ex_sub_bits(ex_add_first(p[0], ex_sub_bits(p[2], p[3])), p[1]);\n";
 }
 
 void use_determinant_rules(Context& ctx) {
@@ -278,21 +314,22 @@ std::string inverse(Context& ctx, int size) {
   std::string name = "ex_inverse_" + suffix(size, size);
   if (ctx.helpers.count(name)) return name;
   use_determinant_rules(ctx);
-  use_bits(ctx, {"ex_div_bits", "ex_neg_bits"});
+  use_bits(ctx, {"ex_div_bits", "ex_neg_bits", "ex_mul_bits"});
   ctx.use_matrix(size, size);
   // Element (column c, row r) = (-1)^(r+c) det(m without row c and column r) * (1 / det): an even
   // cofactor is the first operand of the product, an odd (negated) one the second, as native's NaN choice says.
+  // One loop over the elements: q counts them down, c = q / size, r = q % size; one product with the
+  // operands swapped by selects (ex_mul_first(x, y) is ex_mul_bits(y, x)).
+  std::string indices;
+  const std::string e = det_of(minor_elements(size, "c", "r", indices, "    "));
   std::string body = "// " + name + ": the adjugate times 1 / determinant, as native computes it.\n" +
                      type_name(size, size) + " " + name + "(" + type_name(size, size) + " m) {\n" +
-                     determinant_statements(size) + "  uvec2 inv = ex_div_bits(" + kOne + ", det);\n";
-  for (int c = 0; c < size; ++c)
-    for (int r = 0; r < size; ++r) {
-      const std::string e = det_of(minor_elements(size, c, r));
-      const bool odd = (r + c) % 2 != 0;
-      body += "  uvec2 e" + n(c) + n(r) + " = " +
-              (odd ? "ex_mul_first(inv, ex_neg_bits(" + e + "))" : "ex_mul_first(" + e + ", inv)") + ";\n";
-    }
-  body += "  return " + from_elements(size, size, [](int j, int i) { return "e" + n(j) + n(i); }) + ";\n}\n";
+                     determinant_statements(size) + "  uvec2 inv = ex_div_bits(" + kOne + ", det);\n  " +
+                     type_name(size, size) + " a;\n" + loop_down("q", size * size, "  ") + "    int c = q / " + n(size) +
+                     ", r = q - c * " + n(size) + ";\n" + indices + "    uvec2 d = " + e + ";\n" +
+                     "    bool odd = ((c + r) & 1) != 0;\n"
+                     "    uvec2 e = ex_mul_bits(odd ? ex_neg_bits(d) : inv, odd ? inv : d);\n" +
+                     store_pattern("a", "[c][r]", "e", "    ") + "  }\n  return a;\n}\n";
   ctx.add_helper(name, body);
   return name;
 }

@@ -343,12 +343,17 @@ struct RuleLibrary::Impl {
     Subst sw = s, s1 = s;
     sw.width = width;
     s1.width = 1;
-    out += "// (width " + std::to_string(width) + ": the width-1 " + c.name + " applied to each component)\n";
     const std::string ret_w = subst_or_empty(c.ret_type, sw), ret_1 = subst_or_empty(c.ret_type, s1);
-    out += ret_w + " " + c.name + "(";
+    std::string signature = ret_w + " " + c.name + "(";
     for (size_t i = 0; i < c.params.size(); ++i)
-      out += (i ? ", " : "") + subst_or_empty(c.params[i].type, sw) + " " + c.params[i].name;
-    out += ") {\n";
+      signature += (i ? ", " : "") + subst_or_empty(c.params[i].type, sw) + " " + c.params[i].name;
+    signature += ") {\n";
+    if (s.exact_words) {
+      per_component_loop(c, width, signature, ret_w, ret_1, s1, out);
+      return true;
+    }
+    out += "// (width " + std::to_string(width) + ": the width-1 " + c.name + " applied to each component)\n";
+    out += signature;
     // An `out $I e` parameter: one width-1 local per component, gathered into e at the end.
     std::string gather;
     for (const auto& p : c.params) {
@@ -392,6 +397,40 @@ struct RuleLibrary::Impl {
     }
     out += "}\n";
     return true;
+  }
+
+  // Mode exact's @per-component instance: one call of the width-1 rule in a loop over the
+  // components, so drivers compile one copy of an operation of a few hundred integer instructions
+  // instead of `width` (docs/performance.md, "Mode exact: vector and matrix operations as loops").
+  // The index counts down from the last component: Mesa unrolls a loop whose counter indexes a
+  // vector with as many components as the loop has iterations, whatever the body's size, and an
+  // index computed from the counter (width - 1 - per_k) is not the counter. The names carry a
+  // per_ prefix so that no rule's parameter name is shadowed.
+  static void per_component_loop(const Chunk& c, int width, const std::string& signature, const std::string& ret_w,
+                                 const std::string& ret_1, const Subst& s1, std::string& out) {
+    const std::string last = std::to_string(width - 1);
+    out += "// (width " + std::to_string(width) + ": the width-1 " + c.name + " applied to each component, in a loop)\n";
+    out += signature + "  " + ret_w + " per_r;\n";
+    out += "  for (int per_k = 0; per_k < " + std::to_string(width) + "; ++per_k) {\n    int per_i = " + last + " - per_k;\n";
+    std::string call = c.name + "(", stores;
+    for (size_t i = 0; i < c.params.size(); ++i) {
+      const auto& p = c.params[i];
+      call += i ? ", " : "";
+      if (const std::string_view type = out_param_type(p.type); !type.empty()) {
+        out += "    " + subst_or_empty(std::string(type), s1) + " " + p.name + "_per;\n";
+        call += p.name + "_per";
+        stores += "    " + p.name + "[per_i] = " + p.name + "_per;\n";
+      } else if (p.type == "$DF") {
+        call += "df_double(" + p.name + ".hi[per_i], " + p.name + ".lo[per_i])";
+      } else if (is_width_placeholder(p.type)) {
+        call += p.name + "[per_i]";
+      } else {
+        call += p.name;
+      }
+    }
+    out += "    " + ret_1 + " per_c = " + call + ");\n" + stores;
+    out += c.ret_type == "$DF" ? "    per_r.hi[per_i] = per_c.hi;\n    per_r.lo[per_i] = per_c.lo;\n" : "    per_r[per_i] = per_c;\n";
+    out += "  }\n  return per_r;\n}\n";
   }
 };
 

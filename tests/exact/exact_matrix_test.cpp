@@ -77,12 +77,15 @@ INSTANTIATE_TEST_SUITE_P(Groups, ExactMatrices, ::testing::Range(0, int(groups()
 // one as spirv_to_nir writes it, (p0 - p1) + (p2 - p3), and an inverse with one sign of its adjugate lost.
 TEST(ExactMatricesSabotage, OtherOrdersDiffer) {
   expect_sabotages_differ(groups(), {
-      {"m * v from the first column", 0, "uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]), ex_mul_first(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2]))));",
-       "uvec2 p0 = ex_add_bits(ex_add_bits(ex_mul_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0])), ex_mul_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]))), ex_mul_bits(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2])));", {0}},
+      {"m * v from the first column", 0,
+       "uvec2 s = ex_mul_first(uvec2(m.lo[2][i], m.hi[2][i]), uvec2(v.lo[2], v.hi[2]));\n"
+       "    for (int t = 1; t >= 0; --t) s = ex_fma_bits(uvec2(m.lo[t][i], m.hi[t][i]), uvec2(v.lo[t], v.hi[t]), s);",
+       "uvec2 s = ex_mul_bits(uvec2(m.lo[0][i], m.hi[0][i]), uvec2(v.lo[0], v.hi[0]));\n"
+       "    for (int t = 1; t < 3; ++t) s = ex_add_bits(s, ex_mul_bits(uvec2(m.lo[t][i], m.hi[t][i]), uvec2(v.lo[t], v.hi[t])));", {0}},
       {"det3 summed x + (y + z)", 1, "return ex_add_first(z, ex_sub_bits(x, y));", "return ex_sub_bits(x, ex_sub_bits(y, z));", {1}},
-      {"det4 as (p0 - p1) + (p2 - p3)", 1, "uvec2 det = ex_sub_bits(ex_add_first(p0, ex_sub_bits(p2, p3)), p1);",
-       "uvec2 det = ex_add_first(ex_sub_bits(p0, p1), ex_sub_bits(p2, p3));", {2}},
-      {"inverse with an odd cofactor not negated", 2, "ex_mul_first(inv, ex_neg_bits(", "ex_mul_first(inv, (", {0, 1}},
+      {"det4 as (p0 - p1) + (p2 - p3)", 1, "uvec2 det = ex_sub_bits(ex_add_first(p[0], ex_sub_bits(p[2], p[3])), p[1]);",
+       "uvec2 det = ex_add_first(ex_sub_bits(p[0], p[1]), ex_sub_bits(p[2], p[3]));", {2}},
+      {"inverse with an odd cofactor not negated", 2, "odd ? ex_neg_bits(d) : inv", "odd ? d : inv", {0, 1}},
   });
 }
 

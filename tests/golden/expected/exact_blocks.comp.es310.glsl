@@ -347,12 +347,16 @@ df_double ex_mul(df_double a, df_double b) {
 // Source: IEEE 754-2019, 5.4.1
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (integer arithmetic)
-// (width 3: the width-1 ex_add applied to each component)
+// (width 3: the width-1 ex_add applied to each component, in a loop)
 df_dvec3 ex_add(df_dvec3 a, df_dvec3 b) {
-  df_double r0 = ex_add(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
-  df_double r1 = ex_add(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
-  df_double r2 = ex_add(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
-  return df_dvec3(uvec3(r0.hi, r1.hi, r2.hi), uvec3(r0.lo, r1.lo, r2.lo));
+  df_dvec3 per_r;
+  for (int per_k = 0; per_k < 3; ++per_k) {
+    int per_i = 2 - per_k;
+    df_double per_c = ex_add(df_double(a.hi[per_i], a.lo[per_i]), df_double(b.hi[per_i], b.lo[per_i]));
+    per_r.hi[per_i] = per_c.hi;
+    per_r.lo[per_i] = per_c.lo;
+  }
+  return per_r;
 }
 
 // ex_from_uint_bits: the binary64 pattern of a uint (exact: 32 bits fit in 53).

@@ -388,32 +388,44 @@ df_double ex_add(df_double a, df_double b) {
 // Source: IEEE 754-2019, 5.4.1
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (integer arithmetic)
-// (width 4: the width-1 ex_add applied to each component)
+// (width 4: the width-1 ex_add applied to each component, in a loop)
 df_dvec4 ex_add(df_dvec4 a, df_dvec4 b) {
-  df_double r0 = ex_add(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
-  df_double r1 = ex_add(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
-  df_double r2 = ex_add(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
-  df_double r3 = ex_add(df_double(a.hi.w, a.lo.w), df_double(b.hi.w, b.lo.w));
-  return df_dvec4(uvec4(r0.hi, r1.hi, r2.hi, r3.hi), uvec4(r0.lo, r1.lo, r2.lo, r3.lo));
+  df_dvec4 per_r;
+  for (int per_k = 0; per_k < 4; ++per_k) {
+    int per_i = 3 - per_k;
+    df_double per_c = ex_add(df_double(a.hi[per_i], a.lo[per_i]), df_double(b.hi[per_i], b.lo[per_i]));
+    per_r.hi[per_i] = per_c.hi;
+    per_r.lo[per_i] = per_c.lo;
+  }
+  return per_r;
 }
 
 // ex_mul_dmat4_dvec4: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
 // first, every step rounded as native's (each fma twice).
 df_dvec4 ex_mul_dmat4_dvec4(df_dmat4 m, df_dvec4 v) {
-  uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][0], m.hi[3][0]), uvec2(v.lo[3], v.hi[3])))));
-  uvec2 p1 = ex_fma_bits(uvec2(m.lo[0][1], m.hi[0][1]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][1], m.hi[1][1]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][1], m.hi[2][1]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][1], m.hi[3][1]), uvec2(v.lo[3], v.hi[3])))));
-  uvec2 p2 = ex_fma_bits(uvec2(m.lo[0][2], m.hi[0][2]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][2], m.hi[1][2]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][2], m.hi[2][2]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][2], m.hi[3][2]), uvec2(v.lo[3], v.hi[3])))));
-  uvec2 p3 = ex_fma_bits(uvec2(m.lo[0][3], m.hi[0][3]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][3], m.hi[1][3]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][3], m.hi[2][3]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][3], m.hi[3][3]), uvec2(v.lo[3], v.hi[3])))));
-  return df_dvec4(uvec4(p0.y, p1.y, p2.y, p3.y), uvec4(p0.x, p1.x, p2.x, p3.x));
+  df_dvec4 p;
+  for (int k = 0; k < 4; ++k) {
+    int i = 3 - k;
+    uvec2 s = ex_mul_first(uvec2(m.lo[3][i], m.hi[3][i]), uvec2(v.lo[3], v.hi[3]));
+    for (int t = 2; t >= 0; --t) s = ex_fma_bits(uvec2(m.lo[t][i], m.hi[t][i]), uvec2(v.lo[t], v.hi[t]), s);
+    p.hi[i] = s.y;
+    p.lo[i] = s.x;
+  }
+  return p;
 }
 
 // ex_mul_dmat3_dvec3: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
 // first, every step rounded as native's (each fma twice).
 df_dvec3 ex_mul_dmat3_dvec3(df_dmat3 m, df_dvec3 v) {
-  uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]), ex_mul_first(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2]))));
-  uvec2 p1 = ex_fma_bits(uvec2(m.lo[0][1], m.hi[0][1]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][1], m.hi[1][1]), uvec2(v.lo[1], v.hi[1]), ex_mul_first(uvec2(m.lo[2][1], m.hi[2][1]), uvec2(v.lo[2], v.hi[2]))));
-  uvec2 p2 = ex_fma_bits(uvec2(m.lo[0][2], m.hi[0][2]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][2], m.hi[1][2]), uvec2(v.lo[1], v.hi[1]), ex_mul_first(uvec2(m.lo[2][2], m.hi[2][2]), uvec2(v.lo[2], v.hi[2]))));
-  return df_dvec3(uvec3(p0.y, p1.y, p2.y), uvec3(p0.x, p1.x, p2.x));
+  df_dvec3 p;
+  for (int k = 0; k < 3; ++k) {
+    int i = 2 - k;
+    uvec2 s = ex_mul_first(uvec2(m.lo[2][i], m.hi[2][i]), uvec2(v.lo[2], v.hi[2]));
+    for (int t = 1; t >= 0; --t) s = ex_fma_bits(uvec2(m.lo[t][i], m.hi[t][i]), uvec2(v.lo[t], v.hi[t]), s);
+    p.hi[i] = s.y;
+    p.lo[i] = s.x;
+  }
+  return p;
 }
 
 df_double df_component_dvec2(df_dvec2 v, int i) {
@@ -447,17 +459,27 @@ df_double df_assign_element_dmat4(inout df_dmat4 m, int j, int i, df_double x) {
 // ex_mul_dmat2_dvec2: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
 // first, every step rounded as native's (each fma twice).
 df_dvec2 ex_mul_dmat2_dvec2(df_dmat2 m, df_dvec2 v) {
-  uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_mul_first(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1])));
-  uvec2 p1 = ex_fma_bits(uvec2(m.lo[0][1], m.hi[0][1]), uvec2(v.lo[0], v.hi[0]), ex_mul_first(uvec2(m.lo[1][1], m.hi[1][1]), uvec2(v.lo[1], v.hi[1])));
-  return df_dvec2(uvec2(p0.y, p1.y), uvec2(p0.x, p1.x));
+  df_dvec2 p;
+  for (int k = 0; k < 2; ++k) {
+    int i = 1 - k;
+    uvec2 s = ex_mul_first(uvec2(m.lo[1][i], m.hi[1][i]), uvec2(v.lo[1], v.hi[1]));
+    for (int t = 0; t >= 0; --t) s = ex_fma_bits(uvec2(m.lo[t][i], m.hi[t][i]), uvec2(v.lo[t], v.hi[t]), s);
+    p.hi[i] = s.y;
+    p.lo[i] = s.x;
+  }
+  return p;
 }
 
 // ex_mul_dmat2_dmat3x2: column j of a * b is a * (column j of b) (ex_mul_dmat2_dvec2).
 df_dmat3x2 ex_mul_dmat2_dmat3x2(df_dmat2 a, df_dmat3x2 b) {
-  df_dvec2 c0 = ex_mul_dmat2_dvec2(a, df_dvec2(b.hi[0], b.lo[0]));
-  df_dvec2 c1 = ex_mul_dmat2_dvec2(a, df_dvec2(b.hi[1], b.lo[1]));
-  df_dvec2 c2 = ex_mul_dmat2_dvec2(a, df_dvec2(b.hi[2], b.lo[2]));
-  return df_dmat3x2(uvec2[3](c0.hi, c1.hi, c2.hi), uvec2[3](c0.lo, c1.lo, c2.lo));
+  df_dmat3x2 m;
+  for (int k = 0; k < 3; ++k) {
+    int j = 2 - k;
+    df_dvec2 cj = ex_mul_dmat2_dvec2(a, df_dvec2(b.hi[j], b.lo[j]));
+    m.hi[j] = cj.hi;
+    m.lo[j] = cj.lo;
+  }
+  return m;
 }
 
 df_double df_swizzle_dvec2_y(df_dvec2 v) {

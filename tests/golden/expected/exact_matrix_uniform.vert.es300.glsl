@@ -400,13 +400,15 @@ float ex_to_float(df_double a) {
 // Source: IEEE 754-2019, 5.4.2
 // Bound: 0.5 ulp (correctly rounded)
 // Flops: 0 (integer arithmetic)
-// (width 4: the width-1 ex_to_float applied to each component)
+// (width 4: the width-1 ex_to_float applied to each component, in a loop)
 vec4 ex_to_float(df_dvec4 a) {
-  float r0 = ex_to_float(df_double(a.hi.x, a.lo.x));
-  float r1 = ex_to_float(df_double(a.hi.y, a.lo.y));
-  float r2 = ex_to_float(df_double(a.hi.z, a.lo.z));
-  float r3 = ex_to_float(df_double(a.hi.w, a.lo.w));
-  return vec4(r0, r1, r2, r3);
+  vec4 per_r;
+  for (int per_k = 0; per_k < 4; ++per_k) {
+    int per_i = 3 - per_k;
+    float per_c = ex_to_float(df_double(a.hi[per_i], a.lo[per_i]));
+    per_r[per_i] = per_c;
+  }
+  return per_r;
 }
 
 df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
@@ -416,11 +418,15 @@ df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
 // ex_mul_dmat4_dvec4: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
 // first, every step rounded as native's (each fma twice).
 df_dvec4 ex_mul_dmat4_dvec4(df_dmat4 m, df_dvec4 v) {
-  uvec2 p0 = ex_fma_bits(uvec2(m.lo[0][0], m.hi[0][0]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][0], m.hi[1][0]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][0], m.hi[2][0]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][0], m.hi[3][0]), uvec2(v.lo[3], v.hi[3])))));
-  uvec2 p1 = ex_fma_bits(uvec2(m.lo[0][1], m.hi[0][1]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][1], m.hi[1][1]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][1], m.hi[2][1]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][1], m.hi[3][1]), uvec2(v.lo[3], v.hi[3])))));
-  uvec2 p2 = ex_fma_bits(uvec2(m.lo[0][2], m.hi[0][2]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][2], m.hi[1][2]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][2], m.hi[2][2]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][2], m.hi[3][2]), uvec2(v.lo[3], v.hi[3])))));
-  uvec2 p3 = ex_fma_bits(uvec2(m.lo[0][3], m.hi[0][3]), uvec2(v.lo[0], v.hi[0]), ex_fma_bits(uvec2(m.lo[1][3], m.hi[1][3]), uvec2(v.lo[1], v.hi[1]), ex_fma_bits(uvec2(m.lo[2][3], m.hi[2][3]), uvec2(v.lo[2], v.hi[2]), ex_mul_first(uvec2(m.lo[3][3], m.hi[3][3]), uvec2(v.lo[3], v.hi[3])))));
-  return df_dvec4(uvec4(p0.y, p1.y, p2.y, p3.y), uvec4(p0.x, p1.x, p2.x, p3.x));
+  df_dvec4 p;
+  for (int k = 0; k < 4; ++k) {
+    int i = 3 - k;
+    uvec2 s = ex_mul_first(uvec2(m.lo[3][i], m.hi[3][i]), uvec2(v.lo[3], v.hi[3]));
+    for (int t = 2; t >= 0; --t) s = ex_fma_bits(uvec2(m.lo[t][i], m.hi[t][i]), uvec2(v.lo[t], v.hi[t]), s);
+    p.hi[i] = s.y;
+    p.lo[i] = s.x;
+  }
+  return p;
 }
 
 layout(location = 0) in uvec4 position_xy;

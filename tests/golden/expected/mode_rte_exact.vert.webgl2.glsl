@@ -193,12 +193,15 @@ float ex_sub_to_float(df_double a, df_double b) {
 // Source: IEEE 754-2019, 4.3.1 and 5.4.1 (one rounding of the exact result)
 // Bound: 0.5 ulp of float (correctly rounded from the exact difference)
 // Flops: 0 (integer arithmetic)
-// (width 3: the width-1 ex_sub_to_float applied to each component)
+// (width 3: the width-1 ex_sub_to_float applied to each component, in a loop)
 vec3 ex_sub_to_float(df_dvec3 a, df_dvec3 b) {
-  float r0 = ex_sub_to_float(df_double(a.hi.x, a.lo.x), df_double(b.hi.x, b.lo.x));
-  float r1 = ex_sub_to_float(df_double(a.hi.y, a.lo.y), df_double(b.hi.y, b.lo.y));
-  float r2 = ex_sub_to_float(df_double(a.hi.z, a.lo.z), df_double(b.hi.z, b.lo.z));
-  return vec3(r0, r1, r2);
+  vec3 per_r;
+  for (int per_k = 0; per_k < 3; ++per_k) {
+    int per_i = 2 - per_k;
+    float per_c = ex_sub_to_float(df_double(a.hi[per_i], a.lo[per_i]), df_double(b.hi[per_i], b.lo[per_i]));
+    per_r[per_i] = per_c;
+  }
+  return per_r;
 }
 
 // ex_to_float_bits: the float nearest (ties to even) to a binary64 pattern, as float bits; overflow gives Inf, tiny values float subnormals or zero.
