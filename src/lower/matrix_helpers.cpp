@@ -54,6 +54,22 @@ int dot_constant(int w) { return w == 1 ? 7 : w == 2 ? 10 : 13; }
 // Mode exact and rte-exact store double matrices as binary64 words (matrix_helpers_exact).
 bool exact_mode(const Context& ctx) { return ctx.config.binary64_words(); }
 
+// df64-int's products are long (an integer residual per TwoSum and TwoProd), so its matrix products
+// keep one df_dot in a loop over the rows or columns instead of one per row: drivers compile a quarter
+// of the code for a dmat4, with the same operations in the same order (docs/performance.md, "df64-int:
+// matrix products as loops"). The index counts down from a counter, as mode exact's loops do
+// (matrix_helpers_exact.cpp): Mesa unrolls a loop whose counter indexes as many elements as it has
+// iterations. df64-int needs ES 3.00, where such indexing is allowed.
+bool loop_products(const Context& ctx) { return ctx.config.integer_eft; }
+
+// The body of a product that stores df_dot(a(idx), b(idx)) as component idx of `p`, for idx from
+// count - 1 down to 0, in a loop.
+std::string dot_loop(int count, const std::string& result_type, const std::string& a, const std::string& b) {
+  return "  " + result_type + " p;\n  for (int k = 0; k < " + n(count) + "; ++k) {\n    int idx = " + n(count - 1) +
+         " - k;\n    df_double d = df_dot(" + a + ", " + b + ");\n    p.hi[idx] = d.hi;\n    p.lo[idx] = d.lo;\n  }\n"
+         "  return p;\n}\n";
+}
+
 }  // namespace
 
 std::string type_name(int cols, int rows) {
@@ -119,16 +135,20 @@ std::string times_vector(Context& ctx, int c, int r) {
                      "// AccurateDWPlusDW). Bound: " + n(dot_constant(c)) +
                      "u^2 * sum_j |m[j][i] v[j]| per component (absolute).\n" + dvec(r) + " " + name + "(" +
                      type_name(c, r) + " m, " + dvec(c) + " v) {\n";
-  for (int i = 0; i < r; ++i) {
+  auto row = [&](const std::string& i) {
     std::string hi, lo;
     for (int j = 0; j < c; ++j) {
-      hi += (j ? ", " : "") + std::string("m.hi[") + n(j) + "][" + n(i) + "]";
-      lo += (j ? ", " : "") + std::string("m.lo[") + n(j) + "][" + n(i) + "]";
+      hi += (j ? ", " : "") + std::string("m.hi[") + n(j) + "][" + i + "]";
+      lo += (j ? ", " : "") + std::string("m.lo[") + n(j) + "][" + i + "]";
     }
-    body += "  df_double p" + n(i) + " = df_dot(" + dvec(c) + "(" + vec(c) + "(" + hi + "), " + vec(c) + "(" + lo +
-            ")), v);\n";
+    return dvec(c) + "(" + vec(c) + "(" + hi + "), " + vec(c) + "(" + lo + "))";
+  };
+  if (loop_products(ctx) && r > 1) {
+    body += dot_loop(r, dvec(r), row("idx"), "v");
+  } else {
+    for (int i = 0; i < r; ++i) body += "  df_double p" + n(i) + " = df_dot(" + row(n(i)) + ", v);\n";
+    body += "  return " + from_scalars("p", r) + ";\n}\n";
   }
-  body += "  return " + from_scalars("p", r) + ";\n}\n";
   ctx.add_helper(name, body);
   return name;
 }
@@ -142,8 +162,12 @@ std::string vector_times(Context& ctx, int c, int r) {
   std::string body = "// " + name + ": (v * m)[j] = df_dot(v, column j of m). Bound: " + n(dot_constant(r)) +
                      "u^2 * sum_i |v[i] m[j][i]| per component (absolute).\n" + dvec(c) + " " + name + "(" + dvec(r) +
                      " v, " + type_name(c, r) + " m) {\n";
-  for (int j = 0; j < c; ++j) body += "  df_double p" + n(j) + " = df_dot(v, " + col("m", j, r) + ");\n";
-  body += "  return " + from_scalars("p", c) + ";\n}\n";
+  if (loop_products(ctx) && c > 1) {
+    body += dot_loop(c, dvec(c), "v", dvec(r) + "(m.hi[idx], m.lo[idx])");
+  } else {
+    for (int j = 0; j < c; ++j) body += "  df_double p" + n(j) + " = df_dot(v, " + col("m", j, r) + ");\n";
+    body += "  return " + from_scalars("p", c) + ";\n}\n";
+  }
   ctx.add_helper(name, body);
   return name;
 }
@@ -158,8 +182,14 @@ std::string times_matrix(Context& ctx, int inner, int r, int c) {
   std::string body = "// " + name + ": column j of a * b is a * (column j of b) (" + mv + "). Bound: " +
                      n(dot_constant(inner)) + "u^2 * sum_k |a[k][i] b[j][k]| per element (absolute).\n" +
                      type_name(c, r) + " " + name + "(" + type_name(inner, r) + " a, " + type_name(c, inner) + " b) {\n";
-  for (int j = 0; j < c; ++j) body += "  " + dvec(r) + " c" + n(j) + " = " + mv + "(a, " + col("b", j, inner) + ");\n";
-  body += "  return " + from_columns("c", c, r) + ";\n}\n";
+  if (loop_products(ctx)) {
+    body += "  " + type_name(c, r) + " m;\n  for (int k = 0; k < " + n(c) + "; ++k) {\n    int idx = " + n(c - 1) +
+            " - k;\n    " + dvec(r) + " cj = " + mv + "(a, " + dvec(inner) + "(b.hi[idx], b.lo[idx]));\n" +
+            "    m.hi[idx] = cj.hi;\n    m.lo[idx] = cj.lo;\n  }\n  return m;\n}\n";
+  } else {
+    for (int j = 0; j < c; ++j) body += "  " + dvec(r) + " c" + n(j) + " = " + mv + "(a, " + col("b", j, inner) + ");\n";
+    body += "  return " + from_columns("c", c, r) + ";\n}\n";
+  }
   ctx.add_helper(name, body);
   return name;
 }
