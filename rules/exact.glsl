@@ -1954,12 +1954,16 @@ uvec2 ex_cross_component(uvec2 p, uvec2 q, uvec2 r, uvec2 s) {
 // @uses ex_cross_component:1
 // @min-es 300
 df_dvec3 ex_cross(df_dvec3 a, df_dvec3 b) {
-  uvec2 ax = uvec2(a.lo.x, a.hi.x), ay = uvec2(a.lo.y, a.hi.y), az = uvec2(a.lo.z, a.hi.z);
-  uvec2 bx = uvec2(b.lo.x, b.hi.x), by = uvec2(b.lo.y, b.hi.y), bz = uvec2(b.lo.z, b.hi.z);
-  uvec2 x = ex_cross_component(ay, bz, az, by);
-  uvec2 y = ex_cross_component(az, bx, ax, bz);
-  uvec2 z = ex_cross_component(ax, by, ay, bx);
-  return df_dvec3(uvec3(x.y, y.y, z.y), uvec3(x.x, y.x, z.x));
+  df_dvec3 r = a;
+  for (int kk = 0; kk < 3; ++kk) {
+    int k = 2 - kk;  // not the counter: see the file header (loops)
+    int p = (k + 1) % 3, q = (k + 2) % 3;
+    uvec2 c = ex_cross_component(uvec2(a.lo[p], a.hi[p]), uvec2(b.lo[q], b.hi[q]), uvec2(a.lo[q], a.hi[q]),
+                                 uvec2(b.lo[p], b.hi[p]));
+    r.hi[k] = c.y;
+    r.lo[k] = c.x;
+  }
+  return r;
 }
 
 // ex_faceforward: faceforward(n, i, nref) (mode exact): n if dot(nref, i) < 0, else -n (a NaN dot gives -n).
