@@ -24,9 +24,11 @@
 // Loops: an operation on a vector or matrix runs its per-component (per-element) operation in a
 // loop, so drivers compile one copy of a few hundred integer instructions rather than one per
 // component (the generated @per-component instances and matrix helpers do the same). The index is
-// computed from the loop counter (W - 1 - counter), never the counter itself: Mesa unrolls, whatever
-// the body's size, a loop whose counter indexes a vector or array with as many elements as the loop
-// has iterations (docs/performance.md, "Mode exact: vector and matrix operations as loops").
+// computed from the loop counter (W - 1 - counter), never the counter itself: Mesa's GLSL compiler
+// unrolls, whatever the body's size, a loop whose counter indexes an array with as many elements as
+// the loop has iterations (measured on the matrix helpers; for vector components no difference was
+// measured, and the loops here count down all the same) (docs/performance.md, "Mode exact: vector
+// and matrix operations as loops").
 
 // ex_add64: 64-bit sum of two (lo, hi) words, modulo 2^64.
 // Algorithm: word sums with the carry of the low word (a.x + b.x < a.x)

@@ -58,8 +58,8 @@ bool exact_mode(const Context& ctx) { return ctx.config.binary64_words(); }
 // keep one df_dot in a loop over the rows or columns instead of one per row: drivers compile a quarter
 // of the code for a dmat4, with the same operations in the same order (docs/performance.md, "df64-int:
 // matrix products as loops"). The index counts down from a counter, as mode exact's loops do
-// (matrix_helpers_exact.cpp): Mesa unrolls a loop whose counter indexes as many elements as it has
-// iterations. df64-int needs ES 3.00, where such indexing is allowed.
+// (matrix_helpers_exact.cpp: Mesa's GLSL compiler unrolls a loop whose counter indexes an array of
+// as many elements as it has iterations). df64-int needs ES 3.00, where such indexing is allowed.
 bool loop_products(const Context& ctx) { return ctx.config.integer_eft; }
 
 // The body of a product that stores df_dot(a(idx), b(idx)) as component idx of `p`, for idx from

@@ -38,8 +38,9 @@ std::string elem(const std::string& m, int j, int i) { return elem(m, n(j), n(i)
 // closes the brace. Mode exact keeps its matrix operations as loops so that drivers compile one
 // copy of an operation of a few hundred integer instructions, not one per element (docs/performance.md,
 // "Mode exact: vector and matrix operations as loops"). The index is computed from the counter, not
-// the counter itself: Mesa unrolls, whatever its size, a loop whose counter indexes an array or
-// vector with as many elements as the loop has iterations.
+// the counter itself: Mesa's GLSL compiler unrolls, whatever its size, a loop whose counter indexes an
+// array with as many elements as the loop has iterations (counting up, the dmat4 determinant compiled
+// in 931 ms on Mesa GLES instead of 386 ms).
 std::string loop_down(const std::string& index, int count, const std::string& pad, const std::string& counter = "k") {
   return pad + "for (int " + counter + " = 0; " + counter + " < " + n(count) + "; ++" + counter + ") {\n" + pad + "  int " +
          index + " = " + n(count - 1) + " - " + counter + ";\n";

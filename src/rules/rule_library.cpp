@@ -402,10 +402,10 @@ struct RuleLibrary::Impl {
   // Mode exact's @per-component instance: one call of the width-1 rule in a loop over the
   // components, so drivers compile one copy of an operation of a few hundred integer instructions
   // instead of `width` (docs/performance.md, "Mode exact: vector and matrix operations as loops").
-  // The index counts down from the last component: Mesa unrolls a loop whose counter indexes a
-  // vector with as many components as the loop has iterations, whatever the body's size, and an
-  // index computed from the counter (width - 1 - per_k) is not the counter. The names carry a
-  // per_ prefix so that no rule's parameter name is shadowed.
+  // The index is computed from the counter (width - 1 - per_k), as everywhere in mode exact's loops:
+  // Mesa's GLSL compiler unrolls, whatever the body's size, a loop whose counter indexes an array
+  // with as many elements as the loop has iterations (for vector components no difference was
+  // measured). The names carry a per_ prefix so that no rule's parameter name is shadowed.
   static void per_component_loop(const Chunk& c, int width, const std::string& signature, const std::string& ret_w,
                                  const std::string& ret_1, const Subst& s1, std::string& out) {
     const std::string last = std::to_string(width - 1);
