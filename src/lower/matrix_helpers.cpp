@@ -21,9 +21,10 @@ std::string suffix(int cols, int rows) { return type_name(cols, rows).substr(3);
 char letter(int i) { return "xyzw"[i]; }
 
 // `df_dvecR(m.hi[j], m.lo[j])`
-std::string col(const std::string& m, int j, int rows) {
-  return dvec(rows) + "(" + m + ".hi[" + n(j) + "], " + m + ".lo[" + n(j) + "])";
+std::string col(const std::string& m, const std::string& j, int rows) {
+  return dvec(rows) + "(" + m + ".hi[" + j + "], " + m + ".lo[" + j + "])";
 }
+std::string col(const std::string& m, int j, int rows) { return col(m, n(j), rows); }
 // `df_double(m.hi[j][i], m.lo[j][i])`
 std::string elem(const std::string& m, int j, int i) {
   return "df_double(" + m + ".hi[" + n(j) + "][" + n(i) + "], " + m + ".lo[" + n(j) + "][" + n(i) + "])";
@@ -65,12 +66,19 @@ bool loop_products(const Context& ctx) { return ctx.config.integer_eft; }
 // The body of a product that stores df_dot(a(idx), b(idx)) as component idx of `p`, for idx from
 // count - 1 down to 0, in a loop.
 std::string dot_loop(int count, const std::string& result_type, const std::string& a, const std::string& b) {
-  return "  " + result_type + " p;\n  for (int k = 0; k < " + n(count) + "; ++k) {\n    int idx = " + n(count - 1) +
-         " - k;\n    df_double d = df_dot(" + a + ", " + b + ");\n    p.hi[idx] = d.hi;\n    p.lo[idx] = d.lo;\n  }\n"
-         "  return p;\n}\n";
+  return "  " + result_type + " p;\n" + loop_down("idx", count, "  ") + "    df_double d = df_dot(" + a + ", " + b +
+         ");\n" + store_column("p", "idx", "d", "    ") + "  }\n  return p;\n}\n";
 }
 
 }  // namespace
+
+std::string loop_down(const std::string& index, int count, const std::string& pad, const std::string& counter) {
+  return pad + "for (int " + counter + " = 0; " + counter + " < " + n(count) + "; ++" + counter + ") {\n" + pad + "  int " +
+         index + " = " + n(count - 1) + " - " + counter + ";\n";
+}
+std::string store_column(const std::string& m, const std::string& at, const std::string& value, const std::string& pad) {
+  return pad + m + ".hi[" + at + "] = " + value + ".hi;\n" + pad + m + ".lo[" + at + "] = " + value + ".lo;\n";
+}
 
 std::string type_name(int cols, int rows) {
   return cols == rows ? "df_dmat" + n(cols) : "df_dmat" + n(cols) + "x" + n(rows);
@@ -163,7 +171,7 @@ std::string vector_times(Context& ctx, int c, int r) {
                      "u^2 * sum_i |v[i] m[j][i]| per component (absolute).\n" + dvec(c) + " " + name + "(" + dvec(r) +
                      " v, " + type_name(c, r) + " m) {\n";
   if (loop_products(ctx) && c > 1) {
-    body += dot_loop(c, dvec(c), "v", dvec(r) + "(m.hi[idx], m.lo[idx])");
+    body += dot_loop(c, dvec(c), "v", col("m", "idx", r));
   } else {
     for (int j = 0; j < c; ++j) body += "  df_double p" + n(j) + " = df_dot(v, " + col("m", j, r) + ");\n";
     body += "  return " + from_scalars("p", c) + ";\n}\n";
@@ -183,9 +191,8 @@ std::string times_matrix(Context& ctx, int inner, int r, int c) {
                      n(dot_constant(inner)) + "u^2 * sum_k |a[k][i] b[j][k]| per element (absolute).\n" +
                      type_name(c, r) + " " + name + "(" + type_name(inner, r) + " a, " + type_name(c, inner) + " b) {\n";
   if (loop_products(ctx)) {
-    body += "  " + type_name(c, r) + " m;\n  for (int k = 0; k < " + n(c) + "; ++k) {\n    int idx = " + n(c - 1) +
-            " - k;\n    " + dvec(r) + " cj = " + mv + "(a, " + dvec(inner) + "(b.hi[idx], b.lo[idx]));\n" +
-            "    m.hi[idx] = cj.hi;\n    m.lo[idx] = cj.lo;\n  }\n  return m;\n}\n";
+    body += "  " + type_name(c, r) + " m;\n" + loop_down("idx", c, "  ") + "    " + dvec(r) + " cj = " + mv + "(a, " +
+            col("b", "idx", inner) + ");\n" + store_column("m", "idx", "cj", "    ") + "  }\n  return m;\n}\n";
   } else {
     for (int j = 0; j < c; ++j) body += "  " + dvec(r) + " c" + n(j) + " = " + mv + "(a, " + col("b", j, inner) + ");\n";
     body += "  return " + from_columns("c", c, r) + ";\n}\n";

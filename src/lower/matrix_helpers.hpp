@@ -51,4 +51,15 @@ std::string diagonal(Context& ctx, int cols, int rows);
 std::string resize(Context& ctx, int from_cols, int from_rows, int cols, int rows);
 std::string to_float(Context& ctx, int cols, int rows);
 
+// Text pieces of the helpers that run as loops (mode exact's, df64-int's products;
+// docs/performance.md, "Mode exact: vector and matrix operations as loops"):
+// `for` over `count` values of `index`, from count - 1 down to 0, at indentation `pad`; the caller
+// closes the brace. The index is computed from the counter, not the counter itself: Mesa's GLSL
+// compiler unrolls, whatever its size, a loop whose counter indexes an array with as many elements as
+// the loop has iterations (counting up, mode exact's dmat4 determinant compiled in 931 ms on Mesa GLES
+// instead of 386 ms).
+std::string loop_down(const std::string& index, int count, const std::string& pad, const std::string& counter = "k");
+// Statements storing the df vector or scalar `value` as column (component) `at` of `m`.
+std::string store_column(const std::string& m, const std::string& at, const std::string& value, const std::string& pad);
+
 }  // namespace doublet::passes::matrix

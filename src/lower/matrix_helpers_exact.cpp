@@ -34,17 +34,6 @@ std::string elem(const std::string& m, const std::string& j, const std::string& 
 }
 std::string elem(const std::string& m, int j, int i) { return elem(m, n(j), n(i)); }
 
-// `for` over `count` values of `index`, from count - 1 down to 0, at indentation `pad`; the caller
-// closes the brace. Mode exact keeps its matrix operations as loops so that drivers compile one
-// copy of an operation of a few hundred integer instructions, not one per element (docs/performance.md,
-// "Mode exact: vector and matrix operations as loops"). The index is computed from the counter, not
-// the counter itself: Mesa's GLSL compiler unrolls, whatever its size, a loop whose counter indexes an
-// array with as many elements as the loop has iterations (counting up, the dmat4 determinant compiled
-// in 931 ms on Mesa GLES instead of 386 ms).
-std::string loop_down(const std::string& index, int count, const std::string& pad, const std::string& counter = "k") {
-  return pad + "for (int " + counter + " = 0; " + counter + " < " + n(count) + "; ++" + counter + ") {\n" + pad + "  int " +
-         index + " = " + n(count - 1) + " - " + counter + ";\n";
-}
 // The value `t` of 0..size-2 skipping `skipped` (an expression): t below it, t + 1 from it on.
 std::string skipping(int t, const std::string& skipped) {
   return "(" + n(t) + " < " + skipped + " ? " + n(t) + " : " + n(t + 1) + ")";
@@ -58,22 +47,9 @@ std::string col(const std::string& m, const std::string& j, int rows) {
   return dvec(rows) + "(" + m + ".hi[" + j + "], " + m + ".lo[" + j + "])";
 }
 std::string col(const std::string& m, int j, int rows) { return col(m, n(j), rows); }
-// Statements storing the df vector `value` as column `at` of `m`.
-std::string store_column(const std::string& m, const std::string& at, const std::string& value, const std::string& pad) {
-  return pad + m + ".hi[" + at + "] = " + value + ".hi;\n" + pad + m + ".lo[" + at + "] = " + value + ".lo;\n";
-}
 // Statements storing the pattern `value` (uvec2 low, high) as `target.hi<at>` and `target.lo<at>`.
 std::string store_pattern(const std::string& target, const std::string& at, const std::string& value, const std::string& pad) {
   return pad + target + ".hi" + at + " = " + value + ".y;\n" + pad + target + ".lo" + at + " = " + value + ".x;\n";
-}
-// df_dvecW from patterns named prefix0..prefix{W-1}.
-std::string from_patterns(const std::string& prefix, int w) {
-  std::string hi, lo;
-  for (int i = 0; i < w; ++i) {
-    hi += (i ? ", " : "") + prefix + n(i) + ".y";
-    lo += (i ? ", " : "") + prefix + n(i) + ".x";
-  }
-  return dvec(w) + "(" + uvec(w) + "(" + hi + "), " + uvec(w) + "(" + lo + "))";
 }
 // df_dmatCxR from column df vectors named prefix0..prefix{C-1}.
 std::string from_columns(const std::string& prefix, int cols, int rows) {

@@ -374,12 +374,8 @@ struct RuleLibrary::Impl {
         out += i ? ", " : "";
         if (!out_param_type(p.type).empty())
           out += p.name + "_" + std::to_string(k);
-        else if (p.type == "$DF")
-          out += "df_double(" + p.name + ".hi." + kComponents[k] + ", " + p.name + ".lo." + kComponents[k] + ")";
-        else if (is_width_placeholder(p.type))
-          out += p.name + "." + kComponents[k];
         else
-          out += p.name;
+          out += component_argument(p, std::string(".") + kComponents[k]);
       }
       out += ");\n";
     }
@@ -397,6 +393,13 @@ struct RuleLibrary::Impl {
     }
     out += "}\n";
     return true;
+  }
+
+  // The argument passing one component of parameter p to the width-1 rule; `selector` picks the
+  // component (".x", "[per_i]"). Parameters of a fixed type pass whole.
+  static std::string component_argument(const Param& p, const std::string& selector) {
+    if (p.type == "$DF") return "df_double(" + p.name + ".hi" + selector + ", " + p.name + ".lo" + selector + ")";
+    return is_width_placeholder(p.type) ? p.name + selector : p.name;
   }
 
   // Mode exact's @per-component instance: one call of the width-1 rule in a loop over the
@@ -420,12 +423,8 @@ struct RuleLibrary::Impl {
         out += "    " + subst_or_empty(std::string(type), s1) + " " + p.name + "_per;\n";
         call += p.name + "_per";
         stores += "    " + p.name + "[per_i] = " + p.name + "_per;\n";
-      } else if (p.type == "$DF") {
-        call += "df_double(" + p.name + ".hi[per_i], " + p.name + ".lo[per_i])";
-      } else if (is_width_placeholder(p.type)) {
-        call += p.name + "[per_i]";
       } else {
-        call += p.name;
+        call += component_argument(p, "[per_i]");
       }
     }
     out += "    " + ret_1 + " per_c = " + call + ");\n" + stores;
