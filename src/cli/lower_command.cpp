@@ -74,6 +74,7 @@ struct LowerArgs {
   std::string color = "auto";
   bool constant_range_errors = false;
   bool no_optimize = false;           // -O0
+  bool inline_exact_calls = false;
   std::string stop_after;             // --stop-after PASS
   std::string mode;                   // --mode (empty: df64)
   std::vector<std::string> mode_for;  // --mode-for NAME=MODE
@@ -138,6 +139,7 @@ Options common_options(const LowerArgs& a, std::string& error) {
   opt.lo_suffix = a.lo_suffix;
   opt.constant_range_errors = a.constant_range_errors;
   opt.optimize = !a.no_optimize;
+  opt.share_exact_calls = !a.inline_exact_calls;
   opt.stop_after = a.stop_after;
   opt.guard = parse_guard(a.guard).value_or(GuardKind::Auto);  // CLI11 checked the name
   if (std::string mode_error = apply_mode_args(a.mode, a.mode_for, opt); !mode_error.empty()) problem(mode_error);
@@ -351,6 +353,9 @@ Command add_lower_command(CLI::App& app) {
   cmd->add_flag("--no-optimize", args->no_optimize,
                 "(-O0) Skip the whole-shader optimizer: every double operation gets its general rule "
                 "(docs/performance.md, optimize_df)");
+  cmd->add_flag("--inline-exact-calls", args->inline_exact_calls,
+                "Mode exact: inline every operation where it is called instead of sharing one call site per "
+                "run of statements (runs faster, compiles slower; docs/performance.md, share_exact_calls)");
   {
     std::string passes;
     for (std::string_view p : pass_names()) passes += (passes.empty() ? "" : ", ") + std::string(p);

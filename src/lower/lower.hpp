@@ -143,6 +143,9 @@ bool can_move_before(const ir::StmtPtr& statement, const ir::ExprPtr& part, cons
 // wgsl_expression_effects.cpp (--target wgsl): an increment or assignment inside an expression
 // (`r[n++] = x`) becomes a comma over a temporary, then hoist-commas moves it before its statement.
 bool wgsl_expression_effects(ir::Module& module, Context& context);
+// Mode exact: the calls of one operation in a run of straight-line statements share one call site
+// (a loop over the run), so drivers inline each operation once (share_exact_calls.cpp).
+bool share_exact_calls(ir::Module& module, Context& context);
 // Diagnoses, by construct and target, what the lowered shader needs but the target lacks.
 bool check_target(const ir::Module& module, Context& context);
 

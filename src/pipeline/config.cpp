@@ -115,6 +115,7 @@ std::optional<Config> resolve_config(const Options& o, std::vector<Diagnostic>& 
   }
   // What the passes read of the user's options, copied as they are.
   c.guard_uniform = o.guard_uniform_name, c.optimize = o.optimize, c.file_name = o.file_name;
+  c.share_exact_calls = o.share_exact_calls;
   c.hi_suffix = o.hi_suffix, c.lo_suffix = o.lo_suffix, c.mode_for = o.mode_for;
   c.constant_range_errors = o.constant_range_errors, c.disabled_lints = o.disabled_lints, c.lint_errors = o.lint_errors;
   if (!o.stop_after.empty()) {

@@ -35,6 +35,7 @@ struct Config {
   std::vector<std::string> stage_extensions;  // #extension lines the stage needs (es310 geometry)
   std::string guard_uniform = "df_guard";
   bool optimize = true;
+  bool share_exact_calls = true;
   // What the passes read of the user's options.
   std::string file_name;
   std::string hi_suffix = "_hi", lo_suffix = "_lo";

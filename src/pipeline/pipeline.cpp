@@ -134,6 +134,8 @@ const std::vector<Pass>& pass_table() {
               passes::wgsl_out_argument_temporaries(s.module, s.ctx)),
       IR_PASS("hoist-commas", "interfaces", [](const Config& c) { return target::facts(c.output).wgsl; },
               passes::hoist_commas(s.module, s.ctx)),
+      IR_PASS("share-exact-calls", "interfaces", [](const Config& c) { return c.binary64_words() && c.share_exact_calls; },
+              passes::share_exact_calls(s.module, s.ctx)),
       IR_PASS("check-target", "interfaces", always, passes::check_target(s.module, s.ctx)),
       {"link-runtime", "print", always, link_runtime_pass, false},
       {"print", "print", always, print, false},

@@ -538,13 +538,41 @@ void bump(inout df_double x)
 
 void main()
 {
+  int ex_op;
+  df_dvec3 ex_k1_1_a0;
+  df_dvec3 ex_k1_1_a1;
+  df_dvec3 ex_k1_1_r;
+  df_dvec3 ex_c1_1;
+  df_dvec3 ex_c1_2;
   uint i = gl_GlobalInvocationID.x;
   inb.d[i] = ex_words_double(ex_add(ex_mul(ex_load_double(inb.d[i]), ex_load_double(k)), df_double(ex_load_dvec4(v4_xy, v4_zw).hi.y, ex_load_dvec4(v4_xy, v4_zw).lo.y)));
   df_double ex_member0 = ex_load_double(inb.d[i]);
   bump(ex_member0);
   inb.d[i] = ex_words_double(ex_member0);
   P q = ex_load_P_words(p[i]);
-  q.pos = ex_add(q.pos, ex_add(df_dvec3(q.q[1].hi.xyz, q.q[1].lo.xyz), ex_load_dvec3(v3s[i & 1u])));
+  for (int ex_pc1 = 0; ex_pc1 < 2; ++ex_pc1)
+  {
+    switch (ex_pc1)
+    {
+    case 0:
+      ex_k1_1_a0 = df_dvec3(q.q[1].hi.xyz, q.q[1].lo.xyz);
+      ex_k1_1_a1 = ex_load_dvec3(v3s[i & 1u]);
+      ex_op = 1;
+      break;
+    case 1:
+      ex_c1_1 = ex_k1_1_r;
+      ex_k1_1_a0 = q.pos;
+      ex_k1_1_a1 = ex_c1_1;
+      ex_op = 1;
+      break;
+    }
+    if (ex_op == 1)
+    {
+      ex_k1_1_r = ex_add(ex_k1_1_a0, ex_k1_1_a1);
+    }
+  }
+  ex_c1_2 = ex_k1_1_r;
+  q.pos = ex_c1_2;
   p[i] = ex_words_P_words(q);
   df_dvec4 ex_member1 = ex_load_dvec4(p[i].q[0]);
   df_assign_component_dvec4(ex_member1, 3, ex_add(ex_from_int(n), q.m));
@@ -554,6 +582,8 @@ void main()
     df_dvec4 ex_member2 = ex_load_dvec4(v4_xy, v4_zw);
     df_dvec4 ex_member3;
     df_assign_component_dvec4(ex_member2, 3, ex_mul(ex_load_double(k), ex_from_float(s)));
-    ex_member3 = ex_member2, v4_xy = ex_words_dvec4_xy(ex_member3), v4_zw = ex_words_dvec4_zw(ex_member3);
+    ex_member3 = ex_member2;
+    v4_xy = ex_words_dvec4_xy(ex_member3);
+    v4_zw = ex_words_dvec4_zw(ex_member3);
   }
 }

@@ -515,6 +515,12 @@ df_double t_value;
 
 void main()
 {
+  int ex_op;
+  df_dvec3 ex_k1_1_a0;
+  df_dvec3 ex_k1_1_a1;
+  df_dvec3 ex_k1_1_r;
+  df_dvec3 ex_c1_1;
+  df_dvec3 ex_c1_2;
   a_value = df_double(a.y, a.x);
   b_value = df_dvec2(b.yw, b.xz);
   c = df_dvec3(uvec3(c_xy.yw, c_z.y), uvec3(c_xy.xz, c_z.x));
@@ -522,7 +528,29 @@ void main()
   u_value[0] = df_double(u[0].y, u[0].x);
   u_value[1] = df_double(u[1].y, u[1].x);
   e = df_dvec3(uvec3(e_xy.yw, e_z.y), uvec3(e_xy.xz, e_z.x));
-  r = ex_add(ex_add(c, ex_mul(df_dvec3(d.hi.xyz, d.lo.xyz), e)), ex_load_dvec3(g_xy, g_z));
+  for (int ex_pc1 = 0; ex_pc1 < 2; ++ex_pc1)
+  {
+    switch (ex_pc1)
+    {
+    case 0:
+      ex_k1_1_a0 = c;
+      ex_k1_1_a1 = ex_mul(df_dvec3(d.hi.xyz, d.lo.xyz), e);
+      ex_op = 1;
+      break;
+    case 1:
+      ex_c1_1 = ex_k1_1_r;
+      ex_k1_1_a0 = ex_c1_1;
+      ex_k1_1_a1 = ex_load_dvec3(g_xy, g_z);
+      ex_op = 1;
+      break;
+    }
+    if (ex_op == 1)
+    {
+      ex_k1_1_r = ex_add(ex_k1_1_a0, ex_k1_1_a1);
+    }
+  }
+  ex_c1_2 = ex_k1_1_r;
+  r = ex_c1_2;
   t_value = ex_add(ex_sub(a_value, ex_mul(df_double(b_value.hi.y, b_value.lo.y), u_value[1])), ex_load_double(h[1]));
   gl_Position = vec4(ex_to_float(t_value), float(s), 0.0, 1.0);
   r_xy = uvec4(r.lo.x, r.hi.x, r.lo.y, r.hi.y);

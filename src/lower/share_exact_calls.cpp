@@ -1,0 +1,495 @@
+// share_exact_calls (mode exact): every call of one operation in a run of straight-line statements
+// goes through one call site, so the driver inlines the operation once instead of once per use
+// (docs/performance.md, "Mode exact: one call site per operation").
+//
+// Drivers inline every function. A mode-exact operation is a few hundred integer instructions, and
+// lavapipe's LLVM spends about 13 ms on each inlined copy, so a shader with forty double operations
+// compiled for half a second. Here a run of statements holding several calls of the same operation
+// (`ex_add` on two df_dvec3, `ex_mul` on two df_double, a user's function without side effects, ...)
+// becomes a loop that executes the run one call at a time:
+//
+//   d = ex_mul(a, b);             int ex_op;  (declared at the top of the function)
+//   e = ex_mul(d, ex_add(d, c));  for (int ex_pc_1 = 0; ex_pc_1 < 3; ++ex_pc_1) {
+//   f = ex_to_float(e);             switch (ex_pc_1) {
+//                                   case 0: ex_k1_a0 = a; ex_k1_a1 = b; ex_op = 1; break;
+//                                   case 1: ex_c1 = ex_k1_r; d = ex_c1; ex_k2_a0 = d; ex_k2_a1 = c; ex_op = 2; break;
+//                                   case 2: ex_c2 = ex_k2_r; ex_k1_a0 = d; ex_k1_a1 = ex_c2; ex_op = 1; break;
+//                                   }
+//                                   if (ex_op == 1) ex_k1_r = ex_mul(ex_k1_a0, ex_k1_a1);
+//                                   else if (ex_op == 2) ex_k2_r = ex_add(ex_k2_a0, ex_k2_a1);
+//                                 }
+//                                 ex_c3 = ex_k1_r; e = ex_c3; f = ex_to_float(e);
+//
+// Each case is the code up to the next call, which stores the call's operands; the call runs after
+// the switch; the next case starts by copying its result. The same operations run in the same order
+// on the same operands, so the bits are the same (tests/exact). Only calls evaluated whatever the
+// values are moved (not the second operand of &&, || or ?:), and only from statements whose
+// evaluation writes nothing but their own target; a statement that writes elsewhere (an atomic, a
+// store through a call), synchronises (barrier, EmitVertex) or jumps ends the run and stays as it is.
+// Declarations in the run are moved before the loop (their initialisers stay in place as
+// assignments), where no other variable of the function has their name.
+#include <algorithm>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ir/walk.hpp"
+#include "lower/lower.hpp"
+
+namespace doublet::passes {
+namespace {
+
+using ir::Expr;
+using ir::ExprPtr;
+using ir::Stmt;
+using ir::StmtPtr;
+using EKind = ir::Expr::Kind;
+using SKind = ir::Stmt::Kind;
+
+ExprPtr sym(const ir::VarPtr& v) {
+  auto e = Expr::make(EKind::Sym, v->type, v->loc);
+  e->var = v;
+  return e;
+}
+
+ExprPtr int_constant(int value) {
+  auto e = Expr::make(EKind::Const, ir::scalar_type(ir::Base::Int));
+  ir::Scalar s;
+  s.base = ir::Base::Int;
+  s.i = value;
+  e->values = {s};
+  return e;
+}
+
+ExprPtr binary(const std::string& op, ir::Type type, const ExprPtr& a, const ExprPtr& b) {
+  auto e = ir::make_node(EKind::Binary, "", std::move(type), {a, b}, b->loc);
+  e->op = op;
+  return e;
+}
+
+StmtPtr statement(const ExprPtr& e) {
+  auto s = Stmt::make(SKind::Expr, e->loc);
+  s->expr = e;
+  return s;
+}
+
+StmtPtr assign(const ir::VarPtr& target, const ExprPtr& value) {
+  return statement(binary("=", target->type, sym(target), value));
+}
+
+// The type a slot holding `e`'s value is declared with: after lowering, some nodes still carry the
+// double type they had (lower-doubles rewrites what it must print); a double scalar or vector is a
+// df_double / df_dvecN then. Void: none.
+ir::Type value_type(const ir::Type& t) {
+  if (t.base == ir::Base::Double && !t.is_matrix() && !t.is_array()) return df_type(t.vec);
+  return t;
+}
+
+// Built-ins whose result depends on which invocations run them together (derivatives, subgroup
+// operations, interpolation at a sample): the loop's control flow is uniform, but a statement that
+// uses one stays out of it all the same.
+bool needs_convergence(const std::string& name) {
+  for (const char* prefix : {"dFd", "fwidth", "subgroup", "interpolateAt"})
+    if (name.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
+bool holds_double(const ir::Type& t) { return t.base == ir::Base::Double || t.base == ir::Base::Void; }
+
+// Operands and results of a shared operation are live across the loop's iterations (the driver
+// cannot tell which case set them); a matrix's 32 words or an array make the loop spill more than
+// the shared copy saves (cad_viewer.vert compiled 1.4x slower with its dmat4 products shared).
+bool small_value(const ir::Type& t) { return !t.is_array() && !t.is_matrix() && t.name.find("mat") == std::string::npos; }
+
+// A type a local variable can hold and be assigned (no sampler or image: those are only uniforms or
+// parameters; no block).
+bool assignable(const ir::Type& t) {
+  if (t.base == ir::Base::Opaque || t.base == ir::Base::Block) return false;
+  if (t.base == ir::Base::Struct && t.fields)
+    for (const ir::Field& f : *t.fields)
+      if (!assignable(f.type)) return false;
+  return true;
+}
+
+// The operations worth one copy: the long integer code of mode exact's arithmetic (rules/exact.glsl),
+// named by their stem. Conversions, rounding, loads, stores, negation, comparisons and selections
+// are short: sharing a dvec3's conversion to float made lighting_blocks.vert compile slower (334 ->
+// 388 ms), its loop holding the rest of the shader.
+bool costly_runtime_operation(const std::string& name) {
+  static const std::set<std::string> stems = {
+      "add",  "sub",   "mul",  "div",  "fma",   "sqrt", "inversesqrt", "length", "distance", "dot",
+      "normalize", "cross", "reflect", "refract", "faceforward", "exp", "exp2", "log", "log2", "pow",
+      "sin",  "cos",   "tan",  "asin", "acos",  "atan", "sinh", "cosh", "tanh", "asinh", "acosh",
+      "atanh", "mod"};
+  if (name.rfind("ex_", 0) != 0) return false;
+  const size_t end = name.find('_', 3);
+  return stems.count(name.substr(3, end == std::string::npos ? std::string::npos : end - 3)) > 0;
+}
+
+class CallSharer {
+ public:
+  CallSharer(ir::Module& module, Context& context) : module_(module), ctx_(context) {}
+
+  void run() {
+    for (const auto& f : module_.functions) {
+      temporaries_.clear();
+      op_ = nullptr;
+      collect_names(*f);
+      block_lists(f->body);
+      auto& body = f->body->body;
+      body.insert(body.begin(), temporaries_.begin(), temporaries_.end());
+    }
+  }
+
+ private:
+  struct Operation {  // one shared call site: the callee, its operand and result variables
+    ExprPtr call;     // a call of it (name, kind, type)
+    std::vector<ir::VarPtr> operands;
+    ir::VarPtr result;
+    int number = 0;
+  };
+
+  // Every statement list of a body, innermost first.
+  void block_lists(const StmtPtr& s) {
+    if (!s) return;
+    for (const auto& b : s->body) block_lists(b);
+    if (s->kind == SKind::Block) share_in(s->body);
+  }
+
+  void collect_names(const ir::Function& f) {
+    names_.clear();
+    for (const auto& g : module_.globals) names_[g->name].insert(g.get());
+    for (const auto& p : f.params)
+      if (p) names_[p->name].insert(p.get());
+    std::vector<StmtPtr> stack = {f.body};
+    while (!stack.empty()) {
+      StmtPtr s = stack.back();
+      stack.pop_back();
+      if (!s) continue;
+      if (s->kind == SKind::Decl && s->var) names_[s->var->name].insert(s->var.get());
+      for (const auto& b : s->body) stack.push_back(b);
+    }
+  }
+
+  // The user's function `call` names, when it exists once under that name and signature.
+  const ir::Function* user_callee(const Expr& call) const {
+    const ir::Function* found = nullptr;
+    for (const auto& f : module_.functions) {
+      if (f->name != call.name || f->params.size() != call.args.size()) continue;
+      bool same = true;
+      for (size_t i = 0; i < f->params.size() && same; ++i)
+        same = ir::type_name(f->params[i]->type) == ir::type_name(value_type(call.args[i]->type)) &&
+               f->params[i]->type.array_dims == call.args[i]->type.array_dims;
+      if (!same) continue;
+      if (found) return nullptr;
+      found = f.get();
+    }
+    return found;
+  }
+
+  // A user's function that writes only its own locals and calls only such functions: calling it
+  // once per iteration of the loop, in the order of the original calls, computes the same.
+  bool pure_function(const ir::Function& f) {
+    if (auto known = pure_.find(&f); known != pure_.end()) return known->second;
+    pure_[&f] = false;  // (GLSL has no recursion; this only ends a malformed cycle)
+    bool pure = f.return_type.base != ir::Base::Void && f.name != "main";
+    for (const auto& p : f.params) pure = pure && p && !ir::is_out_parameter(p->storage);
+    std::vector<StmtPtr> stack = {f.body};
+    while (pure && !stack.empty()) {
+      StmtPtr s = stack.back();
+      stack.pop_back();
+      if (!s) continue;
+      if (s->kind == SKind::Discard) pure = false;
+      for (const ExprPtr& e : {s->expr, s->step}) pure = pure && (!e || !writes_beyond_locals(e));
+      for (const auto& b : s->body) stack.push_back(b);
+    }
+    pure_[&f] = pure;
+    return pure;
+  }
+
+  bool local_target(const ExprPtr& target) const {
+    const ir::Var* root = ir::root_variable(target);
+    return root && (root->storage == ir::Storage::Local || root->storage == ir::Storage::ParamIn);
+  }
+
+  // Inside a function body: a write to anything but the function's locals, or a call that may do one.
+  bool writes_beyond_locals(const ExprPtr& e) {
+    bool writes = false;
+    ir::visit(e, [&](const ExprPtr& x) {
+      if (writes) return;
+      if ((x->kind == EKind::Binary && ir::is_assignment_operator(x->op)) || ir::is_increment(*x))
+        writes = !local_target(x->args[0]);
+      else if (x->kind == EKind::Builtin)
+        writes = ir::builtin_has_side_effects(x->name) || needs_convergence(x->name);
+      else if (x->kind == EKind::Call)
+        writes = !calls_without_effects(*x);
+    });
+    return writes;
+  }
+
+  // A call that writes nothing the caller sees: a rule or helper of the runtime without out
+  // parameters, or a pure user function.
+  bool calls_without_effects(const Expr& call) {
+    if (is_runtime_call(call)) return !ctx_.runtime_call_writes_arguments(call);
+    const ir::Function* f = user_callee(call);
+    return f && pure_function(*f);
+  }
+
+  bool shareable(const Expr& e) {
+    auto slot_type = [](const ir::Type& t) { return !holds_double(value_type(t)) && small_value(t) && assignable(t); };
+    if (e.kind != EKind::Call || !slot_type(e.type)) return false;
+    for (const auto& a : e.args)
+      if (!slot_type(a->type)) return false;
+    if (is_runtime_call(e)) return costly_runtime_operation(e.name) && !ctx_.runtime_call_writes_arguments(e);
+    const ir::Function* f = user_callee(e);
+    return f && pure_function(*f);
+  }
+
+  // Evaluating `e` writes something or synchronises (calls without effects excepted).
+  bool has_effects(const ExprPtr& e) {
+    bool effects = false;
+    ir::visit(e, [&](const ExprPtr& x) {
+      if (effects) return;
+      if ((x->kind == EKind::Binary && ir::is_assignment_operator(x->op)) || ir::is_increment(*x))
+        effects = true;
+      else if (x->kind == EKind::Builtin)
+        effects = ir::builtin_has_side_effects(x->name) || needs_convergence(x->name);
+      else if (x->kind == EKind::Call)
+        effects = !calls_without_effects(*x);
+    });
+    return effects;
+  }
+
+  // The shareable calls `e` always evaluates, counted by signature (into `counts`).
+  void count_calls(const ExprPtr& e, std::map<std::string, int>& counts) {
+    const size_t n = ir::unconditional_operands(*e);
+    for (size_t i = 0; i < n && i < e->args.size(); ++i) count_calls(e->args[i], counts);
+    if (shareable(*e)) ++counts[signature(*e)];
+  }
+
+  static std::string signature(const Expr& call) {
+    std::string s = call.name + "(";
+    for (const auto& a : call.args) s += ir::type_name(value_type(a->type)) + ir::array_suffix(a->type) + ",";
+    return s + ")";
+  }
+
+  // The statement's part whose calls may move: its whole expression if it writes nothing but its
+  // own target; null when it has shareable calls and writes more (it ends a run).
+  enum class Role { Plain, Calls, Barrier };
+  Role role(const StmtPtr& s, std::map<std::string, int>& counts) {
+    if (s->kind == SKind::Decl) {
+      if (!s->var || s->var->storage != ir::Storage::Local) return Role::Barrier;
+      if (names_[s->var->name].size() != 1) return Role::Barrier;
+      if (!s->expr) return Role::Plain;
+      if (has_effects(s->expr)) return Role::Barrier;
+      const size_t before = total(counts);
+      count_calls(s->expr, counts);
+      return total(counts) > before ? Role::Calls : Role::Plain;
+    }
+    if (s->kind == SKind::Return) {  // ends the run (share_in): its value is the run's last code
+      if (!s->expr) return Role::Barrier;
+      if (has_effects(s->expr)) return Role::Barrier;
+      const size_t before = total(counts);
+      count_calls(s->expr, counts);
+      return total(counts) > before ? Role::Calls : Role::Plain;
+    }
+    if (s->kind != SKind::Expr || !s->expr) return Role::Barrier;
+    const ExprPtr& e = s->expr;
+    const bool assignment = e->kind == EKind::Binary && e->op == "=";
+    const ExprPtr& value = assignment ? e->args[1] : e;
+    if (assignment ? (has_effects(e->args[0]) || has_effects(value)) : has_effects(value)) return Role::Barrier;
+    const size_t before = total(counts);
+    count_calls(value, counts);
+    return total(counts) > before ? Role::Calls : Role::Plain;
+  }
+
+  static size_t total(const std::map<std::string, int>& counts) {
+    size_t n = 0;
+    for (const auto& [name, count] : counts) n += count;
+    return n;
+  }
+
+  // `a = x, b = f(a);` as a statement (mode exact's stores into blocks) is `a = x; b = f(a);`: split,
+  // so that a run may go on through it.
+  static void split_commas(std::vector<StmtPtr>& list) {
+    std::vector<StmtPtr> split;
+    for (const StmtPtr& s : list) {
+      const bool sequence = s->kind == SKind::Expr && s->expr && s->expr->kind == EKind::Comma &&
+                            std::all_of(s->expr->args.begin(), s->expr->args.end(), [](const ExprPtr& a) {
+                              return a->kind == EKind::Binary && a->op == "=";
+                            });
+      if (!sequence) {
+        split.push_back(s);
+        continue;
+      }
+      for (const ExprPtr& a : s->expr->args) {
+        split.push_back(statement(a));
+        split.back()->loc = s->loc;
+      }
+    }
+    list = std::move(split);
+  }
+
+  void share_in(std::vector<StmtPtr>& list) {
+    split_commas(list);
+    std::vector<StmtPtr> out;
+    size_t i = 0;
+    while (i < list.size()) {
+      // A run: statements that are Plain or Calls; it is rewritten from its first to its last Calls.
+      std::map<std::string, int> counts;
+      size_t first = list.size(), last = 0, j = i;
+      bool returned = false;
+      for (; j < list.size(); ++j) {
+        const Role r = role(list[j], counts);
+        if (r == Role::Barrier) break;
+        if (r == Role::Calls) {
+          first = std::min(first, j);
+          last = j;
+        }
+        if (list[j]->kind == SKind::Return) {  // nothing after it runs
+          returned = true;
+          ++j;
+          break;
+        }
+      }
+      const bool worth = std::any_of(counts.begin(), counts.end(), [](const auto& c) { return c.second > 1; });
+      if (first < list.size() && worth) {
+        out.insert(out.end(), list.begin() + i, list.begin() + first);
+        run_counts_ = counts;
+        rewrite_run(std::vector<StmtPtr>(list.begin() + first, list.begin() + last + 1), out);
+        out.insert(out.end(), list.begin() + last + 1, list.begin() + j);
+      } else {
+        out.insert(out.end(), list.begin() + i, list.begin() + j);
+      }
+      if (j < list.size() && !returned) {  // the statement that ended the run
+        out.push_back(list[j]);
+        ++j;
+      }
+      i = j;
+    }
+    list = std::move(out);
+  }
+
+  ir::VarPtr temporary(const std::string& name, const ir::Type& type) {
+    return declare_temporary(name, type, {}, temporaries_);
+  }
+
+  Operation& operation_for(const Expr& call) {
+    const std::string key = signature(call);
+    auto found = operations_.find(key);
+    if (found != operations_.end()) return found->second;
+    Operation op;
+    op.number = static_cast<int>(operations_.size()) + 1;
+    op.call = ir::make_node(call.kind, call.name, value_type(call.type), {}, call.loc);
+    const std::string stem = "ex_k" + std::to_string(run_number_) + "_" + std::to_string(op.number);
+    for (size_t a = 0; a < call.args.size(); ++a)
+      op.operands.push_back(temporary(stem + "_a" + std::to_string(a), value_type(call.args[a]->type)));
+    op.result = temporary(stem + "_r", op.call->type);
+    return operations_.emplace(key, std::move(op)).first->second;
+  }
+
+  // Moves the shareable calls out of `e` (post-order, as evaluated): each ends the current case with
+  // its operands stored; the next case starts with its result in a temporary, which replaces it.
+  ExprPtr lift(const ExprPtr& e) {
+    const size_t n = ir::unconditional_operands(*e);
+    for (size_t i = 0; i < n && i < e->args.size(); ++i) e->args[i] = lift(e->args[i]);
+    if (!shareable(*e) || run_counts_[signature(*e)] < 2) return e;  // one call: one copy either way
+    Operation& op = operation_for(*e);
+    for (size_t a = 0; a < e->args.size(); ++a) cases_.back().push_back(assign(op.operands[a], e->args[a]));
+    cases_.back().push_back(assign(op_, int_constant(op.number)));
+    auto result = temporary("ex_c" + std::to_string(run_number_) + "_" + std::to_string(cases_.size()), op.call->type);
+    cases_.push_back({assign(result, sym(op.result))});
+    return sym(result);
+  }
+
+  void rewrite_run(const std::vector<StmtPtr>& run, std::vector<StmtPtr>& out) {
+    ++run_number_;
+    operations_.clear();
+    cases_.assign(1, {});
+    if (!op_) op_ = temporary("ex_op", ir::scalar_type(ir::Base::Int));
+    for (const StmtPtr& s : run) {
+      if (s->kind == SKind::Decl) {
+        auto decl = Stmt::make(SKind::Decl, s->loc);
+        decl->var = s->var;
+        out.push_back(decl);
+        if (s->expr) {
+          ExprPtr value = lift(s->expr);  // (adds cases: cases_.back() only after it)
+          cases_.back().push_back(assign(s->var, value));
+        }
+      } else if (s->kind == SKind::Return) {
+        s->expr = lift(s->expr);
+        cases_.back().push_back(s);
+      } else if (s->expr->kind == EKind::Binary && s->expr->op == "=") {
+        s->expr->args[1] = lift(s->expr->args[1]);
+        cases_.back().push_back(s);
+      } else {
+        s->expr = lift(s->expr);
+        cases_.back().push_back(s);
+      }
+    }
+    // The loop: one case per call, the call after the switch; the code after the last call follows it.
+    auto pc = std::make_shared<ir::Var>();
+    pc->name = "ex_pc" + std::to_string(run_number_);
+    pc->type = pc->declared_type = ir::scalar_type(ir::Base::Int);
+    auto init = Stmt::make(SKind::Decl);
+    init->var = pc;
+    init->expr = int_constant(0);
+    auto labelled = Stmt::make(SKind::Block);
+    for (size_t c = 0; c + 1 < cases_.size(); ++c) {
+      auto label = Stmt::make(SKind::Case);
+      label->expr = int_constant(static_cast<int>(c));
+      labelled->body.push_back(label);
+      labelled->body.insert(labelled->body.end(), cases_[c].begin(), cases_[c].end());
+      labelled->body.push_back(Stmt::make(SKind::Break));
+    }
+    auto choose = Stmt::make(SKind::Switch);
+    choose->expr = sym(pc);
+    choose->body = {labelled};
+    StmtPtr dispatch;  // if (ex_op == 1) r1 = f1(...); else if (ex_op == 2) ...
+    std::vector<const Operation*> ordered;
+    for (const auto& [key, op] : operations_) ordered.push_back(&op);
+    std::sort(ordered.begin(), ordered.end(), [](const Operation* a, const Operation* b) { return a->number > b->number; });
+    for (const Operation* op : ordered) {
+      auto call = ir::make_node(op->call->kind, op->call->name, op->call->type, {}, op->call->loc);
+      for (const auto& v : op->operands) call->args.push_back(sym(v));
+      auto branch = Stmt::make(SKind::If);
+      branch->expr = binary("==", ir::scalar_type(ir::Base::Bool), sym(op_), int_constant(op->number));
+      auto then = Stmt::make(SKind::Block);
+      then->body = {assign(op->result, call)};
+      branch->body = {then};
+      if (dispatch) branch->body.push_back(dispatch);
+      dispatch = branch;
+    }
+    auto body = Stmt::make(SKind::Block);
+    body->body = {choose, dispatch};
+    auto loop = Stmt::make(SKind::Loop);
+    loop->expr = binary("<", ir::scalar_type(ir::Base::Bool), sym(pc), int_constant(static_cast<int>(cases_.size() - 1)));
+    auto step = ir::make_node(EKind::Unary, "", pc->type, {sym(pc)}, {});
+    step->op = "++x";
+    loop->step = step;
+    loop->body = {init, body};
+    out.push_back(loop);
+    out.insert(out.end(), cases_.back().begin(), cases_.back().end());
+  }
+
+  ir::Module& module_;
+  Context& ctx_;
+  std::vector<StmtPtr> temporaries_;
+  std::map<std::string, std::set<const ir::Var*>> names_;
+  std::map<const ir::Function*, bool> pure_;
+  std::map<std::string, Operation> operations_;
+  std::map<std::string, int> run_counts_;  // the run's shareable calls by signature
+  std::vector<std::vector<StmtPtr>> cases_;
+  ir::VarPtr op_;
+  int run_number_ = 0;
+};
+
+}  // namespace
+
+bool share_exact_calls(ir::Module& module, Context& context) {
+  CallSharer(module, context).run();
+  return !context.failed;
+}
+
+}  // namespace doublet::passes
