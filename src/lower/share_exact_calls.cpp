@@ -147,6 +147,7 @@ class CallSharer {
     ExprPtr call;     // a call of it (name, kind, type)
     std::vector<ir::VarPtr> operands;
     ir::VarPtr result;
+    ir::VarPtr width;  // generic (ex_each_OP): the width of the current call's operands
     int number = 0;
   };
 
@@ -261,11 +262,54 @@ class CallSharer {
     return effects;
   }
 
-  // The shareable calls `e` always evaluates, counted by signature (into `counts`).
-  void count_calls(const ExprPtr& e, std::map<std::string, int>& counts) {
+  // The shareable calls a run always evaluates: by signature, and the widths of each element-wise
+  // operation (its generic key).
+  struct Tally {
+    size_t calls = 0;
+    std::map<std::string, int> signatures, generics;
+    std::map<std::string, std::set<int>> widths;
+  };
+
+  void count_calls(const ExprPtr& e, Tally& tally) {
     const size_t n = ir::unconditional_operands(*e);
-    for (size_t i = 0; i < n && i < e->args.size(); ++i) count_calls(e->args[i], counts);
-    if (shareable(*e)) ++counts[signature(*e)];
+    for (size_t i = 0; i < n && i < e->args.size(); ++i) count_calls(e->args[i], tally);
+    if (!shareable(*e)) return;
+    ++tally.calls;
+    ++tally.signatures[signature(*e)];
+    if (const std::string g = generic_key(*e); !g.empty()) {
+      ++tally.generics[g];
+      tally.widths[g].insert(df_width(value_type(e->type)));
+    }
+  }
+
+  // "ex_mul(*)" for ex_add, ex_sub, ex_mul and ex_div on df_double or df_dvecN operands of the
+  // result's width (element-wise), else empty. Within a run where such an operation comes in two
+  // widths or more, its calls share one site over df_dvec4 slots (the helper ex_each_OP loops over
+  // the components): one copy of the scalar operation for every width.
+  static std::string generic_key(const Expr& call) {
+    static const std::set<std::string> elementwise = {"ex_add", "ex_sub", "ex_mul", "ex_div"};
+    if (call.kind != EKind::Call || !elementwise.count(call.name)) return "";
+    const ir::Type result = value_type(call.type);
+    if (!is_df(result)) return "";
+    for (const auto& a : call.args)
+      if (ir::type_name(value_type(a->type)) != ir::type_name(result)) return "";
+    return call.name + "(*)";
+  }
+
+  // The key a call shares its site under in the current run.
+  std::string key_of(const Expr& call) const {
+    const std::string g = generic_key(call);
+    if (!g.empty()) {
+      auto w = run_tally_.widths.find(g);
+      if (w != run_tally_.widths.end() && w->second.size() > 1) return g;
+    }
+    return signature(call);
+  }
+
+  int count_of(const std::string& key) const {
+    const auto& m = key.find("(*)") != std::string::npos ? run_tally_.generics : run_tally_.signatures;
+    auto found = m.find(key);
+    return found == m.end() ? 0 : found->second;
   }
 
   static std::string signature(const Expr& call) {
@@ -277,37 +321,31 @@ class CallSharer {
   // The statement's part whose calls may move: its whole expression if it writes nothing but its
   // own target; null when it has shareable calls and writes more (it ends a run).
   enum class Role { Plain, Calls, Barrier };
-  Role role(const StmtPtr& s, std::map<std::string, int>& counts) {
+  Role role(const StmtPtr& s, Tally& counts) {
     if (s->kind == SKind::Decl) {
       if (!s->var || s->var->storage != ir::Storage::Local) return Role::Barrier;
       if (names_[s->var->name].size() != 1) return Role::Barrier;
       if (!s->expr) return Role::Plain;
       if (has_effects(s->expr)) return Role::Barrier;
-      const size_t before = total(counts);
+      const size_t before = counts.calls;
       count_calls(s->expr, counts);
-      return total(counts) > before ? Role::Calls : Role::Plain;
+      return counts.calls > before ? Role::Calls : Role::Plain;
     }
     if (s->kind == SKind::Return) {  // ends the run (share_in): its value is the run's last code
       if (!s->expr) return Role::Barrier;
       if (has_effects(s->expr)) return Role::Barrier;
-      const size_t before = total(counts);
+      const size_t before = counts.calls;
       count_calls(s->expr, counts);
-      return total(counts) > before ? Role::Calls : Role::Plain;
+      return counts.calls > before ? Role::Calls : Role::Plain;
     }
     if (s->kind != SKind::Expr || !s->expr) return Role::Barrier;
     const ExprPtr& e = s->expr;
     const bool assignment = e->kind == EKind::Binary && e->op == "=";
     const ExprPtr& value = assignment ? e->args[1] : e;
     if (assignment ? (has_effects(e->args[0]) || has_effects(value)) : has_effects(value)) return Role::Barrier;
-    const size_t before = total(counts);
+    const size_t before = counts.calls;
     count_calls(value, counts);
-    return total(counts) > before ? Role::Calls : Role::Plain;
-  }
-
-  static size_t total(const std::map<std::string, int>& counts) {
-    size_t n = 0;
-    for (const auto& [name, count] : counts) n += count;
-    return n;
+    return counts.calls > before ? Role::Calls : Role::Plain;
   }
 
   // `a = x, b = f(a);` as a statement (mode exact's stores into blocks) is `a = x; b = f(a);`: split,
@@ -337,7 +375,7 @@ class CallSharer {
     size_t i = 0;
     while (i < list.size()) {
       // A run: statements that are Plain or Calls; it is rewritten from its first to its last Calls.
-      std::map<std::string, int> counts;
+      Tally counts;
       size_t first = list.size(), last = 0, j = i;
       bool returned = false;
       for (; j < list.size(); ++j) {
@@ -353,10 +391,14 @@ class CallSharer {
           break;
         }
       }
-      const bool worth = std::any_of(counts.begin(), counts.end(), [](const auto& c) { return c.second > 1; });
+      const auto repeated = [](const auto& m) {
+        return std::any_of(m.begin(), m.end(), [](const auto& c) { return c.second > 1; });
+      };
+      const bool worth = repeated(counts.signatures) ||
+                         std::any_of(counts.widths.begin(), counts.widths.end(), [](const auto& w) { return w.second.size() > 1; });
       if (first < list.size() && worth) {
         out.insert(out.end(), list.begin() + i, list.begin() + first);
-        run_counts_ = counts;
+        run_tally_ = counts;
         rewrite_run(std::vector<StmtPtr>(list.begin() + first, list.begin() + last + 1), out);
         out.insert(out.end(), list.begin() + last + 1, list.begin() + j);
       } else {
@@ -376,17 +418,58 @@ class CallSharer {
   }
 
   Operation& operation_for(const Expr& call) {
-    const std::string key = signature(call);
+    const std::string key = key_of(call);
     auto found = operations_.find(key);
     if (found != operations_.end()) return found->second;
     Operation op;
     op.number = static_cast<int>(operations_.size()) + 1;
-    op.call = ir::make_node(call.kind, call.name, value_type(call.type), {}, call.loc);
     const std::string stem = "ex_k" + std::to_string(run_number_) + "_" + std::to_string(op.number);
+    const bool generic = key != signature(call);
+    op.call = generic ? ir::make_node(call.kind, each_helper(call), df_type(4), {}, call.loc)
+                      : ir::make_node(call.kind, call.name, value_type(call.type), {}, call.loc);
     for (size_t a = 0; a < call.args.size(); ++a)
-      op.operands.push_back(temporary(stem + "_a" + std::to_string(a), value_type(call.args[a]->type)));
+      op.operands.push_back(temporary(stem + "_a" + std::to_string(a), generic ? df_type(4) : value_type(call.args[a]->type)));
     op.result = temporary(stem + "_r", op.call->type);
+    if (generic) op.width = temporary(stem + "_w", ir::scalar_type(ir::Base::Int));
     return operations_.emplace(key, std::move(op)).first->second;
+  }
+
+  // ex_each_OP(a, b, w): the width-1 OP on components w-1 .. 0 of two df_dvec4 (the index counts
+  // down, as mode exact's per-component loops do: docs/performance.md).
+  std::string each_helper(const Expr& call) {
+    const std::string op = call.name.substr(3), name = "ex_each_" + op;
+    ctx_.use_rule(call.name, 1);
+    ctx_.use_width(1);
+    ctx_.use_width(4);
+    ctx_.add_helper(name, "df_dvec4 " + name + "(df_dvec4 a, df_dvec4 b, int w) {\n"
+                          "  df_dvec4 r = a;\n"
+                          "  for (int k = 0; k < w; ++k) {\n"
+                          "    int i = w - 1 - k;\n"
+                          "    df_double c = " + call.name + "(df_double(a.hi[i], a.lo[i]), df_double(b.hi[i], b.lo[i]));\n"
+                          "    r.hi[i] = c.hi;\n"
+                          "    r.lo[i] = c.lo;\n"
+                          "  }\n"
+                          "  return r;\n"
+                          "}\n");
+    return name;
+  }
+
+  // A df_double / df_dvecN value as a df_dvec4 (zeros above), and back.
+  ExprPtr widened(const ExprPtr& value, int width) {
+    if (width == 4) return value;
+    const std::string from = df_type_name(width), name = "ex_widen_" + from.substr(3);
+    const std::string zeros = width == 1 ? ", 0u, 0u, 0u" : width == 2 ? ", 0u, 0u" : ", 0u";
+    ctx_.add_helper(name, "df_dvec4 " + name + "(" + from + " x) {\n  return df_dvec4(uvec4(x.hi" + zeros +
+                              "), uvec4(x.lo" + zeros + "));\n}\n");
+    return ir::make_node(EKind::Call, name, df_type(4), {value}, value->loc);
+  }
+
+  ExprPtr narrowed(const ExprPtr& value, int width) {
+    if (width == 4) return value;
+    const std::string to = df_type_name(width), name = "ex_narrow_" + to.substr(3);
+    const std::string part = width == 1 ? ".x" : width == 2 ? ".xy" : ".xyz";
+    ctx_.add_helper(name, to + " " + name + "(df_dvec4 x) {\n  return " + to + "(x.hi" + part + ", x.lo" + part + ");\n}\n");
+    return ir::make_node(EKind::Call, name, df_type(width), {value}, value->loc);
   }
 
   // Moves the shareable calls out of `e` (post-order, as evaluated): each ends the current case with
@@ -394,12 +477,16 @@ class CallSharer {
   ExprPtr lift(const ExprPtr& e) {
     const size_t n = ir::unconditional_operands(*e);
     for (size_t i = 0; i < n && i < e->args.size(); ++i) e->args[i] = lift(e->args[i]);
-    if (!shareable(*e) || run_counts_[signature(*e)] < 2) return e;  // one call: one copy either way
+    if (!shareable(*e) || count_of(key_of(*e)) < 2) return e;  // one call: one copy either way
     Operation& op = operation_for(*e);
-    for (size_t a = 0; a < e->args.size(); ++a) cases_.back().push_back(assign(op.operands[a], e->args[a]));
+    const int width = op.width ? df_width(value_type(e->type)) : 0;
+    for (size_t a = 0; a < e->args.size(); ++a)
+      cases_.back().push_back(assign(op.operands[a], op.width ? widened(e->args[a], width) : e->args[a]));
+    if (op.width) cases_.back().push_back(assign(op.width, int_constant(width)));
     cases_.back().push_back(assign(op_, int_constant(op.number)));
-    auto result = temporary("ex_c" + std::to_string(run_number_) + "_" + std::to_string(cases_.size()), op.call->type);
-    cases_.push_back({assign(result, sym(op.result))});
+    const ir::Type type = op.width ? df_type(width) : op.call->type;
+    auto result = temporary("ex_c" + std::to_string(run_number_) + "_" + std::to_string(cases_.size()), type);
+    cases_.push_back({assign(result, op.width ? narrowed(sym(op.result), width) : sym(op.result))});
     return sym(result);
   }
 
@@ -453,6 +540,7 @@ class CallSharer {
     for (const Operation* op : ordered) {
       auto call = ir::make_node(op->call->kind, op->call->name, op->call->type, {}, op->call->loc);
       for (const auto& v : op->operands) call->args.push_back(sym(v));
+      if (op->width) call->args.push_back(sym(op->width));
       auto branch = Stmt::make(SKind::If);
       branch->expr = binary("==", ir::scalar_type(ir::Base::Bool), sym(op_), int_constant(op->number));
       auto then = Stmt::make(SKind::Block);
@@ -479,7 +567,7 @@ class CallSharer {
   std::map<std::string, std::set<const ir::Var*>> names_;
   std::map<const ir::Function*, bool> pure_;
   std::map<std::string, Operation> operations_;
-  std::map<std::string, int> run_counts_;  // the run's shareable calls by signature
+  Tally run_tally_;  // the current run's shareable calls
   std::vector<std::vector<StmtPtr>> cases_;
   ir::VarPtr op_;
   int run_number_ = 0;

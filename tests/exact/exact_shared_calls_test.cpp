@@ -1,6 +1,7 @@
 // Mode exact's shared call sites (src/lower/share_exact_calls.cpp): a shader whose runs of
 // statements call the same operations many times (a pure user function twice per step, dvec3 and
-// double products and sums, a loop body) becomes loops that execute one call per iteration. Lowered
+// double products and sums, which share one site through ex_each_mul, a loop body) becomes loops
+// that execute one call per iteration. Lowered
 // to ES 3.10 and run on lavapipe and Mesa GLES, it must store the same 64 bits per result as the
 // original shader on native fp64 (lavapipe; `precise` keeps native's products uncontracted), and a
 // loop cut one iteration short must be seen.
@@ -112,6 +113,7 @@ TEST(ExactSharedCalls, SharedCallSitesBitIdenticalToNativeFp64) {
   EXPECT_GE(loops, 3) << text;
   EXPECT_NE(text.find("= pull(ex_k"), std::string::npos) << text;
   EXPECT_NE(text.find("= cube(ex_k"), std::string::npos) << text;
+  EXPECT_NE(text.find("= ex_each_mul(ex_k"), std::string::npos) << text;  // double and dvec3 products: one site
   const std::vector<uint64_t> in = make_inputs();
   const std::vector<uint64_t> native = run(Backend::Vulkan, kSource, in);
   ASSERT_EQ(native.size(), size_t(kInvocations) * kResults);

@@ -442,6 +442,44 @@ float ex_to_float(df_double a) {
   return uintBitsToFloat(ex_to_float_bits(ex_bits(a)));
 }
 
+df_dvec4 ex_each_mul(df_dvec4 a, df_dvec4 b, int w) {
+  df_dvec4 r = a;
+  for (int k = 0; k < w; ++k) {
+    int i = w - 1 - k;
+    df_double c = ex_mul(df_double(a.hi[i], a.lo[i]), df_double(b.hi[i], b.lo[i]));
+    r.hi[i] = c.hi;
+    r.lo[i] = c.lo;
+  }
+  return r;
+}
+
+df_dvec4 ex_widen_dvec3(df_dvec3 x) {
+  return df_dvec4(uvec4(x.hi, 0u), uvec4(x.lo, 0u));
+}
+
+df_dvec3 ex_narrow_dvec3(df_dvec4 x) {
+  return df_dvec3(x.hi.xyz, x.lo.xyz);
+}
+
+df_dvec4 ex_each_add(df_dvec4 a, df_dvec4 b, int w) {
+  df_dvec4 r = a;
+  for (int k = 0; k < w; ++k) {
+    int i = w - 1 - k;
+    df_double c = ex_add(df_double(a.hi[i], a.lo[i]), df_double(b.hi[i], b.lo[i]));
+    r.hi[i] = c.hi;
+    r.lo[i] = c.lo;
+  }
+  return r;
+}
+
+df_dvec4 ex_widen_double(df_double x) {
+  return df_dvec4(uvec4(x.hi, 0u, 0u, 0u), uvec4(x.lo, 0u, 0u, 0u));
+}
+
+df_double ex_narrow_double(df_dvec4 x) {
+  return df_double(x.hi.x, x.lo.x);
+}
+
 struct ex_dvec3_words {
   uvec4 xy;
   uvec2 z;
@@ -494,11 +532,19 @@ df_double t_value;
 void main()
 {
   int ex_op;
-  df_dvec3 ex_k1_1_a0;
-  df_dvec3 ex_k1_1_a1;
-  df_dvec3 ex_k1_1_r;
+  df_dvec4 ex_k1_1_a0;
+  df_dvec4 ex_k1_1_a1;
+  df_dvec4 ex_k1_1_r;
+  int ex_k1_1_w;
   df_dvec3 ex_c1_1;
+  df_dvec4 ex_k1_2_a0;
+  df_dvec4 ex_k1_2_a1;
+  df_dvec4 ex_k1_2_r;
+  int ex_k1_2_w;
   df_dvec3 ex_c1_2;
+  df_dvec3 ex_c1_3;
+  df_double ex_c1_4;
+  df_double ex_c1_5;
   a_value = df_double(a.y, a.x);
   b_value = df_dvec2(b.yw, b.xz);
   c = df_dvec3(uvec3(c_xy.yw, c_z.y), uvec3(c_xy.xz, c_z.x));
@@ -506,30 +552,58 @@ void main()
   u_value[0] = df_double(u[0].y, u[0].x);
   u_value[1] = df_double(u[1].y, u[1].x);
   e = df_dvec3(uvec3(e_xy.yw, e_z.y), uvec3(e_xy.xz, e_z.x));
-  for (int ex_pc1 = 0; ex_pc1 < 2; ++ex_pc1)
+  for (int ex_pc1 = 0; ex_pc1 < 5; ++ex_pc1)
   {
     switch (ex_pc1)
     {
     case 0:
-      ex_k1_1_a0 = c;
-      ex_k1_1_a1 = ex_mul(df_dvec3(d.hi.xyz, d.lo.xyz), e);
+      ex_k1_1_a0 = ex_widen_dvec3(df_dvec3(d.hi.xyz, d.lo.xyz));
+      ex_k1_1_a1 = ex_widen_dvec3(e);
+      ex_k1_1_w = 3;
       ex_op = 1;
       break;
     case 1:
-      ex_c1_1 = ex_k1_1_r;
-      ex_k1_1_a0 = ex_c1_1;
-      ex_k1_1_a1 = ex_load_dvec3(g_xy, g_z);
+      ex_c1_1 = ex_narrow_dvec3(ex_k1_1_r);
+      ex_k1_2_a0 = ex_widen_dvec3(c);
+      ex_k1_2_a1 = ex_widen_dvec3(ex_c1_1);
+      ex_k1_2_w = 3;
+      ex_op = 2;
+      break;
+    case 2:
+      ex_c1_2 = ex_narrow_dvec3(ex_k1_2_r);
+      ex_k1_2_a0 = ex_widen_dvec3(ex_c1_2);
+      ex_k1_2_a1 = ex_widen_dvec3(ex_load_dvec3(g_xy, g_z));
+      ex_k1_2_w = 3;
+      ex_op = 2;
+      break;
+    case 3:
+      ex_c1_3 = ex_narrow_dvec3(ex_k1_2_r);
+      r = ex_c1_3;
+      ex_k1_1_a0 = ex_widen_double(df_double(b_value.hi.y, b_value.lo.y));
+      ex_k1_1_a1 = ex_widen_double(u_value[1]);
+      ex_k1_1_w = 1;
       ex_op = 1;
+      break;
+    case 4:
+      ex_c1_4 = ex_narrow_double(ex_k1_1_r);
+      ex_k1_2_a0 = ex_widen_double(ex_sub(a_value, ex_c1_4));
+      ex_k1_2_a1 = ex_widen_double(ex_load_double(h[1]));
+      ex_k1_2_w = 1;
+      ex_op = 2;
       break;
     }
     if (ex_op == 1)
     {
-      ex_k1_1_r = ex_add(ex_k1_1_a0, ex_k1_1_a1);
+      ex_k1_1_r = ex_each_mul(ex_k1_1_a0, ex_k1_1_a1, ex_k1_1_w);
+    }
+    else
+    if (ex_op == 2)
+    {
+      ex_k1_2_r = ex_each_add(ex_k1_2_a0, ex_k1_2_a1, ex_k1_2_w);
     }
   }
-  ex_c1_2 = ex_k1_1_r;
-  r = ex_c1_2;
-  t_value = ex_add(ex_sub(a_value, ex_mul(df_double(b_value.hi.y, b_value.lo.y), u_value[1])), ex_load_double(h[1]));
+  ex_c1_5 = ex_narrow_double(ex_k1_2_r);
+  t_value = ex_c1_5;
   gl_Position = vec4(ex_to_float(t_value), float(s), 0.0, 1.0);
   r_xy = uvec4(r.lo.x, r.hi.x, r.lo.y, r.hi.y);
   r_z = uvec2(r.lo.z, r.hi.z);

@@ -492,6 +492,25 @@ df_double df_assign_element_dmat3x2(inout df_dmat3x2 m, int j, int i, df_double 
   return x;
 }
 
+df_dvec4 ex_each_add(df_dvec4 a, df_dvec4 b, int w) {
+  df_dvec4 r = a;
+  for (int k = 0; k < w; ++k) {
+    int i = w - 1 - k;
+    df_double c = ex_add(df_double(a.hi[i], a.lo[i]), df_double(b.hi[i], b.lo[i]));
+    r.hi[i] = c.hi;
+    r.lo[i] = c.lo;
+  }
+  return r;
+}
+
+df_dvec4 ex_widen_double(df_double x) {
+  return df_dvec4(uvec4(x.hi, 0u, 0u, 0u), uvec4(x.lo, 0u, 0u, 0u));
+}
+
+df_double ex_narrow_double(df_dvec4 x) {
+  return df_double(x.hi.x, x.lo.x);
+}
+
 struct ex_dvec3_words {
   uvec4 xy;
   uvec2 z;
@@ -599,6 +618,13 @@ layout(std430, binding = 1) buffer Io {
 
 void main()
 {
+  int ex_op;
+  df_dvec4 ex_k1_1_a0;
+  df_dvec4 ex_k1_1_a1;
+  df_dvec4 ex_k1_1_r;
+  int ex_k1_1_w;
+  df_dvec4 ex_c1_1;
+  df_double ex_c1_2;
   u_model_value = df_dmat4(uvec4[4](uvec4(u_model[0].y, u_model[0].w, u_model[1].y, u_model[1].w), uvec4(u_model[2].y, u_model[2].w, u_model[3].y, u_model[3].w), uvec4(u_model[4].y, u_model[4].w, u_model[5].y, u_model[5].w), uvec4(u_model[6].y, u_model[6].w, u_model[7].y, u_model[7].w)), uvec4[4](uvec4(u_model[0].x, u_model[0].z, u_model[1].x, u_model[1].z), uvec4(u_model[2].x, u_model[2].z, u_model[3].x, u_model[3].z), uvec4(u_model[4].x, u_model[4].z, u_model[5].x, u_model[5].z), uvec4(u_model[6].x, u_model[6].z, u_model[7].x, u_model[7].z)));
   r_value[0] = df_dmat3(uvec3[3](uvec3(r[0].y, r[0].w, r[1].y), uvec3(r[1].w, r[2].y, r[2].w), uvec3(r[3].y, r[3].w, r[4].y)), uvec3[3](uvec3(r[0].x, r[0].z, r[1].x), uvec3(r[1].z, r[2].x, r[2].z), uvec3(r[3].x, r[3].z, r[4].x)));
   r_value[1] = df_dmat3(uvec3[3](uvec3(r[4].w, r[5].y, r[5].w), uvec3(r[6].y, r[6].w, r[7].y), uvec3(r[7].w, r[8].y, r[8].w)), uvec3[3](uvec3(r[4].z, r[5].x, r[5].z), uvec3(r[6].x, r[6].z, r[7].x), uvec3(r[7].z, r[8].x, r[8].z)));
@@ -608,9 +634,33 @@ void main()
   if (i == 0u)
   {
     io.m = ex_words_dmat4(u_model_value);
-    io.m.c[2] = ex_words_dvec4(ex_add(ex_load_dvec4(io.m.c[1]), df_make_dvec4_3_1(ex_load_dvec3(a.c[0]), df_swizzle_dvec3_z(ex_load_dvec3(b.c[1])))));
-    io.m.c[3].xy.zw = ex_words_double(ex_mul(df_swizzle_dvec4_w(ex_load_dvec4(io.m.c[0])), ex_load_double(k)));
-    io.n[1] = ex_words_dmat3x2(ex_mul_dmat2_dmat3x2(ex_load_dmat2(c), ex_load_dmat3x2(io.n[0])));
-    io.n[0].c[2].zw = ex_words_double(ex_add(df_swizzle_dvec2_y(ex_load_dvec2(io.n[0].c[2])), df_swizzle_dvec3_z(ex_load_dvec3(a.c[2]))));
+    for (int ex_pc1 = 0; ex_pc1 < 2; ++ex_pc1)
+    {
+      switch (ex_pc1)
+      {
+      case 0:
+        ex_k1_1_a0 = ex_load_dvec4(io.m.c[1]);
+        ex_k1_1_a1 = df_make_dvec4_3_1(ex_load_dvec3(a.c[0]), df_swizzle_dvec3_z(ex_load_dvec3(b.c[1])));
+        ex_k1_1_w = 4;
+        ex_op = 1;
+        break;
+      case 1:
+        ex_c1_1 = ex_k1_1_r;
+        io.m.c[2] = ex_words_dvec4(ex_c1_1);
+        io.m.c[3].xy.zw = ex_words_double(ex_mul(df_swizzle_dvec4_w(ex_load_dvec4(io.m.c[0])), ex_load_double(k)));
+        io.n[1] = ex_words_dmat3x2(ex_mul_dmat2_dmat3x2(ex_load_dmat2(c), ex_load_dmat3x2(io.n[0])));
+        ex_k1_1_a0 = ex_widen_double(df_swizzle_dvec2_y(ex_load_dvec2(io.n[0].c[2])));
+        ex_k1_1_a1 = ex_widen_double(df_swizzle_dvec3_z(ex_load_dvec3(a.c[2])));
+        ex_k1_1_w = 1;
+        ex_op = 1;
+        break;
+      }
+      if (ex_op == 1)
+      {
+        ex_k1_1_r = ex_each_add(ex_k1_1_a0, ex_k1_1_a1, ex_k1_1_w);
+      }
+    }
+    ex_c1_2 = ex_narrow_double(ex_k1_1_r);
+    io.n[0].c[2].zw = ex_words_double(ex_c1_2);
   }
 }
