@@ -3,29 +3,34 @@
 // (docs/performance.md, "Mode exact: one call site per operation").
 //
 // Drivers inline every function. A mode-exact operation is a few hundred integer instructions, and
-// lavapipe's LLVM spends about 13 ms on each inlined copy, so a shader with forty double operations
-// compiled for half a second. Here a run of statements holding several calls of the same operation
-// (`ex_add` on two df_dvec3, `ex_mul` on two df_double, a user's function without side effects, ...)
-// becomes a loop that executes the run one call at a time:
+// lavapipe's LLVM spends tens of milliseconds on each inlined copy, so a loop body of 64 double
+// operations compiled for 0.6 s on lavapipe and 2 s on Mesa GLES. Here a run of statements holding
+// several calls of the same operation (`ex_add` on two df_dvec3, `ex_mul` on two df_double, a user's
+// function without side effects, ...) becomes a loop that executes the run one call at a time:
 //
-//   d = ex_mul(a, b);             int ex_op;  (declared at the top of the function)
-//   e = ex_mul(d, ex_add(d, c));  for (int ex_pc_1 = 0; ex_pc_1 < 3; ++ex_pc_1) {
-//   f = ex_to_float(e);             switch (ex_pc_1) {
-//                                   case 0: ex_k1_a0 = a; ex_k1_a1 = b; ex_op = 1; break;
-//                                   case 1: ex_c1 = ex_k1_r; d = ex_c1; ex_k2_a0 = d; ex_k2_a1 = c; ex_op = 2; break;
-//                                   case 2: ex_c2 = ex_k2_r; ex_k1_a0 = d; ex_k1_a1 = ex_c2; ex_op = 1; break;
-//                                   }
-//                                   if (ex_op == 1) ex_k1_r = ex_mul(ex_k1_a0, ex_k1_a1);
-//                                   else if (ex_op == 2) ex_k2_r = ex_add(ex_k2_a0, ex_k2_a1);
-//                                 }
-//                                 ex_c3 = ex_k1_r; e = ex_c3; f = ex_to_float(e);
+//   d = ex_mul(a, b);              for (int ex_pc1 = 0; ex_pc1 < 2; ++ex_pc1) {
+//   e = ex_mul(d, ex_add(d, c));     switch (ex_pc1) {
+//   f = ex_to_float(e);              case 0: ex_k1_1_a0 = a; ex_k1_1_a1 = b; ex_op = 1; break;
+//                                    case 1: ex_c1_1 = ex_k1_1_r; d = ex_c1_1;
+//                                            ex_k1_1_a0 = d; ex_k1_1_a1 = ex_add(d, c); ex_op = 1; break;
+//                                    }
+//                                    if (ex_op == 1) ex_k1_1_r = ex_mul(ex_k1_1_a0, ex_k1_1_a1);
+//                                    (else if (ex_op == 2) ... for a second shared operation)
+//                                  }
+//                                  ex_c1_2 = ex_k1_1_r; e = ex_c1_2; f = ex_to_float(e);
+//
+// (ex_op and the ex_k*/ex_c* variables are declared at the top of the function. ex_add, called once
+// in the run, stays where it is: one copy either way.)
 //
 // Each case is the code up to the next call, which stores the call's operands; the call runs after
 // the switch; the next case starts by copying its result. The same operations run in the same order
 // on the same operands, so the bits are the same (tests/exact). Only calls evaluated whatever the
 // values are moved (not the second operand of &&, || or ?:), and only from statements whose
 // evaluation writes nothing but their own target; a statement that writes elsewhere (an atomic, a
-// store through a call), synchronises (barrier, EmitVertex) or jumps ends the run and stays as it is.
+// store through a call), synchronises (barrier, EmitVertex), depends on the invocations running
+// together (derivatives, subgroup operations) or jumps ends the run and stays as it is. Matrices and
+// arrays are not shared (small_value), and element-wise add/sub/mul/div in several widths share one
+// site over df_dvec4 operands (generic_key).
 // Declarations in the run are moved before the loop (their initialisers stay in place as
 // assignments), where no other variable of the function has their name.
 #include <algorithm>
@@ -95,7 +100,6 @@ bool needs_convergence(const std::string& name) {
   return false;
 }
 
-bool holds_double(const ir::Type& t) { return t.base == ir::Base::Double || t.base == ir::Base::Void; }
 
 // Operands and results of a shared operation are live across the loop's iterations (the driver
 // cannot tell which case set them); a matrix's 32 words or an array make the loop spill more than
@@ -110,6 +114,13 @@ bool assignable(const ir::Type& t) {
     for (const ir::Field& f : *t.fields)
       if (!assignable(f.type)) return false;
   return true;
+}
+
+// What an operand or result slot may hold: a value (not void), lowered (no double left), small,
+// assignable.
+bool slot_type(const ir::Type& t) {
+  const ir::Type v = value_type(t);
+  return v.base != ir::Base::Void && v.base != ir::Base::Double && small_value(t) && assignable(t);
 }
 
 // The operations worth one copy: the long integer code of mode exact's arithmetic (rules/exact.glsl),
@@ -202,7 +213,7 @@ class CallSharer {
       stack.pop_back();
       if (!s) continue;
       if (s->kind == SKind::Discard) pure = false;
-      for (const ExprPtr& e : {s->expr, s->step}) pure = pure && (!e || !writes_beyond_locals(e));
+      for (const ExprPtr& e : {s->expr, s->step}) pure = pure && (!e || !has_effects(e, /*locals_count=*/false));
       for (const auto& b : s->body) stack.push_back(b);
     }
     pure_[&f] = pure;
@@ -214,20 +225,6 @@ class CallSharer {
     return root && (root->storage == ir::Storage::Local || root->storage == ir::Storage::ParamIn);
   }
 
-  // Inside a function body: a write to anything but the function's locals, or a call that may do one.
-  bool writes_beyond_locals(const ExprPtr& e) {
-    bool writes = false;
-    ir::visit(e, [&](const ExprPtr& x) {
-      if (writes) return;
-      if ((x->kind == EKind::Binary && ir::is_assignment_operator(x->op)) || ir::is_increment(*x))
-        writes = !local_target(x->args[0]);
-      else if (x->kind == EKind::Builtin)
-        writes = ir::builtin_has_side_effects(x->name) || needs_convergence(x->name);
-      else if (x->kind == EKind::Call)
-        writes = !calls_without_effects(*x);
-    });
-    return writes;
-  }
 
   // A call that writes nothing the caller sees: a rule or helper of the runtime without out
   // parameters, or a pure user function.
@@ -238,7 +235,6 @@ class CallSharer {
   }
 
   bool shareable(const Expr& e) {
-    auto slot_type = [](const ir::Type& t) { return !holds_double(value_type(t)) && small_value(t) && assignable(t); };
     if (e.kind != EKind::Call || !slot_type(e.type)) return false;
     for (const auto& a : e.args)
       if (!slot_type(a->type)) return false;
@@ -247,13 +243,14 @@ class CallSharer {
     return f && pure_function(*f);
   }
 
-  // Evaluating `e` writes something or synchronises (calls without effects excepted).
-  bool has_effects(const ExprPtr& e) {
+  // Evaluating `e` writes something (with locals_count false: something but the function's own
+  // locals), calls what may, synchronises or depends on the invocations running together.
+  bool has_effects(const ExprPtr& e, bool locals_count = true) {
     bool effects = false;
     ir::visit(e, [&](const ExprPtr& x) {
       if (effects) return;
       if ((x->kind == EKind::Binary && ir::is_assignment_operator(x->op)) || ir::is_increment(*x))
-        effects = true;
+        effects = locals_count || !local_target(x->args[0]);
       else if (x->kind == EKind::Builtin)
         effects = ir::builtin_has_side_effects(x->name) || needs_convergence(x->name);
       else if (x->kind == EKind::Call)
@@ -318,8 +315,9 @@ class CallSharer {
     return s + ")";
   }
 
-  // The statement's part whose calls may move: its whole expression if it writes nothing but its
-  // own target; null when it has shareable calls and writes more (it ends a run).
+  // What a statement is to a run: code without shareable calls (Plain), code with some (Calls), or
+  // what ends the run (Barrier: it writes more than its own target, jumps, or its declaration
+  // cannot move before the loop). Counts its calls into `counts`.
   enum class Role { Plain, Calls, Barrier };
   Role role(const StmtPtr& s, Tally& counts) {
     if (s->kind == SKind::Decl) {
