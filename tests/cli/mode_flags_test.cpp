@@ -79,6 +79,27 @@ void main() { y = x * x; }
   }
 }
 
+// Mode exact shares one call site per operation in a run of statements (a loop over the run);
+// --inline-exact-calls leaves every call where it is (docs/performance.md).
+TEST_F(ModeFlags, InlineExactCallsKeepsEveryCallInPlace) {
+  write_file(dir / "chain.comp", R"(#version 450
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) buffer B { double x; double y; };
+void main() { y = x * y * x * y; }
+)");
+  ProcessResult r = run_process(DOUBLET_CLI_PATH, {"lower", "chain.comp", "--mode", "exact", "--target", "es310", "-o", "shared.comp"},
+                                dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_process(DOUBLET_CLI_PATH,
+                  {"lower", "chain.comp", "--mode", "exact", "--target", "es310", "--inline-exact-calls", "-o", "inline.comp"},
+                  dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string shared = read_file(dir / "shared.comp"), inlined = read_file(dir / "inline.comp");
+  EXPECT_TRUE(has(shared, "for (int ex_pc1 = 0; ex_pc1 < 3; ++ex_pc1)")) << shared;  // three products, one site
+  EXPECT_FALSE(has(inlined, "ex_pc1")) << inlined;
+  EXPECT_TRUE(has(inlined, "ex_mul(ex_mul(ex_mul(")) << inlined;
+}
+
 TEST_F(ModeFlags, BadValuesAreUsageErrors) {
   ProcessResult r = lower({"--mode", "double"});
   EXPECT_EQ(r.exit_code, 1);
