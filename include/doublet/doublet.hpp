@@ -111,8 +111,9 @@ struct Options {
   bool optimize = true;
   // Mode exact: the calls of one arithmetic operation in a run of statements share one call site
   // (src/lower/share_exact_calls.cpp, docs/performance.md): drivers compile each operation once
-  // per run instead of once per use (precise_orbit.comp 2.4x faster on lavapipe), at some run
-  // time (+15-30% for a chain of one operation on Mesa's CPU drivers). Off: every call inlined.
+  // per run instead of once per use (precise_orbit.comp 2.9-3.3x faster to compile on lavapipe),
+  // at some run time (+15-45% for a chain of one operation on Mesa's CPU drivers). Off: every call
+  // inlined where it is.
   bool share_exact_calls = true;
   // The pipeline (docs/architecture.md): stop after the pass of this name (`doublet lower
   // --stop-after PASS`; pass_names() lists them) and return the IR printed as it is then, not
