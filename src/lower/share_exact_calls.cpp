@@ -91,11 +91,12 @@ ir::Type value_type(const ir::Type& t) {
   return t;
 }
 
-// Built-ins whose result depends on which invocations run them together (derivatives, subgroup
-// operations, interpolation at a sample): the loop's control flow is uniform, but a statement that
-// uses one stays out of it all the same.
+// Built-ins whose result depends on which invocations run them together (derivatives, implicit-LOD
+// texture sampling, subgroup operations, interpolation at a sample): the loop's control flow is
+// uniform, but a statement that uses one stays out of it all the same (WGSL's uniformity analysis
+// need not prove the loop uniform).
 bool needs_convergence(const std::string& name) {
-  for (const char* prefix : {"dFd", "fwidth", "subgroup", "interpolateAt"})
+  for (const char* prefix : {"dFd", "fwidth", "subgroup", "interpolateAt", "texture"})
     if (name.rfind(prefix, 0) == 0) return true;
   return false;
 }
