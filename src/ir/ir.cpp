@@ -146,4 +146,52 @@ std::string array_suffix(const Type& t) {
   return s;
 }
 
+ExprPtr make_sym(const VarPtr& v, Loc loc) {
+  auto e = Expr::make(Expr::Kind::Sym, v->type, loc);
+  e->var = v;
+  return e;
+}
+
+ExprPtr make_sym(const VarPtr& v) { return make_sym(v, v->loc); }
+
+ExprPtr make_binary(const std::string& op, Type type, ExprPtr a, ExprPtr b) {
+  auto e = Expr::make(Expr::Kind::Binary, std::move(type), a->loc);
+  e->op = op;
+  e->args = {std::move(a), std::move(b)};
+  return e;
+}
+
+ExprPtr make_assign(const ExprPtr& target, const ExprPtr& value) {
+  auto e = make_binary("=", target->type, target, value);
+  e->loc = value->loc;
+  return e;
+}
+
+ExprPtr make_int(int value, Loc loc) {
+  auto e = Expr::make(Expr::Kind::Const, scalar_type(Base::Int), loc);
+  Scalar s;
+  s.base = Base::Int;
+  s.i = value;
+  e->values = {s};
+  return e;
+}
+
+StmtPtr make_statement(const ExprPtr& e) {
+  auto s = Stmt::make(Stmt::Kind::Expr, e->loc);
+  s->expr = e;
+  return s;
+}
+
+std::vector<const Function*> overloads(const Module& m, const Expr& call,
+                                       const std::function<bool(const Var& param, const Expr& arg)>& param_matches) {
+  std::vector<const Function*> found;
+  for (const auto& f : m.functions) {
+    if (f->name != call.name || f->params.size() != call.args.size()) continue;
+    bool match = true;
+    for (size_t i = 0; i < f->params.size() && match; ++i) match = param_matches(*f->params[i], *call.args[i]);
+    if (match) found.push_back(f.get());
+  }
+  return found;
+}
+
 }  // namespace doublet::ir

@@ -4,6 +4,7 @@
 // are confined to src/frontend/.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -252,5 +253,22 @@ std::string type_name(const Type& t);
 // "[3][2]" etc.
 std::string array_suffix(const Type& t);
 Type scalar_type(Base b, int vec = 1);
+
+// Nodes the passes build. A reference to `v` (at `loc`; without it, where `v` is declared).
+ExprPtr make_sym(const VarPtr& v, Loc loc);
+ExprPtr make_sym(const VarPtr& v);
+// `a op b` of type `type`, at a's location.
+ExprPtr make_binary(const std::string& op, Type type, ExprPtr a, ExprPtr b);
+// `target = value`: the target's type, at the value's location.
+ExprPtr make_assign(const ExprPtr& target, const ExprPtr& value);
+// An int constant.
+ExprPtr make_int(int value, Loc loc = {});
+// The statement `e;`, at e's location.
+StmtPtr make_statement(const ExprPtr& e);
+// The functions of `m` named as `call` is, with as many parameters, whose every parameter
+// `param_matches(parameter, argument)`: the overloads the call may resolve to. The caller chooses
+// the type rule (declared types before lowering, lowered ones after).
+std::vector<const Function*> overloads(const Module& m, const Expr& call,
+                                       const std::function<bool(const Var& param, const Expr& arg)>& param_matches);
 
 }  // namespace doublet::ir

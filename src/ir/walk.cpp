@@ -15,6 +15,12 @@ void visit(const StmtPtr& s, const ExprVisitor& f) {
   for (const auto& b : s->body) visit(b, f);
 }
 
+void visit_statements(const StmtPtr& s, const std::function<void(const StmtPtr&)>& f) {
+  if (!s) return;
+  f(s);
+  for (const auto& b : s->body) visit_statements(b, f);
+}
+
 ExprPtr rewrite(const ExprPtr& e, const ExprRewriter& f) {
   if (!e) return e;
   for (auto& a : e->args) a = rewrite(a, f);

@@ -13,6 +13,9 @@ void visit(const ExprPtr& e, const ExprVisitor& f);
 // Every expression of a statement tree (conditions, steps, initialisers).
 void visit(const StmtPtr& s, const ExprVisitor& f);
 
+// Pre-order over a statement tree: every statement, nested ones included (null ones skipped).
+void visit_statements(const StmtPtr& s, const std::function<void(const StmtPtr&)>& f);
+
 // Post-order rewrite: children first, then `f` may return a replacement.
 using ExprRewriter = std::function<ExprPtr(const ExprPtr&)>;
 ExprPtr rewrite(const ExprPtr& e, const ExprRewriter& f);

@@ -194,10 +194,10 @@ class BlockWords {
       const std::string load = struct_accessor(twin_element, true, v->loc);
       const int count = v->type.is_array() ? v->type.array_dims[0] : 1;
       for (int k = 0; k < count; ++k) {
-        ExprPtr from = sym(u), to = sym(v);
+        ExprPtr from = ir::make_sym(u), to = ir::make_sym(v);
         if (v->type.is_array()) from = element_of(from, k), to = element_of(to, k);
         auto stmt = ir::Stmt::make(ir::Stmt::Kind::Expr, v->loc);
-        stmt->expr = assignment(to, ir::make_node(Kind::Call, load, to->type, {from}, v->loc), v->loc);
+        stmt->expr = ir::make_assign(to, ir::make_node(Kind::Call, load, to->type, {from}, v->loc));
         loads.push_back(stmt);
       }
     }
@@ -208,13 +208,8 @@ class BlockWords {
   }
 
   static ExprPtr element_of(const ExprPtr& array, int k) {
-    auto c = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Int));
-    ir::Scalar s;
-    s.base = ir::Base::Int;
-    s.i = k;
-    c->values = {s};
     auto e = Expr::make(Kind::Index, array->type.element());
-    e->args = {array, c};
+    e->args = {array, ir::make_int(k)};
     return e;
   }
 
@@ -705,13 +700,6 @@ class BlockWords {
     return ir::make_node(Kind::Call, accessor(p, Access::Load, loc), p.type, p.parts, loc);
   }
 
-  static ExprPtr assignment(const ExprPtr& lhs, const ExprPtr& rhs, ir::Loc loc) {
-    auto e = Expr::make(Kind::Binary, lhs->type, loc);
-    e->op = "=";
-    e->args = {lhs, rhs};
-    return e;
-  }
-
   // The place's words assigned `value`; an expression of the value's type when `used`.
   ExprPtr store(const Place& p, const ExprPtr& value, ir::Loc loc, bool used = true) {
     if (p.parts.size() == 2) {
@@ -722,19 +710,21 @@ class BlockWords {
       t->type = t->declared_type = p.type;
       pending_.push_back({t, p, loc, true});
       auto comma = Expr::make(Kind::Comma, p.type, loc);
-      comma->args.push_back(assignment(sym(t), value, loc));
+      comma->args.push_back(ir::make_assign(ir::make_sym(t), value));
       const int w = df_width(p.type);
       for (size_t k = 0; k < 2; ++k) {
         const std::string name = "ex_words_" + df_suffix(p.type) + (k == 0 ? "_xy" : w == 3 ? "_z" : "_zw");
         helper(name, ir::type_name(p.parts[k]->type) + " " + name + "(" + ir::type_name(p.type) + " v) {\n  return " +
                          pack_words(w, 2 * static_cast<int>(k), k == 0 ? 2 : w - 2) + ";\n}\n");
-        comma->args.push_back(assignment(p.parts[k], ir::make_node(Kind::Call, name, p.parts[k]->type, {sym(t)}, loc), loc));
+        auto part = ir::make_node(Kind::Call, name, p.parts[k]->type, {ir::make_sym(t)}, loc);
+        comma->args.push_back(ir::make_assign(p.parts[k], part));
       }
-      if (used) comma->args.push_back(sym(t));
+      if (used) comma->args.push_back(ir::make_sym(t));
       return comma;
     }
     const ir::Type word = p.parts[0]->type;
-    auto assign = assignment(p.parts[0], ir::make_node(Kind::Call, accessor(p, Access::Words, loc), word, {value}, loc), loc);
+    auto words = ir::make_node(Kind::Call, accessor(p, Access::Words, loc), word, {value}, loc);
+    auto assign = ir::make_assign(p.parts[0], words);
     if (!used) return assign;
     return ir::make_node(Kind::Call, accessor(p, Access::Load, loc), p.type, {assign}, loc);
   }
@@ -910,12 +900,6 @@ class BlockWords {
     pending_.clear();
   }
 
-  ExprPtr sym(const ir::VarPtr& v) {
-    auto e = Expr::make(Kind::Sym, v->type);
-    e->var = v;
-    return e;
-  }
-
   // Rewrites `s` and returns the statements to run before and after it (temporaries).
   void statement(const ir::StmtPtr& s, std::vector<ir::StmtPtr>& before, std::vector<ir::StmtPtr>& after) {
     if (!s) return;
@@ -940,7 +924,7 @@ class BlockWords {
       Place again = t.place;  // the same place, as its own nodes
       for (auto& part : again.parts) part = ir::clone(part);
       auto write = ir::Stmt::make(ir::Stmt::Kind::Expr, t.loc);
-      write->expr = store(again, sym(t.var), t.loc, false);
+      write->expr = store(again, ir::make_sym(t.var), t.loc, false);
       after.push_back(write);
     }
     for (const Temporary& t : pending_) declare(t);  // the stores' own (split dvec3/dvec4 values)
@@ -997,7 +981,7 @@ class BlockWords {
       decl->var = value;
       decl->expr = s->expr;
       out.push_back(decl);
-      s->expr = sym(value);
+      s->expr = ir::make_sym(value);
       out.insert(out.end(), after.begin(), after.end());
       out.push_back(s);
       return;

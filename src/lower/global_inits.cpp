@@ -31,12 +31,7 @@ bool is_constant_expression(const ir::ExprPtr& e) {
 }
 
 ir::StmtPtr assignment(const ir::VarPtr& target, const ir::ExprPtr& value) {
-  auto lhs = ir::Expr::make(Kind::Sym, target->type, target->loc);
-  lhs->var = target;
-  auto s = ir::Stmt::make(ir::Stmt::Kind::Expr, value->loc);
-  s->expr = ir::make_node(Kind::Binary, "", target->type, {lhs, value}, value->loc);
-  s->expr->op = "=";
-  return s;
+  return ir::make_statement(ir::make_assign(ir::make_sym(target), value));
 }
 
 }  // namespace

@@ -44,12 +44,6 @@ int next_free_id(const ir::Module& m) {
   return top + 1;
 }
 
-ir::ExprPtr symbol(const ir::VarPtr& v, ir::Loc loc) {
-  auto e = ir::Expr::make(Kind::Sym, v->type, loc);
-  e->var = v;
-  return e;
-}
-
 class Flattener {
  public:
   Flattener(ir::Module& m, Context& c) : module_(m), ctx_(c), next_id_(next_free_id(m)) {}
@@ -77,10 +71,11 @@ class Flattener {
     if (members_.empty()) return;
     auto replace = [&](const ir::ExprPtr& e) -> ir::ExprPtr {
       if (e->kind == Kind::Member && e->args[0]->kind == Kind::Sym)  // instance.member
-        if (auto it = members_.find({e->args[0]->var.get(), e->name}); it != members_.end()) return symbol(it->second, e->loc);
+        if (auto it = members_.find({e->args[0]->var.get(), e->name}); it != members_.end())
+          return ir::make_sym(it->second, e->loc);
       if (e->kind == Kind::Sym && e->var->block)  // a member of an anonymous block
         if (auto it = members_.find({e->var->block.get(), e->var->name}); it != members_.end())
-          return symbol(it->second, e->loc);
+          return ir::make_sym(it->second, e->loc);
       return nullptr;
     };
     for (auto& init : module_.global_inits) init = ir::rewrite(init, replace);

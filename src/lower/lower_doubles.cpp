@@ -738,10 +738,7 @@ class DoubleLowering {
     if (!is_df(value->type) && !matrix::is_matrix(value->type)) value = to_df(value);
     const std::string op = e->op.substr(0, 1);
     if (evaluate_once) return compound_helper_call(op, target, value, e->loc);
-    auto assign = Expr::make(Kind::Binary, target->type, e->loc);
-    assign->op = "=";
-    assign->args = {target, arithmetic(op, ir::clone(target), value, e->loc)};
-    return assign;
+    return ir::make_binary("=", target->type, target, arithmetic(op, ir::clone(target), value, e->loc));
   }
 
   // `T df_add_assign_T_U(inout T x, U y) { x = df_add(x, y); return x; }` for the operator and

@@ -46,18 +46,6 @@ bool is_double_component(const ir::ExprPtr& e) {
   return base.is_double() && !base.is_array() && (base.vec > 1 || base.is_matrix());
 }
 
-ir::ExprPtr sym(const ir::VarPtr& v, ir::Loc loc) {
-  auto e = Expr::make(Kind::Sym, v->type, loc);
-  e->var = v;
-  return e;
-}
-
-ir::ExprPtr assign(const ir::ExprPtr& target, const ir::ExprPtr& value) {
-  auto e = ir::make_node(Kind::Binary, "", target->type, {target, value}, value->loc);
-  e->op = "=";
-  return e;
-}
-
 // A whole local variable or parameter: what a WGSL pointer argument may point to (function memory).
 bool is_whole_local(const ir::ExprPtr& e) { return e->kind == Kind::Sym && ir::is_function_local(e->var->storage); }
 
@@ -74,14 +62,10 @@ class OutArgumentRewriter {
 
  private:
   const ir::Function* callee(const ir::ExprPtr& call) const {
-    for (const auto& f : module_.functions) {
-      if (f->name != call->name || f->params.size() != call->args.size()) continue;
-      bool match = true;
-      for (size_t i = 0; i < f->params.size() && match; ++i)
-        match = same_type(wgsl_ ? f->params[i]->type : f->params[i]->declared_type, call->args[i]->type);
-      if (match) return f.get();
-    }
-    return nullptr;
+    const auto found = ir::overloads(module_, *call, [&](const ir::Var& param, const ir::Expr& arg) {
+      return same_type(wgsl_ ? param.type : param.declared_type, arg.type);
+    });
+    return found.empty() ? nullptr : found.front();
   }
 
   // The storage of each parameter of `call`: a user function's, or (wgsl, after lowering) a
@@ -174,9 +158,10 @@ class OutArgumentRewriter {
       const bool needs_copy = wgsl_ ? !is_whole_local(arg) : is_double_component(arg);
       if (!ir::is_out_parameter(params[i]) || !needs_copy || !stable(arg, call, params)) continue;
       ir::VarPtr tmp = temporary(arg->type, arg->loc);
-      if (params[i] == ir::Storage::ParamInOut) parts.before.push_back(assign(sym(tmp, arg->loc), ir::clone(arg)));
-      parts.after.push_back(assign(ir::clone(arg), sym(tmp, arg->loc)));
-      rewritten->args[i] = sym(tmp, arg->loc);
+      if (params[i] == ir::Storage::ParamInOut)
+        parts.before.push_back(ir::make_assign(ir::make_sym(tmp, arg->loc), ir::clone(arg)));
+      parts.after.push_back(ir::make_assign(ir::clone(arg), ir::make_sym(tmp, arg->loc)));
+      rewritten->args[i] = ir::make_sym(tmp, arg->loc);
     }
     parts.call = rewritten;
     return !parts.after.empty();
@@ -223,10 +208,10 @@ class OutArgumentRewriter {
         sequence.push_back(parts.call);
       } else {
         result = temporary(e->type, e->loc);
-        sequence.push_back(assign(sym(result, e->loc), parts.call));
+        sequence.push_back(ir::make_assign(ir::make_sym(result, e->loc), parts.call));
       }
       sequence.insert(sequence.end(), parts.after.begin(), parts.after.end());
-      if (result) sequence.push_back(sym(result, e->loc));
+      if (result) sequence.push_back(ir::make_sym(result, e->loc));
       return ir::make_node(Kind::Comma, "", sequence.back()->type, sequence, e->loc);
     });
   }

@@ -58,18 +58,6 @@ bool constant_condition(const ir::ExprPtr& c, bool& value) {
   return true;
 }
 
-ir::ExprPtr sym(const ir::VarPtr& v, ir::Loc loc) {
-  auto e = Expr::make(Kind::Sym, v->type, loc);
-  e->var = v;
-  return e;
-}
-
-ir::ExprPtr assign(const ir::VarPtr& v, const ir::ExprPtr& value) {
-  auto e = ir::make_node(Kind::Binary, "", v->type, {sym(v, value->loc), value}, value->loc);
-  e->op = "=";
-  return e;
-}
-
 ir::ExprPtr bool_true(ir::Loc loc) {
   auto e = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Bool), loc);
   ir::Scalar s;
@@ -133,7 +121,7 @@ class StructSelectRewriter {
     ir::ExprPtr target;
     if (s->kind == ir::Stmt::Kind::Decl && rewritten(e) && holds_array(e->type)) {
       selection = e;
-      target = sym(s->var, s->loc);
+      target = ir::make_sym(s->var, s->loc);
     } else if (s->kind == ir::Stmt::Kind::Expr && e->kind == Kind::Binary && e->op == "=" &&
                rewritten(e->args[1]) && holds_array(e->args[1]->type) && ir::is_pure(e->args[0])) {
       selection = e->args[1];
@@ -142,9 +130,7 @@ class StructSelectRewriter {
       return {};
     }
     auto branch = [&](const ir::ExprPtr& value) {
-      auto stmt = ir::Stmt::make(ir::Stmt::Kind::Expr, value->loc);
-      stmt->expr = ir::make_node(Kind::Binary, "", target->type, {ir::clone(target), value}, value->loc);
-      stmt->expr->op = "=";
+      auto stmt = ir::make_statement(ir::make_assign(ir::clone(target), value));
       stmt->expr = rewrite_expr(stmt->expr, stmt);
       auto block = ir::Stmt::make(ir::Stmt::Kind::Block, value->loc);
       block->body = {stmt};
@@ -177,13 +163,14 @@ class StructSelectRewriter {
       }
       ir::VarPtr tmp = declare_temporary("df_select" + std::to_string(++counter_), e->type, e->loc, temporaries_);
       auto chosen = [&](const ir::ExprPtr& operand) {
-        return ir::make_node(Kind::Comma, "", ir::scalar_type(ir::Base::Bool), {assign(tmp, operand), bool_true(e->loc)},
+        auto store = ir::make_assign(ir::make_sym(tmp, operand->loc), operand);
+        return ir::make_node(Kind::Comma, "", ir::scalar_type(ir::Base::Bool), {store, bool_true(e->loc)},
                              e->loc);
       };
       auto select = ir::make_node(Kind::Ternary, "", ir::scalar_type(ir::Base::Bool),
                                   {e->args[0], chosen(e->args[1]), chosen(e->args[2])}, e->loc);
       comma_used = true;
-      return ir::make_node(Kind::Comma, "", e->type, {select, sym(tmp, e->loc)}, e->loc);
+      return ir::make_node(Kind::Comma, "", e->type, {select, ir::make_sym(tmp, e->loc)}, e->loc);
     });
     // A constant initialised by a sequence is no longer a constant expression.
     if (comma_used && owner && owner->kind == ir::Stmt::Kind::Decl && owner->var &&

@@ -52,35 +52,9 @@ using ir::StmtPtr;
 using EKind = ir::Expr::Kind;
 using SKind = ir::Stmt::Kind;
 
-ExprPtr sym(const ir::VarPtr& v) {
-  auto e = Expr::make(EKind::Sym, v->type, v->loc);
-  e->var = v;
-  return e;
-}
-
-ExprPtr int_constant(int value) {
-  auto e = Expr::make(EKind::Const, ir::scalar_type(ir::Base::Int));
-  ir::Scalar s;
-  s.base = ir::Base::Int;
-  s.i = value;
-  e->values = {s};
-  return e;
-}
-
-ExprPtr binary(const std::string& op, ir::Type type, const ExprPtr& a, const ExprPtr& b) {
-  auto e = ir::make_node(EKind::Binary, "", std::move(type), {a, b}, b->loc);
-  e->op = op;
-  return e;
-}
-
-StmtPtr statement(const ExprPtr& e) {
-  auto s = Stmt::make(SKind::Expr, e->loc);
-  s->expr = e;
-  return s;
-}
-
+// The statement `target = value;`.
 StmtPtr assign(const ir::VarPtr& target, const ExprPtr& value) {
-  return statement(binary("=", target->type, sym(target), value));
+  return ir::make_statement(ir::make_assign(ir::make_sym(target), value));
 }
 
 // The type a slot holding `e`'s value is declared with: after lowering, some nodes still carry the
@@ -175,30 +149,18 @@ class CallSharer {
     for (const auto& g : module_.globals) names_[g->name].insert(g.get());
     for (const auto& p : f.params)
       if (p) names_[p->name].insert(p.get());
-    std::vector<StmtPtr> stack = {f.body};
-    while (!stack.empty()) {
-      StmtPtr s = stack.back();
-      stack.pop_back();
-      if (!s) continue;
+    ir::visit_statements(f.body, [&](const StmtPtr& s) {
       if (s->kind == SKind::Decl && s->var) names_[s->var->name].insert(s->var.get());
-      for (const auto& b : s->body) stack.push_back(b);
-    }
+    });
   }
 
   // The user's function `call` names, when it exists once under that name and signature.
   const ir::Function* user_callee(const Expr& call) const {
-    const ir::Function* found = nullptr;
-    for (const auto& f : module_.functions) {
-      if (f->name != call.name || f->params.size() != call.args.size()) continue;
-      bool same = true;
-      for (size_t i = 0; i < f->params.size() && same; ++i)
-        same = ir::type_name(f->params[i]->type) == ir::type_name(value_type(call.args[i]->type)) &&
-               f->params[i]->type.array_dims == call.args[i]->type.array_dims;
-      if (!same) continue;
-      if (found) return nullptr;
-      found = f.get();
-    }
-    return found;
+    const auto found = ir::overloads(module_, call, [](const ir::Var& param, const ir::Expr& arg) {
+      return ir::type_name(param.type) == ir::type_name(value_type(arg.type)) &&
+             param.type.array_dims == arg.type.array_dims;
+    });
+    return found.size() == 1 ? found.front() : nullptr;
   }
 
   // A user's function that writes only its own locals and calls only such functions: calling it
@@ -208,15 +170,10 @@ class CallSharer {
     pure_[&f] = false;  // (GLSL has no recursion; this only ends a malformed cycle)
     bool pure = f.return_type.base != ir::Base::Void && f.name != "main";
     for (const auto& p : f.params) pure = pure && p && !ir::is_out_parameter(p->storage);
-    std::vector<StmtPtr> stack = {f.body};
-    while (pure && !stack.empty()) {
-      StmtPtr s = stack.back();
-      stack.pop_back();
-      if (!s) continue;
+    ir::visit_statements(f.body, [&](const StmtPtr& s) {
       if (s->kind == SKind::Discard) pure = false;
       for (const ExprPtr& e : {s->expr, s->step}) pure = pure && (!e || !has_effects(e, /*locals_count=*/false));
-      for (const auto& b : s->body) stack.push_back(b);
-    }
+    });
     pure_[&f] = pure;
     return pure;
   }
@@ -361,7 +318,7 @@ class CallSharer {
         continue;
       }
       for (const ExprPtr& a : s->expr->args) {
-        split.push_back(statement(a));
+        split.push_back(ir::make_statement(a));
         split.back()->loc = s->loc;
       }
     }
@@ -481,12 +438,12 @@ class CallSharer {
     const int width = op.width ? df_width(value_type(e->type)) : 0;
     for (size_t a = 0; a < e->args.size(); ++a)
       cases_.back().push_back(assign(op.operands[a], op.width ? widened(e->args[a], width) : e->args[a]));
-    if (op.width) cases_.back().push_back(assign(op.width, int_constant(width)));
-    cases_.back().push_back(assign(op_, int_constant(op.number)));
+    if (op.width) cases_.back().push_back(assign(op.width, ir::make_int(width)));
+    cases_.back().push_back(assign(op_, ir::make_int(op.number)));
     const ir::Type type = op.width ? df_type(width) : op.call->type;
     auto result = temporary("ex_c" + std::to_string(run_number_) + "_" + std::to_string(cases_.size()), type);
-    cases_.push_back({assign(result, op.width ? narrowed(sym(op.result), width) : sym(op.result))});
-    return sym(result);
+    cases_.push_back({assign(result, op.width ? narrowed(ir::make_sym(op.result), width) : ir::make_sym(op.result))});
+    return ir::make_sym(result);
   }
 
   void rewrite_run(const std::vector<StmtPtr>& run, std::vector<StmtPtr>& out) {
@@ -520,17 +477,17 @@ class CallSharer {
     pc->type = pc->declared_type = ir::scalar_type(ir::Base::Int);
     auto init = Stmt::make(SKind::Decl);
     init->var = pc;
-    init->expr = int_constant(0);
+    init->expr = ir::make_int(0);
     auto labelled = Stmt::make(SKind::Block);
     for (size_t c = 0; c + 1 < cases_.size(); ++c) {
       auto label = Stmt::make(SKind::Case);
-      label->expr = int_constant(static_cast<int>(c));
+      label->expr = ir::make_int(static_cast<int>(c));
       labelled->body.push_back(label);
       labelled->body.insert(labelled->body.end(), cases_[c].begin(), cases_[c].end());
       labelled->body.push_back(Stmt::make(SKind::Break));
     }
     auto choose = Stmt::make(SKind::Switch);
-    choose->expr = sym(pc);
+    choose->expr = ir::make_sym(pc);
     choose->body = {labelled};
     StmtPtr dispatch;  // if (ex_op == 1) r1 = f1(...); else if (ex_op == 2) ...
     std::vector<const Operation*> ordered;
@@ -538,10 +495,10 @@ class CallSharer {
     std::sort(ordered.begin(), ordered.end(), [](const Operation* a, const Operation* b) { return a->number > b->number; });
     for (const Operation* op : ordered) {
       auto call = ir::make_node(op->call->kind, op->call->name, op->call->type, {}, op->call->loc);
-      for (const auto& v : op->operands) call->args.push_back(sym(v));
-      if (op->width) call->args.push_back(sym(op->width));
+      for (const auto& v : op->operands) call->args.push_back(ir::make_sym(v));
+      if (op->width) call->args.push_back(ir::make_sym(op->width));
       auto branch = Stmt::make(SKind::If);
-      branch->expr = binary("==", ir::scalar_type(ir::Base::Bool), sym(op_), int_constant(op->number));
+      branch->expr = ir::make_binary("==", ir::scalar_type(ir::Base::Bool), ir::make_sym(op_), ir::make_int(op->number));
       auto then = Stmt::make(SKind::Block);
       then->body = {assign(op->result, call)};
       branch->body = {then};
@@ -551,8 +508,9 @@ class CallSharer {
     auto body = Stmt::make(SKind::Block);
     body->body = {choose, dispatch};
     auto loop = Stmt::make(SKind::Loop);
-    loop->expr = binary("<", ir::scalar_type(ir::Base::Bool), sym(pc), int_constant(static_cast<int>(cases_.size() - 1)));
-    auto step = ir::make_node(EKind::Unary, "", pc->type, {sym(pc)}, {});
+    const int last = static_cast<int>(cases_.size() - 1);
+    loop->expr = ir::make_binary("<", ir::scalar_type(ir::Base::Bool), ir::make_sym(pc), ir::make_int(last));
+    auto step = ir::make_node(EKind::Unary, "", pc->type, {ir::make_sym(pc)}, {});
     step->op = "++x";
     loop->step = step;
     loop->body = {init, body};

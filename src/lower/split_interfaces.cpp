@@ -31,20 +31,9 @@ std::string storage_name(ir::Storage s, ir::StageKind stage, bool es100) {
   }
 }
 
-ExprPtr sym(const ir::VarPtr& v) {
-  auto e = Expr::make(Kind::Sym, v->type, v->loc);
-  e->var = v;
-  return e;
-}
-
 ExprPtr index(const ExprPtr& base, int i) {
-  auto c = Expr::make(Kind::Const, ir::scalar_type(ir::Base::Int));
-  ir::Scalar s;
-  s.base = ir::Base::Int;
-  s.i = i;
-  c->values = {s};
   auto e = Expr::make(Kind::Index, base->type.element());
-  e->args = {base, c};
+  e->args = {base, ir::make_int(i)};
   return e;
 }
 
@@ -55,14 +44,7 @@ ExprPtr member(const ExprPtr& base, const std::string& name, const ir::Type& typ
   return e;
 }
 
-ir::StmtPtr assign(const ExprPtr& lhs, const ExprPtr& rhs) {
-  auto a = Expr::make(Kind::Binary, lhs->type);
-  a->op = "=";
-  a->args = {lhs, rhs};
-  auto s = ir::Stmt::make(ir::Stmt::Kind::Expr);
-  s->expr = a;
-  return s;
-}
+ir::StmtPtr assign(const ExprPtr& lhs, const ExprPtr& rhs) { return ir::make_statement(ir::make_assign(lhs, rhs)); }
 
 // Element accessors for every array element (unrolled; arrays are sized).
 void for_each_element(const ExprPtr& e, const std::function<void(const ExprPtr&)>& f) {
@@ -130,7 +112,7 @@ ExprPtr index_by_invocation(const ExprPtr& array) {
   id->declared_type = id->type;
   id->storage = ir::Storage::BuiltIn;
   auto e = Expr::make(Kind::Index, array->type.element());
-  e->args = {array, sym(id)};
+  e->args = {array, ir::make_sym(id)};
   return e;
 }
 
@@ -380,7 +362,7 @@ ExprPtr matrix_value(const MatrixSplit& s, int first) {
       for (int i = 0; i < s.rows; ++i) {
         const int k = first + j * s.rows + i;  // double k: words 2k (low), 2k + 1 (high)
         const char* letter = k % 2 == 0 ? (high ? "y" : "x") : (high ? "w" : "z");
-        col->args.push_back(member(index(sym(s.words), k / 2), letter, word));
+        col->args.push_back(member(index(ir::make_sym(s.words), k / 2), letter, word));
       }
       array->args.push_back(s.rows == 1 ? col->args[0] : col);
     }
@@ -589,7 +571,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
     const bool own = own_vertex(*s.original, out);
     auto [ins, outs] = lists_for(s.original, out);
     const bool patch = ins != &copy_in;
-    ExprPtr whole = sym(s.original), hi = sym(s.hi), lo = sym(s.lo);
+    ExprPtr whole = ir::make_sym(s.original), hi = ir::make_sym(s.hi), lo = ir::make_sym(s.lo);
     std::vector<ExprPtr> elems_df, elems_hi, elems_lo;
     elements(whole, own, elems_df);
     elements(hi, own, elems_hi);
@@ -613,9 +595,9 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
     const bool own = own_vertex(*s.original, out);
     auto [ins, outs] = lists_for(s.original, out);
     const bool patch = ins != &copy_in;
-    elements(sym(s.original), own, elems_df);
+    elements(ir::make_sym(s.original), own, elems_df);
     std::vector<std::vector<ExprPtr>> elems_parts(s.parts.size());
-    for (size_t k = 0; k < s.parts.size(); ++k) elements(sym(s.parts[k]), own, elems_parts[k]);
+    for (size_t k = 0; k < s.parts.size(); ++k) elements(ir::make_sym(s.parts[k]), own, elems_parts[k]);
     for (size_t i = 0; i < elems_df.size(); ++i) {
       if (out)
         for (size_t k = 0; k < s.parts.size(); ++k)
@@ -629,7 +611,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
   }
   for (const auto& s : matrix_splits) {
     std::vector<ExprPtr> elems_df;
-    for_each_element(sym(s.original), [&](const ExprPtr& e) { elems_df.push_back(e); });
+    for_each_element(ir::make_sym(s.original), [&](const ExprPtr& e) { elems_df.push_back(e); });
     for (size_t e = 0; e < elems_df.size(); ++e)
       copy_in.push_back(assign(elems_df[e], matrix_value(s, static_cast<int>(e) * s.cols * s.rows)));
   }

@@ -39,18 +39,6 @@ bool steppable(const ir::Type& t) {
          !t.is_matrix();
 }
 
-ExprPtr sym(const ir::VarPtr& v, ir::Loc loc) {
-  auto e = Expr::make(Kind::Sym, v->type, loc);
-  e->var = v;
-  return e;
-}
-
-ExprPtr binary(const std::string& op, const ExprPtr& a, const ExprPtr& b, const ir::Type& type) {
-  auto e = ir::make_node(Kind::Binary, "", type, {a, b}, a->loc);
-  e->op = op;
-  return e;
-}
-
 ExprPtr one_like(const ir::Type& t, ir::Loc loc) {
   ir::Type scalar = t;
   scalar.vec = 1;
@@ -161,7 +149,7 @@ class EffectRewriter {
     auto assign_to_t = [&](const ExprPtr& value) {
       auto block = ir::Stmt::make(ir::Stmt::Kind::Block, loc);
       auto st = ir::Stmt::make(ir::Stmt::Kind::Expr, loc);
-      st->expr = binary("=", sym(t, loc), value, conditional->type);
+      st->expr = ir::make_binary("=", conditional->type, ir::make_sym(t, loc), value);
       block->body.push_back(st);
       return block;
     };
@@ -172,15 +160,16 @@ class EffectRewriter {
       branch->body = {assign_to_t(conditional->args[1]), assign_to_t(conditional->args[2])};
     } else {
       result->body = assign_to_t(conditional->args[0])->body;
-      branch->expr = sym(t, loc);
+      branch->expr = ir::make_sym(t, loc);
       if (conditional->op == "||") {
-        branch->expr = ir::make_node(Kind::Unary, "", conditional->type, {sym(t, loc)}, loc);
+        branch->expr = ir::make_node(Kind::Unary, "", conditional->type, {ir::make_sym(t, loc)}, loc);
         branch->expr->op = "!";
       }
       branch->body = {assign_to_t(conditional->args[1])};
     }
     result->body.push_back(branch);
-    statement->expr = ir::rewrite(statement->expr, [&](const ExprPtr& e) { return e == conditional ? sym(t, loc) : nullptr; });
+    statement->expr =
+        ir::rewrite(statement->expr, [&](const ExprPtr& e) { return e == conditional ? ir::make_sym(t, loc) : nullptr; });
     rewrite_block(result);
     return result;
   }
@@ -213,8 +202,8 @@ class EffectRewriter {
     if (e->kind == Kind::Index && e->args[1]->kind != Kind::Comma && ir::has_side_effects(e->args[1])) {
       const ExprPtr& index = e->args[1];
       ir::VarPtr t = temporary(index->type, index->loc);
-      e->args[1] = ir::make_node(Kind::Comma, "", index->type,
-                                 {binary("=", sym(t, index->loc), index, index->type), sym(t, index->loc)}, index->loc);
+      auto store = ir::make_binary("=", index->type, ir::make_sym(t, index->loc), index);
+      e->args[1] = ir::make_node(Kind::Comma, "", index->type, {store, ir::make_sym(t, index->loc)}, index->loc);
       return e;
     }
     if (!is_effect(*e) || !plain_access(e->args[0]) || e->type.base == ir::Base::Void) return e;
@@ -224,18 +213,20 @@ class EffectRewriter {
     std::vector<ExprPtr> sequence;
     if (ir::is_increment(*e)) {
       const std::string op = e->op.find("++") != std::string::npos ? "+" : "-";
-      const ExprPtr step = binary("=", ir::clone(place), binary(op, ir::clone(place), one_like(e->type, e->loc), e->type), e->type);
+      const ExprPtr next = ir::make_binary(op, e->type, ir::clone(place), one_like(e->type, e->loc));
+      const ExprPtr step = ir::make_binary("=", e->type, ir::clone(place), next);
       if (e->op[0] == 'x') {  // x++: the old value
-        sequence = {binary("=", sym(t, e->loc), ir::clone(place), e->type), step};
+        sequence = {ir::make_binary("=", e->type, ir::make_sym(t, e->loc), ir::clone(place)), step};
       } else {
-        sequence = {step, binary("=", sym(t, e->loc), ir::clone(place), e->type)};
+        sequence = {step, ir::make_binary("=", e->type, ir::make_sym(t, e->loc), ir::clone(place))};
       }
     } else {
       ExprPtr value = e->args[1];
-      if (e->op != "=") value = binary(e->op.substr(0, e->op.size() - 1), ir::clone(place), value, e->type);
-      sequence = {binary("=", sym(t, e->loc), value, e->type), binary("=", ir::clone(place), sym(t, e->loc), e->type)};
+      if (e->op != "=") value = ir::make_binary(e->op.substr(0, e->op.size() - 1), e->type, ir::clone(place), value);
+      sequence = {ir::make_binary("=", e->type, ir::make_sym(t, e->loc), value),
+                  ir::make_binary("=", e->type, ir::clone(place), ir::make_sym(t, e->loc))};
     }
-    sequence.push_back(sym(t, e->loc));
+    sequence.push_back(ir::make_sym(t, e->loc));
     return ir::make_node(Kind::Comma, "", e->type, sequence, e->loc);
   }
 

@@ -462,18 +462,13 @@ struct Forward {
 };
 
 const ir::Function* resolve_call(const ir::Module& m, const Expr& call) {
-  const ir::Function* fallback = nullptr;
-  for (const auto& f : m.functions) {
-    if (f->name != call.name || f->params.size() != call.args.size()) continue;
-    bool same = true;
-    for (size_t i = 0; i < call.args.size(); ++i) {
-      const ir::Type &p = f->params[i]->declared_type, &q = call.args[i]->type;
-      same &= p.base == q.base && p.vec == q.vec && p.cols == q.cols;
-    }
-    if (same) return f.get();
-    if (!fallback) fallback = f.get();
-  }
-  return fallback;
+  auto same_shape = [](const ir::Var& param, const Expr& arg) {
+    const ir::Type &p = param.declared_type, &q = arg.type;
+    return p.base == q.base && p.vec == q.vec && p.cols == q.cols;
+  };
+  auto found = ir::overloads(m, call, same_shape);
+  if (found.empty()) found = ir::overloads(m, call, [](const ir::Var&, const Expr&) { return true; });
+  return found.empty() ? nullptr : found.front();
 }
 
 void forward_pass(Analysis& a, const ir::Function* main, std::map<const Var*, Box> env, Relations relations) {
