@@ -874,9 +874,7 @@ class BlockWords {
           t->type = t->declared_type = p->type;
           t->storage = ir::Storage::Local;
           pending_.push_back({t, *p, e->args[i]->loc, false});
-          auto sym = Expr::make(Kind::Sym, p->type, e->args[i]->loc);
-          sym->var = t;
-          e->args[i] = sym;
+          e->args[i] = ir::make_sym(t, e->args[i]->loc);
         }
       }
       return e;

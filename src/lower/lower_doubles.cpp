@@ -748,9 +748,7 @@ class DoubleLowering {
       auto v = std::make_shared<ir::Var>();
       v->name = name;
       v->type = type;
-      auto e = Expr::make(Kind::Sym, type);
-      e->var = v;
-      return e;
+      return ir::make_sym(v);
     };
     ExprPtr updated = arithmetic(op, parameter("x", target->type), parameter("y", value->type), loc);
     static const std::map<std::string, std::string> words{{"+", "add"}, {"-", "sub"}, {"*", "mul"}, {"/", "div"}};
