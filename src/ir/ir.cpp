@@ -176,6 +176,12 @@ ExprPtr make_int(int value, Loc loc) {
   return e;
 }
 
+ExprPtr make_index(const ExprPtr& array, int k) {
+  auto e = Expr::make(Expr::Kind::Index, array->type.element());
+  e->args = {array, make_int(k)};
+  return e;
+}
+
 StmtPtr make_statement(const ExprPtr& e) {
   auto s = Stmt::make(Stmt::Kind::Expr, e->loc);
   s->expr = e;

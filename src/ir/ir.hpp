@@ -263,6 +263,8 @@ ExprPtr make_binary(const std::string& op, Type type, ExprPtr a, ExprPtr b);
 ExprPtr make_assign(const ExprPtr& target, const ExprPtr& value);
 // An int constant.
 ExprPtr make_int(int value, Loc loc = {});
+// `array[k]`, of the array's element type.
+ExprPtr make_index(const ExprPtr& array, int k);
 // The statement `e;`, at e's location.
 StmtPtr make_statement(const ExprPtr& e);
 // The functions of `m` named as `call` is, with as many parameters, whose every parameter

@@ -195,7 +195,7 @@ class BlockWords {
       const int count = v->type.is_array() ? v->type.array_dims[0] : 1;
       for (int k = 0; k < count; ++k) {
         ExprPtr from = ir::make_sym(u), to = ir::make_sym(v);
-        if (v->type.is_array()) from = element_of(from, k), to = element_of(to, k);
+        if (v->type.is_array()) from = ir::make_index(from, k), to = ir::make_index(to, k);
         auto stmt = ir::Stmt::make(ir::Stmt::Kind::Expr, v->loc);
         stmt->expr = ir::make_assign(to, ir::make_node(Kind::Call, load, to->type, {from}, v->loc));
         loads.push_back(stmt);
@@ -205,12 +205,6 @@ class BlockWords {
     if (main == module_.functions.end()) return ctx_.error({}, "the shader has no main function");
     auto& body = (*main)->body->body;
     body.insert(body.begin(), loads.begin(), loads.end());
-  }
-
-  static ExprPtr element_of(const ExprPtr& array, int k) {
-    auto e = Expr::make(Kind::Index, array->type.element());
-    e->args = {array, ir::make_int(k)};
-    return e;
   }
 
   // ---- word types and layouts ------------------------------------------------------------

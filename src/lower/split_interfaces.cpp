@@ -31,12 +31,6 @@ std::string storage_name(ir::Storage s, ir::StageKind stage, bool es100) {
   }
 }
 
-ExprPtr index(const ExprPtr& base, int i) {
-  auto e = Expr::make(Kind::Index, base->type.element());
-  e->args = {base, ir::make_int(i)};
-  return e;
-}
-
 ExprPtr member(const ExprPtr& base, const std::string& name, const ir::Type& type) {
   auto e = Expr::make(Kind::Member, type);
   e->name = name;
@@ -49,7 +43,7 @@ ir::StmtPtr assign(const ExprPtr& lhs, const ExprPtr& rhs) { return ir::make_sta
 // Element accessors for every array element (unrolled; arrays are sized).
 void for_each_element(const ExprPtr& e, const std::function<void(const ExprPtr&)>& f) {
   if (!e->type.is_array()) return f(e);
-  for (int i = 0; i < e->type.array_dims[0]; ++i) for_each_element(index(e, i), f);
+  for (int i = 0; i < e->type.array_dims[0]; ++i) for_each_element(ir::make_index(e, i), f);
 }
 
 // GL uniform names of every leaf of a (lowered) struct uniform: "s.a.hi", "s.b[1].lo", "s.m.hi".
@@ -362,7 +356,7 @@ ExprPtr matrix_value(const MatrixSplit& s, int first) {
       for (int i = 0; i < s.rows; ++i) {
         const int k = first + j * s.rows + i;  // double k: words 2k (low), 2k + 1 (high)
         const char* letter = k % 2 == 0 ? (high ? "y" : "x") : (high ? "w" : "z");
-        col->args.push_back(member(index(ir::make_sym(s.words), k / 2), letter, word));
+        col->args.push_back(member(ir::make_index(ir::make_sym(s.words), k / 2), letter, word));
       }
       array->args.push_back(s.rows == 1 ? col->args[0] : col);
     }
