@@ -32,7 +32,7 @@ struct CompileTimeRow {
   runner::Backend backend = runner::Backend::Vulkan;
   bool ok = false, not_applicable = false;
   std::string error;
-  double compile_seconds = 0;  // time to the first result minus one dispatch, the fastest round
+  double compile_seconds = 0;  // time to the first result (its dispatch or draw included), the fastest round
 };
 
 // The series' compute shader with `ops` double operations per iteration.
