@@ -20,6 +20,8 @@
 //            Numerische Mathematik 18(3):224-242, 1971 (the error of a product is representable).
 //   [HFPA]   J.-M. Muller et al., Handbook of Floating-Point Arithmetic, 2nd ed., Birkhauser,
 //            2018, sections 2.1-2.2 (binary32 encoding, significand and exponent), 4.2-4.4.
+//   [Hauser] J. R. Hauser, "Handling floating-point exceptions in numeric programs", ACM TOPLAS
+//            18(2):139-174, 1996 (a sum that underflows, whose result is subnormal, is exact).
 //   [ESSL]   The OpenGL ES Shading Language 3.00, section 4.1.3 and 5.4.1 (uint arithmetic wraps
 //            modulo 2^32; int(uint) keeps the bit pattern); section 8.3 (floatBitsToUint).
 // Notation: u = 2^-24. A finite float x is m * 2^E with m a 24-bit integer significand
@@ -93,24 +95,31 @@ float df_int_scale(int n, int k) {
 // because |(a+b) - s| <= ulp(s)/2 and ds <= 26, so the modular result is exact
 // Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 (the error of RN(a+b) is a float); ESSL 3.00 (2012) 4.1.3
 // Bound: exact
-// Flops: 3 (df_int_scale; integer: about 45 operations)
+// Flops: 3 (integer: about 40 operations)
 // Steps: shifts are clamped to 31. When the exponents differ by more than 25 the smaller operand
 // is below a quarter ulp of the larger, so s is the larger: s and the larger operand get the same
 // clamped shift, cancel exactly, and the residual is the smaller operand with no special case.
-// Inf/NaN s, or s with a smaller exponent than both operands (exact sum): 0.
+// Inf/NaN s, or s whose exponent field is below both operands' units (zero and subnormal s
+// included: a sum that small is exact, Hauser 1996): 0. So s is decoded as a normal number (its
+// field, the hidden bit always set). Scaling: n * 2^-23 (exact: n is an integer below 2^25), then
+// times 2^(Emin - 127), a normal power of two built from Emin's bits: one rounding, where e is
+// below 2^-126, as the float TwoSum's; no overflow, since |e| <= 2^103.
 // @min-es 300
 float df_int_sum_error(float a, float b, float s) {
   int ua = df_int_unit(a);
   int ub = df_int_unit(b);
-  int us = df_int_unit(s);
   int umin = min(ua, ub);
   uint ta = df_int_signed(a) << min(uint(ua - umin), 31u);
   uint tb = df_int_signed(b) << min(uint(ub - umin), 31u);
-  uint ts = df_int_signed(s) << min(uint(us - umin), 31u);
+  uint bs = floatBitsToUint(s);
+  int fs = int((bs >> 23u) & 255u);
+  uint sign = uint(floatBitsToInt(s) >> 31);
+  uint ms = (bs & 8388607u) | 8388608u;
+  uint ts = ((ms ^ sign) - sign) << min(uint(fs - umin), 31u);
   int n = int(ta + tb - ts);
-  bool special = us == 255;
-  bool exact = any(bvec2(special, us < umin));
-  $PRECISE float e = $SAFE(df_int_scale(n, umin - 150));
+  bool exact = any(bvec2(fs == 255, fs < umin));
+  $PRECISE float f = $SAFE(float(n) * 1.1920928955078125e-7);
+  $PRECISE float e = $SAFE(f * uintBitsToFloat(uint(umin) << 23u));
   $PRECISE float r = $SAFE($SEL(exact, 0.0, e));
   return r;
 }

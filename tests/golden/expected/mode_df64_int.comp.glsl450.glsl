@@ -44,25 +44,6 @@ uint df_int_signed(float x) {
   return r;
 }
 
-// df_int_scale: n * 2^k, exact whenever the result is a float (one rounding below 2^-126 otherwise).
-// Algorithm: conversion of n (at most 24 significant bits, so exact), then two multiplications by
-// powers of two built from their bit patterns, k split in halves (k >> 1 and the rest) so neither
-// factor leaves the normal range and the first product cannot underflow or overflow
-// Source: HFPA (2018) section 2.2 (multiplication by a power of the radix is exact)
-// Bound: exact
-// Flops: 3
-// Range: -252 <= k <= 253, which the callers guarantee wherever their result is used.
-float df_int_scale(int n, int k) {
-  int k1 = k >> 1;
-  int k2 = k - k1;
-  float p1 = (uintBitsToFloat(uint(k1 + 127) << 23u));
-  float p2 = (uintBitsToFloat(uint(k2 + 127) << 23u));
-  float f = (float(n));
-  float f1 = (f * p1);
-  float r = (f1 * p2);
-  return r;
-}
-
 // df_int_sum_error: (a + b) - s exactly, for s the float sum the hardware computed.
 // Algorithm: all three are integer multiples of 2^Emin (Emin the smaller exponent of a and b;
 // s too unless s has a smaller exponent, and then a + b was exact); the residual in units of
@@ -70,23 +51,30 @@ float df_int_scale(int n, int k) {
 // because |(a+b) - s| <= ulp(s)/2 and ds <= 26, so the modular result is exact
 // Source: Knuth, TAOCP vol. 2, 3rd ed., 1998, 4.2.2 (the error of RN(a+b) is a float); ESSL 3.00 (2012) 4.1.3
 // Bound: exact
-// Flops: 3 (df_int_scale; integer: about 45 operations)
+// Flops: 3 (integer: about 40 operations)
 // Steps: shifts are clamped to 31. When the exponents differ by more than 25 the smaller operand
 // is below a quarter ulp of the larger, so s is the larger: s and the larger operand get the same
 // clamped shift, cancel exactly, and the residual is the smaller operand with no special case.
-// Inf/NaN s, or s with a smaller exponent than both operands (exact sum): 0.
+// Inf/NaN s, or s whose exponent field is below both operands' units (zero and subnormal s
+// included: a sum that small is exact, Hauser 1996): 0. So s is decoded as a normal number (its
+// field, the hidden bit always set). Scaling: n * 2^-23 (exact: n is an integer below 2^25), then
+// times 2^(Emin - 127), a normal power of two built from Emin's bits: one rounding, where e is
+// below 2^-126, as the float TwoSum's; no overflow, since |e| <= 2^103.
 float df_int_sum_error(float a, float b, float s) {
   int ua = df_int_unit(a);
   int ub = df_int_unit(b);
-  int us = df_int_unit(s);
   int umin = min(ua, ub);
   uint ta = df_int_signed(a) << min(uint(ua - umin), 31u);
   uint tb = df_int_signed(b) << min(uint(ub - umin), 31u);
-  uint ts = df_int_signed(s) << min(uint(us - umin), 31u);
+  uint bs = floatBitsToUint(s);
+  int fs = int((bs >> 23u) & 255u);
+  uint sign = uint(floatBitsToInt(s) >> 31);
+  uint ms = (bs & 8388607u) | 8388608u;
+  uint ts = ((ms ^ sign) - sign) << min(uint(fs - umin), 31u);
   int n = int(ta + tb - ts);
-  bool special = us == 255;
-  bool exact = any(bvec2(special, us < umin));
-  float e = (df_int_scale(n, umin - 150));
+  bool exact = any(bvec2(fs == 255, fs < umin));
+  float f = (float(n) * 1.1920928955078125e-7);
+  float e = (f * uintBitsToFloat(uint(umin) << 23u));
   float r = (mix(e, 0.0, exact));
   return r;
 }
@@ -171,6 +159,25 @@ df_double df_sub(df_double a, df_double b) {
   df_double nb = df_neg(b);
   df_double z = df_add(a, nb);
   return z;
+}
+
+// df_int_scale: n * 2^k, exact whenever the result is a float (one rounding below 2^-126 otherwise).
+// Algorithm: conversion of n (at most 24 significant bits, so exact), then two multiplications by
+// powers of two built from their bit patterns, k split in halves (k >> 1 and the rest) so neither
+// factor leaves the normal range and the first product cannot underflow or overflow
+// Source: HFPA (2018) section 2.2 (multiplication by a power of the radix is exact)
+// Bound: exact
+// Flops: 3
+// Range: -252 <= k <= 253, which the callers guarantee wherever their result is used.
+float df_int_scale(int n, int k) {
+  int k1 = k >> 1;
+  int k2 = k - k1;
+  float p1 = (uintBitsToFloat(uint(k1 + 127) << 23u));
+  float p2 = (uintBitsToFloat(uint(k2 + 127) << 23u));
+  float f = (float(n));
+  float f1 = (f * p1);
+  float r = (f1 * p2);
+  return r;
 }
 
 // df_int_prod_error: a*b - p exactly, for p the float product the hardware computed.
