@@ -122,6 +122,7 @@ double count_main_float_ops(const std::vector<uint32_t>& w) {
   // rare special cases: the scaled split for |a| > 1e34, df_finish's fallback); main counts every
   // block once (the kernels' steps are straight-line code inside one loop body).
   std::map<uint32_t, double> memo;
+  bool callee_loops = false;  // a callee with a back edge: its trip count is not in the code's shape
   std::function<double(uint32_t, int, bool)> total = [&](uint32_t f, int depth, bool all_blocks) -> double {
     if (depth > 64 || !fns.count(f)) return 0;
     if (!all_blocks)
@@ -150,12 +151,16 @@ double count_main_float_ops(const std::vector<uint32_t>& w) {
       const double here = best[i] + cost(b);
       if (b.next.empty()) result = std::min(result, here);
       for (uint32_t n : b.next)
-        if (auto it = index.find(n); it != index.end() && it->second > i) best[it->second] = std::min(best[it->second], here);
+        if (auto it = index.find(n); it != index.end()) {
+          if (it->second > i) best[it->second] = std::min(best[it->second], here);
+          else callee_loops = true;
+        }
     }
     if (result >= 1e300) result = 0;
     return memo[f] = result;
   };
-  return total(main_id, 0, true);
+  const double count = total(main_id, 0, true);
+  return callee_loops ? -1 : count;
 }
 
 double float_ops_per_step(const std::string& glsl8, const std::string& glsl16) {

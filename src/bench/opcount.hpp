@@ -14,7 +14,10 @@
 
 namespace doublet::bench {
 
-// Float operations of main(), callees included; -1 when the module has no main or is malformed.
+// Float operations of main(), callees included; -1 when the module has no main or is malformed,
+// or when a function main calls has a loop (df64-int's and mode exact's matrix helpers, mode
+// exact's shared call sites): the cheapest path would skip the loop body, and its trip count is
+// not counted here, so no count is better than a wrong one.
 double count_main_float_ops(const std::vector<uint32_t>& spirv);
 
 // Float operations per step of a kernel: glsl8 and glsl16 are the same kernel with 8 and 16
