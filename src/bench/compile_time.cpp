@@ -6,11 +6,11 @@
 #include <fstream>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <map>
 #include <optional>
 #include <sstream>
 
+#include "bench/kernels.hpp"
 #include "runner/timed_compute.hpp"
 #include "verify/spec.hpp"
 #include "verify/verify.hpp"
@@ -88,10 +88,8 @@ void add_series(const CompileTimeOptions& o, std::vector<Variant>* variants) {
           v.job.glsl = lowered.output;
         }
         // Zero-filled buffers large enough for every representation of a dvec2 (exact: 4 words).
-        const float steps = 2.0f;
-        std::vector<uint8_t> bound(sizeof steps);
-        std::memcpy(bound.data(), &steps, sizeof steps);
-        v.job.buffers = {std::vector<uint8_t>(kInvocations * 32), std::vector<uint8_t>(kInvocations * 8), bound};
+        v.job.buffers = {std::vector<uint8_t>(kInvocations * 32), std::vector<uint8_t>(kInvocations * 8),
+                         bytes_of(std::vector<float>{2.0f})};  // the loop's bound: two trips
         variants->push_back(v);
       }
 }

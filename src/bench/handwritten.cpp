@@ -239,12 +239,6 @@ long double reference(const std::string& op, const float* in, int steps) {
   return x;
 }
 
-std::vector<uint8_t> bytes_of(const std::vector<float>& f) {
-  std::vector<uint8_t> b(f.size() * 4);
-  std::memcpy(b.data(), f.data(), b.size());
-  return b;
-}
-
 struct Contender {
   std::string name;
   bool handwritten = false;

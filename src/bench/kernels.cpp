@@ -141,17 +141,12 @@ std::vector<std::vector<uint8_t>> kernel_buffers(const Kernel& k, int elements) 
     state ^= state << 13, state ^= state >> 17, state ^= state << 5;
     v = 0.5f + static_cast<float>(state >> 8) * (0.5f / 16777216.0f);
   }
-  auto bytes = [](const std::vector<float>& f) {
-    std::vector<uint8_t> b(f.size() * sizeof(float));
-    std::memcpy(b.data(), f.data(), b.size());
-    return b;
-  };
-  std::vector<std::vector<uint8_t>> buffers{bytes(in), std::vector<uint8_t>(in.size() * sizeof(float))};
+  std::vector<std::vector<uint8_t>> buffers{bytes_of(in), std::vector<uint8_t>(in.size() * sizeof(float))};
   if (k.op == "mat4") {
     // Entries in [0.1, 0.24): every row sums below 1, so repeated m * v stays bounded.
     std::vector<float> m(16);
     for (size_t j = 0; j < m.size(); ++j) m[j] = 0.1f + 0.01f * static_cast<float>((j * 7) % 15);
-    buffers.push_back(bytes(m));
+    buffers.push_back(bytes_of(m));
   }
   return buffers;
 }

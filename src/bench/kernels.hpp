@@ -6,10 +6,19 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
 namespace doublet::bench {
+
+// The bytes of v, as a storage buffer holds them (a job's runner::ComputeJob::buffers entry).
+template <class T>
+std::vector<uint8_t> bytes_of(const std::vector<T>& v) {
+  std::vector<uint8_t> b(v.size() * sizeof(T));
+  std::memcpy(b.data(), v.data(), b.size());
+  return b;
+}
 
 struct Kernel {
   std::string op;        // "add", "sub", ..., "mat4"
