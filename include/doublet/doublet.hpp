@@ -178,8 +178,8 @@ struct InterfaceVariable {
 struct GuardInfo {
   std::string kind;          // "precise", "uniform" or "none"
   std::string uniform_name;  // for kind == "uniform"
-  std::string uniform_type;  // "float"
-  double required_value = 0; // the value the host must leave it at (GL's default 0)
+  std::string uniform_type;  // "float[2]" (read at a non-constant index), "float" on es100 and wgsl
+  double required_value = 0; // the value the host must leave it (every element) at: GL's default 0
 };
 
 struct Manifest {

@@ -49,7 +49,7 @@ export interface Manifest {
   target: string;
   mode?: string;
   variables: ManifestVariable[];
-  guard?: { kind: string; uniform?: string };
+  guard?: { kind: string; uniform?: string; type?: string; required_value?: number };
 }
 
 /** double, dvecN, dmatCxR (column-major) members and arrays of them; a runtime-sized array takes as many elements as given. */

@@ -275,9 +275,14 @@ export function applyUniforms(gl, program, uniforms) {
 export function createWebGL2Binder(gl, program, manifest) {
   const guard = manifest.guard ?? {};
   if (guard.kind === 'uniform') {
-    const location = gl.getUniformLocation(program, guard.uniform);
-    if (location !== null && gl.getUniform(program, location) !== (guard.required_value ?? 0))
-      throw new Error(`the guard uniform '${guard.uniform}' must stay ${guard.required_value ?? 0} (docs/web.md)`);
+    // "float[2]" (ES 3.00: read at a non-constant index, docs/accuracy.md): every element.
+    const elements = Number(/\[(\d+)\]$/.exec(guard.type ?? '')?.[1] ?? 0);
+    const names = elements ? Array.from({ length: elements }, (_, i) => `${guard.uniform}[${i}]`) : [guard.uniform];
+    for (const name of names) {
+      const location = gl.getUniformLocation(program, name);
+      if (location !== null && gl.getUniform(program, location) !== (guard.required_value ?? 0))
+        throw new Error(`the guard uniform '${name}' must stay ${guard.required_value ?? 0} (docs/web.md)`);
+    }
   }
   const set = (values) => {
     gl.useProgram(program);

@@ -49,3 +49,17 @@ for (const mode of ['exact', 'df64']) {
       }
   });
 }
+
+// The guard is `float df_guard[2]` on webgl2 (read at a non-constant index, docs/accuracy.md): a host
+// that sets either element must be refused, element 1 (the index) as much as element 0.
+for (const element of ['df_guard[0]', 'df_guard[1]']) {
+  test(`Chromium WebGL2: the binder refuses a program whose ${element} was set`,
+       { skip: !nativeCli && 'DOUBLET_CLI is not set' }, (t) => {
+    const { output: vertex, manifest } = lowerNative({ 's.vert': shader }, 's.vert', ['--target', 'webgl2']);
+    assert.equal(manifest.guard.type, 'float[2]');
+    const page = runPage(t, jsDir, 'wasm-test/browser/webgl2-binder.html',
+                         { vertex, manifest, attributes: { p }, uniforms: { d }, matrices: { m }, output: 'r', setGuard: element });
+    if (!page) return;
+    assert.match(page.refused ?? '', new RegExp(`guard uniform '${element.replace(/[[\]]/g, '\\$&')}' must stay 0`));
+  });
+}

@@ -153,9 +153,18 @@ struct Subst {
   int width = 1;
   GuardStyle guard = GuardStyle::None;
   std::string guard_uniform = "df_guard";
+  bool indexed_guard = false;  // EmitRequest::indexed_guard
   bool exact_words = false;  // EmitRequest::exact_words: uint words in the df_* structs
   int es_version = 300;      // EmitRequest::es_version: $SEL is mix() from ES 3.00 on
 };
+
+// The guard's value as a guarded step reads it. Indexed: element 0 of a two-element array at an
+// index read from element 1 (both 0), an offset no driver may take for a constant, so a uniform
+// inliner that specialises the shader on uniforms cannot replace the guard (docs/accuracy.md,
+// "A uniform inliner cannot reach an indexed guard").
+std::string guard_read(const Subst& s) {
+  return s.indexed_guard ? s.guard_uniform + "[int(" + s.guard_uniform + "[1])]" : s.guard_uniform;
+}
 
 // The arguments of a placeholder call whose '(' is at in[open]: split at the commas of depth 1.
 // Returns the index of the closing ')' (npos when unbalanced).
@@ -225,7 +234,7 @@ bool substitute(std::string_view in, const Subst& s, std::string& out, std::stri
       // optimizer guard"): `precise` where the target has it, no uniform subtraction.
       if (s.guard == GuardStyle::Uniform && key == "G")
         // Subtract the +0 guard: x - 0 == x for every x including -0 (x + 0 turns -0 into +0).
-        out += "((" + inner + ") - " + s.guard_uniform + ")";
+        out += "((" + inner + ") - " + guard_read(s) + ")";
       else
         out += "(" + inner + ")";
       i = k;
@@ -859,6 +868,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
     Subst s;
     s.guard = request.guard;
     s.guard_uniform = request.guard_uniform;
+    s.indexed_guard = request.indexed_guard;
     s.exact_words = request.exact_words;
     s.es_version = request.es_version;
     std::vector<std::string> functions;
@@ -911,7 +921,8 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
       }
       result.types_end = out.size();
       if (request.guard == GuardStyle::Uniform)
-        out += "uniform highp float " + request.guard_uniform + ";  // never set: GL zero-fills it at link\n";
+        out += "uniform highp float " + request.guard_uniform + (request.indexed_guard ? "[2]" : "") +
+               ";  // never set: GL zero-fills it at link\n";
       for (const auto& f : functions) out += "\n" + f;
     }
     result.text = std::move(out);

@@ -10,7 +10,8 @@
 //   $U   uint  | uvec2 | uvec3 | uvec4
 //   $W   1 | 2 | 3 | 4
 //   $PRECISE   `precise` when the guard is Precise; otherwise empty, and the space after it is dropped
-//   $G(expr)   `(expr)` when Precise or None, `((expr) - df_guard)` when Uniform (x - 0 keeps -0)
+//   $G(expr)   `(expr)` when Precise or None, `((expr) - df_guard)` when Uniform (x - 0 keeps -0),
+//              `((expr) - df_guard[int(df_guard[1])])` when the guard is indexed
 // Annotations in the chunk's header comment:
 //   // @widths 1 2 3 4        widths this chunk is instantiated for (default: 1)
 //   // @min-es 300            lowest ES version that may use it (default 100)
@@ -50,6 +51,10 @@ struct EmitRequest {
   std::vector<RuleRef> used;        // what the lowered code calls directly
   GuardStyle guard = GuardStyle::Uniform;
   std::string guard_uniform = "df_guard";
+  // The uniform guard as `float df_guard[2]`, read as df_guard[int(df_guard[1])]: out of reach of
+  // a driver's uniform inliner (docs/accuracy.md). Off where a uniform array may not be indexed by
+  // a non-constant (ES 1.00 fragment shaders) and for WGSL (its uniform buffer holds one float).
+  bool indexed_guard = false;
   int es_version = 300;             // 100/300/310/320; desktop targets pass 320
   bool integer_eft = false;         // df64-int: the "@variant int" chunks (rules/int.glsl) replace
                                     // the same-named float EFTs

@@ -340,8 +340,8 @@ std::string splice_rules(const std::string& lowered, const doublet::rules::RuleL
 }
 
 std::string add_guard(std::string text) {
-  static const std::regex minus(R"(\) - df_guard\))");
-  return std::regex_replace(text, minus, ") + df_guard)");
+  static const std::regex minus(R"(\) - (df_guard(\[int\(df_guard\[1\]\)\])?)\))");
+  return std::regex_replace(text, minus, ") + $1)");
 }
 
 // ---- running --------------------------------------------------------------------------------

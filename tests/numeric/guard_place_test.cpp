@@ -1,10 +1,12 @@
 // Where the uniform guard is declared matters on lavapipe: when a shader branches on a uniform,
-// lavapipe specialises it on that uniform's value, and a guard declared before every other uniform
-// (offset 0 of the uniform block the loose uniforms are gathered into) then reads as a constant, so
-// every guarded step folds and the results are float(x). doublet therefore prints the shader's loose
-// uniforms before the runtime's guard (emit::PrintOptions::guard_uniform, docs/accuracy.md "The
-// guard's place"). This test runs doublet's output and the same text with the guard moved first:
-// the first keeps float-float accuracy on both drivers, the second loses it on lavapipe.
+// lavapipe specialises it on that uniform's value, and a scalar guard declared before every other
+// uniform (offset 0 of the uniform block the loose uniforms are gathered into) then reads as a
+// constant, so every guarded step folds and the results are float(x). doublet therefore prints the
+// shader's loose uniforms before the runtime's guard (emit::PrintOptions::guard_uniform), and, from
+// ES 3.00 on, reads the guard at a non-constant index (`df_guard[int(df_guard[1])]`), which no
+// uniform inliner replaces (docs/accuracy.md, "The guard's place" and "A uniform inliner cannot
+// reach an indexed guard"). These tests run doublet's output, the same text with the guard moved
+// first, and that text with the guard turned back into a scalar: only the last loses the low words.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,9 +47,10 @@ std::string lowered_es310() {
   return result.output;
 }
 
+const std::string kIndexedGuardLine = "uniform highp float df_guard[2];";
+
 // The same text with the guard's declaration moved in front of the shader's own uniforms.
-std::string with_guard_first(const std::string& text) {
-  const std::string guard_line = "uniform highp float df_guard;";
+std::string with_guard_first(const std::string& text, const std::string& guard_line = kIndexedGuardLine) {
   size_t guard = text.find(guard_line);
   size_t first_uniform = text.find("\nuniform ");
   if (guard == std::string::npos || first_uniform == std::string::npos || first_uniform + 1 >= guard) return "";
@@ -57,6 +60,14 @@ std::string with_guard_first(const std::string& text) {
   moved.erase(guard, guard_end - guard);
   moved.insert(first_uniform + 1, line);
   return moved;
+}
+
+// The text with the guard read as the scalar of ES 1.00 and WGSL: `float df_guard;`, `- df_guard)`.
+std::string with_scalar_guard(std::string text) {
+  const std::pair<std::string, std::string> edits[] = {{"df_guard[int(df_guard[1])]", "df_guard"}, {"df_guard[2]", "df_guard"}};
+  for (const auto& [from, to] : edits)
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+  return text;
 }
 
 // Bits of the worst relative error of y = x + (sum of x[0..2] * 1e-12) * dt against host doubles.
@@ -95,7 +106,7 @@ double run_bits(Backend backend, const std::string& glsl) {
 
 TEST(GuardPlace, LooseUniformsPrecedeTheGuard) {
   std::string text = lowered_es310();
-  size_t guard = text.find("uniform highp float df_guard;");
+  size_t guard = text.find(kIndexedGuardLine);
   ASSERT_NE(guard, std::string::npos) << text;
   EXPECT_LT(text.find("uniform uint n;"), guard);
   EXPECT_LT(text.find("uniform float dt_hi;"), guard);
@@ -107,10 +118,23 @@ TEST(GuardPlace, DoubletsOrderKeepsFloatFloatOnBothDrivers) {
     EXPECT_GE(run_bits(backend, text), 44.0) << doublet::runner::backend_name(backend);
 }
 
-// The sabotage: the guard declared first. On lavapipe the specialised shader loses the low words;
-// if this ever passes, Mesa changed and the hoisting may no longer be needed (docs/accuracy.md).
-TEST(GuardPlace, GuardDeclaredFirstLosesTheLowWordsOnLavapipe) {
+// The indexed guard holds even in the place that breaks a scalar one: lavapipe inlines only loads at
+// a constant offset.
+TEST(GuardPlace, IndexedGuardDeclaredFirstKeepsFloatFloatOnBothDrivers) {
   std::string moved = with_guard_first(lowered_es310());
+  ASSERT_FALSE(moved.empty());
+  for (Backend backend : {Backend::Vulkan, Backend::Gles})
+    EXPECT_GE(run_bits(backend, moved), 44.0) << doublet::runner::backend_name(backend);
+}
+
+// The sabotage: a scalar guard declared first. On lavapipe the specialised shader loses the low
+// words; if this ever passes, Mesa changed and the hoisting may no longer be needed where the guard
+// is a scalar (ES 1.00, WGSL; docs/accuracy.md).
+TEST(GuardPlace, ScalarGuardDeclaredFirstLosesTheLowWordsOnLavapipe) {
+  const std::string scalar = with_scalar_guard(lowered_es310());
+  ASSERT_NE(scalar.find("uniform highp float df_guard;"), std::string::npos);
+  ASSERT_EQ(scalar.find("df_guard["), std::string::npos);
+  std::string moved = with_guard_first(scalar, "uniform highp float df_guard;");
   ASSERT_FALSE(moved.empty());
   EXPECT_LT(run_bits(Backend::Vulkan, moved), 30.0);
   EXPECT_GE(run_bits(Backend::Gles, moved), 44.0);  // Mesa's GL driver does not specialise this way

@@ -150,13 +150,28 @@ TEST(Guard, PreciseOnEs320UniformOnEs300) {
   const char* src = "#version 300 es\nuniform double a;\nout float r;\nvoid main() { r = float(a * a); }\n";
   auto es300 = lower(src, doublet::Stage::Fragment, doublet::Target::Es300);
   ASSERT_TRUE(es300.ok) << messages(es300);
-  EXPECT_NE(es300.output.find("uniform highp float df_guard;"), std::string::npos);
+  EXPECT_NE(es300.output.find("uniform highp float df_guard[2];"), std::string::npos);
+  EXPECT_NE(es300.output.find(" - df_guard[int(df_guard[1])])"), std::string::npos);
+  EXPECT_EQ(es300.manifest.guard.uniform_type, "float[2]");
   EXPECT_EQ(es300.output.find("precise "), std::string::npos);
   auto es320 = lower(src, doublet::Stage::Fragment, doublet::Target::Es320);
   ASSERT_TRUE(es320.ok) << messages(es320);
   EXPECT_NE(es320.output.find("precise "), std::string::npos);
   EXPECT_EQ(es320.output.find("df_guard"), std::string::npos);
   EXPECT_EQ(es320.manifest.guard.kind, "precise");
+}
+
+// ES 1.00 fragment shaders index uniform arrays by constants only, and WGSL's uniform buffer holds
+// the guard as one f32: both keep the scalar guard (docs/accuracy.md).
+TEST(Guard, ScalarOnEs100AndWgsl) {
+  const char* src = "#version 300 es\nuniform double a;\nvoid main() { gl_Position = vec4(float(a * a + a)); }\n";
+  for (doublet::Target target : {doublet::Target::Es100, doublet::Target::Wgsl}) {
+    auto r = lower(src, doublet::Stage::Vertex, target);
+    ASSERT_TRUE(r.ok) << messages(r);
+    EXPECT_EQ(r.output.find("df_guard["), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("df_guard"), std::string::npos) << r.output;
+    EXPECT_EQ(r.manifest.guard.uniform_type, "float");
+  }
 }
 
 TEST(Guard, PreciseOnATargetWithoutItIsAnError) {

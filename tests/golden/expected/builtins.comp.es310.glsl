@@ -6,7 +6,7 @@ layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
 // doublet float-float runtime: 100 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -25,7 +25,7 @@ df_double df_neg(df_double a) {
 // Bound: exact
 // Flops: 1
 df_double df_sign(df_double a) {
-  float s = ((sign(a.hi)) - df_guard);
+  float s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
   return df_double(s, float(0.0));
 }
 
@@ -37,8 +37,8 @@ df_double df_sign(df_double a) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -53,10 +53,10 @@ df_double df_fast_two_sum(float a, float b) {
 // Bound: exact
 // Flops: 6 (plus 2 comparisons)
 df_double df_floor(df_double a) {
-  float f = ((floor(a.hi)) - df_guard);
+  float f = ((floor(a.hi)) - df_guard[int(df_guard[1])]);
   float af = (abs(f));
   bool integer = all(bvec3(f == a.hi, af > 0.0, af <= 3.40282347e38));
-  float g = ((floor(a.lo)) - df_guard);
+  float g = ((floor(a.lo)) - df_guard[int(df_guard[1])]);
   df_double r = df_fast_two_sum(a.hi, g);
   float h = (mix(f, r.hi, integer));
   float l = (mix(0.0, r.lo, integer));
@@ -70,8 +70,8 @@ df_double df_floor(df_double a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -183,14 +183,14 @@ df_double df_add_f(df_double a, float b) {
 // Bound: 2u^2
 // Flops: 29
 df_double df_fract(df_double a) {
-  float f = ((floor(a.hi)) - df_guard);
+  float f = ((floor(a.hi)) - df_guard[int(df_guard[1])]);
   bool integer = f == a.hi;
-  float g = ((floor(a.lo)) - df_guard);
-  float ng = ((0.0 - g) - df_guard);
+  float g = ((floor(a.lo)) - df_guard[int(df_guard[1])]);
+  float ng = ((0.0 - g) - df_guard[int(df_guard[1])]);
   df_double r = df_two_sum(a.lo, ng);
-  float d = ((a.hi - f) - df_guard);
+  float d = ((a.hi - f) - df_guard[int(df_guard[1])]);
   df_double q = df_finish(r, d);
-  float nf = ((0.0 - f) - df_guard);
+  float nf = ((0.0 - f) - df_guard[int(df_guard[1])]);
   df_double t = df_two_sum(a.hi, nf);
   df_double s = df_add_f(t, a.lo);
   df_double z = df_select(integer, q, s);
@@ -241,13 +241,13 @@ df_double df_round(df_double a) {
 df_double df_round_even(df_double a) {
   df_double f = df_floor(a);
   df_double d = df_fract(a);
-  float h2 = ((f.hi * 0.5) - df_guard);
-  float fh2 = ((floor(h2)) - df_guard);
-  float ph = ((h2 - fh2) - df_guard);
-  float l2 = ((f.lo * 0.5) - df_guard);
-  float fl2 = ((floor(l2)) - df_guard);
-  float pl = ((l2 - fl2) - df_guard);
-  float parity = ((ph + pl) - df_guard);
+  float h2 = ((f.hi * 0.5) - df_guard[int(df_guard[1])]);
+  float fh2 = ((floor(h2)) - df_guard[int(df_guard[1])]);
+  float ph = ((h2 - fh2) - df_guard[int(df_guard[1])]);
+  float l2 = ((f.lo * 0.5) - df_guard[int(df_guard[1])]);
+  float fl2 = ((floor(l2)) - df_guard[int(df_guard[1])]);
+  float pl = ((l2 - fl2) - df_guard[int(df_guard[1])]);
+  float parity = ((ph + pl) - df_guard[int(df_guard[1])]);
   bool above = any(bvec2(d.hi > 0.5, all(bvec2(d.hi == 0.5, d.lo > 0.0))));
   bool tie = all(bvec2(d.hi == 0.5, d.lo == 0.0));
   bool up = any(bvec2(above, all(bvec2(tie, parity == 0.5))));
@@ -320,7 +320,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -358,7 +358,7 @@ df_double df_mul_f(df_double a, float b) {
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
 // Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_double df_div(df_double a, df_double b) {
-  float th = ((a.hi / b.hi) - df_guard);
+  float th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_double r = df_mul_f(b, th);
   float pih = (a.hi - r.hi);
   float dl = (a.lo - r.lo);
@@ -587,15 +587,15 @@ ivec3 df_exp2i(int e) {
 // is rounded (at most twice), within one subnormal ulp (2^-149) absolute.
 df_double df_ldexp(df_double a, int e) {
   ivec3 b = df_exp2i(e);
-  float s1 = ((intBitsToFloat(b.x)) - df_guard);
-  float s2 = ((intBitsToFloat(b.y)) - df_guard);
-  float s3 = ((intBitsToFloat(b.z)) - df_guard);
-  float h1 = ((a.hi * s1) - df_guard);
-  float h2 = ((h1 * s2) - df_guard);
-  float h = ((h2 * s3) - df_guard);
-  float l1 = ((a.lo * s1) - df_guard);
-  float l2 = ((l1 * s2) - df_guard);
-  float l = ((l2 * s3) - df_guard);
+  float s1 = ((intBitsToFloat(b.x)) - df_guard[int(df_guard[1])]);
+  float s2 = ((intBitsToFloat(b.y)) - df_guard[int(df_guard[1])]);
+  float s3 = ((intBitsToFloat(b.z)) - df_guard[int(df_guard[1])]);
+  float h1 = ((a.hi * s1) - df_guard[int(df_guard[1])]);
+  float h2 = ((h1 * s2) - df_guard[int(df_guard[1])]);
+  float h = ((h2 * s3) - df_guard[int(df_guard[1])]);
+  float l1 = ((a.lo * s1) - df_guard[int(df_guard[1])]);
+  float l2 = ((l1 * s2) - df_guard[int(df_guard[1])]);
+  float l = ((l2 * s3) - df_guard[int(df_guard[1])]);
   df_double z = df_double(h, l);
   df_double r = df_finish(z, h);
   return r;
@@ -637,9 +637,9 @@ df_double df_frexp(df_double a, out int e) {
 // Bound: exact
 // Flops: 3
 df_double df_abs(df_double a) {
-  float s = ((sign(a.hi)) - df_guard);
-  float h = ((abs(a.hi)) - df_guard);
-  float l = ((a.lo * s) - df_guard);
+  float s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  float h = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  float l = ((a.lo * s) - df_guard[int(df_guard[1])]);
   return df_double(h, l);
 }
 
@@ -665,7 +665,7 @@ df_double df_abs(df_double a) {
 // (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
 // Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) - df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard[int(df_guard[1])]);
   df_double sq = df_two_prod(sh, sh);
   float r0 = (a.hi - sq.hi);
   float rho1 = (r0 - sq.lo);
@@ -797,7 +797,7 @@ vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
+  vec3 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
   vec3 e = (df_mul12_error(sa, sb, p));
@@ -812,8 +812,8 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -910,8 +910,8 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 bb = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 ab = (s - bb);
   vec3 da = (a - ab);
   vec3 db = (b - bb);
@@ -1006,7 +1006,7 @@ df_dvec3 df_mul_f(df_dvec3 a, vec3 b) {
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
 // Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
-  vec3 th = ((a.hi / b.hi) - df_guard);
+  vec3 th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_mul_f(b, th);
   vec3 pih = (a.hi - r.hi);
   vec3 dl = (a.lo - r.lo);
@@ -1267,9 +1267,9 @@ df_dvec3 df_clamp(df_dvec3 x, df_dvec3 lo, df_dvec3 hi) {
 // Bound: exact
 // Flops: 3
 df_dvec3 df_abs(df_dvec3 a) {
-  vec3 s = ((sign(a.hi)) - df_guard);
-  vec3 h = ((abs(a.hi)) - df_guard);
-  vec3 l = ((a.lo * s) - df_guard);
+  vec3 s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  vec3 h = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  vec3 l = ((a.lo * s) - df_guard[int(df_guard[1])]);
   return df_dvec3(h, l);
 }
 
@@ -1296,7 +1296,7 @@ df_dvec3 df_fract(df_dvec3 a) {
 // Bound: exact
 // Flops: 1
 df_dvec3 df_sign(df_dvec3 a) {
-  vec3 s = ((sign(a.hi)) - df_guard);
+  vec3 s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
   return df_dvec3(s, vec3(0.0));
 }
 
@@ -1516,9 +1516,9 @@ uvec2 df_unpack_double2x32(df_double a) {
   int k = below ? e - 1 : e;
   int nk = 0 - k;
   df_double x = df_ldexp(m, nk);
-  float hs = ((x.hi * 8388608.0) - df_guard);
-  float ls = ((x.lo * 4503599627370496.0) - df_guard);
-  float lr = ((roundEven(ls)) - df_guard);
+  float hs = ((x.hi * 8388608.0) - df_guard[int(df_guard[1])]);
+  float ls = ((x.lo * 4503599627370496.0) - df_guard[int(df_guard[1])]);
+  float lr = ((roundEven(ls)) - df_guard[int(df_guard[1])]);
   uint big = uint(hs);
   uint high = big >> 3u;
   uint low = big << 29u;
@@ -1558,13 +1558,13 @@ df_double df_pack_double2x32(uvec2 v) {
   bool special = exponent == 2047u;
   bool nan = any(bvec2((v.y & 1048575u) != 0u, v.x != 0u));
   uint edge_bits = zero ? sign_bit : (nan ? 2143289344u : (sign_bit | 2139095040u));
-  float eh = ((uintBitsToFloat(edge_bits)) - df_guard);
-  float t = ((float(top)) - df_guard);
-  float tn = ((t * 9.5367431640625e-07) - df_guard);
-  float m = ((float(mid)) - df_guard);
-  float mn = ((m * 5.684341886080802e-14) - df_guard);
-  float l = ((float(low)) - df_guard);
-  float ln = ((l * 2.220446049250313e-16) - df_guard);
+  float eh = ((uintBitsToFloat(edge_bits)) - df_guard[int(df_guard[1])]);
+  float t = ((float(top)) - df_guard[int(df_guard[1])]);
+  float tn = ((t * 9.5367431640625e-07) - df_guard[int(df_guard[1])]);
+  float m = ((float(mid)) - df_guard[int(df_guard[1])]);
+  float mn = ((m * 5.684341886080802e-14) - df_guard[int(df_guard[1])]);
+  float l = ((float(low)) - df_guard[int(df_guard[1])]);
+  float ln = ((l * 2.220446049250313e-16) - df_guard[int(df_guard[1])]);
   df_double s = df_two_sum(tn, mn);
   df_double r = df_add_f(s, ln);
   int scale = int(exponent) - 1023;

@@ -10,7 +10,7 @@ uniform vec3 light_lo;
 // doublet float-float runtime: 82 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -76,7 +76,7 @@ vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
+  vec3 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
   vec3 e = (df_mul12_error(sa, sb, p));
@@ -91,8 +91,8 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -190,8 +190,8 @@ df_dvec3 df_scale_pow2(df_dvec3 a, float s) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -207,8 +207,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -313,7 +313,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -342,7 +342,7 @@ df_double df_two_prod(float a, float b) {
 // (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
 // Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) - df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard[int(df_guard[1])]);
   df_double sq = df_two_prod(sh, sh);
   float r0 = (a.hi - sq.hi);
   float rho1 = (r0 - sq.lo);
@@ -385,7 +385,7 @@ df_dvec3 df_mul_f(df_dvec3 a, vec3 b) {
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
 // Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_dvec3 df_div(df_dvec3 a, df_dvec3 b) {
-  vec3 th = ((a.hi / b.hi) - df_guard);
+  vec3 th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_mul_f(b, th);
   vec3 pih = (a.hi - r.hi);
   vec3 dl = (a.lo - r.lo);
@@ -471,14 +471,14 @@ df_double df_add_f(df_double a, float b) {
 // Bound: 2u^2
 // Flops: 29
 df_double df_fract(df_double a) {
-  float f = ((floor(a.hi)) - df_guard);
+  float f = ((floor(a.hi)) - df_guard[int(df_guard[1])]);
   bool integer = f == a.hi;
-  float g = ((floor(a.lo)) - df_guard);
-  float ng = ((0.0 - g) - df_guard);
+  float g = ((floor(a.lo)) - df_guard[int(df_guard[1])]);
+  float ng = ((0.0 - g) - df_guard[int(df_guard[1])]);
   df_double r = df_two_sum(a.lo, ng);
-  float d = ((a.hi - f) - df_guard);
+  float d = ((a.hi - f) - df_guard[int(df_guard[1])]);
   df_double q = df_finish(r, d);
-  float nf = ((0.0 - f) - df_guard);
+  float nf = ((0.0 - f) - df_guard[int(df_guard[1])]);
   df_double t = df_two_sum(a.hi, nf);
   df_double s = df_add_f(t, a.lo);
   df_double z = df_select(integer, q, s);
@@ -538,7 +538,7 @@ df_double df_mul_f(df_double a, float b) {
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
 // Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_double df_div(df_double a, df_double b) {
-  float th = ((a.hi / b.hi) - df_guard);
+  float th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_double r = df_mul_f(b, th);
   float pih = (a.hi - r.hi);
   float dl = (a.lo - r.lo);
@@ -621,10 +621,10 @@ df_double df_smoothstep(df_double e0, df_double e1, df_double x) {
 // Bound: exact
 // Flops: 6 (plus 2 comparisons)
 df_double df_floor(df_double a) {
-  float f = ((floor(a.hi)) - df_guard);
+  float f = ((floor(a.hi)) - df_guard[int(df_guard[1])]);
   float af = (abs(f));
   bool integer = all(bvec3(f == a.hi, af > 0.0, af <= 3.40282347e38));
-  float g = ((floor(a.lo)) - df_guard);
+  float g = ((floor(a.lo)) - df_guard[int(df_guard[1])]);
   df_double r = df_fast_two_sum(a.hi, g);
   float h = (mix(f, r.hi, integer));
   float l = (mix(0.0, r.lo, integer));
@@ -765,13 +765,13 @@ df_double df_round(df_double a) {
 df_double df_round_even(df_double a) {
   df_double f = df_floor(a);
   df_double d = df_fract(a);
-  float h2 = ((f.hi * 0.5) - df_guard);
-  float fh2 = ((floor(h2)) - df_guard);
-  float ph = ((h2 - fh2) - df_guard);
-  float l2 = ((f.lo * 0.5) - df_guard);
-  float fl2 = ((floor(l2)) - df_guard);
-  float pl = ((l2 - fl2) - df_guard);
-  float parity = ((ph + pl) - df_guard);
+  float h2 = ((f.hi * 0.5) - df_guard[int(df_guard[1])]);
+  float fh2 = ((floor(h2)) - df_guard[int(df_guard[1])]);
+  float ph = ((h2 - fh2) - df_guard[int(df_guard[1])]);
+  float l2 = ((f.lo * 0.5) - df_guard[int(df_guard[1])]);
+  float fl2 = ((floor(l2)) - df_guard[int(df_guard[1])]);
+  float pl = ((l2 - fl2) - df_guard[int(df_guard[1])]);
+  float parity = ((ph + pl) - df_guard[int(df_guard[1])]);
   bool above = any(bvec2(d.hi > 0.5, all(bvec2(d.hi == 0.5, d.lo > 0.0))));
   bool tie = all(bvec2(d.hi == 0.5, d.lo == 0.0));
   bool up = any(bvec2(above, all(bvec2(tie, parity == 0.5))));
@@ -819,8 +819,8 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 bb = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 ab = (s - bb);
   vec3 da = (a - ab);
   vec3 db = (b - bb);
@@ -1133,9 +1133,9 @@ bvec3 df_not_equal_components(df_dvec3 a, df_dvec3 b) {
 // Bound: exact
 // Flops: 3
 df_dvec3 df_abs(df_dvec3 a) {
-  vec3 s = ((sign(a.hi)) - df_guard);
-  vec3 h = ((abs(a.hi)) - df_guard);
-  vec3 l = ((a.lo * s) - df_guard);
+  vec3 s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  vec3 h = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  vec3 l = ((a.lo * s) - df_guard[int(df_guard[1])]);
   return df_dvec3(h, l);
 }
 
@@ -1162,7 +1162,7 @@ df_dvec3 df_floor(df_dvec3 a) {
 // Bound: exact
 // Flops: 1
 df_dvec3 df_sign(df_dvec3 a) {
-  vec3 s = ((sign(a.hi)) - df_guard);
+  vec3 s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
   return df_dvec3(s, vec3(0.0));
 }
 
@@ -1175,7 +1175,7 @@ df_dvec3 df_sign(df_dvec3 a) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec3 df_to_float(df_dvec3 a) {
-  vec3 f = ((a.hi + a.lo) - df_guard);
+  vec3 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
   return r.hi;
 }
@@ -1246,7 +1246,7 @@ df_double df_inversesqrt(df_double a) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }

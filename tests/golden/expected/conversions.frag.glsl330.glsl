@@ -15,7 +15,7 @@ struct df_dvec4 {
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -24,8 +24,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -45,8 +45,8 @@ df_double df_two_sum(float a, float b) {
 df_double df_from_int(int i) {
   int q = i / 65536;
   int r = i - q * 65536;
-  float qf = ((float(q) * 65536.0) - df_guard);
-  float rf = ((float(r)) - df_guard);
+  float qf = ((float(q) * 65536.0) - df_guard[int(df_guard[1])]);
+  float rf = ((float(r)) - df_guard[int(df_guard[1])]);
   df_double z = df_two_sum(qf, rf);
   return z;
 }
@@ -61,8 +61,8 @@ df_double df_from_int(int i) {
 df_double df_from_uint(uint u) {
   uint q = u / 65536u;
   uint r = u - q * 65536u;
-  float qf = ((float(q) * 65536.0) - df_guard);
-  float rf = ((float(r)) - df_guard);
+  float qf = ((float(q) * 65536.0) - df_guard[int(df_guard[1])]);
+  float rf = ((float(r)) - df_guard[int(df_guard[1])]);
   df_double z = df_two_sum(qf, rf);
   return z;
 }
@@ -75,8 +75,8 @@ df_double df_from_uint(uint u) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -125,8 +125,8 @@ df_double df_add(df_double a, df_double b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 bb = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 ab = (s - bb);
   vec2 da = (a - ab);
   vec2 db = (b - bb);
@@ -146,8 +146,8 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 df_dvec2 df_from_int(ivec2 i) {
   ivec2 q = i / 65536;
   ivec2 r = i - q * 65536;
-  vec2 qf = ((vec2(q) * 65536.0) - df_guard);
-  vec2 rf = ((vec2(r)) - df_guard);
+  vec2 qf = ((vec2(q) * 65536.0) - df_guard[int(df_guard[1])]);
+  vec2 rf = ((vec2(r)) - df_guard[int(df_guard[1])]);
   df_dvec2 z = df_two_sum(qf, rf);
   return z;
 }
@@ -162,8 +162,8 @@ df_dvec2 df_from_int(ivec2 i) {
 df_dvec2 df_from_uint(uvec2 u) {
   uvec2 q = u / 65536u;
   uvec2 r = u - q * 65536u;
-  vec2 qf = ((vec2(q) * 65536.0) - df_guard);
-  vec2 rf = ((vec2(r)) - df_guard);
+  vec2 qf = ((vec2(q) * 65536.0) - df_guard[int(df_guard[1])]);
+  vec2 rf = ((vec2(r)) - df_guard[int(df_guard[1])]);
   df_dvec2 z = df_two_sum(qf, rf);
   return z;
 }
@@ -176,8 +176,8 @@ df_dvec2 df_from_uint(uvec2 u) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 z = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 e = (b - z);
   return df_dvec2(s, e);
 }
@@ -231,22 +231,22 @@ df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
 // Bound: exact
 // Flops: 15 (float, including sign/abs/floor/step; plus 3 conversions and 2 integer adds)
 int df_to_int(df_double a) {
-  float s = ((sign(a.hi)) - df_guard);
-  float ah = ((abs(a.hi)) - df_guard);
-  float fh = ((floor(ah)) - df_guard);
-  float t = ((s * fh) - df_guard);
-  float d = ((a.hi - t) - df_guard);
-  float ad = ((abs(d)) - df_guard);
-  float m = ((step(ad, float(0.0))) - df_guard);
-  float sl = ((s * a.lo) - df_guard);
-  float fl = ((floor(sl)) - df_guard);
-  float adj0 = ((s * fl) - df_guard);
-  float adj = ((adj0 * m) - df_guard);
-  float th = ((t * 0.5) - df_guard);
+  float s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  float ah = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  float fh = ((floor(ah)) - df_guard[int(df_guard[1])]);
+  float t = ((s * fh) - df_guard[int(df_guard[1])]);
+  float d = ((a.hi - t) - df_guard[int(df_guard[1])]);
+  float ad = ((abs(d)) - df_guard[int(df_guard[1])]);
+  float m = ((step(ad, float(0.0))) - df_guard[int(df_guard[1])]);
+  float sl = ((s * a.lo) - df_guard[int(df_guard[1])]);
+  float fl = ((floor(sl)) - df_guard[int(df_guard[1])]);
+  float adj0 = ((s * fl) - df_guard[int(df_guard[1])]);
+  float adj = ((adj0 * m) - df_guard[int(df_guard[1])]);
+  float th = ((t * 0.5) - df_guard[int(df_guard[1])]);
   int h = int(th);
-  float h2 = ((float(h) * 2.0) - df_guard);
-  float e = ((t - h2) - df_guard);
-  float ea = ((e + adj) - df_guard);
+  float h2 = ((float(h) * 2.0) - df_guard[int(df_guard[1])]);
+  float e = ((t - h2) - df_guard[int(df_guard[1])]);
+  float ea = ((e + adj) - df_guard[int(df_guard[1])]);
   int k = int(ea);
   int hk = h + k;
   int z = hk + h;
@@ -266,22 +266,22 @@ int df_to_int(df_double a) {
 // Bound: exact
 // Flops: 15 (float, including sign/abs/floor/step; plus 3 conversions and 2 integer adds)
 ivec2 df_to_int(df_dvec2 a) {
-  vec2 s = ((sign(a.hi)) - df_guard);
-  vec2 ah = ((abs(a.hi)) - df_guard);
-  vec2 fh = ((floor(ah)) - df_guard);
-  vec2 t = ((s * fh) - df_guard);
-  vec2 d = ((a.hi - t) - df_guard);
-  vec2 ad = ((abs(d)) - df_guard);
-  vec2 m = ((step(ad, vec2(0.0))) - df_guard);
-  vec2 sl = ((s * a.lo) - df_guard);
-  vec2 fl = ((floor(sl)) - df_guard);
-  vec2 adj0 = ((s * fl) - df_guard);
-  vec2 adj = ((adj0 * m) - df_guard);
-  vec2 th = ((t * 0.5) - df_guard);
+  vec2 s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  vec2 ah = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  vec2 fh = ((floor(ah)) - df_guard[int(df_guard[1])]);
+  vec2 t = ((s * fh) - df_guard[int(df_guard[1])]);
+  vec2 d = ((a.hi - t) - df_guard[int(df_guard[1])]);
+  vec2 ad = ((abs(d)) - df_guard[int(df_guard[1])]);
+  vec2 m = ((step(ad, vec2(0.0))) - df_guard[int(df_guard[1])]);
+  vec2 sl = ((s * a.lo) - df_guard[int(df_guard[1])]);
+  vec2 fl = ((floor(sl)) - df_guard[int(df_guard[1])]);
+  vec2 adj0 = ((s * fl) - df_guard[int(df_guard[1])]);
+  vec2 adj = ((adj0 * m) - df_guard[int(df_guard[1])]);
+  vec2 th = ((t * 0.5) - df_guard[int(df_guard[1])]);
   ivec2 h = ivec2(th);
-  vec2 h2 = ((vec2(h) * 2.0) - df_guard);
-  vec2 e = ((t - h2) - df_guard);
-  vec2 ea = ((e + adj) - df_guard);
+  vec2 h2 = ((vec2(h) * 2.0) - df_guard[int(df_guard[1])]);
+  vec2 e = ((t - h2) - df_guard[int(df_guard[1])]);
+  vec2 ea = ((e + adj) - df_guard[int(df_guard[1])]);
   ivec2 k = ivec2(ea);
   ivec2 hk = h + k;
   ivec2 z = hk + h;
@@ -294,9 +294,9 @@ ivec2 df_to_int(df_dvec2 a) {
 // Bound: exact
 // Flops: 3
 df_double df_abs(df_double a) {
-  float s = ((sign(a.hi)) - df_guard);
-  float h = ((abs(a.hi)) - df_guard);
-  float l = ((a.lo * s) - df_guard);
+  float s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  float h = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  float l = ((a.lo * s) - df_guard[int(df_guard[1])]);
   return df_double(h, l);
 }
 
@@ -309,22 +309,22 @@ df_double df_abs(df_double a) {
 // Bound: exact
 // Flops: 15 (float, including sign/abs/floor/step; plus 4 conversions and 2 integer adds)
 uint df_to_uint(df_double a) {
-  float s = ((sign(a.hi)) - df_guard);
-  float ah = ((abs(a.hi)) - df_guard);
-  float fh = ((floor(ah)) - df_guard);
-  float t = ((s * fh) - df_guard);
-  float d = ((a.hi - t) - df_guard);
-  float ad = ((abs(d)) - df_guard);
-  float m = ((step(ad, float(0.0))) - df_guard);
-  float sl = ((s * a.lo) - df_guard);
-  float fl = ((floor(sl)) - df_guard);
-  float adj0 = ((s * fl) - df_guard);
-  float adj = ((adj0 * m) - df_guard);
-  float th = ((t * 0.5) - df_guard);
+  float s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  float ah = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  float fh = ((floor(ah)) - df_guard[int(df_guard[1])]);
+  float t = ((s * fh) - df_guard[int(df_guard[1])]);
+  float d = ((a.hi - t) - df_guard[int(df_guard[1])]);
+  float ad = ((abs(d)) - df_guard[int(df_guard[1])]);
+  float m = ((step(ad, float(0.0))) - df_guard[int(df_guard[1])]);
+  float sl = ((s * a.lo) - df_guard[int(df_guard[1])]);
+  float fl = ((floor(sl)) - df_guard[int(df_guard[1])]);
+  float adj0 = ((s * fl) - df_guard[int(df_guard[1])]);
+  float adj = ((adj0 * m) - df_guard[int(df_guard[1])]);
+  float th = ((t * 0.5) - df_guard[int(df_guard[1])]);
   uint h = uint(th);
-  float h2 = ((float(h) * 2.0) - df_guard);
-  float e = ((t - h2) - df_guard);
-  float ea = ((e + adj) - df_guard);
+  float h2 = ((float(h) * 2.0) - df_guard[int(df_guard[1])]);
+  float e = ((t - h2) - df_guard[int(df_guard[1])]);
+  float ea = ((e + adj) - df_guard[int(df_guard[1])]);
   int k = int(ea);
   uint ku = uint(k);
   uint hk = h + ku;
@@ -339,9 +339,9 @@ uint df_to_uint(df_double a) {
 // Bound: exact
 // Flops: 3
 bool df_to_bool(df_double a) {
-  float ah = ((abs(a.hi)) - df_guard);
-  float al = ((abs(a.lo)) - df_guard);
-  float s = ((ah + al) - df_guard);
+  float ah = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  float al = ((abs(a.lo)) - df_guard[int(df_guard[1])]);
+  float s = ((ah + al) - df_guard[int(df_guard[1])]);
   return bool(s);
 }
 
@@ -454,7 +454,7 @@ vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
+  vec3 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
   vec3 e = (df_mul12_error(sa, sb, p));
@@ -469,8 +469,8 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -591,7 +591,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -620,7 +620,7 @@ df_double df_two_prod(float a, float b) {
 // (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
 // Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) - df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard[int(df_guard[1])]);
   df_double sq = df_two_prod(sh, sh);
   float r0 = (a.hi - sq.hi);
   float rho1 = (r0 - sq.lo);
@@ -721,7 +721,7 @@ df_dvec2 df_max(df_dvec2 a, df_dvec2 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }

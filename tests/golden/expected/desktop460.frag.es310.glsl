@@ -16,7 +16,7 @@ struct df_dmat4 {
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -36,8 +36,8 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 bb = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 ab = (s - bb);
   vec3 da = (a - ab);
   vec3 db = (b - bb);
@@ -53,8 +53,8 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -187,7 +187,7 @@ vec4 df_mul12_error(df_dvec4 sa, df_dvec4 sb, vec4 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec4 df_two_prod(vec4 a, vec4 b) {
-  vec4 p = ((a * b) - df_guard);
+  vec4 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec4 sa = df_split(a);
   df_dvec4 sb = df_split(b);
   vec4 e = (df_mul12_error(sa, sb, p));
@@ -202,8 +202,8 @@ df_dvec4 df_two_prod(vec4 a, vec4 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
-  vec4 s = ((a + b) - df_guard);
-  vec4 z = ((s - a) - df_guard);
+  vec4 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec4 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec4 e = (b - z);
   return df_dvec4(s, e);
 }
@@ -253,8 +253,8 @@ df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -270,8 +270,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -423,7 +423,7 @@ vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
+  vec3 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
   vec3 e = (df_mul12_error(sa, sb, p));
@@ -530,7 +530,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -559,7 +559,7 @@ df_double df_two_prod(float a, float b) {
 // (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
 // Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) - df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard[int(df_guard[1])]);
   df_double sq = df_two_prod(sh, sh);
   float r0 = (a.hi - sq.hi);
   float rho1 = (r0 - sq.lo);
@@ -632,14 +632,14 @@ df_double df_select(bool c, df_double a, df_double b) {
 // Bound: 2u^2
 // Flops: 29
 df_double df_fract(df_double a) {
-  float f = ((floor(a.hi)) - df_guard);
+  float f = ((floor(a.hi)) - df_guard[int(df_guard[1])]);
   bool integer = f == a.hi;
-  float g = ((floor(a.lo)) - df_guard);
-  float ng = ((0.0 - g) - df_guard);
+  float g = ((floor(a.lo)) - df_guard[int(df_guard[1])]);
+  float ng = ((0.0 - g) - df_guard[int(df_guard[1])]);
   df_double r = df_two_sum(a.lo, ng);
-  float d = ((a.hi - f) - df_guard);
+  float d = ((a.hi - f) - df_guard[int(df_guard[1])]);
   df_double q = df_finish(r, d);
-  float nf = ((0.0 - f) - df_guard);
+  float nf = ((0.0 - f) - df_guard[int(df_guard[1])]);
   df_double t = df_two_sum(a.hi, nf);
   df_double s = df_add_f(t, a.lo);
   df_double z = df_select(integer, q, s);
@@ -655,7 +655,7 @@ df_double df_fract(df_double a) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }

@@ -8,7 +8,7 @@ struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_exp2i: the bit patterns of three floats whose product is 2^e, -300 <= e <= 300 (each factor
 // is 2^k with |k| <= 100, a normal float; intBitsToFloat needs ES 3.00). 300 is beyond every
@@ -56,15 +56,15 @@ df_double df_finish(df_double z, float f) {
 // is rounded (at most twice), within one subnormal ulp (2^-149) absolute.
 df_double df_ldexp(df_double a, int e) {
   ivec3 b = df_exp2i(e);
-  float s1 = ((intBitsToFloat(b.x)) - df_guard);
-  float s2 = ((intBitsToFloat(b.y)) - df_guard);
-  float s3 = ((intBitsToFloat(b.z)) - df_guard);
-  float h1 = ((a.hi * s1) - df_guard);
-  float h2 = ((h1 * s2) - df_guard);
-  float h = ((h2 * s3) - df_guard);
-  float l1 = ((a.lo * s1) - df_guard);
-  float l2 = ((l1 * s2) - df_guard);
-  float l = ((l2 * s3) - df_guard);
+  float s1 = ((intBitsToFloat(b.x)) - df_guard[int(df_guard[1])]);
+  float s2 = ((intBitsToFloat(b.y)) - df_guard[int(df_guard[1])]);
+  float s3 = ((intBitsToFloat(b.z)) - df_guard[int(df_guard[1])]);
+  float h1 = ((a.hi * s1) - df_guard[int(df_guard[1])]);
+  float h2 = ((h1 * s2) - df_guard[int(df_guard[1])]);
+  float h = ((h2 * s3) - df_guard[int(df_guard[1])]);
+  float l1 = ((a.lo * s1) - df_guard[int(df_guard[1])]);
+  float l2 = ((l1 * s2) - df_guard[int(df_guard[1])]);
+  float l = ((l2 * s3) - df_guard[int(df_guard[1])]);
   df_double z = df_double(h, l);
   df_double r = df_finish(z, h);
   return r;
@@ -182,8 +182,8 @@ df_dvec2 df_frexp(df_dvec2 a, out ivec2 e) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec4 df_two_sum(vec4 a, vec4 b) {
-  vec4 s = ((a + b) - df_guard);
-  vec4 bb = ((s - a) - df_guard);
+  vec4 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec4 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec4 ab = (s - bb);
   vec4 da = (a - ab);
   vec4 db = (b - bb);
@@ -203,8 +203,8 @@ df_dvec4 df_two_sum(vec4 a, vec4 b) {
 df_dvec4 df_from_int(ivec4 i) {
   ivec4 q = i / 65536;
   ivec4 r = i - q * 65536;
-  vec4 qf = ((vec4(q) * 65536.0) - df_guard);
-  vec4 rf = ((vec4(r)) - df_guard);
+  vec4 qf = ((vec4(q) * 65536.0) - df_guard[int(df_guard[1])]);
+  vec4 rf = ((vec4(r)) - df_guard[int(df_guard[1])]);
   df_dvec4 z = df_two_sum(qf, rf);
   return z;
 }
@@ -216,8 +216,8 @@ df_dvec4 df_from_int(ivec4 i) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -233,8 +233,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -268,8 +268,8 @@ df_double df_add(df_double a, df_double b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
-  vec4 s = ((a + b) - df_guard);
-  vec4 z = ((s - a) - df_guard);
+  vec4 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec4 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec4 e = (b - z);
   return df_dvec4(s, e);
 }

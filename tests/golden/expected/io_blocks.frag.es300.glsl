@@ -5,7 +5,7 @@ precision highp int;
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -71,7 +71,7 @@ vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
+  vec3 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
   vec3 e = (df_mul12_error(sa, sb, p));
@@ -86,8 +86,8 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -154,7 +154,7 @@ df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec3 df_to_float(df_dvec3 a) {
-  vec3 f = ((a.hi + a.lo) - df_guard);
+  vec3 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
   return r.hi;
 }

@@ -17,7 +17,7 @@ struct Camera {
 
 uniform Camera camera;
 
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -37,8 +37,8 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 bb = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 ab = (s - bb);
   vec3 da = (a - ab);
   vec3 db = (b - bb);
@@ -54,8 +54,8 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -188,7 +188,7 @@ vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
+  vec3 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
   vec3 e = (df_mul12_error(sa, sb, p));
@@ -241,8 +241,8 @@ bool df_gt(df_double a, df_double b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -258,8 +258,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -349,7 +349,7 @@ vec2 df_mul12_error(df_dvec2 sa, df_dvec2 sb, vec2 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec2 df_two_prod(vec2 a, vec2 b) {
-  vec2 p = ((a * b) - df_guard);
+  vec2 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec2 sa = df_split(a);
   df_dvec2 sb = df_split(b);
   vec2 e = (df_mul12_error(sa, sb, p));
@@ -364,8 +364,8 @@ df_dvec2 df_two_prod(vec2 a, vec2 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 z = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 e = (b - z);
   return df_dvec2(s, e);
 }
@@ -415,7 +415,7 @@ df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }
@@ -438,7 +438,7 @@ bool df_equal(df_double a, df_double b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec3 df_to_float(df_dvec3 a) {
-  vec3 f = ((a.hi + a.lo) - df_guard);
+  vec3 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
   return r.hi;
 }

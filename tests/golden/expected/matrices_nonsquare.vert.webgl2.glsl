@@ -24,7 +24,7 @@ struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -90,7 +90,7 @@ vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
+  vec3 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
   vec3 e = (df_mul12_error(sa, sb, p));
@@ -105,8 +105,8 @@ df_dvec3 df_two_prod(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -171,8 +171,8 @@ df_dvec3 df_mul(df_dvec3 a, df_dvec3 b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -188,8 +188,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -294,7 +294,7 @@ vec2 df_mul12_error(df_dvec2 sa, df_dvec2 sb, vec2 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec2 df_two_prod(vec2 a, vec2 b) {
-  vec2 p = ((a * b) - df_guard);
+  vec2 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec2 sa = df_split(a);
   df_dvec2 sb = df_split(b);
   vec2 e = (df_mul12_error(sa, sb, p));
@@ -309,8 +309,8 @@ df_dvec2 df_two_prod(vec2 a, vec2 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 z = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 e = (b - z);
   return df_dvec2(s, e);
 }
@@ -428,7 +428,7 @@ vec4 df_mul12_error(df_dvec4 sa, df_dvec4 sb, vec4 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec4 df_two_prod(vec4 a, vec4 b) {
-  vec4 p = ((a * b) - df_guard);
+  vec4 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec4 sa = df_split(a);
   df_dvec4 sb = df_split(b);
   vec4 e = (df_mul12_error(sa, sb, p));
@@ -443,8 +443,8 @@ df_dvec4 df_two_prod(vec4 a, vec4 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec4 df_fast_two_sum(vec4 a, vec4 b) {
-  vec4 s = ((a + b) - df_guard);
-  vec4 z = ((s - a) - df_guard);
+  vec4 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec4 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec4 e = (b - z);
   return df_dvec4(s, e);
 }
@@ -494,8 +494,8 @@ df_dvec4 df_mul(df_dvec4 a, df_dvec4 b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec4 df_two_sum(vec4 a, vec4 b) {
-  vec4 s = ((a + b) - df_guard);
-  vec4 bb = ((s - a) - df_guard);
+  vec4 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec4 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec4 ab = (s - bb);
   vec4 da = (a - ab);
   vec4 db = (b - bb);
@@ -533,7 +533,7 @@ df_dvec4 df_add(df_dvec4 a, df_dvec4 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec4 df_to_float(df_dvec4 a) {
-  vec4 f = ((a.hi + a.lo) - df_guard);
+  vec4 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec4 r = df_finish(df_dvec4(f, vec4(0.0)), a.hi);
   return r.hi;
 }

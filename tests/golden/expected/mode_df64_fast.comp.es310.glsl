@@ -5,7 +5,7 @@ layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 // doublet float-float runtime: 11 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -14,8 +14,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -31,8 +31,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -132,7 +132,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -198,7 +198,7 @@ df_double df_finish(df_double z, float f) {
 // (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
 // Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) - df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard[int(df_guard[1])]);
   df_double sq = df_two_prod(sh, sh);
   float r0 = (a.hi - sq.hi);
   float rho1 = (r0 - sq.lo);
@@ -221,7 +221,7 @@ df_double df_sqrt(df_double a) {
 //        d = RN(pih+dl); tl = RN(d/bh); (zh,zl) = Fast2Sum(th,tl).
 // b == 0 gives NaN, as df_div. Range: |th| and |bh| <= 8.3e34 (split).
 df_double df_div_fast(df_double a, df_double b) {
-  float th = ((a.hi / b.hi) - df_guard);
+  float th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_double c = df_two_prod(b.hi, th);
   float cl2 = (b.lo * th);
   float rl = (c.lo + cl2);

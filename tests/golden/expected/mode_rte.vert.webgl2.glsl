@@ -11,7 +11,7 @@ uniform mat4 viewProj;
 // doublet float-float runtime: 11 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -31,8 +31,8 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 bb = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 ab = (s - bb);
   vec3 da = (a - ab);
   vec3 db = (b - bb);
@@ -48,8 +48,8 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -127,7 +127,7 @@ df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec3 df_to_float(df_dvec3 a) {
-  vec3 f = ((a.hi + a.lo) - df_guard);
+  vec3 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
   return r.hi;
 }
@@ -150,7 +150,7 @@ df_dvec3 df_from_float(vec3 f) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }

@@ -9,7 +9,7 @@ struct df_dvec2 {
 };
 // doublet float-float runtime: 11 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -75,7 +75,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -90,8 +90,8 @@ df_double df_two_prod(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -151,8 +151,8 @@ df_double df_neg(df_double a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -207,7 +207,7 @@ df_double df_sub(df_double a, df_double b) {
 // |a| < 1.9e19 is far below the split's limit (8.3e34); when it overflows, p is Inf and
 // df_finish returns (Inf, 0) as df_mul does.
 df_double df_sqr(df_double a) {
-  float p = ((a.hi * a.hi) - df_guard);
+  float p = ((a.hi * a.hi) - df_guard[int(df_guard[1])]);
   df_double s = df_split(a.hi);
   float hh = (s.hi * s.hi);
   float hl = (s.hi * s.lo);

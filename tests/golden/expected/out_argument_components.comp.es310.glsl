@@ -17,7 +17,7 @@ struct df_dmat2 {
 };
 // doublet float-float runtime: 13 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -83,7 +83,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -98,8 +98,8 @@ df_double df_two_prod(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -148,8 +148,8 @@ df_double df_mul(df_double a, df_double b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -209,7 +209,7 @@ df_double df_mul_f(df_double a, float b) {
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
 // Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_double df_div(df_double a, df_double b) {
-  float th = ((a.hi / b.hi) - df_guard);
+  float th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_double r = df_mul_f(b, th);
   float pih = (a.hi - r.hi);
   float dl = (a.lo - r.lo);
@@ -258,7 +258,7 @@ df_double df_add_f(df_double a, float b) {
 // |a| < 1.9e19 is far below the split's limit (8.3e34); when it overflows, p is Inf and
 // df_finish returns (Inf, 0) as df_mul does.
 df_double df_sqr(df_double a) {
-  float p = ((a.hi * a.hi) - df_guard);
+  float p = ((a.hi * a.hi) - df_guard[int(df_guard[1])]);
   df_double s = df_split(a.hi);
   float hh = (s.hi * s.hi);
   float hl = (s.hi * s.lo);

@@ -7,7 +7,7 @@ uniform float scale_lo;
 
 // doublet float-float runtime: 3 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
 // the caller's plain float result on the high words. One select per component, so the common
@@ -34,7 +34,7 @@ df_double df_finish(df_double z, float f) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }

@@ -9,7 +9,7 @@ uniform mat4 u_view_projection;
 // doublet float-float runtime: 23 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
 // the caller's plain float result on the high words. One select per component, so the common
@@ -36,7 +36,7 @@ df_double df_finish(df_double z, float f) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }
@@ -114,7 +114,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -129,8 +129,8 @@ df_double df_two_prod(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -178,7 +178,7 @@ df_double df_mul(df_double a, df_double b) {
 // (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
 // Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) - df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard[int(df_guard[1])]);
   df_double sq = df_two_prod(sh, sh);
   float r0 = (a.hi - sq.hi);
   float rho1 = (r0 - sq.lo);
@@ -221,7 +221,7 @@ df_double df_mul_f(df_double a, float b) {
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
 // Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_double df_div(df_double a, df_double b) {
-  float th = ((a.hi / b.hi) - df_guard);
+  float th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_double r = df_mul_f(b, th);
   float pih = (a.hi - r.hi);
   float dl = (a.lo - r.lo);
@@ -239,8 +239,8 @@ df_double df_div(df_double a, df_double b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -287,8 +287,8 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 bb = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 ab = (s - bb);
   vec3 da = (a - ab);
   vec3 db = (b - bb);
@@ -304,8 +304,8 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -367,7 +367,7 @@ df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec3 df_to_float(df_dvec3 a) {
-  vec3 f = ((a.hi + a.lo) - df_guard);
+  vec3 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
   return r.hi;
 }

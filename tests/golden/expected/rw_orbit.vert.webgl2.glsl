@@ -20,7 +20,7 @@ struct Orbit {
 
 uniform Orbit orbit;
 
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -40,8 +40,8 @@ df_double df_neg(df_double a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -57,8 +57,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -120,7 +120,7 @@ df_double df_sub(df_double a, df_double b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }
@@ -189,7 +189,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -248,7 +248,7 @@ df_double df_mul_f(df_double a, float b) {
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
 // Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_double df_div(df_double a, df_double b) {
-  float th = ((a.hi / b.hi) - df_guard);
+  float th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_double r = df_mul_f(b, th);
   float pih = (a.hi - r.hi);
   float dl = (a.lo - r.lo);
@@ -269,10 +269,10 @@ df_double df_div(df_double a, df_double b) {
 // Bound: exact
 // Flops: 6 (plus 2 comparisons)
 df_double df_floor(df_double a) {
-  float f = ((floor(a.hi)) - df_guard);
+  float f = ((floor(a.hi)) - df_guard[int(df_guard[1])]);
   float af = (abs(f));
   bool integer = all(bvec3(f == a.hi, af > 0.0, af <= 3.4028234663852886e38));
-  float g = ((floor(a.lo)) - df_guard);
+  float g = ((floor(a.lo)) - df_guard[int(df_guard[1])]);
   df_double r = df_fast_two_sum(a.hi, g);
   float h = (mix(f, r.hi, integer));
   float l = (mix(0.0, r.lo, integer));
@@ -317,7 +317,7 @@ df_double df_mod(df_double a, df_double b) {
 // (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
 // Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) - df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard[int(df_guard[1])]);
   df_double sq = df_two_prod(sh, sh);
   float r0 = (a.hi - sq.hi);
   float rho1 = (r0 - sq.lo);
@@ -347,8 +347,8 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 bb = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 ab = (s - bb);
   vec3 da = (a - ab);
   vec3 db = (b - bb);
@@ -364,8 +364,8 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -527,7 +527,7 @@ vec3 df_mul12_error(df_dvec3 sa, df_dvec3 sb, vec3 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec3 df_two_prod(vec3 a, vec3 b) {
-  vec3 p = ((a * b) - df_guard);
+  vec3 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec3 sa = df_split(a);
   df_dvec3 sb = df_split(b);
   vec3 e = (df_mul12_error(sa, sb, p));
@@ -601,7 +601,7 @@ df_double df_length(df_dvec3 a) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec3 df_to_float(df_dvec3 a) {
-  vec3 f = ((a.hi + a.lo) - df_guard);
+  vec3 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
   return r.hi;
 }
@@ -653,7 +653,7 @@ df_double df_mul_f2(df_double a, float b) {
 // |a| < 1.9e19 is far below the split's limit (8.3e34); when it overflows, p is Inf and
 // df_finish returns (Inf, 0) as df_mul does.
 df_double df_sqr(df_double a) {
-  float p = ((a.hi * a.hi) - df_guard);
+  float p = ((a.hi * a.hi) - df_guard[int(df_guard[1])]);
   df_double s = df_split(a.hi);
   float hh = (s.hi * s.hi);
   float hl = (s.hi * s.lo);

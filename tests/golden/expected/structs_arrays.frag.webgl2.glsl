@@ -21,7 +21,7 @@ struct Outer {
 
 uniform Outer params;
 
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -30,8 +30,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -47,8 +47,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -97,8 +97,8 @@ df_double df_add(df_double a, df_double b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 bb = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 ab = (s - bb);
   vec2 da = (a - ab);
   vec2 db = (b - bb);
@@ -114,8 +114,8 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 z = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 e = (b - z);
   return df_dvec2(s, e);
 }
@@ -168,8 +168,8 @@ df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
 df_double df_from_int(int i) {
   int q = i / 65536;
   int r = i - q * 65536;
-  float qf = ((float(q) * 65536.0) - df_guard);
-  float rf = ((float(r)) - df_guard);
+  float qf = ((float(q) * 65536.0) - df_guard[int(df_guard[1])]);
+  float rf = ((float(r)) - df_guard[int(df_guard[1])]);
   df_double z = df_two_sum(qf, rf);
   return z;
 }
@@ -238,7 +238,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -330,7 +330,7 @@ vec2 df_mul12_error(df_dvec2 sa, df_dvec2 sb, vec2 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec2 df_two_prod(vec2 a, vec2 b) {
-  vec2 p = ((a * b) - df_guard);
+  vec2 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec2 sa = df_split(a);
   df_dvec2 sb = df_split(b);
   vec2 e = (df_mul12_error(sa, sb, p));
@@ -384,22 +384,22 @@ df_double df_dot(df_dvec2 a, df_dvec2 b) {
 // Bound: exact
 // Flops: 15 (float, including sign/abs/floor/step; plus 3 conversions and 2 integer adds)
 int df_to_int(df_double a) {
-  float s = ((sign(a.hi)) - df_guard);
-  float ah = ((abs(a.hi)) - df_guard);
-  float fh = ((floor(ah)) - df_guard);
-  float t = ((s * fh) - df_guard);
-  float d = ((a.hi - t) - df_guard);
-  float ad = ((abs(d)) - df_guard);
-  float m = ((step(ad, float(0.0))) - df_guard);
-  float sl = ((s * a.lo) - df_guard);
-  float fl = ((floor(sl)) - df_guard);
-  float adj0 = ((s * fl) - df_guard);
-  float adj = ((adj0 * m) - df_guard);
-  float th = ((t * 0.5) - df_guard);
+  float s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  float ah = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  float fh = ((floor(ah)) - df_guard[int(df_guard[1])]);
+  float t = ((s * fh) - df_guard[int(df_guard[1])]);
+  float d = ((a.hi - t) - df_guard[int(df_guard[1])]);
+  float ad = ((abs(d)) - df_guard[int(df_guard[1])]);
+  float m = ((step(ad, float(0.0))) - df_guard[int(df_guard[1])]);
+  float sl = ((s * a.lo) - df_guard[int(df_guard[1])]);
+  float fl = ((floor(sl)) - df_guard[int(df_guard[1])]);
+  float adj0 = ((s * fl) - df_guard[int(df_guard[1])]);
+  float adj = ((adj0 * m) - df_guard[int(df_guard[1])]);
+  float th = ((t * 0.5) - df_guard[int(df_guard[1])]);
   int h = int(th);
-  float h2 = ((float(h) * 2.0) - df_guard);
-  float e = ((t - h2) - df_guard);
-  float ea = ((e + adj) - df_guard);
+  float h2 = ((float(h) * 2.0) - df_guard[int(df_guard[1])]);
+  float e = ((t - h2) - df_guard[int(df_guard[1])]);
+  float ea = ((e + adj) - df_guard[int(df_guard[1])]);
   int k = int(ea);
   int hk = h + k;
   int z = hk + h;
@@ -424,7 +424,7 @@ bool df_gt(df_double a, df_double b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }

@@ -10,7 +10,7 @@ struct df_dvec4 {
 // doublet float-float runtime: 13 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -19,8 +19,8 @@ uniform highp float df_guard;  // never set: GL zero-fills it at link
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -36,8 +36,8 @@ df_double df_two_sum(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -100,8 +100,8 @@ df_double df_add_f(df_double a, float b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 bb = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 ab = (s - bb);
   vec2 da = (a - ab);
   vec2 db = (b - bb);
@@ -117,8 +117,8 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 z = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 e = (b - z);
   return df_dvec2(s, e);
 }
@@ -216,7 +216,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));

@@ -5,7 +5,7 @@ precision highp int;
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_gt: a > b.
 // Algorithm: lexicographic comparison of (hi, lo)
@@ -32,8 +32,8 @@ bool df_lt(df_double a, df_double b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 bb = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 ab = (s - bb);
   vec2 da = (a - ab);
   vec2 db = (b - bb);
@@ -49,8 +49,8 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 z = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 e = (b - z);
   return df_dvec2(s, e);
 }
@@ -116,7 +116,7 @@ df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec2 df_to_float(df_dvec2 a) {
-  vec2 f = ((a.hi + a.lo) - df_guard);
+  vec2 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec2 r = df_finish(df_dvec2(f, vec2(0.0)), a.hi);
   return r.hi;
 }

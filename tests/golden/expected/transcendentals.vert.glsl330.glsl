@@ -16,7 +16,7 @@ uniform mat4 view_projection;
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
 // ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
@@ -97,7 +97,7 @@ float df_mul12_error(df_double sa, df_double sb, float p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_double df_two_prod(float a, float b) {
-  float p = ((a * b) - df_guard);
+  float p = ((a * b) - df_guard[int(df_guard[1])]);
   df_double sa = df_split(a);
   df_double sb = df_split(b);
   float e = (df_mul12_error(sa, sb, p));
@@ -112,8 +112,8 @@ df_double df_two_prod(float a, float b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_double df_fast_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float z = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float z = ((s - a) - df_guard[int(df_guard[1])]);
   float e = (b - z);
   return df_double(s, e);
 }
@@ -162,8 +162,8 @@ df_double df_mul(df_double a, df_double b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_double df_two_sum(float a, float b) {
-  float s = ((a + b) - df_guard);
-  float bb = ((s - a) - df_guard);
+  float s = ((a + b) - df_guard[int(df_guard[1])]);
+  float bb = ((s - a) - df_guard[int(df_guard[1])]);
   float ab = (s - bb);
   float da = (a - ab);
   float db = (b - bb);
@@ -223,9 +223,9 @@ df_double df_add_f(df_double a, float b) {
 // Range: |x| < 2^40 with either guard. Callers return NaN beyond 2^40.
 df_double df_trig_reduce(df_double a, out int q) {
   df_double t = df_mul(a, df_double(float(0.636619747), float(2.5682553e-08)));
-  float k1 = ((roundEven(t.hi)) - df_guard);
-  float f = ((t.hi - k1) - df_guard);
-  float k2 = ((roundEven(f + t.lo)) - df_guard);
+  float k1 = ((roundEven(t.hi)) - df_guard[int(df_guard[1])]);
+  float f = ((t.hi - k1) - df_guard[int(df_guard[1])]);
+  float k2 = ((roundEven(f + t.lo)) - df_guard[int(df_guard[1])]);
   float n1 = (-k1);
   float n2 = (-k2);
   df_double p11 = df_two_prod(n1, 1.57079637);
@@ -243,8 +243,8 @@ df_double df_trig_reduce(df_double a, out int q) {
   float p24 = (n2 * 1.0562999e-23);
   float small = (p23 + p14 + p24);
   df_double r = df_add_f(r5, small);
-  float m1 = ((k1 - 4.0 * floor(k1 * 0.25)) - df_guard);
-  float m2 = ((k2 - 4.0 * floor(k2 * 0.25)) - df_guard);
+  float m1 = ((k1 - 4.0 * floor(k1 * 0.25)) - df_guard[int(df_guard[1])]);
+  float m2 = ((k2 - 4.0 * floor(k2 * 0.25)) - df_guard[int(df_guard[1])]);
   int qs = (int(m1) + int(m2)) & 3;
   q = qs;
   return r;
@@ -377,7 +377,7 @@ df_double df_sin_quadrant(df_double r, int q) {
 df_double df_sin(df_double a) {
   float ax = (abs(a.hi));
   bool finite = ax < 1.09951163e12;
-  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
+  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard[int(df_guard[1])]);
   df_double x = df_select(finite, a, df_double(float(0.0), float(0.0)));
   int q;
   df_double r = df_trig_reduce(x, q);
@@ -420,7 +420,7 @@ df_double df_sub(df_double a, df_double b) {
 // (sh, 0) = (+-0, 0); Inf, NaN and negative a give (sqrt(ah), 0) = (Inf or NaN, 0).
 // Range: every finite a >= 0; within an ulp of FLT_MAX sh*sh overflows and the result is sh alone.
 df_double df_sqrt(df_double a) {
-  float sh = ((sqrt(a.hi)) - df_guard);
+  float sh = ((sqrt(a.hi)) - df_guard[int(df_guard[1])]);
   df_double sq = df_two_prod(sh, sh);
   float r0 = (a.hi - sq.hi);
   float rho1 = (r0 - sq.lo);
@@ -463,7 +463,7 @@ df_double df_mul_f(df_double a, float b) {
 // Special values: th = RN(ah/bh) gives x/+-0 = +-Inf, 0/0 = NaN, x/Inf = +-0, overflow to Inf.
 // Range: any finite a, b with the quotient within float range (TwoProd scales its operands).
 df_double df_div(df_double a, df_double b) {
-  float th = ((a.hi / b.hi) - df_guard);
+  float th = ((a.hi / b.hi) - df_guard[int(df_guard[1])]);
   df_double r = df_mul_f(b, th);
   float pih = (a.hi - r.hi);
   float dl = (a.lo - r.lo);
@@ -483,7 +483,7 @@ df_double df_div(df_double a, df_double b) {
 df_double df_cos(df_double a) {
   float ax = (abs(a.hi));
   bool finite = ax < 1.09951163e12;
-  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
+  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard[int(df_guard[1])]);
   df_double x = df_select(finite, a, df_double(float(0.0), float(0.0)));
   int q;
   df_double r = df_trig_reduce(x, q);
@@ -511,8 +511,8 @@ df_dvec3 df_neg(df_dvec3 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec3 df_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 bb = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 ab = (s - bb);
   vec3 da = (a - ab);
   vec3 db = (b - bb);
@@ -528,8 +528,8 @@ df_dvec3 df_two_sum(vec3 a, vec3 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec3 df_fast_two_sum(vec3 a, vec3 b) {
-  vec3 s = ((a + b) - df_guard);
-  vec3 z = ((s - a) - df_guard);
+  vec3 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec3 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec3 e = (b - z);
   return df_dvec3(s, e);
 }
@@ -588,9 +588,9 @@ df_dvec3 df_sub(df_dvec3 a, df_dvec3 b) {
 // Bound: exact
 // Flops: 3
 df_double df_abs(df_double a) {
-  float s = ((sign(a.hi)) - df_guard);
-  float h = ((abs(a.hi)) - df_guard);
-  float l = ((a.lo * s) - df_guard);
+  float s = ((sign(a.hi)) - df_guard[int(df_guard[1])]);
+  float h = ((abs(a.hi)) - df_guard[int(df_guard[1])]);
+  float l = ((a.lo * s) - df_guard[int(df_guard[1])]);
   return df_double(h, l);
 }
 
@@ -748,15 +748,15 @@ ivec3 df_exp2i(int e) {
 // is rounded (at most twice), within one subnormal ulp (2^-149) absolute.
 df_double df_ldexp(df_double a, int e) {
   ivec3 b = df_exp2i(e);
-  float s1 = ((intBitsToFloat(b.x)) - df_guard);
-  float s2 = ((intBitsToFloat(b.y)) - df_guard);
-  float s3 = ((intBitsToFloat(b.z)) - df_guard);
-  float h1 = ((a.hi * s1) - df_guard);
-  float h2 = ((h1 * s2) - df_guard);
-  float h = ((h2 * s3) - df_guard);
-  float l1 = ((a.lo * s1) - df_guard);
-  float l2 = ((l1 * s2) - df_guard);
-  float l = ((l2 * s3) - df_guard);
+  float s1 = ((intBitsToFloat(b.x)) - df_guard[int(df_guard[1])]);
+  float s2 = ((intBitsToFloat(b.y)) - df_guard[int(df_guard[1])]);
+  float s3 = ((intBitsToFloat(b.z)) - df_guard[int(df_guard[1])]);
+  float h1 = ((a.hi * s1) - df_guard[int(df_guard[1])]);
+  float h2 = ((h1 * s2) - df_guard[int(df_guard[1])]);
+  float h = ((h2 * s3) - df_guard[int(df_guard[1])]);
+  float l1 = ((a.lo * s1) - df_guard[int(df_guard[1])]);
+  float l2 = ((l1 * s2) - df_guard[int(df_guard[1])]);
+  float l = ((l2 * s3) - df_guard[int(df_guard[1])]);
   df_double z = df_double(h, l);
   df_double r = df_finish(z, h);
   return r;
@@ -781,8 +781,8 @@ df_double df_exp(df_double a) {
   float big = (a.hi * 1.0e38);
   float eh = (mix(big, 0.0, zero));
   df_double x = df_select(regular, a, df_double(float(0.0), float(0.0)));
-  float k = ((floor(x.hi * 1.44269504 + 0.5)) - df_guard);
-  float nk1 = ((k * -0.693145752) - df_guard);
+  float k = ((floor(x.hi * 1.44269504 + 0.5)) - df_guard[int(df_guard[1])]);
+  float nk1 = ((k * -0.693145752) - df_guard[int(df_guard[1])]);
   df_double r1 = df_add_f(x, nk1);
   df_double k2 = df_two_prod(k, 1.42860677e-06);
   df_double r2 = df_sub(r1, k2);
@@ -915,7 +915,7 @@ df_double df_exp2(df_double a) {
   float big = (a.hi * 1.0e38);
   float eh = (mix(big, 0.0, zero));
   df_double x = df_select(regular, a, df_double(float(0.0), float(0.0)));
-  float k = ((floor(x.hi + 0.5)) - df_guard);
+  float k = ((floor(x.hi + 0.5)) - df_guard[int(df_guard[1])]);
   float nk = (-k);
   df_double f = df_add_f(x, nk);
   df_double r = df_mul(f, df_double(float(0.693147182), float(-1.90465421e-09)));
@@ -977,7 +977,7 @@ df_double df_pow(df_double x, df_double y) {
 df_double df_tan(df_double a) {
   float ax = (abs(a.hi));
   bool finite = ax < 1.09951163e12;
-  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard);
+  float nan = (((a.hi - a.hi) / (a.hi - a.hi)) - df_guard[int(df_guard[1])]);
   df_double x = df_select(finite, a, df_double(float(0.0), float(0.0)));
   int q;
   df_double r = df_trig_reduce(x, q);
@@ -1174,8 +1174,8 @@ df_dvec2 df_sin(df_dvec2 a) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 bb = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 ab = (s - bb);
   vec2 da = (a - ab);
   vec2 db = (b - bb);
@@ -1191,8 +1191,8 @@ df_dvec2 df_two_sum(vec2 a, vec2 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 z = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 e = (b - z);
   return df_dvec2(s, e);
 }
@@ -1242,7 +1242,7 @@ df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 float df_to_float(df_double a) {
-  float f = ((a.hi + a.lo) - df_guard);
+  float f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_double r = df_finish(df_double(f, float(0.0)), a.hi);
   return r.hi;
 }
@@ -1256,7 +1256,7 @@ float df_to_float(df_double a) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec3 df_to_float(df_dvec3 a) {
-  vec3 f = ((a.hi + a.lo) - df_guard);
+  vec3 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec3 r = df_finish(df_dvec3(f, vec3(0.0)), a.hi);
   return r.hi;
 }

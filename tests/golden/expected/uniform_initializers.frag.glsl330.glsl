@@ -11,7 +11,7 @@ uniform int n = 3;
 // doublet float-float runtime: 10 functions from rules/*.glsl, guard: uniform df_guard
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
-uniform highp float df_guard;  // never set: GL zero-fills it at link
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -77,7 +77,7 @@ vec2 df_mul12_error(df_dvec2 sa, df_dvec2 sb, vec2 p) {
 // Range: exact when |a*b| <= FLT_MAX; e underflows below ~2^-102. When a*b overflows, or an
 // operand is Inf or NaN, p is the IEEE result and the callers' df_finish returns (p, 0).
 df_dvec2 df_two_prod(vec2 a, vec2 b) {
-  vec2 p = ((a * b) - df_guard);
+  vec2 p = ((a * b) - df_guard[int(df_guard[1])]);
   df_dvec2 sa = df_split(a);
   df_dvec2 sb = df_split(b);
   vec2 e = (df_mul12_error(sa, sb, p));
@@ -92,8 +92,8 @@ df_dvec2 df_two_prod(vec2 a, vec2 b) {
 // Flops: 3
 // Steps: s = RN(a+b); z = RN(s-a); e = RN(b-z).
 df_dvec2 df_fast_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 z = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 z = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 e = (b - z);
   return df_dvec2(s, e);
 }
@@ -157,8 +157,8 @@ df_dvec2 df_mul(df_dvec2 a, df_dvec2 b) {
 // Flops: 6
 // Steps: s = RN(a+b); bb = RN(s-a); ab = RN(s-bb); da = RN(a-ab); db = RN(b-bb); e = RN(da+db).
 df_dvec2 df_two_sum(vec2 a, vec2 b) {
-  vec2 s = ((a + b) - df_guard);
-  vec2 bb = ((s - a) - df_guard);
+  vec2 s = ((a + b) - df_guard[int(df_guard[1])]);
+  vec2 bb = ((s - a) - df_guard[int(df_guard[1])]);
   vec2 ab = (s - bb);
   vec2 da = (a - ab);
   vec2 db = (b - bb);
@@ -196,7 +196,7 @@ df_dvec2 df_add(df_dvec2 a, df_dvec2 b) {
 // Bound: 0.5 ulp (correctly rounded to float)
 // Flops: 2
 vec2 df_to_float(df_dvec2 a) {
-  vec2 f = ((a.hi + a.lo) - df_guard);
+  vec2 f = ((a.hi + a.lo) - df_guard[int(df_guard[1])]);
   df_dvec2 r = df_finish(df_dvec2(f, vec2(0.0)), a.hi);
   return r.hi;
 }
