@@ -178,6 +178,7 @@ std::vector<double> measured_bits(doublet::Mode mode, doublet::GuardKind guard, 
     if (v.name != "df_uniforms") continue;
     uniform_binding = v.binding;
     for (const auto& m : v.members) {
+      uniforms.resize(std::max(uniforms.size(), static_cast<size_t>(m.offset + m.size)));
       if (m.name == "per_op") put_u32(uniforms, m.offset, kPerOp);
       if (m.name == "count") put_u32(uniforms, m.offset, n);
       if (m.name == "df_guard") put_u32(uniforms, m.offset, 0);  // the required value, 0.0f
