@@ -6,7 +6,7 @@
 //                                        FILE.json); exit 1 on a finding
 //   doublet-difftest reduce FILE --oracle NAME
 // `run` ends after N seconds (a reduction in progress finishes first) and prints as its last line
-//   programs: P, failures: F, oracles: exact=.. int=.. bound=.. targets=..
+//   programs: P, failures: F, oracles: exact=.. int=.. bound=.. guard=.. targets=..
 // with the programs each oracle checked; exit 1 when F > 0.
 #include <CLI/CLI.hpp>
 
@@ -135,7 +135,8 @@ int run(const RunArgs& a) {
   if (timeouts) std::cout << "programs without a result in time (skipped): " << timeouts << "\n";
   if (excused) std::cout << "exact: " << excused << " result(s) were zeros of the other sign than native's (excused)\n";
   std::cout << "programs: " << programs << ", failures: " << failures + invalid << ", oracles: exact=" << checked["exact"]
-            << " int=" << checked["int"] << " bound=" << checked["bound"] << " targets=" << checked["targets"] << std::endl;
+            << " int=" << checked["int"] << " bound=" << checked["bound"] << " guard=" << checked["guard"]
+            << " targets=" << checked["targets"] << std::endl;
   return failures + invalid > 0 ? 1 : 0;
 }
 
@@ -207,7 +208,7 @@ int main(int argc, char** argv) {
   std::string reduce_file, oracle = "exact";
   CLI::App* reduce_cmd = app.add_subcommand("reduce", "reduce a saved program while an oracle still fails on it");
   reduce_cmd->add_option("file", reduce_file)->required();
-  reduce_cmd->add_option("--oracle", oracle, "exact, int, targets or lowering");
+  reduce_cmd->add_option("--oracle", oracle, "exact, int, bound, guard, targets or lowering");
 
   CLI11_PARSE(app, argc, argv);
   std::cout << std::unitbuf;  // progress is seen as it happens, also through a pipe

@@ -175,7 +175,7 @@ plan::Scene scene_of(const verify::Spec& spec, const verify::BackendRun& run) {
 // against the planner's df64 estimate plus its binary64 estimate. False when no output has a
 // finite estimate (the oracle then made no check).
 bool check_bound(const std::string& glsl, Stage stage, const verify::Spec& spec, const verify::VerifyReport& df64,
-                 const std::string& what, CheckResult* result) {
+                 const std::string& what, const char* oracle, CheckResult* result) {
   if (df64.runs.empty()) return false;
   Options options;
   options.stage = stage;
@@ -184,7 +184,7 @@ bool check_bound(const std::string& glsl, Stage stage, const verify::Spec& spec,
   if (!plan.ok) {
     std::string why;
     for (const Diagnostic& d : plan.diagnostics) why += (why.empty() ? "" : "; ") + d.message;
-    result->findings.push_back({"bound", "the planner refused a valid program: " + why});
+    result->findings.push_back({oracle, "the planner refused a valid program: " + why});
     return true;
   }
   bool any = false;
@@ -196,7 +196,7 @@ bool check_bound(const std::string& glsl, Stage stage, const verify::Spec& spec,
       for (const verify::OutputStats& o : run.outputs)
         if (base_name(o.name) == row.name && !(o.max_abs_err <= bound))
           result->findings.push_back(
-              {"bound", what + " on " + runner::backend_name(run.backend) + ": output " + o.name + ": measured max |df64 - native| " +
+              {oracle, what + " on " + runner::backend_name(run.backend) + ": output " + o.name + ": measured max |df64 - native| " +
                             show(o.max_abs_err) + " exceeds the planner's bound " + show(bound) + " (df64 " +
                             show(row.estimate_df64) + " + binary64 " + show(row.estimate_exact) + ")"});
   }
@@ -270,6 +270,17 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
     }
   }
 
+  const bool bounded = (stage == Stage::Compute || stage == Stage::Vertex) && is_continuous(glsl);
+  if (wants("guard") && bounded) {
+    // The uniform guard (es310 without GL_EXT_gpu_shader5: the indexed `df_guard`, no `precise`)
+    // under the same bound on both drivers: a driver that sees through the guard folds error terms
+    // and leaves it (docs/robustness.md, "Differential testing").
+    const Lowering guarded{.mode = Mode::Df64, .target = Target::Es310, .sabotaged = true};
+    const verify::VerifyReport r = run_verify(glsl, spec, stage, guarded, drivers, options, &result);
+    if (!failed(r, guarded.label(), &result) && check_bound(glsl, stage, spec, r, guarded.label() + " (uniform guard)", "guard", &result))
+      result.checked.push_back("guard");
+  }
+
   if (wants("int") || wants("targets") || wants("bound")) {
     // es320 declares the runtime `precise`, so no driver contracts a*b + c anywhere in it: two
     // lowerings then differ only where their rules do. es310's uniform guard, and df64-int's
@@ -289,7 +300,7 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
                          outside_int_range, &result.findings);
         }
       }
-      if (wants("bound") && (stage == Stage::Compute || stage == Stage::Vertex) && is_continuous(glsl)) {
+      if (wants("bound") && bounded) {
         verify::VerifyReport sabotaged;
         const verify::VerifyReport* measured = &df64;
         if (options.sabotage != "none") {  // the other oracles keep their unsabotaged reference
@@ -297,7 +308,7 @@ CheckResult check(const std::string& glsl, const std::string& spec_json, const s
           sabotaged = run_verify(glsl, spec, stage, broken, drivers, options, &result);
           measured = failed(sabotaged, broken.label(), &result) ? nullptr : &sabotaged;
         }
-        if (measured && check_bound(glsl, stage, spec, *measured, base.label(), &result)) result.checked.push_back("bound");
+        if (measured && check_bound(glsl, stage, spec, *measured, base.label(), "bound", &result)) result.checked.push_back("bound");
       }
       if (wants("targets")) {
         bool all_ran = true;

@@ -10,6 +10,9 @@
 //             max |df64 - native| stays within the planner's df64 estimate plus its binary64
 //             estimate (native's own rounding), for the spec's input ranges. This tests the planner
 //             as much as the lowering;
+//   guard   — the same bound for the df64 lowering with the uniform guard (es310 without
+//             GL_EXT_gpu_shader5: the indexed df_guard, no `precise`) on both drivers: a driver
+//             that sees through the guard folds error terms and leaves the bound;
 //   targets — the df64 lowerings for es310, es320 and glsl450 give the same pairs on lavapipe, and
 //             (with webgpu, compute programs) the wgsl lowering in Chromium's WebGPU the same pairs
 //             within 2^-40 relative (WGSL's f32 division is not correctly rounded there).
@@ -23,20 +26,21 @@
 namespace doublet::difftest {
 
 struct Finding {
-  std::string oracle;  // "exact", "int", "bound", "targets", "lowering"
+  std::string oracle;  // "exact", "int", "bound", "guard", "targets", "lowering"
   std::string detail;  // one paragraph: what differs, where, one sample's values
 };
 
 struct CheckOptions {
   uint64_t samples = 256;
-  std::vector<std::string> oracles{"exact", "int", "bound", "targets"};
+  std::vector<std::string> oracles{"exact", "int", "bound", "guard", "targets"};
   bool skip_exact = false;  // the program uses a built-in native does not compute as IEEE
   bool webgpu = false;      // also run the wgsl lowering in Chromium (targets)
   // Passes left out of every lowering (Options::skip_passes): a bug put back on purpose, to show
   // that the oracles find it (docs/robustness.md, "Differential testing").
   std::vector<std::string> skip_passes;
-  // verify's sabotage, applied to the mode exact and df64-int runs and to a df64 run of its own for
-  // the bound oracle (the other runs are references): each oracle must then report a finding.
+  // verify's sabotage, applied to the mode exact, df64-int and uniform-guard runs and to a df64 run
+  // of its own for the bound oracle (the other runs are references): each oracle must then report a
+  // finding (drop-guard: the guard oracle).
   std::string sabotage = "none";
 };
 

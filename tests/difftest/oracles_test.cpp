@@ -183,10 +183,10 @@ TEST(DiffOracles, ContinuousProgramsKeepThePlannersBound) {
     if ((p = generate(seed)).stage == "comp") break;
   ASSERT_TRUE(is_continuous(p.glsl)) << p.glsl;
   CheckOptions o = quick();
-  o.oracles = {"bound"};
+  o.oracles = {"bound", "guard"};
   const CheckResult r = run(p, o);
   EXPECT_TRUE(r.findings.empty()) << "seed " << p.seed << describe(r);
-  EXPECT_EQ(r.checked, (std::vector<std::string>{"bound"})) << "seed " << p.seed << "\n" << p.glsl;
+  EXPECT_EQ(r.checked, (std::vector<std::string>{"guard", "bound"})) << "seed " << p.seed << "\n" << p.glsl;
 }
 
 TEST(DiffOracles, DroppedLowWordsBreakThePlannersBound) {
@@ -211,6 +211,32 @@ void main() {
   o.sabotage = "drop-lo";
   const CheckResult broken = run(p, o);
   EXPECT_TRUE(has_finding(broken, "bound")) << describe(broken);
+}
+
+// The guard oracle: the same program lowered with the uniform guard (es310) keeps the bound on both
+// drivers; lowered without it (drop-guard), lavapipe deletes the sums' error terms and the bound is
+// broken.
+TEST(DiffOracles, ADroppedGuardBreaksThePlannersBound) {
+  Program p;
+  p.glsl = R"(#version 450
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer In0 { dvec2 in0[]; };
+layout(std430, binding = 1) writeonly buffer Out0 { dvec2 r0[]; };
+void main() {
+  uint gid = gl_GlobalInvocationID.x;
+  dvec2 x0 = in0[gid];
+  r0[gid] = (x0 + dvec2(0.1lf, 0.3lf)) * x0.yx + x0;
+}
+)";
+  p.spec_json = R"({ "inputs": { "in0": { "range": [0.25, 4] } } })";
+  CheckOptions o = quick();
+  o.oracles = {"guard"};
+  const CheckResult held = run(p, o);
+  EXPECT_TRUE(held.findings.empty()) << describe(held);
+  EXPECT_EQ(held.checked, (std::vector<std::string>{"guard"}));
+  o.sabotage = "drop-guard";
+  const CheckResult broken = run(p, o);
+  EXPECT_TRUE(has_finding(broken, "guard")) << describe(broken);
 }
 
 // What the bound oracle leaves out: anything that jumps, where a tiny error can move a result by
