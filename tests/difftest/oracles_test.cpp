@@ -189,34 +189,10 @@ TEST(DiffOracles, ContinuousProgramsKeepThePlannersBound) {
   EXPECT_EQ(r.checked, (std::vector<std::string>{"guard", "bound"})) << "seed " << p.seed << "\n" << p.glsl;
 }
 
-TEST(DiffOracles, DroppedLowWordsBreakThePlannersBound) {
-  Program p;  // in the generator's continuous form: a product, a quotient and a square root
-  p.glsl = R"(#version 450
-layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer In0 { dvec2 in0[]; };
-layout(std430, binding = 1) writeonly buffer Out0 { dvec2 r0[]; };
-void main() {
-  uint gid = gl_GlobalInvocationID.x;
-  dvec2 x0 = in0[gid];
-  dvec2 v1 = fma(x0, x0.yx, dvec2(0.1lf, 0.3lf));
-  r0[gid] = v1 / (1.5lf + abs(x0.yx)) + sqrt(abs(v1));
-}
-)";
-  p.spec_json = R"({ "inputs": { "in0": { "range": [0.25, 4] } } })";
-  CheckOptions o = quick();
-  o.oracles = {"bound"};
-  const CheckResult held = run(p, o);
-  EXPECT_TRUE(held.findings.empty()) << describe(held);
-  EXPECT_EQ(held.checked, (std::vector<std::string>{"bound"}));
-  o.sabotage = "drop-lo";
-  const CheckResult broken = run(p, o);
-  EXPECT_TRUE(has_finding(broken, "bound")) << describe(broken);
-}
-
-// The guard oracle: the same program lowered with the uniform guard (es310) keeps the bound on both
-// drivers; lowered without it (drop-guard), lavapipe deletes the sums' error terms and the bound is
-// broken.
-TEST(DiffOracles, ADroppedGuardBreaksThePlannersBound) {
+// A continuous compute program of `body` (main's statements after `dvec2 x0 = in0[gid];`, writing
+// r0[gid]) on inputs in [0.25, 4]: `oracle` alone checks it and finds nothing; under `sabotage` it
+// reports a finding.
+void expect_held_then_broken(const std::string& body, const std::string& oracle, const std::string& sabotage) {
   Program p;
   p.glsl = R"(#version 450
 layout(local_size_x = 64) in;
@@ -225,18 +201,30 @@ layout(std430, binding = 1) writeonly buffer Out0 { dvec2 r0[]; };
 void main() {
   uint gid = gl_GlobalInvocationID.x;
   dvec2 x0 = in0[gid];
-  r0[gid] = (x0 + dvec2(0.1lf, 0.3lf)) * x0.yx + x0;
-}
-)";
+)" + body + "}\n";
   p.spec_json = R"({ "inputs": { "in0": { "range": [0.25, 4] } } })";
   CheckOptions o = quick();
-  o.oracles = {"guard"};
+  o.oracles = {oracle};
   const CheckResult held = run(p, o);
   EXPECT_TRUE(held.findings.empty()) << describe(held);
-  EXPECT_EQ(held.checked, (std::vector<std::string>{"guard"}));
-  o.sabotage = "drop-guard";
+  EXPECT_EQ(held.checked, (std::vector<std::string>{oracle}));
+  o.sabotage = sabotage;
   const CheckResult broken = run(p, o);
-  EXPECT_TRUE(has_finding(broken, "guard")) << describe(broken);
+  EXPECT_TRUE(has_finding(broken, oracle)) << describe(broken);
+}
+
+// In the generator's continuous form: a product, a quotient and a square root.
+TEST(DiffOracles, DroppedLowWordsBreakThePlannersBound) {
+  expect_held_then_broken("  dvec2 v1 = fma(x0, x0.yx, dvec2(0.1lf, 0.3lf));\n"
+                          "  r0[gid] = v1 / (1.5lf + abs(x0.yx)) + sqrt(abs(v1));\n",
+                          "bound", "drop-lo");
+}
+
+// The guard oracle: the same program lowered with the uniform guard (es310) keeps the bound on both
+// drivers; lowered without it (drop-guard), lavapipe deletes the sums' error terms and the bound is
+// broken.
+TEST(DiffOracles, ADroppedGuardBreaksThePlannersBound) {
+  expect_held_then_broken("  r0[gid] = (x0 + dvec2(0.1lf, 0.3lf)) * x0.yx + x0;\n", "guard", "drop-guard");
 }
 
 // What the bound oracle leaves out: anything that jumps, where a tiny error can move a result by
