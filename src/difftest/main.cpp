@@ -59,7 +59,6 @@ struct RunArgs {
   uint64_t seed = 1, samples = 256;
   std::string out = "build/difftest";
   bool reduce = true, webgpu = false;
-  bool guard_oracle = false;  // --guard-oracle: CheckOptions::oracles gets "guard" (off by default)
   std::vector<std::string> skip_passes;
 };
 
@@ -76,7 +75,6 @@ int run(const RunArgs& a) {
     options.skip_exact = uses_native_non_ieee(p);
     options.webgpu = a.webgpu;
     options.skip_passes = a.skip_passes;
-    if (a.guard_oracle) options.oracles.push_back("guard");
     bool timed_out = false;
     const CheckResult r = check_in_child(p.glsl, p.spec_json, p.stage, options, a.program_seconds, &timed_out);
     ++programs;
@@ -142,7 +140,7 @@ int run(const RunArgs& a) {
   return failures + invalid > 0 ? 1 : 0;
 }
 
-int check_files(const std::vector<std::string>& files, uint64_t samples, bool webgpu, bool guard_oracle) {
+int check_files(const std::vector<std::string>& files, uint64_t samples, bool webgpu) {
   int status = 0;
   for (const std::string& file : files) {
     std::string glsl, spec;
@@ -153,7 +151,6 @@ int check_files(const std::vector<std::string>& files, uint64_t samples, bool we
     CheckOptions options;
     options.samples = samples;
     options.webgpu = webgpu;
-    if (guard_oracle) options.oracles.push_back("guard");
     bool timed_out = false;
     const CheckResult r = check_in_child(glsl, spec, stage_of(file), options, 600, &timed_out);
     if (timed_out) {
@@ -193,9 +190,6 @@ int main(int argc, char** argv) {
   bool no_reduce = false;
   run_cmd->add_flag("--no-reduce", no_reduce, "keep findings as generated");
   run_cmd->add_flag("--webgpu", run_args.webgpu, "also compare the wgsl lowering in Chromium's WebGPU");
-  run_cmd->add_flag("--guard-oracle", run_args.guard_oracle,
-                    "also run the guard oracle (off by default while its first finding, seed 6108, is open: "
-                    "docs/robustness.md)");
   run_cmd->add_option("--skip-pass", run_args.skip_passes,
                       "leave a pass out of every lowering (a bug put back on purpose, to see it found)");
 
@@ -205,12 +199,11 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> files;
   uint64_t samples = 256;
-  bool webgpu = false, guard_oracle = false;
+  bool webgpu = false;
   CLI::App* check_cmd = app.add_subcommand("check", "run every oracle on saved programs (FILE.comp/.vert/.frag with FILE.json)");
   check_cmd->add_option("files", files)->required();
   check_cmd->add_option("--samples", samples);
   check_cmd->add_flag("--webgpu", webgpu);
-  check_cmd->add_flag("--guard-oracle", guard_oracle);
 
   std::string reduce_file, oracle = "exact";
   CLI::App* reduce_cmd = app.add_subcommand("reduce", "reduce a saved program while an oracle still fails on it");
@@ -228,7 +221,7 @@ int main(int argc, char** argv) {
     std::cout << "\n" << p.glsl << "// spec:\n" << p.spec_json;
     return 0;
   }
-  if (check_cmd->parsed()) return check_files(files, samples, webgpu, guard_oracle);
+  if (check_cmd->parsed()) return check_files(files, samples, webgpu);
   std::string glsl, spec;
   if (!read_file(reduce_file, &glsl) || !read_file(spec_path(reduce_file), &spec)) {
     std::cerr << reduce_file << ": error: cannot read the program or its spec\n";

@@ -32,9 +32,7 @@ struct Finding {
 
 struct CheckOptions {
   uint64_t samples = 256;
-  // "guard" is not among the defaults while its first finding is open (seed 6108: df64 on constants
-  // under the uniform guard, docs/robustness.md); `run --guard-oracle` adds it.
-  std::vector<std::string> oracles{"exact", "int", "bound", "targets"};
+  std::vector<std::string> oracles{"exact", "int", "bound", "guard", "targets"};
   bool skip_exact = false;  // the program uses a built-in native does not compute as IEEE
   bool webgpu = false;      // also run the wgsl lowering in Chromium (targets)
   // Passes left out of every lowering (Options::skip_passes): a bug put back on purpose, to show

@@ -9,8 +9,13 @@
 // before main in declaration order, so running them first thing in main, in the same order,
 // computes the same values. Runs after lower_doubles, before split_interfaces (whose join is
 // then inserted in front of these assignments).
+//
+// Where the guard is a uniform, an initialiser holding a float-float constant moves too, although
+// it is constant: guard_constants (which runs after) makes every such constant in a function body
+// read the guard, and a global initialiser must stay a constant expression.
 #include <algorithm>
 
+#include "ir/walk.hpp"
 #include "lower/lower.hpp"
 
 namespace doublet::passes {
@@ -30,6 +35,14 @@ bool is_constant_expression(const ir::ExprPtr& e) {
   }
 }
 
+bool holds_float_float_constant(const ir::ExprPtr& e) {
+  bool found = false;
+  ir::visit(e, [&](const ir::ExprPtr& x) {
+    found = found || is_float_float_constant(x);
+  });
+  return found;
+}
+
 ir::StmtPtr assignment(const ir::VarPtr& target, const ir::ExprPtr& value) {
   return ir::make_statement(ir::make_assign(ir::make_sym(target), value));
 }
@@ -40,10 +53,12 @@ bool move_global_initialisers(ir::Module& module, Context& ctx) {
   auto main = std::find_if(module.functions.begin(), module.functions.end(),
                            [](const ir::FunctionPtr& f) { return f->name == "main"; });
   if (main == module.functions.end()) return !ctx.failed;
+  const bool guard_reads_constants = guards_constants(ctx.config);
   std::vector<ir::StmtPtr> moved;
   for (size_t i = 0; i < module.globals.size(); ++i) {
     ir::ExprPtr& init = module.global_inits[i];
-    if (!init || module.globals[i]->storage != ir::Storage::Global || is_constant_expression(init)) continue;
+    if (!init || module.globals[i]->storage != ir::Storage::Global) continue;
+    if (is_constant_expression(init) && !(guard_reads_constants && holds_float_float_constant(init))) continue;
     moved.push_back(assignment(module.globals[i], init));
     init = nullptr;
   }

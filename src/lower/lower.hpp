@@ -117,6 +117,11 @@ bool uniform_defaults(ir::Module& module, Context& context);
 bool flatten_io_blocks(ir::Module& module, Context& context);
 // Global initialisers that are not constant expressions become assignments at the top of main.
 bool move_global_initialisers(ir::Module& module, Context& context);
+// Where the guard is a uniform (guards_constants), every float-float constant in a function body
+// (is_float_float_constant: a df_* pair constructed from two float constants) reads the guard.
+bool guards_constants(const pipeline::Config& config);
+bool is_float_float_constant(const ir::ExprPtr& e);
+bool guard_constants(ir::Module& module, Context& context);
 // GLSL ES 3.00+ and WGSL: several fragment outputs each need a location; the missing ones are given
 // in declaration order, with a warning.
 bool assign_fragment_output_locations(ir::Module& module, Context& context);

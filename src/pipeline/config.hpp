@@ -50,6 +50,14 @@ struct Config {
 
   bool binary64_words() const { return representation == Representation::Binary64Words; }
   bool native() const { return representation == Representation::Native; }
+  // The uniform guard as an array read at a non-constant index (rules::EmitRequest::indexed_guard):
+  // every GLSL target but ES 1.00, whose fragment shaders index uniform arrays by constants only;
+  // not WGSL, whose printer gathers the guard into its uniform buffer as one f32 (the indexed read
+  // there, an array of 16-byte stride, cost 25-30% of a loop kernel's time in Chromium's WebGPU:
+  // docs/accuracy.md).
+  bool indexed_guard() const {
+    return guard == rules::GuardStyle::Uniform && !target::facts(output).wgsl && !(facts->es && facts->version < 300);
+  }
 };
 
 // The Config of `options`, or nullopt with the refusal in `diags`.

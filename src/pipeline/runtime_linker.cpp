@@ -47,16 +47,6 @@ std::string helper_text(const passes::Context& requests, Target target) {
   return out;
 }
 
-// The uniform guard as an array read at a non-constant index (rules::EmitRequest::indexed_guard):
-// every GLSL target but ES 1.00, whose fragment shaders index uniform arrays by constants only;
-// not WGSL, whose printer gathers the guard into its uniform buffer as one f32 (the indexed read
-// there, an array of 16-byte stride, cost 25-30% of a loop kernel's time in Chromium's WebGPU:
-// docs/accuracy.md).
-bool indexed_guard(const Config& config) {
-  const bool wgsl = target::facts(config.output).wgsl;
-  return config.guard == rules::GuardStyle::Uniform && !wgsl && !(config.facts->es && config.facts->version < 300);
-}
-
 Diagnostic at_first_use(const Config& config, const passes::Context& requests, const std::string& rule,
                         const std::string& message) {
   auto use = requests.rule_first_use.find(rule);
@@ -77,7 +67,7 @@ LinkedRuntime link_runtime(const Config& config, const passes::Context& requests
   request.guard = config.guard;
   request.exact_words = words;
   request.guard_uniform = config.guard_uniform;
-  request.indexed_guard = indexed_guard(config);
+  request.indexed_guard = config.indexed_guard();
   request.es_version = config.facts->es ? config.facts->version : 320;
   request.integer_eft = config.integer_eft;
   request.integer_functions = config.facts->integer_functions;

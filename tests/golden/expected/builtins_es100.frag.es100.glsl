@@ -1251,9 +1251,9 @@ void main()
   light = df_dvec3(light_hi, light_lo);
   df_double ip;
   df_dvec3 n = df_normalize(df_mul_f2(df_splat_dvec3(scale), normal_in));
-  df_double d = df_max(df_dot(n, df_normalize(light)), df_double(0.0, 0.0));
-  df_double t = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_smoothstep(df_double(0.0, 0.0), df_double(1.0, 0.0), df_fract(df_mul_pow2(d, 4.0))), df_mod(d, df_double(0.25, 0.0))), df_step(df_double(0.5, 0.0), d)), df_modf(df_mul_pow2(d, 8.0), ip)), df_trunc(d)), df_round(d)), df_round_even(d)), df_ceil(d)), df_min(d, scale)), df_fma(d, d, scale)), df_sqrt(d)), df_mix_bool(d, scale, df_lt(d, scale)));
-  df_dvec3 r = df_add(df_add(df_add(df_add(df_add(df_reflect(df_neg(light), n), df_mul(df_cross(n, light), df_splat_dvec3(df_clamp(d, df_double(0.0, 0.0), df_double(1.0, 0.0))))), df_mix(n, light, df_splat_dvec3(t))), df_faceforward(n, light, n)), df_refract(n, df_normalize(light), df_double(0.75, 0.0))), df_mix_bool(n, light, bvec3(true, false, true)));
+  df_double d = df_max(df_dot(n, df_normalize(light)), df_double(0.0 - df_guard, 0.0 - df_guard));
+  df_double t = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_smoothstep(df_double(0.0 - df_guard, 0.0 - df_guard), df_double(1.0 - df_guard, 0.0 - df_guard), df_fract(df_mul_pow2(d, 4.0))), df_mod(d, df_double(0.25 - df_guard, 0.0 - df_guard))), df_step(df_double(0.5 - df_guard, 0.0 - df_guard), d)), df_modf(df_mul_pow2(d, 8.0), ip)), df_trunc(d)), df_round(d)), df_round_even(d)), df_ceil(d)), df_min(d, scale)), df_fma(d, d, scale)), df_sqrt(d)), df_mix_bool(d, scale, df_lt(d, scale)));
+  df_dvec3 r = df_add(df_add(df_add(df_add(df_add(df_reflect(df_neg(light), n), df_mul(df_cross(n, light), df_splat_dvec3(df_clamp(d, df_double(0.0 - df_guard, 0.0 - df_guard), df_double(1.0 - df_guard, 0.0 - df_guard))))), df_mix(n, light, df_splat_dvec3(t))), df_faceforward(n, light, n)), df_refract(n, df_normalize(light), df_double(0.75 - df_guard, 0.0 - df_guard))), df_mix_bool(n, light, bvec3(true, false, true)));
   bool c = any(df_less_than(n, r)) || all(df_less_than_equal(n, r)) || any(df_greater_than(n, r)) || any(df_greater_than_equal(n, r)) || all(df_equal_components(n, r)) || any(df_not_equal_components(n, r));
   gl_FragColor = vec4(df_to_float(df_add(df_add(df_abs(r), df_floor(r)), df_sign(r))), df_to_float(df_add(df_add(df_add(df_length(r), df_distance(n, light)), df_inversesqrt(df_add_f(d, 1.0))), ip))) + (c ? 1.0 : 0.0);
 }

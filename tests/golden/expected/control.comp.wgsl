@@ -156,7 +156,7 @@ fn df_main() {
   var i: u32 = df_LocalInvocationIndex;
   tile[i] = f32(i);
   workgroupBarrier();
-  var s: df_double = df_double(0.0f, 0.0f);
+  var s: df_double = df_double((0.0f - df_uniforms.df_guard), (0.0f - df_uniforms.df_guard));
   {
     var k: i32 = 0i;
     loop {
@@ -164,7 +164,7 @@ fn df_main() {
       if ((k == 2i)) {
         continue;
       }
-      s = df_add(s, df_mul_f2(df_double(0x1.99999ap-4f, (-0x1.99999ap-30f)), tile[((i + u32(k)) % 16u)]));
+      s = df_add(s, df_mul_f2(df_double((0x1.99999ap-4f - df_uniforms.df_guard), ((-0x1.99999ap-30f) - df_uniforms.df_guard)), tile[((i + u32(k)) % 16u)]));
       continuing {
         k++;
       }

@@ -320,5 +320,5 @@ void main()
   df_double a = df_mul_pow2(u, 2.0);
   df_dvec2 p = df_mul(v, df_splat_dvec2(a));
   float fl = df_to_float(u);
-  df_frag_color = vec4(df_to_float(f(p)), df_to_float(df_add(a, h(df_double(0.33333334, -9.934108e-09)))), fl, 1.0);
+  df_frag_color = vec4(df_to_float(f(p)), df_to_float(df_add(a, h(df_double(0.33333334 - df_guard[int(df_guard[1])], -9.934108e-09 - df_guard[int(df_guard[1])])))), fl, 1.0);
 }

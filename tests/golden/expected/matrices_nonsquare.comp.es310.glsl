@@ -888,8 +888,8 @@ void main()
   df_dmat4x3 outer = df_outer_product_dmat4x3(df_dvec3(v.hi.xyz, v.lo.xyz), v);
   df_dvec3 column = df_add(df_mul_dmat4x3_dvec4(outer, v), df_mul_dmat2x3_dvec2(weights, df_dvec2(v.hi.zw, v.lo.zw)));
   df_dvec4 row = df_mul_dvec3_dmat4x3(df_dvec3(v.hi.xyz, v.lo.xyz), outer);
-  df_dmat2x4 wide = df_sub_dmat2x4_dmat2x4(df_resize_dmat4x3_dmat2x4(outer), df_dmat2x4(mat2x4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0), mat2x4(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)));
-  wide = df_mul_dmat2x4_double(df_matrix_comp_mult_dmat2x4(wide, df_make_dmat2x4_4_4(v, df_dvec4(v.hi.wzyx, v.lo.wzyx))), df_double(0.5, 0.0));
+  df_dmat2x4 wide = df_sub_dmat2x4_dmat2x4(df_resize_dmat4x3_dmat2x4(outer), df_dmat2x4(mat2x4(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), mat2x4(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  wide = df_mul_dmat2x4_double(df_matrix_comp_mult_dmat2x4(wide, df_make_dmat2x4_4_4(v, df_dvec4(v.hi.wzyx, v.lo.wzyx))), df_double(0.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
   values[i] = df_add(df_add(row, df_dvec4(wide.hi[1], wide.lo[1])), df_make_dvec4_3_1(column, df_add(df_determinant_dmat2(square), df_determinant_dmat3(other))));
   df_assign_column_dmat2x3(weights, 1, column);
 }

@@ -248,6 +248,6 @@ void main()
   df_double p = df_add(df_mul_f2(x, f), df_mul_f2(x, 3.0));
   df_double s = df_add_f(df_sub(df_add_f(x, f), df_add_f(df_neg(x), g)), 1.0);
   df_double e = df_add(df_two_prod(f, g), df_two_sum(f, -g));
-  df_double k = df_add(df_mul(x, df_double(0.1, -1.4901161e-09)), x);
+  df_double k = df_add(df_mul(x, df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])])), x);
   color = vec4(df_to_float(p), df_to_float(s), df_to_float(e), df_to_float(k));
 }

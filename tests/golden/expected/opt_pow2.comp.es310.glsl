@@ -266,6 +266,6 @@ void main()
   r[2] = df_mul_pow2(x, 0.25);
   r[3] = df_mul_pow2(x, -0.125);
   r[4] = df_mul_f2(x, 3.0);
-  r[5] = df_mul(x, df_double(0.1, -1.4901161e-09));
+  r[5] = df_mul(x, df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])]));
   rv = df_add(df_mul_pow2(v, vec3(2.0)), df_mul_pow2(v, vec3(0.5, 0.25, 2.0)));
 }

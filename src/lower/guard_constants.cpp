@@ -1,0 +1,98 @@
+// guard_constants: where the guard is a uniform, every float-float constant in a function body
+// reads it: `df_double(hi, lo)` becomes `df_double(hi - G, lo - G)`, G the guard as the rules read
+// it (`df_guard`, or `df_guard[int(df_guard[1])]` where Config::indexed_guard()).
+//
+// Why: the guard keeps a driver from rewriting a rule's steps only where one operand of each step
+// is unknown at compile time. When every operand of an operation is a constant (two literals,
+// `f(2.53lf, 0.13lf)` once f is inlined), a driver's constant folding and reassociation evaluate
+// the steps in an order of its own and the low word is lost: 25.7 bits on lavapipe for es310
+// (docs/accuracy.md, "Constants the driver folds"). G is 0, so each word keeps its value
+// (-0.0 - 0.0 is -0.0), but no compiler may assume it.
+//
+// Global initialisers stay constant expressions (GLSL ES requires them); global-inits moves the
+// initialisers holding float-float constants into main first, so that they are reached here.
+// A `const` local keeps its initialiser for the same reason (glslang folds those into the
+// expressions that read them, which are rewritten).
+#include "lower/lower.hpp"
+#include "lower/matrix_helpers.hpp"
+#include "ir/walk.hpp"
+
+namespace doublet::passes {
+namespace {
+
+using Kind = ir::Expr::Kind;
+
+// One word of a float-float constant: a float scalar, vector or matrix constant.
+bool is_float_word(const ir::ExprPtr& e) {
+  return e->kind == Kind::Const && e->type.base == ir::Base::Float && !e->type.is_array();
+}
+
+class GuardConstants {
+ public:
+  explicit GuardConstants(const pipeline::Config& config) : config_(config) {
+    guard_ = std::make_shared<ir::Var>();
+    guard_->name = config.guard_uniform;
+    guard_->storage = ir::Storage::Uniform;
+    guard_->type = ir::scalar_type(ir::Base::Float);
+    if (config.indexed_guard()) guard_->type.array_dims = {2};
+  }
+
+  ir::ExprPtr rewrite(const ir::ExprPtr& e) {
+    if (!is_float_float_constant(e)) return e;
+    return ir::make_node(Kind::Construct, "", e->type, {guarded(e->args[0]), guarded(e->args[1])}, e->loc);
+  }
+
+ private:
+  // The guard's value, a new tree at each use.
+  ir::ExprPtr guard(ir::Loc loc) const {
+    auto g = ir::make_sym(guard_, loc);
+    if (!config_.indexed_guard()) return g;
+    auto index = ir::make_node(Kind::Construct, "", ir::scalar_type(ir::Base::Int), {ir::make_index(g, 1)}, loc);
+    return ir::make_node(Kind::Index, "", ir::scalar_type(ir::Base::Float), {ir::make_sym(guard_, loc), index}, loc);
+  }
+
+  ir::ExprPtr minus_guard(const ir::ExprPtr& word) const {
+    return ir::make_binary("-", word->type, word, guard(word->loc));
+  }
+
+  // A scalar or vector word less the guard; a matrix, one element at a time (WGSL, which the
+  // GLSL printed here is translated to, has no matrix - scalar).
+  ir::ExprPtr guarded(const ir::ExprPtr& word) const {
+    if (!word->type.is_matrix()) return minus_guard(word);
+    std::vector<ir::ExprPtr> elements;
+    for (const ir::Scalar& v : word->values) {
+      auto element = ir::Expr::make(Kind::Const, ir::scalar_type(ir::Base::Float), word->loc);
+      element->values = {v};
+      elements.push_back(minus_guard(element));
+    }
+    return ir::make_node(Kind::Construct, "", word->type, elements, word->loc);
+  }
+
+  const pipeline::Config& config_;
+  ir::VarPtr guard_;  // declared by the runtime linker, not a module global
+};
+
+}  // namespace
+
+bool guards_constants(const pipeline::Config& config) {
+  return config.guard == rules::GuardStyle::Uniform && !config.native() && !config.binary64_words();
+}
+
+bool is_float_float_constant(const ir::ExprPtr& e) {
+  return e->kind == Kind::Construct && !e->type.is_array() && (is_df(e->type) || matrix::is_matrix(e->type)) &&
+         e->args.size() == 2 && is_float_word(e->args[0]) && is_float_word(e->args[1]);
+}
+
+bool guard_constants(ir::Module& module, Context& ctx) {
+  GuardConstants pass(ctx.config);
+  const ir::ExprRewriter rewrite = [&](const ir::ExprPtr& e) { return pass.rewrite(e); };
+  for (const auto& f : module.functions)
+    ir::visit_statements(f->body, [&](const ir::StmtPtr& s) {
+      if (s->kind == ir::Stmt::Kind::Decl && s->var->storage == ir::Storage::Const) return;
+      s->expr = ir::rewrite(s->expr, rewrite);
+      s->step = ir::rewrite(s->step, rewrite);
+    });
+  return !ctx.failed;
+}
+
+}  // namespace doublet::passes
