@@ -140,7 +140,8 @@ int run(const RunArgs& a) {
   return failures + invalid > 0 ? 1 : 0;
 }
 
-int check_files(const std::vector<std::string>& files, uint64_t samples, bool webgpu) {
+int check_files(const std::vector<std::string>& files, uint64_t samples, bool webgpu,
+                const std::vector<std::string>& skip_passes) {
   int status = 0;
   for (const std::string& file : files) {
     std::string glsl, spec;
@@ -151,6 +152,7 @@ int check_files(const std::vector<std::string>& files, uint64_t samples, bool we
     CheckOptions options;
     options.samples = samples;
     options.webgpu = webgpu;
+    options.skip_passes = skip_passes;
     bool timed_out = false;
     const CheckResult r = check_in_child(glsl, spec, stage_of(file), options, 600, &timed_out);
     if (timed_out) {
@@ -204,6 +206,8 @@ int main(int argc, char** argv) {
   check_cmd->add_option("files", files)->required();
   check_cmd->add_option("--samples", samples);
   check_cmd->add_flag("--webgpu", webgpu);
+  std::vector<std::string> check_skip_passes;
+  check_cmd->add_option("--skip-pass", check_skip_passes, "leave a pass out of every lowering (to see a case fail without its fix)");
 
   std::string reduce_file, oracle = "exact";
   CLI::App* reduce_cmd = app.add_subcommand("reduce", "reduce a saved program while an oracle still fails on it");
@@ -221,7 +225,7 @@ int main(int argc, char** argv) {
     std::cout << "\n" << p.glsl << "// spec:\n" << p.spec_json;
     return 0;
   }
-  if (check_cmd->parsed()) return check_files(files, samples, webgpu);
+  if (check_cmd->parsed()) return check_files(files, samples, webgpu, check_skip_passes);
   std::string glsl, spec;
   if (!read_file(reduce_file, &glsl) || !read_file(spec_path(reduce_file), &spec)) {
     std::cerr << reduce_file << ": error: cannot read the program or its spec\n";
