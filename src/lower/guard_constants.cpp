@@ -13,6 +13,9 @@
 // initialisers holding float-float constants into main first, so that they are reached here.
 // A `const` local keeps its initialiser for the same reason (glslang folds those into the
 // expressions that read them, which are rewritten).
+#include <algorithm>
+#include <cmath>
+
 #include "lower/lower.hpp"
 #include "lower/matrix_helpers.hpp"
 #include "ir/walk.hpp"
@@ -51,19 +54,28 @@ class GuardConstants {
     return ir::make_node(Kind::Index, "", ir::scalar_type(ir::Base::Float), {ir::make_sym(guard_, loc), index}, loc);
   }
 
-  ir::ExprPtr minus_guard(const ir::ExprPtr& word) const {
-    return ir::make_binary("-", word->type, word, guard(word->loc));
+  static bool is_positive_zero(const ir::Scalar& v) { return v.d == 0 && !std::signbit(v.d); }
+
+  // A scalar word with the guard: `c - G`, but `0.0 + G` for +0.0. Both are c when G is +0 (and
+  // -0.0 - G keeps -0.0), but drivers rewrite 0.0 - G as -G, which is -0.0
+  // (docs/accuracy.md, "Constants the driver folds").
+  ir::ExprPtr with_guard(const ir::ExprPtr& word) const {
+    const bool plus = word->values.size() == 1 && is_positive_zero(word->values[0]);
+    return ir::make_binary(plus ? "+" : "-", word->type, word, guard(word->loc));
   }
 
-  // A scalar or vector word less the guard; a matrix, one element at a time (WGSL, which the
-  // GLSL printed here is translated to, has no matrix - scalar).
+  // A word with the guard. A vector without +0.0 components as a whole (`vec2(0.1, 0.3) - G`);
+  // otherwise, and for matrices (WGSL, which this GLSL is translated to, has no matrix - scalar),
+  // one component at a time.
   ir::ExprPtr guarded(const ir::ExprPtr& word) const {
-    if (!word->type.is_matrix()) return minus_guard(word);
+    const bool whole = word->type.vec == 1 && !word->type.is_matrix();
+    const bool has_positive_zero = std::any_of(word->values.begin(), word->values.end(), is_positive_zero);
+    if (whole || (!word->type.is_matrix() && !has_positive_zero)) return with_guard(word);
     std::vector<ir::ExprPtr> elements;
     for (const ir::Scalar& v : word->values) {
       auto element = ir::Expr::make(Kind::Const, ir::scalar_type(ir::Base::Float), word->loc);
       element->values = {v};
-      elements.push_back(minus_guard(element));
+      elements.push_back(with_guard(element));
     }
     return ir::make_node(Kind::Construct, "", word->type, elements, word->loc);
   }

@@ -323,6 +323,8 @@ std::string splice_rules(const std::string& lowered, const doublet::rules::RuleL
     for (int width = 1; width <= 4; ++width)
       if (rules.has({name, width})) req.used.push_back({name, width});
   req.guard = precise ? doublet::rules::GuardStyle::Precise : doublet::rules::GuardStyle::Uniform;
+  // The guard as the lowered text declares it: the shader's constants read it too (guard-constants).
+  req.indexed_guard = !precise && lowered.find("uniform highp float df_guard[2];") != std::string::npos;
   req.es_version = 320;
   auto emitted = rules.emit(req);
   if (!emitted.ok) {

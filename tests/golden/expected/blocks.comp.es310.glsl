@@ -556,8 +556,8 @@ void main()
     return;
   }
   Particle p = store.particles[i];
-  df_dvec4 moved = df_mul_dmat4_dvec4(transform, df_make_dvec4_3_1(p.position, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
-  p.position = df_add(df_dvec3(moved.hi.xyz, moved.lo.xyz), df_mul(df_make_dvec3_2_1(offsets[i % 2u], df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])), df_splat_dvec3(dt)));
+  df_dvec4 moved = df_mul_dmat4_dvec4(transform, df_make_dvec4_3_1(p.position, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
+  p.position = df_add(df_dvec3(moved.hi.xyz, moved.lo.xyz), df_mul(df_make_dvec3_2_1(offsets[i % 2u], df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])), df_splat_dvec3(dt)));
   store.particles[i] = p;
   energies[i] = df_mul(df_mul_pow2(p.mass, 0.5), df_dot(p.position, p.position));
   if (i == 0u)

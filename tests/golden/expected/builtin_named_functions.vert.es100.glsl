@@ -260,6 +260,6 @@ void main()
 {
   scale = df_double(scale_hi, scale_lo);
   mix_user = scale;
-  shade = mix_user2(df_to_float(exp_user(scale)), df_to_float(distance2(mix_user, df_double(1.0 - df_guard, 0.0 - df_guard))));
+  shade = mix_user2(df_to_float(exp_user(scale)), df_to_float(distance2(mix_user, df_double(1.0 - df_guard, 0.0 + df_guard))));
   gl_Position = position;
 }

@@ -262,6 +262,6 @@ void main()
 {
   scale = df_double(scale_hi, scale_lo);
   mix_user = scale;
-  shade = mix(df_to_float(exp(scale)), df_to_float(distance2(mix_user, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]))));
+  shade = mix(df_to_float(exp(scale)), df_to_float(distance2(mix_user, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]))));
   gl_Position = position;
 }

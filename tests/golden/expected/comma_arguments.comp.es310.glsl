@@ -226,9 +226,9 @@ df_double h(df_dvec2 a, df_double b)
 void main()
 {
   df_dvec2 v = df_make_dvec2_1_1(r[0], r[1]);
-  r[2] = h((v, df_double(2.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
-  df_double q = (v, df_double(3.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
-  df_double arr[2] = df_double[2]((v, df_double(4.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])), df_double(5.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  r[2] = h((v, df_double(2.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
+  df_double q = (v, df_double(3.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
+  df_double arr[2] = df_double[2]((v, df_double(4.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])), df_double(5.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   r[3] = df_add(q, arr[0]);
   int i = 0;
   int j = 1;

@@ -652,16 +652,16 @@ int next(inout int c)
 
 void main()
 {
-  df_double x[4] = df_double[4](df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_double(2.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_double(3.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_double(4.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
-  df_dvec3 y[2] = df_dvec3[2](df_dvec3(vec3(1.0) - df_guard[int(df_guard[1])], vec3(0.0) - df_guard[int(df_guard[1])]), df_dvec3(vec3(2.0) - df_guard[int(df_guard[1])], vec3(0.0) - df_guard[int(df_guard[1])]));
-  df_dmat2 m[2] = df_dmat2[2](df_dmat2(mat2(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])]), mat2(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])), df_dmat2(mat2(2.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 2.0 - df_guard[int(df_guard[1])]), mat2(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  df_double x[4] = df_double[4](df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_double(2.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_double(3.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_double(4.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
+  df_dvec3 y[2] = df_dvec3[2](df_dvec3(vec3(1.0) - df_guard[int(df_guard[1])], vec3(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])), df_dvec3(vec3(2.0) - df_guard[int(df_guard[1])], vec3(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
+  df_dmat2 m[2] = df_dmat2[2](df_dmat2(mat2(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])]), mat2(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])), df_dmat2(mat2(2.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 2.0 - df_guard[int(df_guard[1])]), mat2(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   uint i = k;
   int c = int(k);
   x[i + 1u] = df_add_f(x[i + 1u], 0.5);
   y[c - 1] = df_mul_pow2(y[c - 1], vec3(2.0));
-  df_sub_assign_double_double(x[i++], df_double(0.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  df_sub_assign_double_double(x[i++], df_double(0.5 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   df_mul_assign_double_double(x[next(c)], r[0]);
-  df_div_assign_dvec3_dvec3(y[next(c) - 2], df_dvec3(vec3(3.0) - df_guard[int(df_guard[1])], vec3(0.0) - df_guard[int(df_guard[1])]));
+  df_div_assign_dvec3_dvec3(y[next(c) - 2], df_dvec3(vec3(3.0) - df_guard[int(df_guard[1])], vec3(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   df_mul_assign_dmat2_dmat2(m[next(c) - 3], df_diagonal_dmat2(r[1]));
   df_dvec3 v = y[0];
   df_assign_component_dvec3(v, c - 2, df_add_f(df_component_dvec3(v, c - 2), 1.0));

@@ -156,7 +156,7 @@ fn df_main() {
   var i: u32 = df_LocalInvocationIndex;
   tile[i] = f32(i);
   workgroupBarrier();
-  var s: df_double = df_double((0.0f - df_uniforms.df_guard), (0.0f - df_uniforms.df_guard));
+  var s: df_double = df_double((0.0f + df_uniforms.df_guard), (0.0f + df_uniforms.df_guard));
   {
     var k: i32 = 0i;
     loop {

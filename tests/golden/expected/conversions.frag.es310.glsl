@@ -765,7 +765,7 @@ void main()
   bias = df_double(bias_hi, bias_lo);
   df_double x = df_add_f(df_add(df_from_int(cell.x), df_from_uint(id.y)), 1.0);
   df_dvec2 d2 = df_add(df_from_int(cell), df_from_uint(id));
-  df_dvec4 d4 = df_make_dvec4_2_1_1(d2, x, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  df_dvec4 d4 = df_make_dvec4_2_1_1(d2, x, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   int n = df_to_int(x) + df_to_int(d2).y;
   uint u = df_to_uint(df_abs(x));
   bool nz = df_to_bool(x);

@@ -220,7 +220,7 @@ fn df_main() {
   center = df_dvec2(df_uniforms.center_hi, df_uniforms.center_lo);
   scale = df_double(df_uniforms.scale_hi, df_uniforms.scale_lo);
   var c: df_dvec2 = df_add_df_dvec2_df_dvec2(center, df_mul_f2(df_splat_dvec2(scale), df_FragCoord.xy));
-  var z: df_dvec2 = df_dvec2((vec2<f32>(0.0f, 0.0f) - df_uniforms.df_guard), (vec2<f32>(0.0f, 0.0f) - df_uniforms.df_guard));
+  var z: df_dvec2 = df_dvec2(vec2<f32>((0.0f + df_uniforms.df_guard), (0.0f + df_uniforms.df_guard)), vec2<f32>((0.0f + df_uniforms.df_guard), (0.0f + df_uniforms.df_guard)));
   var n: i32 = 0i;
   {
     loop {

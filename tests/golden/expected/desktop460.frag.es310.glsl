@@ -690,7 +690,7 @@ void main()
   view = df_dmat4(view_hi, view_lo);
   eye = df_dvec3(eye_hi, eye_lo);
   world = df_dvec3(world_hi, world_lo);
-  df_dvec4 p = df_mul_dmat4_dvec4(view, df_make_dvec4_3_1(df_sub(world, eye), df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  df_dvec4 p = df_mul_dmat4_dvec4(view, df_make_dvec4_3_1(df_sub(world, eye), df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   vec4 h = imageLoad(heights, ivec2(uv * 16.0));
   df_double d = df_add_f(df_length(df_dvec3(p.hi.xyz, p.lo.xyz)), h.x);
   color = texture(albedo, uv) * df_to_float(df_fract(d));

@@ -165,12 +165,12 @@ layout(std430, binding = 0) buffer B {
 void main()
 {
   df_double e = r[0];
-  df_double s = df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]);
-  for (df_double t = df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]); df_lt(t, e); t = df_add_f(t, 0.25))
+  df_double s = df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]);
+  for (df_double t = df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]); df_lt(t, e); t = df_add_f(t, 0.25))
   {
     s = df_add(s, t);
   }
-  for (df_dvec2 u = df_dvec2(vec2(0.0) - df_guard[int(df_guard[1])], vec2(0.0) - df_guard[int(df_guard[1])]); df_lt(df_double(u.hi.x, u.lo.x), e); u = df_add_f(u, vec2(0.5, 1.0)))
+  for (df_dvec2 u = df_dvec2(vec2(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), vec2(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])); df_lt(df_double(u.hi.x, u.lo.x), e); u = df_add_f(u, vec2(0.5, 1.0)))
   {
     s = df_add(s, df_double(u.hi.y, u.lo.y));
   }

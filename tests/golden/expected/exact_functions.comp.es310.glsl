@@ -762,6 +762,6 @@ ex_dvec2 both_ends(ex_dvec2 v)
 void main()
 {
   uint i = gl_GlobalInvocationID.x;
-  df_dvec2 e = df_from_exact(both_ends(df_to_exact(df_make_dvec2_1_1(x[i], df_double(0.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))));
+  df_dvec2 e = df_from_exact(both_ends(df_to_exact(df_make_dvec2_1_1(x[i], df_double(0.5 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))));
   sums[i] = df_add(df_mul_pow2(df_from_exact(harmonic(df_to_exact(x[i]), 3000)), 2.0), df_mul(df_double(e.hi.y, e.lo.y), df_double(e.hi.x, e.lo.x)));
 }

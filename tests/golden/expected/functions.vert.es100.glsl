@@ -494,7 +494,7 @@ void main()
   df_double speed;
   df_dvec2 p = uv;
   step2(p, speed, time);
-  accumulated = df_mul(p, df_splat_dvec2(scaled(speed, df_double(0.5 - df_guard, 0.0 - df_guard))));
+  accumulated = df_mul(p, df_splat_dvec2(scaled(speed, df_double(0.5 - df_guard, 0.0 + df_guard))));
   v_uv = df_to_float(accumulated);
   gl_Position = vec4(df_to_float(p), 0.0, 1.0);
 }

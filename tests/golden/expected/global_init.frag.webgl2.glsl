@@ -180,7 +180,7 @@ df_double twice(df_double x)
 void main()
 {
   farPlane = df_double(farPlane_hi, farPlane_lo);
-  half_far = df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]);
+  half_far = df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]);
   k = 2.0 / log2(df_to_float(farPlane) + 1.0);
   scaled = df_mul_pow2(farPlane, 2.0);
   t2 = twice(scaled);

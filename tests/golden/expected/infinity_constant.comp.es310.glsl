@@ -63,11 +63,11 @@ df_double positive_infinity();
 
 df_double positive_infinity()
 {
-  return df_double(uintBitsToFloat(0x7F800000u) - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]);
+  return df_double(uintBitsToFloat(0x7F800000u) - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]);
 }
 
 void main()
 {
   lowest = df_neg(positive_infinity());
-  highest = df_min(x, df_double(uintBitsToFloat(0x7F800000u) - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  highest = df_min(x, df_double(uintBitsToFloat(0x7F800000u) - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
 }

@@ -287,7 +287,7 @@ void main()
 {
   position = df_dvec3(position_hi, position_lo);
   model = df_dmat4(model_hi, model_lo);
-  df_dvec4 p = df_mul_dmat4_dvec4(model, df_make_dvec4_3_1(position, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  df_dvec4 p = df_mul_dmat4_dvec4(model, df_make_dvec4_3_1(position, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   VertexData_world = df_dvec3(p.hi.xyz, p.lo.xyz);
   VertexData_uv = uv;
   Extra_depth = df_mul_pow2(df_double(p.hi.z, p.lo.z), 0.5);

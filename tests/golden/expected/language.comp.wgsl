@@ -86,7 +86,7 @@ fn df_main() {
   var i: i32 = 0i;
   var m: i32 = i32(-2147483647i - 1i);
   var inf: f32 = bitcast<f32>(df_runtime_u32(2139095040u));
-  var s: S = S(df_double((1.0f - df_uniforms.df_guard), (0.0f - df_uniforms.df_guard)), 2i);
+  var s: S = S(df_double((1.0f - df_uniforms.df_guard), (0.0f + df_uniforms.df_guard)), 2i);
   var t: S = s;
   df_block_B.v[i] = 1.0f;
   i++;

@@ -485,14 +485,14 @@ df_dvec3 to_eye(Frame f, df_dvec3 p)
 
 df_double weigh(Camera c)
 {
-  df_double sum = df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]);
+  df_double sum = df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]);
   for (int i = 0; i < 3; ++i)
   {
-    if (df_lt(c.weights[i], df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))
+    if (df_lt(c.weights[i], df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))
     {
       continue;
     }
-    if (df_gt(sum, df_double(1.0e+01 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))
+    if (df_gt(sum, df_double(1.0e+01 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))
     {
       break;
     }
@@ -511,7 +511,7 @@ void main()
   history[1] = df_mul_pow2(history[0], 0.5);
   uv = df_mul(df_dvec2(eye.hi.xy, eye.lo.xy), df_splat_dvec2(history[1]));
   tint = vec4(df_to_float(w));
-  if (df_equal(w, df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))
+  if (df_equal(w, df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))
   {
     gl_Position = vec4(0.0);
     {

@@ -442,7 +442,7 @@ void main()
   tenth = df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])]);
   df_double r = df_two_sum(6378137.0, offset.x);
   df_double g = df_div(df_double(3.9860045e+14 - df_guard[int(df_guard[1])], -4348608.0 - df_guard[int(df_guard[1])]), df_sqr(r));
-  df_dvec3 p = df_add(df_mul_f2(df_splat_dvec3(tenth), offset), df_dvec3(vec3(0.33333334, -2.5, 1.0e-20) - df_guard[int(df_guard[1])], vec3(-9.934108e-09, 0.0, 3.1734477e-28) - df_guard[int(df_guard[1])]));
+  df_dvec3 p = df_add(df_mul_f2(df_splat_dvec3(tenth), offset), df_dvec3(vec3(0.33333334, -2.5, 1.0e-20) - df_guard[int(df_guard[1])], vec3(-9.934108e-09 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 3.1734477e-28 - df_guard[int(df_guard[1])])));
   v_info = vec4(df_to_float(g), df_to_float(df_add_f(r, -6378137.0)), df_to_float(df_dvec2(p.hi.xy, p.lo.xy)));
   gl_Position = vec4(df_to_float(p), 1.0);
 }

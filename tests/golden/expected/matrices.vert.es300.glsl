@@ -1208,15 +1208,15 @@ void main()
   warp[0] = df_dmat2(warp_hi[0], warp_lo[0]);
   warp[1] = df_dmat2(warp_hi[1], warp_lo[1]);
   position = df_dvec4(position_hi, position_lo);
-  df_dmat4 mvp = df_add_dmat4_double(df_mul_dmat4_dmat4(model, df_transpose_dmat4(model)), df_double(0.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  df_dmat4 mvp = df_add_dmat4_double(df_mul_dmat4_dmat4(model, df_transpose_dmat4(model)), df_double(0.5 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   df_dvec4 p = df_mul_dmat4_dvec4(mvp, position);
   p = df_add(p, df_mul_dvec4_dmat4(position, mvp));
   df_dmat3 n = df_mul_dmat3_double(df_inverse_dmat3(normal_basis), df_determinant_dmat3(normal_basis));
-  n = df_sub_dmat3_dmat3(scaled(n, df_double(2.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])), df_dmat3(mat3(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])]), mat3(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  n = df_sub_dmat3_dmat3(scaled(n, df_double(2.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])), df_dmat3(mat3(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])]), mat3(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   df_assign_column_dmat3(n, 1, df_from_float(normal));
   df_assign_element_dmat3(n, 2, column, df_add_f(df_component_dvec3(df_dvec3(n.hi[2], n.lo[2]), column), 3.0));
   df_assign_column_dmat4(mvp, column, p);
-  df_dmat2 w = df_div_dmat2_double(df_matrix_comp_mult_dmat2(warp[0], warp[1]), df_double(4.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  df_dmat2 w = df_div_dmat2_double(df_matrix_comp_mult_dmat2(warp[0], warp[1]), df_double(4.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   w = df_add_dmat2_dmat2(df_neg_dmat2(w), df_mul_dmat2_dmat2(df_inverse_dmat2(warp[1]), warp[0]));
   df_dvec3 r = df_add(df_mul_dmat3_dvec3(n, df_from_float(normal)), df_make_dvec3_2_1(df_dvec2(w.hi[0], w.lo[0]), df_determinant_dmat2(w)));
   bool same = df_equal_dmat4(model, mvp);

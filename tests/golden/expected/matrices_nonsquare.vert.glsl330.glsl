@@ -603,7 +603,7 @@ void main()
   lift = df_dmat2x4(lift_hi, lift_lo);
   position = df_dvec3(position_hi, position_lo);
   df_dvec2 p = df_mul_dmat3x2_dvec3(project, position);
-  df_dvec4 q = df_add(df_mul_dmat2x4_dvec2(lift, p), df_mul(df_make_dvec4_3_1(position, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])), df_splat_dvec4(df_swizzle_dvec2_y(df_column_dmat4x2(df_transpose_dmat2x4(lift), 0)))));
-  df_dmat4x2 t = df_mul_dmat4x2_double(df_transpose_dmat2x4(lift), df_double(2.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  df_dvec4 q = df_add(df_mul_dmat2x4_dvec2(lift, p), df_mul(df_make_dvec4_3_1(position, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])), df_splat_dvec4(df_swizzle_dvec2_y(df_column_dmat4x2(df_transpose_dmat2x4(lift), 0)))));
+  df_dmat4x2 t = df_mul_dmat4x2_double(df_transpose_dmat2x4(lift), df_double(2.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   gl_Position = df_to_float(df_add(q, df_make_dvec4_2_2(df_dvec2(t.hi[3], t.lo[3]), p)));
 }

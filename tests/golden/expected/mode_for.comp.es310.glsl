@@ -203,7 +203,7 @@ void main()
 {
   df_double t = df_from_float(state[0].w);
   float x = state[0].x;
-  t = integrate(t, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  t = integrate(t, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   x = df_to_float(integrate(df_from_float(x), df_from_float(state[0].y)));
   state[0] = vec4(x, state[0].y, 0.0, df_to_float(t));
 }

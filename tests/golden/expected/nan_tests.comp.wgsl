@@ -84,7 +84,7 @@ fn df_main() {
   var i: u32 = df_GlobalInvocationID[0i];
   var odd: bool = (df_isnan(df_block_Data.x[i]) || df_isinf(df_block_Data.x[i]));
   var single: bool = (df_float_isnan(df_block_Data.f[i]) || df_float_isinf(df_block_Data.f[i]));
-  df_block_Data.x[i] = df_select_df_double(df_add(df_block_Data.x[i], df_from_bool(single)), df_double((0.0f - df_uniforms.df_guard), (0.0f - df_uniforms.df_guard)), odd);
+  df_block_Data.x[i] = df_select_df_double(df_add(df_block_Data.x[i], df_from_bool(single)), df_double((0.0f + df_uniforms.df_guard), (0.0f + df_uniforms.df_guard)), odd);
 }
 
 var<private> df_GlobalInvocationID: vec3<u32>;

@@ -408,7 +408,7 @@ void main()
   a = df_add(a, b);
   a = df_add_f(a, -0.5);
   a = df_mul(a, df_neg(b));
-  a = df_div(a, df_double(3.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  a = df_div(a, df_double(3.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   df_double c = df_post_increment_double(a);
   df_pre_decrement_double(b);
   df_dvec3 w = df_dvec3(v.hi.xyz, v.lo.xyz);
@@ -420,7 +420,7 @@ void main()
   bool ge = df_ge(a, b);
   df_double m = less ? a : (ge ? b : c);
   v = df_neg(df_make_dvec4_3_1(w, m));
-  if (df_equal(v, df_dvec4(vec4(0.0) - df_guard[int(df_guard[1])], vec4(0.0) - df_guard[int(df_guard[1])])))
+  if (df_equal(v, df_dvec4(vec4(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), vec4(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]))))
   {
     df_assign_component_dvec4(v, 3, df_component_dvec4(v, k));
   }

@@ -341,7 +341,7 @@ void column(out df_dvec2 c, df_double a)
 df_double take(inout df_double x_1)
 {
   df_double old = x_1;
-  x_1 = df_div(x_1, df_double(3.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  x_1 = df_div(x_1, df_double(3.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   return old;
 }
 
@@ -369,7 +369,7 @@ void main()
   }
   {
     df_out2 = df_component_dvec4(w, i);
-    scale(df_out2, df_double(1.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+    scale(df_out2, df_double(1.5 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
     df_assign_component_dvec4(w, i, df_out2);
   }
   {
@@ -382,7 +382,7 @@ void main()
     df_assign_column_dmat2(m, 0, df_out4);
   }
   df_double s = df_add((df_out5 = df_double(w.hi.z, w.lo.z), df_out6 = take(df_out5), df_assign_component_dvec4(w, 2, df_out5), df_out6), (df_out7 = df_double(w.hi.x, w.lo.x), df_out8 = take(df_out7), df_assign_component_dvec4(w, 0, df_out7), df_out8));
-  for (int j = 0; (j < 2) && df_gt((df_out9 = df_double(w.hi.w, w.lo.w), df_out10 = take(df_out9), df_assign_component_dvec4(w, 3, df_out9), df_out10), df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])); ++j)
+  for (int j = 0; (j < 2) && df_gt((df_out9 = df_double(w.hi.w, w.lo.w), df_out10 = take(df_out9), df_assign_component_dvec4(w, 3, df_out9), df_out10), df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])); ++j)
   {
     s = df_add(s, df_double(w.hi.w, w.lo.w));
   }

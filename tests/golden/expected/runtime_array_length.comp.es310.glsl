@@ -176,7 +176,7 @@ layout(std430, binding = 1) buffer Values {
 void main()
 {
   count = weights.length();
-  df_double s = df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]);
+  df_double s = df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]);
   for (int i = 0; i < values.length(); ++i)
   {
     s = df_add(s, df_mul_f2(values[i], weights[i % weights.length()]));

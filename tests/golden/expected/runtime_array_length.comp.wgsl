@@ -94,7 +94,7 @@ fn df_mul_f2(a: df_double, b: f32) -> df_double {
 
 fn df_main() {
   df_block_Samples.count = i32(arrayLength(&df_block_Samples.weights));
-  var s: df_double = df_double((0.0f - df_uniforms.df_guard), (0.0f - df_uniforms.df_guard));
+  var s: df_double = df_double((0.0f + df_uniforms.df_guard), (0.0f + df_uniforms.df_guard));
   {
     var i: i32 = 0i;
     loop {

@@ -512,7 +512,7 @@ bool iterate(inout df_dvec2 z, df_dvec2 c);
 bool iterate(inout df_dvec2 z, df_dvec2 c)
 {
   z = df_add(df_make_dvec2_1_1(df_sub(df_sqr(df_double(z.hi.x, z.lo.x)), df_sqr(df_double(z.hi.y, z.lo.y))), df_mul(df_mul_pow2(df_double(z.hi.x, z.lo.x), 2.0), df_double(z.hi.y, z.lo.y))), c);
-  return df_gt(df_dot(z, z), df_double(4.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  return df_gt(df_dot(z, z), df_double(4.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
 }
 
 void main()
@@ -521,7 +521,7 @@ void main()
   scale = df_double(scale_hi, scale_lo);
   pixel_size = df_div(scale, df_from_float(resolution.y));
   df_dvec2 c = df_add(center, df_mul_f2(df_splat_dvec2(pixel_size), gl_FragCoord.xy - 0.5 * resolution));
-  df_dvec2 z = df_dvec2(vec2(0.0) - df_guard[int(df_guard[1])], vec2(0.0) - df_guard[int(df_guard[1])]);
+  df_dvec2 z = df_dvec2(vec2(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), vec2(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   for (int n = 0; n < 256; n++)
   {
     if (iterate(z, c))

@@ -431,7 +431,7 @@ df_dvec3 geodetic_to_ecef(df_double lon, df_double lat, df_double height)
 {
   df_double sin_lat = df_from_float(sin(df_to_float(lat)));
   df_double cos_lat = df_from_float(cos(df_to_float(lat)));
-  df_double n = df_div(df_double(6378137.0 - df_guard, 0.0 - df_guard), df_sqrt(df_add_f(df_neg(df_mul(df_mul(df_double(0.00669438 - df_guard, -2.0380743e-10 - df_guard), sin_lat), sin_lat)), 1.0)));
+  df_double n = df_div(df_double(6378137.0 - df_guard, 0.0 + df_guard), df_sqrt(df_add_f(df_neg(df_mul(df_mul(df_double(0.00669438 - df_guard, -2.0380743e-10 - df_guard), sin_lat), sin_lat)), 1.0)));
   return df_make_dvec3_1_1_1(df_mul_f2(df_mul(df_add(n, height), cos_lat), cos(df_to_float(lon))), df_mul_f2(df_mul(df_add(n, height), cos_lat), sin(df_to_float(lon))), df_mul(df_add(df_mul(n, df_double(0.9933056 - df_guard, -3.5214829e-09 - df_guard)), height), sin_lat));
 }
 

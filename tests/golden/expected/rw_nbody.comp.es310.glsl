@@ -544,7 +544,7 @@ void main()
   softening2 = df_sqr(softening);
   uint i = gl_GlobalInvocationID.x;
   df_dvec3 p = df_dvec3(position[i].hi.xyz, position[i].lo.xyz);
-  df_dvec3 acceleration = df_dvec3(vec3(0.0) - df_guard[int(df_guard[1])], vec3(0.0) - df_guard[int(df_guard[1])]);
+  df_dvec3 acceleration = df_dvec3(vec3(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), vec3(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   for (int start = 0; start < body_count; start += 64)
   {
     tile[gl_LocalInvocationID.x] = position[start + int(gl_LocalInvocationID.x)];

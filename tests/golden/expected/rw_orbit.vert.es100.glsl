@@ -653,7 +653,7 @@ void main()
   df_double ea = m;
   solve_kepler(m, orbit.eccentricity, ea);
   df_double a = orbit.semi_major_axis;
-  df_dvec3 position = df_make_dvec3_1_1_1(df_mul(a, df_add_f(df_neg(orbit.eccentricity), cos(df_to_float(ea)))), df_mul_f2(df_mul(a, df_sqrt(df_add_f(df_neg(df_sqr(orbit.eccentricity)), 1.0))), sin(df_to_float(ea))), df_double(0.0 - df_guard, 0.0 - df_guard));
+  df_dvec3 position = df_make_dvec3_1_1_1(df_mul(a, df_add_f(df_neg(orbit.eccentricity), cos(df_to_float(ea)))), df_mul_f2(df_mul(a, df_sqrt(df_add_f(df_neg(df_sqr(orbit.eccentricity)), 1.0))), sin(df_to_float(ea))), df_double(0.0 + df_guard, 0.0 + df_guard));
   df_dvec3 relative = df_sub(position, camera_position);
   brightness = 1.0 / (1.0 + df_to_float(df_length(relative)) * 1.0e-06);
   gl_Position = view_projection * vec4(df_to_float(relative), 1.0);

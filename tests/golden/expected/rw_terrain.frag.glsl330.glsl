@@ -542,11 +542,11 @@ df_double altitude_scale;
 void main()
 {
   sea_level = df_double(sea_level_hi, sea_level_lo);
-  altitude_scale = df_div(df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_max(sea_level, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  altitude_scale = df_div(df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_max(sea_level, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   df_double altitude = df_sub(df_length(fin.world), sea_level);
   float shade = max(dot(normalize(fin.normal), sun_direction.xyz), 0.0);
   vec3 base = texture(albedo, fin.uv).xyz;
-  if (df_lt(altitude, df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))
+  if (df_lt(altitude, df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))
   {
     sea_mask = 1.0;
     base = mix(base, texture(sky, reflect(-sun_direction.xyz, fin.normal)).xyz, 0.5);

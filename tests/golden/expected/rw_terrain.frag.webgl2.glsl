@@ -543,11 +543,11 @@ void main()
 {
   TerrainData_world = df_dvec3(TerrainData_world_hi, TerrainData_world_lo);
   sea_level = df_double(sea_level_hi, sea_level_lo);
-  altitude_scale = df_div(df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_max(sea_level, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  altitude_scale = df_div(df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_max(sea_level, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   df_double altitude = df_sub(df_length(TerrainData_world), sea_level);
   float shade = max(dot(normalize(TerrainData_normal), sun_direction.xyz), 0.0);
   vec3 base = texture(albedo, TerrainData_uv).xyz;
-  if (df_lt(altitude, df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))
+  if (df_lt(altitude, df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))
   {
     sea_mask = 1.0;
     base = mix(base, texture(sky, reflect(-sun_direction.xyz, TerrainData_normal)).xyz, 0.5);

@@ -802,7 +802,7 @@ void main()
   tile_origin = df_dvec2(tile_origin_hi, tile_origin_lo);
   tile_size = df_double(tile_size_hi, tile_size_lo);
   metres_per_texel = df_mul_pow2(tile_size, 0.00390625);
-  fog_density = df_to_float(df_div(df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), camera.planet_radius)) * 1.0e+03;
+  fog_density = df_to_float(df_div(df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), camera.planet_radius)) * 1.0e+03;
   df_dvec2 lonlat = df_add(tile_origin, df_mul_f2(df_splat_dvec2(tile_size), grid));
   float h = textureLod(height_map, grid, 0.0).x;
   df_double radius = df_add(camera.planet_radius, df_two_prod(h, 8848.0));

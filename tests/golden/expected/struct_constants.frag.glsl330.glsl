@@ -313,7 +313,7 @@ out vec4 color;
 void main()
 {
   c = df_dvec2(c_hi, c_lo);
-  Orbit o = Orbit(df_dvec2(vec2(0.25, 1.0e-09) - df_guard[int(df_guard[1])], vec2(0.0, 2.828193e-17) - df_guard[int(df_guard[1])]), 0, df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  Orbit o = Orbit(df_dvec2(vec2(0.25, 1.0e-09) - df_guard[int(df_guard[1])], vec2(0.0 + df_guard[int(df_guard[1])], 2.828193e-17 - df_guard[int(df_guard[1])])), 0, df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   o.z = df_add(df_sqr(o.z), c);
   o.r2 = df_add(df_dot(o.z, o.z), Pair[2](Pair(df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])]), 1.0), Pair(df_double(0.33333334 - df_guard[int(df_guard[1])], -9.934108e-09 - df_guard[int(df_guard[1])]), 2.0))[pick].a);
   color = vec4(df_to_float(o.r2), df_to_float(df_double(o.z.hi.y, o.z.lo.y)), Pair[2](Pair(df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])]), 1.0), Pair(df_double(0.33333334 - df_guard[int(df_guard[1])], -9.934108e-09 - df_guard[int(df_guard[1])]), 2.0))[pick].b, float(o.n));

@@ -339,8 +339,8 @@ layout(std430, binding = 0) buffer Io {
 
 void main()
 {
-  Frame identity = Frame(df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_dmat2(mat2(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])]), mat2(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
-  Frame f = Frame(x, df_make_dmat2_1_1_1_1(c, df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), c));
+  Frame identity = Frame(df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_dmat2(mat2(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 1.0 - df_guard[int(df_guard[1])]), mat2(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
+  Frame f = Frame(x, df_make_dmat2_1_1_1_1(c, df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), c));
   Frame frames[2] = Frame[2](identity, f);
-  out_x = df_mul(df_swizzle_dvec2_x(df_mul_dmat2_dvec2(frames[1].rotation, df_make_dvec2_1_1(x, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))), frames[0].scale);
+  out_x = df_mul(df_swizzle_dvec2_x(df_mul_dmat2_dvec2(frames[1].rotation, df_make_dvec2_1_1(x, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))), frames[0].scale);
 }

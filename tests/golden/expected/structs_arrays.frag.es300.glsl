@@ -483,7 +483,7 @@ df_dvec2 twice(df_dvec2 x)
 Outer make(df_double s)
 {
   Outer o;
-  o.inner = Inner(s, df_make_dvec2_1_1(s, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  o.inner = Inner(s, df_make_dvec2_1_1(s, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   o.scale[0] = s;
   o.scale[1] = twice(s);
   o.m = df_diagonal_dmat2(s);
@@ -499,7 +499,7 @@ void main()
   {
     acc[i] = df_mul(df_from_int(i), o.scale[i % 2]);
   }
-  acc[k] = df_add(acc[k], df_add(df_double[3](df_double(0.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_double(0.25 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_double(0.125 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]))[k % 3], params.scale[1]));
+  acc[k] = df_add(acc[k], df_add(df_double[3](df_double(0.5 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_double(0.25 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_double(0.125 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]))[k % 3], params.scale[1]));
   df_dvec2 t = df_add(df_add(df_add(twice(o.inner.uv), df_dvec2(o.m.hi[1], o.m.lo[1])), df_mul_dmat2_dvec2(o.m, o.inner.uv)), params.inner.uv);
   df_double s = df_add(df_add(df_add(df_add(acc[0], acc[1]), acc[2]), acc[3]), df_mul(o.inner.w, df_double(t.hi.x, t.lo.x)));
   switch (df_to_int(s))
@@ -514,7 +514,7 @@ void main()
       break;
     }
   }
-  if (df_gt(s, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))
+  if (df_gt(s, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))
   {
     discard;
   }

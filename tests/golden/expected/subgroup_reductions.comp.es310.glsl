@@ -809,7 +809,7 @@ void main()
   uint i = gl_GlobalInvocationID.x;
   df_dvec3 v = df_dvec3(x[i].hi.xyz, x[i].lo.xyz);
   df_double y = df_double(x[i].hi.w, x[i].lo.w);
-  if (df_gt(y, df_double(0.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])))
+  if (df_gt(y, df_double(0.5 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])))
   {
     return;
   }

@@ -277,7 +277,7 @@ layout(std430, binding = 0) buffer B {
 void main()
 {
   df_dvec4 v = df_make_dvec4_1_1_1_1(r[0], r[1], r[2], r[3]);
-  df_assign_dvec4_z(v, df_double(7.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  df_assign_dvec4_z(v, df_double(7.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   df_assign_dvec4_zw(v, df_add_f(df_dvec2(v.hi.zw, v.lo.zw), vec2(1.0, 2.0)));
   df_assign_dvec4_y(v, df_mul_f2(df_double(v.hi.y, v.lo.y), 3.0));
   df_assign_dvec4_w(v, df_add_f(df_double(v.hi.w, v.lo.w), 1.0));

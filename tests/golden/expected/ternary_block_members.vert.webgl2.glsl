@@ -143,7 +143,7 @@ void main()
   df_dvec2 df_select2;
   position = df_dvec2(position_hi, position_lo);
   df_double x = (df_gt(df_double(position.hi.x, position.lo.x), limit) ? (df_select1 = limit, true) : (df_select1 = df_double(position.hi.x, position.lo.x), true), df_select1);
-  df_dvec2 shift = (df_lt(df_double(position.hi.y, position.lo.y), df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])) ? (df_select2 = offset, true) : (df_select2 = df_make_dvec2_1_1(x, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])), true), df_select2);
+  df_dvec2 shift = (df_lt(df_double(position.hi.y, position.lo.y), df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])) ? (df_select2 = offset, true) : (df_select2 = df_make_dvec2_1_1(x, df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])), true), df_select2);
   moved = df_add(shift, position);
   gl_Position = vec4(df_to_float(moved), 0.0, 1.0);
   moved_hi = moved.hi;

@@ -630,7 +630,7 @@ void main()
   detail = df_double(detail_hi, detail_lo);
   df_dvec3 rel = df_sub(p[gl_InvocationID], eye);
   q[gl_InvocationID] = df_mul_pow2(rel, vec3(2.0));
-  float level = df_to_float(df_clamp(df_div(detail, df_length(rel)), df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_double(16.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  float level = df_to_float(df_clamp(df_div(detail, df_length(rel)), df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_double(16.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   gl_TessLevelOuter[gl_InvocationID] = level;
   gl_TessLevelInner[0] = level;
   gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;

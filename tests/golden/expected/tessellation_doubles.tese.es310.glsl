@@ -290,7 +290,7 @@ void main()
   eye = df_dvec3(eye_hi, eye_lo);
   df_dvec3 t = df_from_float(gl_TessCoord);
   df_dvec3 p = df_add(df_add(df_mul(control[0], df_splat_dvec3(df_double(t.hi.x, t.lo.x))), df_mul(control[1], df_splat_dvec3(df_double(t.hi.y, t.lo.y)))), df_mul(control[2], df_splat_dvec3(df_double(t.hi.z, t.lo.z))));
-  position = df_add(p, df_make_dvec3_1_1_1(df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), height, df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  position = df_add(p, df_make_dvec3_1_1_1(df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), height, df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   gl_Position = vec4(df_to_float(df_sub(position, eye)), 1.0);
   position_hi = position.hi;
   position_lo = position.lo;

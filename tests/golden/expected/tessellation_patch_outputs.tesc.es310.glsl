@@ -706,7 +706,7 @@ void main()
   spread = df_double(spread_hi, spread_lo);
   if (gl_InvocationID == 0)
   {
-    center = df_div(df_add(df_add(p[0], p[1]), p[2]), df_splat_dvec3(df_double(3.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+    center = df_div(df_add(df_add(p[0], p[1]), p[2]), df_splat_dvec3(df_double(3.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
     center_hi = center.hi;
     center_lo = center.lo;
     df_assign_component_dvec3(center, 2, df_sub(df_double(center.hi.z, center.lo.z), df_double(eye.hi.z, eye.lo.z)));
@@ -726,7 +726,7 @@ void main()
   center = df_dvec3(center_hi, center_lo);
   spread = df_double(spread_hi, spread_lo);
   q[gl_InvocationID] = df_sub(p[gl_InvocationID], center);
-  float level = df_to_float(df_clamp(df_div(spread, df_length(df_sub(center, eye))), df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_double(16.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])));
+  float level = df_to_float(df_clamp(df_div(spread, df_length(df_sub(center, eye))), df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_double(16.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])));
   gl_TessLevelOuter[gl_InvocationID] = level;
   gl_TessLevelInner[0] = level;
   q_hi[gl_InvocationID] = q[gl_InvocationID].hi;

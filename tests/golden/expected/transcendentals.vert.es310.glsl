@@ -1297,7 +1297,7 @@ df_double kepler(df_double m, df_double e);
 df_dvec3 ecef(df_dvec3 llh)
 {
   df_double s = df_sin(df_double(llh.hi.x, llh.lo.x));
-  df_double n = df_div(df_double(6378137.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), df_sqrt(df_add_f(df_neg(df_mul(df_mul(df_double(0.00669438 - df_guard[int(df_guard[1])], -2.0380875e-10 - df_guard[int(df_guard[1])]), s), s)), 1.0)));
+  df_double n = df_div(df_double(6378137.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), df_sqrt(df_add_f(df_neg(df_mul(df_mul(df_double(0.00669438 - df_guard[int(df_guard[1])], -2.0380875e-10 - df_guard[int(df_guard[1])]), s), s)), 1.0)));
   df_double r = df_mul(df_add(n, df_double(llh.hi.z, llh.lo.z)), df_cos(df_double(llh.hi.x, llh.lo.x)));
   return df_make_dvec3_1_1_1(df_mul(r, df_cos(df_double(llh.hi.y, llh.lo.y))), df_mul(r, df_sin(df_double(llh.hi.y, llh.lo.y))), df_mul(df_add(df_mul(n, df_double(0.9933056 - df_guard[int(df_guard[1])], -3.5214816e-09 - df_guard[int(df_guard[1])])), df_double(llh.hi.z, llh.lo.z)), s));
 }
@@ -1322,7 +1322,7 @@ void main()
   df_double E = kepler(mean_anomaly, eccentricity);
   df_double nu = df_mul_pow2(df_atan2(df_mul(df_sqrt(df_add_f(eccentricity, 1.0)), df_sin(df_mul_pow2(E, 0.5))), df_mul(df_sqrt(df_add_f(df_neg(eccentricity), 1.0)), df_cos(df_mul_pow2(E, 0.5)))), 2.0);
   df_dvec2 v = df_make_dvec2_1_1(nu, E);
-  df_double t = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_exp(df_neg(df_double(v.hi.x, v.lo.x))), df_log(df_add_f(df_abs(df_double(v.hi.y, v.lo.y)), 1.0))), df_exp2(df_double(v.hi.x, v.lo.x))), df_log2(df_add_f(df_double(v.hi.y, v.lo.y), 2.0))), df_pow(df_abs(df_double(v.hi.x, v.lo.x)), df_double(0.75 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]))), df_tan(df_double(v.hi.x, v.lo.x))), df_asin(df_mul(df_double(v.hi.y, v.lo.y), df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])])))), df_acos(df_mul(df_double(v.hi.x, v.lo.x), df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])])))), df_atan(df_double(v.hi.y, v.lo.y))), df_sinh(df_double(v.hi.x, v.lo.x))), df_cosh(df_double(v.hi.y, v.lo.y))), df_tanh(df_double(v.hi.x, v.lo.x)));
+  df_double t = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_exp(df_neg(df_double(v.hi.x, v.lo.x))), df_log(df_add_f(df_abs(df_double(v.hi.y, v.lo.y)), 1.0))), df_exp2(df_double(v.hi.x, v.lo.x))), df_log2(df_add_f(df_double(v.hi.y, v.lo.y), 2.0))), df_pow(df_abs(df_double(v.hi.x, v.lo.x)), df_double(0.75 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]))), df_tan(df_double(v.hi.x, v.lo.x))), df_asin(df_mul(df_double(v.hi.y, v.lo.y), df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])])))), df_acos(df_mul(df_double(v.hi.x, v.lo.x), df_double(0.1 - df_guard[int(df_guard[1])], -1.4901161e-09 - df_guard[int(df_guard[1])])))), df_atan(df_double(v.hi.y, v.lo.y))), df_sinh(df_double(v.hi.x, v.lo.x))), df_cosh(df_double(v.hi.y, v.lo.y))), df_tanh(df_double(v.hi.x, v.lo.x)));
   df_dvec2 w = df_add(df_exp(v), df_sin(v));
   shade = df_to_float(df_add(df_add(t, df_double(w.hi.x, w.lo.x)), df_double(w.hi.y, w.lo.y)));
   gl_Position = view_projection * vec4(df_to_float(p), 1.0);

@@ -328,12 +328,12 @@ void main()
   df_dmat2 m = n != 0 ? df_diagonal_dmat2(ua) : df_diagonal_dmat2(ub);
   Body b = df_gt(x, y) ? body(x) : body(y);
   df_double table[2] = n > 0 ? df_double[2](ua, ub) : df_double[2](ub, ua);
-  df_double acc = df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]);
-  for (int i = 0; df_lt(i < 2 ? df_add(acc, ua) : df_sub(acc, ub), df_double(8.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])) && (i < 16); acc = i++ > 4 ? df_mul_pow2(acc, 2.0) : df_add_f(acc, 1.0))
+  df_double acc = df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]);
+  for (int i = 0; df_lt(i < 2 ? df_add(acc, ua) : df_sub(acc, ub), df_double(8.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])) && (i < 16); acc = i++ > 4 ? df_mul_pow2(acc, 2.0) : df_add_f(acc, 1.0))
   {
   }
-  bool hit = (n > 0) && ((n > 5 ? ++n : n--) > 0) && df_gt(n > 1 ? ua : counted(ub), df_double(0.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
-  bool miss = (n < 0) || df_lt(n == 2 ? ua : counted(df_add(ua, ub)), df_double(0.25 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
-  df_double sum = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(x, y), df_double(v.hi.x, v.lo.x)), df_swizzle_dvec2_y(df_dvec2(m.hi[1], m.lo[1]))), df_double(b.at.hi.y, b.at.lo.y)), table[1]), acc), df_from_int(calls)), hit ? df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]) : df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])), miss ? df_double(2.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]) : df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
+  bool hit = (n > 0) && ((n > 5 ? ++n : n--) > 0) && df_gt(n > 1 ? ua : counted(ub), df_double(0.5 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
+  bool miss = (n < 0) || df_lt(n == 2 ? ua : counted(df_add(ua, ub)), df_double(0.25 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
+  df_double sum = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(x, y), df_double(v.hi.x, v.lo.x)), df_swizzle_dvec2_y(df_dvec2(m.hi[1], m.lo[1]))), df_double(b.at.hi.y, b.at.lo.y)), table[1]), acc), df_from_int(calls)), hit ? df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]) : df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])), miss ? df_double(2.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]) : df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
   color = vec4(df_to_float(sum), sum.lo, 0.0, 1.0);
 }

@@ -349,12 +349,12 @@ void main()
   {
     table = df_double[2](ub, ua);
   }
-  df_double acc = df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]);
-  for (int i = 0; df_lt((i < 2 ? (df_select8 = df_add(acc, ua), true) : (df_select8 = df_sub(acc, ub), true), df_select8), df_double(8.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])])) && (i < 16); acc = (i++ > 4 ? (df_select9 = df_mul_pow2(acc, 2.0), true) : (df_select9 = df_add_f(acc, 1.0), true), df_select9))
+  df_double acc = df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]);
+  for (int i = 0; df_lt((i < 2 ? (df_select8 = df_add(acc, ua), true) : (df_select8 = df_sub(acc, ub), true), df_select8), df_double(8.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])])) && (i < 16); acc = (i++ > 4 ? (df_select9 = df_mul_pow2(acc, 2.0), true) : (df_select9 = df_add_f(acc, 1.0), true), df_select9))
   {
   }
-  bool hit = (n > 0) && ((n > 5 ? ++n : n--) > 0) && df_gt((n > 1 ? (df_select10 = ua, true) : (df_select10 = counted(ub), true), df_select10), df_double(0.5 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
-  bool miss = (n < 0) || df_lt((n == 2 ? (df_select11 = ua, true) : (df_select11 = counted(df_add(ua, ub)), true), df_select11), df_double(0.25 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]));
-  df_double sum = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(x, y), df_double(v.hi.x, v.lo.x)), df_swizzle_dvec2_y(df_dvec2(m.hi[1], m.lo[1]))), df_double(b.at.hi.y, b.at.lo.y)), table[1]), acc), df_from_int(calls)), (hit ? (df_select12 = df_double(1.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), true) : (df_select12 = df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), true), df_select12)), (miss ? (df_select13 = df_double(2.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), true) : (df_select13 = df_double(0.0 - df_guard[int(df_guard[1])], 0.0 - df_guard[int(df_guard[1])]), true), df_select13));
+  bool hit = (n > 0) && ((n > 5 ? ++n : n--) > 0) && df_gt((n > 1 ? (df_select10 = ua, true) : (df_select10 = counted(ub), true), df_select10), df_double(0.5 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
+  bool miss = (n < 0) || df_lt((n == 2 ? (df_select11 = ua, true) : (df_select11 = counted(df_add(ua, ub)), true), df_select11), df_double(0.25 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]));
+  df_double sum = df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(df_add(x, y), df_double(v.hi.x, v.lo.x)), df_swizzle_dvec2_y(df_dvec2(m.hi[1], m.lo[1]))), df_double(b.at.hi.y, b.at.lo.y)), table[1]), acc), df_from_int(calls)), (hit ? (df_select12 = df_double(1.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), true) : (df_select12 = df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), true), df_select12)), (miss ? (df_select13 = df_double(2.0 - df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), true) : (df_select13 = df_double(0.0 + df_guard[int(df_guard[1])], 0.0 + df_guard[int(df_guard[1])]), true), df_select13));
   color = vec4(df_to_float(sum), sum.lo, 0.0, 1.0);
 }
