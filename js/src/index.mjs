@@ -274,7 +274,7 @@ export function applyUniforms(gl, program, uniforms) {
  */
 export function createWebGL2Binder(gl, program, manifest) {
   const guard = manifest.guard ?? {};
-  if (guard.kind === 'uniform') {
+  if (guard.uniform) {  // kind 'uniform', or the zero the shader's uniforms are read through
     // "float[2]" (ES 3.00: read at a non-constant index, docs/accuracy.md): every element.
     const elements = Number(/\[(\d+)\]$/.exec(guard.type ?? '')?.[1] ?? 0);
     const names = elements ? Array.from({ length: elements }, (_, i) => `${guard.uniform}[${i}]`) : [guard.uniform];

@@ -25,7 +25,7 @@ const d = [0.5, Math.PI];
 const expected = [];
 for (let i = 0; i < 3; ++i) expected.push(m[0] * p[3 * i] + d[1], m[5] - p[3 * i + 1], m[7] / p[3 * i + 2]);
 
-for (const mode of ['exact', 'df64']) {
+for (const mode of ['exact', 'df64', 'df64-int']) {
   test(`Chromium WebGL2, mode ${mode}: attributes and uniforms through the binder give the expected doubles`,
        { skip: !nativeCli && 'DOUBLET_CLI is not set' }, (t) => {
     const { output: vertex, manifest } = lowerNative({ 's.vert': shader }, 's.vert', ['--target', 'webgl2', '--mode', mode]);
@@ -51,11 +51,12 @@ for (const mode of ['exact', 'df64']) {
 }
 
 // The guard is `float df_guard[2]` on webgl2 (read at a non-constant index, docs/accuracy.md): a host
-// that sets either element must be refused, element 1 (the index) as much as element 0.
-for (const element of ['df_guard[0]', 'df_guard[1]']) {
-  test(`Chromium WebGL2: the binder refuses a program whose ${element} was set`,
+// that sets either element must be refused, element 1 (the index) as much as element 0. df64-int
+// has no guard in its rules but reads the double uniforms' words through it (docs/modes.md).
+for (const [mode, element] of [['df64', 'df_guard[0]'], ['df64', 'df_guard[1]'], ['df64-int', 'df_guard[0]']]) {
+  test(`Chromium WebGL2, mode ${mode}: the binder refuses a program whose ${element} was set`,
        { skip: !nativeCli && 'DOUBLET_CLI is not set' }, (t) => {
-    const { output: vertex, manifest } = lowerNative({ 's.vert': shader }, 's.vert', ['--target', 'webgl2']);
+    const { output: vertex, manifest } = lowerNative({ 's.vert': shader }, 's.vert', ['--target', 'webgl2', '--mode', mode]);
     assert.equal(manifest.guard.type, 'float[2]');
     const page = runPage(t, jsDir, 'wasm-test/browser/webgl2-binder.html',
                          { vertex, manifest, attributes: { p }, uniforms: { d }, matrices: { m }, output: 'r', setGuard: element });

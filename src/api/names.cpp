@@ -130,7 +130,7 @@ std::string Manifest::to_json() const {
   }
   nlohmann::ordered_json g;
   g["kind"] = guard.kind;
-  if (guard.kind == "uniform") {
+  if (!guard.uniform_name.empty()) {  // kind "uniform", or a zero uniform the shader's uniforms are read through
     g["uniform"] = guard.uniform_name;
     g["type"] = guard.uniform_type;
     g["required_value"] = guard.required_value;

@@ -32,13 +32,7 @@ bool is_float_word(const ir::ExprPtr& e) {
 
 class GuardConstants {
  public:
-  explicit GuardConstants(const pipeline::Config& config) : config_(config) {
-    guard_ = std::make_shared<ir::Var>();
-    guard_->name = config.guard_uniform;
-    guard_->storage = ir::Storage::Uniform;
-    guard_->type = ir::scalar_type(ir::Base::Float);
-    if (config.indexed_guard()) guard_->type.array_dims = {2};
-  }
+  explicit GuardConstants(const pipeline::Config& config) : config_(config) {}
 
   ir::ExprPtr rewrite(const ir::ExprPtr& e) {
     if (!is_float_float_constant(e)) return e;
@@ -46,13 +40,7 @@ class GuardConstants {
   }
 
  private:
-  // The guard's value, a new tree at each use.
-  ir::ExprPtr guard(ir::Loc loc) const {
-    auto g = ir::make_sym(guard_, loc);
-    if (!config_.indexed_guard()) return g;
-    auto index = ir::make_node(Kind::Construct, "", ir::scalar_type(ir::Base::Int), {ir::make_index(g, 1)}, loc);
-    return ir::make_node(Kind::Index, "", ir::scalar_type(ir::Base::Float), {ir::make_sym(guard_, loc), index}, loc);
-  }
+  ir::ExprPtr guard(ir::Loc loc) const { return guard_value(config_, config_.indexed_guard(), loc); }
 
   static bool is_positive_zero(const ir::Scalar& v) { return v.d == 0 && !std::signbit(v.d); }
 
@@ -81,10 +69,20 @@ class GuardConstants {
   }
 
   const pipeline::Config& config_;
-  ir::VarPtr guard_;  // declared by the runtime linker, not a module global
 };
 
 }  // namespace
+
+ir::ExprPtr guard_value(const pipeline::Config& config, bool indexed, ir::Loc loc) {
+  auto guard = std::make_shared<ir::Var>();  // declared by the runtime linker, not a module global
+  guard->name = config.guard_uniform;
+  guard->storage = ir::Storage::Uniform;
+  guard->type = ir::scalar_type(ir::Base::Float);
+  if (!indexed) return ir::make_sym(guard, loc);
+  guard->type.array_dims = {rules::kIndexedGuardElements};
+  auto index = ir::make_node(Kind::Construct, "", ir::scalar_type(ir::Base::Int), {ir::make_index(ir::make_sym(guard, loc), 1)}, loc);
+  return ir::make_node(Kind::Index, "", ir::scalar_type(ir::Base::Float), {ir::make_sym(guard, loc), index}, loc);
+}
 
 bool guards_constants(const pipeline::Config& config) {
   return config.guard == rules::GuardStyle::Uniform && !config.native() && !config.binary64_words();

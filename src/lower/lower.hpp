@@ -60,6 +60,10 @@ struct Context {
   // default_value); split_interfaces initialises X_hi and X_lo from it where the target keeps it.
   std::map<const ir::Var*, std::vector<double>> uniform_defaults;
 
+  // split_interfaces read a double uniform's words less the guard uniform
+  // (Config::reads_uniforms_through_guard): the linker declares it.
+  bool uniform_reads_guarded = false;
+
   // #extension lines the generated helpers need beyond the shader's own (subgroup reductions).
   std::set<std::string> extensions;
 
@@ -120,6 +124,8 @@ bool move_global_initialisers(ir::Module& module, Context& context);
 // Where the guard is a uniform (guards_constants), every float-float constant in a function body
 // (is_float_float_constant: a df_* pair constructed from two float constants) reads the guard.
 bool guards_constants(const pipeline::Config& config);
+// The guard's value as the rules read it: `df_guard[int(df_guard[1])]` where `indexed`, else `df_guard`.
+ir::ExprPtr guard_value(const pipeline::Config& config, bool indexed, ir::Loc loc);
 bool is_float_float_constant(const ir::ExprPtr& e);
 bool guard_constants(ir::Module& module, Context& context);
 // GLSL ES 3.00+ and WGSL: several fragment outputs each need a location; the missing ones are given

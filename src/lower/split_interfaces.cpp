@@ -579,6 +579,11 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
       if (!out || patch) {
         auto join = Expr::make(Kind::Construct, elems_df[k]->type);
         join->args = {elems_hi[k], elems_lo[k]};
+        if (s.storage == ir::Storage::Uniform && ctx.config.reads_uniforms_through_guard()) {
+          for (auto& word : join->args)
+            word = ir::make_binary("-", word->type, word, guard_value(ctx.config, true, word->loc));
+          ctx.uniform_reads_guarded = true;
+        }
         ins->push_back(assign(elems_df[k], join));
       }
     }

@@ -58,6 +58,15 @@ struct Config {
   bool indexed_guard() const {
     return guard == rules::GuardStyle::Uniform && !target::facts(output).wgsl && !(facts->es && facts->version < 300);
   }
+  // Float-float code without the uniform guard (`precise`, or df64-int's none) reads the words of
+  // the shader's double uniforms less an indexed zero uniform (the guard's declaration, read as the
+  // indexed guard is), so that no condition is computed from uniforms and constants alone: a
+  // driver that specialises a shader on such uniforms (lavapipe) can take minutes on float-float
+  // code (docs/accuracy.md, "Lavapipe's inliner on the user's own uniforms"). GLSL from ES 3.00 on.
+  bool reads_uniforms_through_guard() const {
+    return representation == Representation::FloatFloat && guard != rules::GuardStyle::Uniform &&
+           !target::facts(output).wgsl && !(facts->es && facts->version < 300);
+  }
 };
 
 // The Config of `options`, or nullopt with the refusal in `diags`.

@@ -95,11 +95,20 @@ LinkedRuntime link_runtime(const Config& config, const passes::Context& requests
     linked.types = emit::spell_float_max_for_webgl(linked.types);
     linked.text = emit::spell_float_max_for_webgl(linked.text);
   }
+  const std::string indexed_type = "float[" + std::to_string(rules::kIndexedGuardElements) + "]";
+  if (requests.uniform_reads_guarded && config.guard != rules::GuardStyle::Uniform) {
+    // The guard's declaration without the uniform guard's rules (Config::reads_uniforms_through_guard).
+    linked.text = "uniform highp float " + config.guard_uniform + "[" + std::to_string(rules::kIndexedGuardElements) +
+                  "];  // never set: GL zero-fills it at link\n" + linked.text;
+    linked.guard_uniform = config.guard_uniform;
+    linked.guard.uniform_name = config.guard_uniform;
+    linked.guard.uniform_type = indexed_type;
+  }
   if (!requests.rules_used.empty() && !words) {
     if (config.guard == rules::GuardStyle::Precise) linked.guard.kind = "precise";
     if (config.guard == rules::GuardStyle::Uniform) {
       linked.guard_uniform = config.guard_uniform;
-      linked.guard = {"uniform", config.guard_uniform, request.indexed_guard ? "float[2]" : "float", 0};
+      linked.guard = {"uniform", config.guard_uniform, request.indexed_guard ? indexed_type : "float", 0};
     }
   }
   return linked;

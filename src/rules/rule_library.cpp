@@ -921,7 +921,7 @@ EmitResult RuleLibrary::emit(const EmitRequest& request) const {
       }
       result.types_end = out.size();
       if (request.guard == GuardStyle::Uniform)
-        out += "uniform highp float " + request.guard_uniform + (request.indexed_guard ? "[2]" : "") +
+        out += "uniform highp float " + request.guard_uniform + (request.indexed_guard ? "[" + std::to_string(kIndexedGuardElements) + "]" : "") +
                ";  // never set: GL zero-fills it at link\n";
       for (const auto& f : functions) out += "\n" + f;
     }

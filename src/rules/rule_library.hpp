@@ -47,6 +47,9 @@ struct RuleRef {
 // rule library's compact form; the runtime linker writes the types it adds one member per line.
 std::string pair_struct_definition(const std::string& name, const std::string& hi, const std::string& lo, bool one_line);
 
+// Elements of the indexed guard (`float df_guard[2]`): element 0 is read at the index element 1 holds.
+constexpr int kIndexedGuardElements = 2;
+
 struct EmitRequest {
   std::vector<RuleRef> used;        // what the lowered code calls directly
   GuardStyle guard = GuardStyle::Uniform;

@@ -157,8 +157,36 @@ TEST(Guard, PreciseOnEs320UniformOnEs300) {
   auto es320 = lower(src, doublet::Stage::Fragment, doublet::Target::Es320);
   ASSERT_TRUE(es320.ok) << messages(es320);
   EXPECT_NE(es320.output.find("precise "), std::string::npos);
-  EXPECT_EQ(es320.output.find("df_guard"), std::string::npos);
   EXPECT_EQ(es320.manifest.guard.kind, "precise");
+}
+
+// Without the uniform guard (`precise`, df64-int's none) no rule reads it, but a double uniform's
+// words are read through it, out of reach of uniform inliners (Config::reads_uniforms_through_guard);
+// a shader without double uniforms declares none.
+TEST(Guard, UniformsReadThroughItWithoutTheUniformGuard) {
+  const char* src = "#version 300 es\nuniform double a;\nout float r;\nvoid main() { r = float(a * a); }\n";
+  const std::string read = "a = df_double(a_hi - df_guard[int(df_guard[1])], a_lo - df_guard[int(df_guard[1])]);";
+  for (doublet::Mode mode : {doublet::Mode::Df64, doublet::Mode::Df64Int}) {
+    doublet::Options o;
+    o.stage = doublet::Stage::Fragment;
+    o.target = doublet::Target::Es320;
+    o.mode = mode;
+    auto r = doublet::lower(src, o);
+    ASSERT_TRUE(r.ok) << messages(r);
+    EXPECT_NE(r.output.find("uniform highp float df_guard[2];"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(read), std::string::npos) << r.output;
+    size_t reads = 0;
+    for (size_t at = r.output.find("df_guard[int("); at != std::string::npos; at = r.output.find("df_guard[int(", at + 1)) ++reads;
+    EXPECT_EQ(reads, 2u) << r.output;  // the two words, nothing else
+    EXPECT_EQ(r.manifest.guard.kind, mode == doublet::Mode::Df64 ? "precise" : "none");
+    EXPECT_EQ(r.manifest.guard.uniform_name, "df_guard");
+    EXPECT_EQ(r.manifest.guard.uniform_type, "float[2]");
+  }
+  auto no_uniform = lower("#version 300 es\nflat in double a;\nout float r;\nvoid main() { r = float(a * a); }\n",
+                          doublet::Stage::Fragment, doublet::Target::Es320);
+  ASSERT_TRUE(no_uniform.ok) << messages(no_uniform);
+  EXPECT_EQ(no_uniform.output.find("df_guard"), std::string::npos) << no_uniform.output;
+  EXPECT_EQ(no_uniform.manifest.guard.uniform_name, "");
 }
 
 // ES 1.00 fragment shaders index uniform arrays by constants only, and WGSL's uniform buffer holds

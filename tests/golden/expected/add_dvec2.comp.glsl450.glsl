@@ -3,9 +3,15 @@ precision highp float;
 precision highp int;
 layout(local_size_x = 1, local_size_y = 1, local_size_z = 1) in;
 
+uniform vec2 a_hi;
+uniform vec2 a_lo;
+uniform vec2 b_hi;
+uniform vec2 b_lo;
+
 // doublet float-float runtime: 6 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -103,11 +109,7 @@ vec2 df_to_float(df_dvec2 a) {
   return r.hi;
 }
 
-uniform vec2 a_hi;
-uniform vec2 a_lo;
 df_dvec2 a;
-uniform vec2 b_hi;
-uniform vec2 b_lo;
 df_dvec2 b;
 layout(std430, binding = 0) buffer Result {
   vec2 result;
@@ -116,7 +118,7 @@ layout(std430, binding = 0) buffer Result {
 
 void main()
 {
-  a = df_dvec2(a_hi, a_lo);
-  b = df_dvec2(b_hi, b_lo);
+  a = df_dvec2(a_hi - df_guard[int(df_guard[1])], a_lo - df_guard[int(df_guard[1])]);
+  b = df_dvec2(b_hi - df_guard[int(df_guard[1])], b_lo - df_guard[int(df_guard[1])]);
   result = df_to_float(df_add(a, b));
 }

@@ -2,8 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform float far_plane_hi;
+uniform float far_plane_lo;
+
 // doublet float-float runtime: 10 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_gt: a > b.
 // Algorithm: lexicographic comparison of (hi, lo)
@@ -190,8 +194,6 @@ df_double df_mul_pow2(df_double a, float p) {
 layout(binding = 0, offset = 0) uniform atomic_uint fragments;
 layout(binding = 0, offset = 4) uniform atomic_uint far_fragments;
 uniform sampler2D albedo;
-uniform float far_plane_hi;
-uniform float far_plane_lo;
 df_double far_plane;
 in vec2 uv;
 flat in float depth_hi;
@@ -202,7 +204,7 @@ out vec4 color;
 
 void main()
 {
-  far_plane = df_double(far_plane_hi, far_plane_lo);
+  far_plane = df_double(far_plane_hi - df_guard[int(df_guard[1])], far_plane_lo - df_guard[int(df_guard[1])]);
   depth = df_double(depth_hi, depth_lo);
   uint n = atomicCounterIncrement(fragments);
   if (df_gt(depth, df_mul_pow2(far_plane, 0.5)))

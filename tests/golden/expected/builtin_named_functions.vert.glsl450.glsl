@@ -2,8 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform float scale_hi;
+uniform float scale_lo;
+
 // doublet float-float runtime: 13 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -230,8 +234,6 @@ df_double df_mul_pow2(df_double a, float p) {
   return r;
 }
 
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale;
 in vec4 position;
 out float shade;
@@ -258,7 +260,7 @@ df_double distance2(df_double a, df_double b)
 
 void main()
 {
-  scale = df_double(scale_hi, scale_lo);
+  scale = df_double(scale_hi - df_guard[int(df_guard[1])], scale_lo - df_guard[int(df_guard[1])]);
   mix_user = scale;
   shade = mix(df_to_float(exp(scale)), df_to_float(distance2(mix_user, df_double(1.0, 0.0))));
   gl_Position = position;

@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 dir_hi;
+uniform vec3 dir_lo;
+uniform float bias_hi;
+uniform float bias_lo;
+
 struct df_dvec4 {
   vec4 hi;
   vec4 lo;
@@ -10,6 +15,7 @@ struct df_dvec4 {
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -748,19 +754,15 @@ df_double df_swizzle_dvec2_y(df_dvec2 v) {
 
 flat in ivec2 cell;
 flat in uvec2 id;
-uniform vec3 dir_hi;
-uniform vec3 dir_lo;
 df_dvec3 dir;
-uniform float bias_hi;
-uniform float bias_lo;
 df_double bias;
 out vec4 color;
 
 
 void main()
 {
-  dir = df_dvec3(dir_hi, dir_lo);
-  bias = df_double(bias_hi, bias_lo);
+  dir = df_dvec3(dir_hi - df_guard[int(df_guard[1])], dir_lo - df_guard[int(df_guard[1])]);
+  bias = df_double(bias_hi - df_guard[int(df_guard[1])], bias_lo - df_guard[int(df_guard[1])]);
   df_double x = df_add_f(df_add(df_from_int(cell.x), df_from_uint(id.y)), 1.0);
   df_dvec2 d2 = df_add(df_from_int(cell), df_from_uint(id));
   df_dvec4 d4 = df_make_dvec4_2_1_1(d2, x, df_double(1.0, 0.0));

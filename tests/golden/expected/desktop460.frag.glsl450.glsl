@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform mat4 view_hi;
+uniform mat4 view_lo;
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+
 struct df_dmat4 {
   mat4 hi;
   mat4 lo;
@@ -10,6 +15,7 @@ struct df_dmat4 {
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -669,11 +675,7 @@ df_dvec4 df_mul_dmat4_dvec4(df_dmat4 m, df_dvec4 v) {
 
 layout(binding = 0) uniform sampler2D albedo;
 layout(rgba32f, binding = 1) readonly uniform image2D heights;
-uniform mat4 view_hi;
-uniform mat4 view_lo;
 df_dmat4 view;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
 flat in vec3 world_hi;
 flat in vec3 world_lo;
@@ -684,8 +686,8 @@ layout(location = 0) out vec4 color;
 
 void main()
 {
-  view = df_dmat4(view_hi, view_lo);
-  eye = df_dvec3(eye_hi, eye_lo);
+  view = df_dmat4(view_hi - df_guard[int(df_guard[1])], view_lo - df_guard[int(df_guard[1])]);
+  eye = df_dvec3(eye_hi - df_guard[int(df_guard[1])], eye_lo - df_guard[int(df_guard[1])]);
   world = df_dvec3(world_hi, world_lo);
   df_dvec4 p = df_mul_dmat4_dvec4(view, df_make_dvec4_3_1(df_sub(world, eye), df_double(1.0, 0.0)));
   vec4 h = imageLoad(heights, ivec2(uv * 16.0));

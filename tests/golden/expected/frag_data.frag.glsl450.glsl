@@ -2,8 +2,14 @@
 precision highp float;
 precision highp int;
 
+uniform float a_hi;
+uniform float a_lo;
+uniform float b_hi;
+uniform float b_lo;
+
 // doublet float-float runtime: 9 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -183,11 +189,7 @@ df_double df_div(df_double a, df_double b) {
   return q;
 }
 
-uniform float a_hi;
-uniform float a_lo;
 df_double a;
-uniform float b_hi;
-uniform float b_lo;
 df_double b;
 layout(location = 0) out highp vec4 df_frag_data_0;
 layout(location = 1) out highp vec4 df_frag_data_1;
@@ -195,8 +197,8 @@ layout(location = 1) out highp vec4 df_frag_data_1;
 
 void main()
 {
-  a = df_double(a_hi, a_lo);
-  b = df_double(b_hi, b_lo);
+  a = df_double(a_hi - df_guard[int(df_guard[1])], a_lo - df_guard[int(df_guard[1])]);
+  b = df_double(b_hi - df_guard[int(df_guard[1])], b_lo - df_guard[int(df_guard[1])]);
   df_double p = df_mul(a, b);
   df_frag_data_0 = vec4(df_to_float(p), 0.0, 0.0, 1.0);
   df_frag_data_1 = vec4(df_to_float(df_div(a, b)), 0.0, 0.0, 1.0);

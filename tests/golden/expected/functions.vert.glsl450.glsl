@@ -2,9 +2,13 @@
 precision highp float;
 precision highp int;
 
+uniform float time_hi;
+uniform float time_lo;
+
 // doublet float-float runtime: 26 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -515,8 +519,6 @@ df_dvec2 df_splat_dvec2(df_double s) {
 in vec2 uv_hi;
 in vec2 uv_lo;
 df_dvec2 uv;
-uniform float time_hi;
-uniform float time_lo;
 df_double time;
 out vec2 v_uv;
 df_dvec2 accumulated;
@@ -538,7 +540,7 @@ void step2(inout df_dvec2 p, out df_double speed, df_double dt)
 void main()
 {
   uv = df_dvec2(uv_hi, uv_lo);
-  time = df_double(time_hi, time_lo);
+  time = df_double(time_hi - df_guard[int(df_guard[1])], time_lo - df_guard[int(df_guard[1])]);
   df_double speed;
   df_dvec2 p = uv;
   step2(p, speed, time);

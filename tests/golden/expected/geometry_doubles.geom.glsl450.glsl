@@ -4,9 +4,15 @@ precision highp int;
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 6) out;
 
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+uniform float spread_hi;
+uniform float spread_lo;
+
 // doublet float-float runtime: 22 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -425,11 +431,7 @@ df_dvec3 v_offset;
 flat out float v_weight_hi;
 flat out float v_weight_lo;
 df_double v_weight;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
-uniform float spread_hi;
-uniform float spread_lo;
 df_double spread;
 
 void emit_corner(int k, df_double scale);
@@ -458,8 +460,8 @@ void main()
   weight[0] = df_double(weight_hi[0], weight_lo[0]);
   weight[1] = df_double(weight_hi[1], weight_lo[1]);
   weight[2] = df_double(weight_hi[2], weight_lo[2]);
-  eye = df_dvec3(eye_hi, eye_lo);
-  spread = df_double(spread_hi, spread_lo);
+  eye = df_dvec3(eye_hi - df_guard[int(df_guard[1])], eye_lo - df_guard[int(df_guard[1])]);
+  spread = df_double(spread_hi - df_guard[int(df_guard[1])], spread_lo - df_guard[int(df_guard[1])]);
   for (int copy = 0; copy < 2; ++copy)
   {
     df_double scale = df_add_f(df_mul(df_from_int(copy), spread), 1.0);

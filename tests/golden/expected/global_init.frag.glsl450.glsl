@@ -2,8 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform float farPlane_hi;
+uniform float farPlane_lo;
+
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
 // the caller's plain float result on the high words. One select per component, so the common
@@ -157,8 +161,6 @@ df_double df_mul_pow2(df_double a, float p) {
   return r;
 }
 
-uniform float farPlane_hi;
-uniform float farPlane_lo;
 df_double farPlane;
 const df_double kScale = df_double(0.5, 0.0);
 df_double half_far = df_double(1.0, 0.0);
@@ -177,7 +179,7 @@ df_double twice(df_double x)
 
 void main()
 {
-  farPlane = df_double(farPlane_hi, farPlane_lo);
+  farPlane = df_double(farPlane_hi - df_guard[int(df_guard[1])], farPlane_lo - df_guard[int(df_guard[1])]);
   k = 2.0 / log2(df_to_float(farPlane) + 1.0);
   scaled = df_mul_pow2(farPlane, 2.0);
   t2 = twice(scaled);

@@ -2,6 +2,9 @@
 precision highp float;
 precision highp int;
 
+uniform mat4 model_hi;
+uniform mat4 model_lo;
+
 struct df_dvec3 {
   vec3 hi;
   vec3 lo;
@@ -13,6 +16,7 @@ struct df_dmat4 {
 // doublet float-float runtime: 13 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -276,15 +280,13 @@ out VertexData {
 out Extra {
   flat df_double depth;
 };
-uniform mat4 model_hi;
-uniform mat4 model_lo;
 df_dmat4 model;
 
 
 void main()
 {
   position = df_dvec3(position_hi, position_lo);
-  model = df_dmat4(model_hi, model_lo);
+  model = df_dmat4(model_hi - df_guard[int(df_guard[1])], model_lo - df_guard[int(df_guard[1])]);
   df_dvec4 p = df_mul_dmat4_dvec4(model, df_make_dvec4_3_1(position, df_double(1.0, 0.0)));
   vout.world = df_dvec3(p.hi.xyz, p.lo.xyz);
   vout.uv = uv;

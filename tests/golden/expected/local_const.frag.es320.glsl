@@ -2,9 +2,15 @@
 precision highp float;
 precision highp int;
 
+uniform float u_hi;
+uniform float u_lo;
+uniform vec2 v_hi;
+uniform vec2 v_lo;
+
 // doublet float-float runtime: 14 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -287,11 +293,7 @@ df_dvec2 df_splat_dvec2(df_double s) {
   return df_dvec2(vec2(s.hi), vec2(s.lo));
 }
 
-uniform float u_hi;
-uniform float u_lo;
 df_double u;
-uniform vec2 v_hi;
-uniform vec2 v_lo;
 df_dvec2 v;
 const df_double g = df_double(0.33333334, -9.934108e-09);
 in vec2 uv;
@@ -313,8 +315,8 @@ df_double h(df_double x)
 
 void main()
 {
-  u = df_double(u_hi, u_lo);
-  v = df_dvec2(v_hi, v_lo);
+  u = df_double(u_hi - df_guard[int(df_guard[1])], u_lo - df_guard[int(df_guard[1])]);
+  v = df_dvec2(v_hi - df_guard[int(df_guard[1])], v_lo - df_guard[int(df_guard[1])]);
   df_double a = df_mul_pow2(u, 2.0);
   df_dvec2 p = df_mul(v, df_splat_dvec2(a));
   float fl = df_to_float(u);

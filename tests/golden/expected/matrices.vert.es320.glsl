@@ -2,6 +2,14 @@
 precision highp float;
 precision highp int;
 
+uniform mat4 model_hi;
+uniform mat4 model_lo;
+uniform mat3 normal_basis_hi;
+uniform mat3 normal_basis_lo;
+uniform mat2 warp_hi[2];
+uniform mat2 warp_lo[2];
+uniform int column;
+
 struct df_dmat2 {
   mat2 hi;
   mat2 lo;
@@ -19,6 +27,7 @@ struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -1176,16 +1185,9 @@ df_dvec4 df_make_dvec4_3_1(df_dvec3 a0, df_double a1) {
   return df_dvec4(vec4(a0.hi.x, a0.hi.y, a0.hi.z, a1.hi), vec4(a0.lo.x, a0.lo.y, a0.lo.z, a1.lo));
 }
 
-uniform mat4 model_hi;
-uniform mat4 model_lo;
 df_dmat4 model;
-uniform mat3 normal_basis_hi;
-uniform mat3 normal_basis_lo;
 df_dmat3 normal_basis;
-uniform mat2 warp_hi[2];
-uniform mat2 warp_lo[2];
 df_dmat2 warp[2];
-uniform int column;
 in vec4 position_hi;
 in vec4 position_lo;
 df_dvec4 position;
@@ -1201,10 +1203,10 @@ df_dmat3 scaled(df_dmat3 m, df_double s)
 
 void main()
 {
-  model = df_dmat4(model_hi, model_lo);
-  normal_basis = df_dmat3(normal_basis_hi, normal_basis_lo);
-  warp[0] = df_dmat2(warp_hi[0], warp_lo[0]);
-  warp[1] = df_dmat2(warp_hi[1], warp_lo[1]);
+  model = df_dmat4(model_hi - df_guard[int(df_guard[1])], model_lo - df_guard[int(df_guard[1])]);
+  normal_basis = df_dmat3(normal_basis_hi - df_guard[int(df_guard[1])], normal_basis_lo - df_guard[int(df_guard[1])]);
+  warp[0] = df_dmat2(warp_hi[0] - df_guard[int(df_guard[1])], warp_lo[0] - df_guard[int(df_guard[1])]);
+  warp[1] = df_dmat2(warp_hi[1] - df_guard[int(df_guard[1])], warp_lo[1] - df_guard[int(df_guard[1])]);
   position = df_dvec4(position_hi, position_lo);
   df_dmat4 mvp = df_add_dmat4_double(df_mul_dmat4_dmat4(model, df_transpose_dmat4(model)), df_double(0.5, 0.0));
   df_dvec4 p = df_mul_dmat4_dvec4(mvp, position);

@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform mat3x2 project_hi;
+uniform mat3x2 project_lo;
+uniform mat2x4 lift_hi;
+uniform mat2x4 lift_lo;
+
 struct df_dmat2x4 {
   mat2x4 hi;
   mat2x4 lo;
@@ -19,6 +24,7 @@ struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -584,11 +590,7 @@ df_dvec4 df_make_dvec4_2_2(df_dvec2 a0, df_dvec2 a1) {
   return df_dvec4(vec4(a0.hi.x, a0.hi.y, a1.hi.x, a1.hi.y), vec4(a0.lo.x, a0.lo.y, a1.lo.x, a1.lo.y));
 }
 
-uniform mat3x2 project_hi;
-uniform mat3x2 project_lo;
 df_dmat3x2 project;
-uniform mat2x4 lift_hi;
-uniform mat2x4 lift_lo;
 df_dmat2x4 lift;
 in vec3 position_hi;
 in vec3 position_lo;
@@ -597,8 +599,8 @@ df_dvec3 position;
 
 void main()
 {
-  project = df_dmat3x2(project_hi, project_lo);
-  lift = df_dmat2x4(lift_hi, lift_lo);
+  project = df_dmat3x2(project_hi - df_guard[int(df_guard[1])], project_lo - df_guard[int(df_guard[1])]);
+  lift = df_dmat2x4(lift_hi - df_guard[int(df_guard[1])], lift_lo - df_guard[int(df_guard[1])]);
   position = df_dvec3(position_hi, position_lo);
   df_dvec2 p = df_mul_dmat3x2_dvec3(project, position);
   df_dvec4 q = df_add(df_mul_dmat2x4_dvec2(lift, p), df_mul(df_make_dvec4_3_1(position, df_double(1.0, 0.0)), df_splat_dvec4(df_swizzle_dvec2_y(df_column_dmat4x2(df_transpose_dmat2x4(lift), 0)))));

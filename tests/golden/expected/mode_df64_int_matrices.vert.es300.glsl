@@ -2,6 +2,13 @@
 precision highp float;
 precision highp int;
 
+uniform mat4 u_model_hi;
+uniform mat4 u_model_lo;
+uniform mat4 u_view_hi;
+uniform mat4 u_view_lo;
+uniform mat3x4 u_normal_hi;
+uniform mat3x4 u_normal_lo;
+
 struct df_dvec3 {
   vec3 hi;
   vec3 lo;
@@ -17,6 +24,7 @@ struct df_dmat4 {
 // doublet float-float runtime: 17 functions from rules/*.glsl, guard: none (unprotected), error-free transformations: integer (df64-int)
 struct df_double { float hi; float lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_int_unit: the biased exponent u of x's unit in the last place, x = m * 2^(u - 150) with m the
 // integer significand (u = 1 for 0 and subnormals). Callers subtract units; only scaling needs the bias.
@@ -366,14 +374,8 @@ df_dvec3 df_mul_dvec4_dmat3x4(df_dvec4 v, df_dmat3x4 m) {
   return p;
 }
 
-uniform mat4 u_model_hi;
-uniform mat4 u_model_lo;
 df_dmat4 u_model;
-uniform mat4 u_view_hi;
-uniform mat4 u_view_lo;
 df_dmat4 u_view;
-uniform mat3x4 u_normal_hi;
-uniform mat3x4 u_normal_lo;
 df_dmat3x4 u_normal;
 in vec4 a_position_hi;
 in vec4 a_position_lo;
@@ -394,9 +396,9 @@ df_dvec3 v_normal;
 
 void main()
 {
-  u_model = df_dmat4(u_model_hi, u_model_lo);
-  u_view = df_dmat4(u_view_hi, u_view_lo);
-  u_normal = df_dmat3x4(u_normal_hi, u_normal_lo);
+  u_model = df_dmat4(u_model_hi - df_guard[int(df_guard[1])], u_model_lo - df_guard[int(df_guard[1])]);
+  u_view = df_dmat4(u_view_hi - df_guard[int(df_guard[1])], u_view_lo - df_guard[int(df_guard[1])]);
+  u_normal = df_dmat3x4(u_normal_hi - df_guard[int(df_guard[1])], u_normal_lo - df_guard[int(df_guard[1])]);
   a_position = df_dvec4(a_position_hi, a_position_lo);
   v_model = df_mul_dmat4_dvec4(u_model, a_position);
   v_row = df_mul_dvec4_dmat4(a_position, u_model);

@@ -2,8 +2,13 @@
 precision highp float;
 precision highp int;
 
+uniform float gain;
+uniform float origin_hi;
+uniform float origin_lo;
+
 // doublet float-float runtime: 12 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -206,9 +211,6 @@ df_double df_mul_f2(df_double a, float b) {
   return r;
 }
 
-uniform float gain;
-uniform float origin_hi;
-uniform float origin_lo;
 df_double origin;
 flat in float sample_hi;
 flat in float sample_lo;
@@ -231,7 +233,7 @@ float cheap(float x)
 
 void main()
 {
-  origin = df_double(origin_hi, origin_lo);
+  origin = df_double(origin_hi - df_guard[int(df_guard[1])], origin_lo - df_guard[int(df_guard[1])]);
   sample_ = df_double(sample_hi, sample_lo);
   df_double accurate = df_mul_f2(sample_, gain);
   color = vec4(relative(sample_), float(cheap(df_to_float(sample_))), df_to_float(accurate), 1.0);

@@ -2,9 +2,16 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+uniform float scale_hi;
+uniform float scale_lo;
+uniform mat4 viewProj;
+
 // doublet float-float runtime: 11 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -160,21 +167,16 @@ df_double df_from_float(float f) {
 in vec3 position_hi;
 in vec3 position_lo;
 df_dvec3 position;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale;
-uniform mat4 viewProj;
 out float distanceToEye;
 
 
 void main()
 {
   position = df_dvec3(position_hi, position_lo);
-  eye = df_dvec3(eye_hi, eye_lo);
-  scale = df_double(scale_hi, scale_lo);
+  eye = df_dvec3(eye_hi - df_guard[int(df_guard[1])], eye_lo - df_guard[int(df_guard[1])]);
+  scale = df_double(scale_hi - df_guard[int(df_guard[1])], scale_lo - df_guard[int(df_guard[1])]);
   vec3 rel = df_to_float(df_sub(position, eye));
   df_dvec3 offset = df_from_float(df_to_float(df_sub(position, eye)));
   df_double d = df_from_float(length(df_to_float(offset)) * df_to_float(scale));

@@ -2,8 +2,14 @@
 precision highp float;
 precision highp int;
 
+uniform float a_hi;
+uniform float a_lo;
+uniform float b_hi;
+uniform float b_lo;
+
 // doublet float-float runtime: 11 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -200,19 +206,15 @@ float df_to_float(df_double a) {
   return r.hi;
 }
 
-uniform float a_hi;
-uniform float a_lo;
 df_double a;
-uniform float b_hi;
-uniform float b_lo;
 df_double b;
 out vec4 color;
 
 
 void main()
 {
-  a = df_double(a_hi, a_lo);
-  b = df_double(b_hi, b_lo);
+  a = df_double(a_hi - df_guard[int(df_guard[1])], a_lo - df_guard[int(df_guard[1])]);
+  b = df_double(b_hi - df_guard[int(df_guard[1])], b_lo - df_guard[int(df_guard[1])]);
   df_double p = df_sub(df_mul(a, b), a);
   color = vec4(df_to_float(p), 0.0, 0.0, 1.0);
 }

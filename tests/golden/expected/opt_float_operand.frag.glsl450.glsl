@@ -2,8 +2,14 @@
 precision highp float;
 precision highp int;
 
+uniform float x_hi;
+uniform float x_lo;
+uniform float f;
+uniform float g;
+
 // doublet float-float runtime: 13 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -232,17 +238,13 @@ df_double df_mul_f2(df_double a, float b) {
   return r;
 }
 
-uniform float x_hi;
-uniform float x_lo;
 df_double x;
-uniform float f;
-uniform float g;
 out vec4 color;
 
 
 void main()
 {
-  x = df_double(x_hi, x_lo);
+  x = df_double(x_hi - df_guard[int(df_guard[1])], x_lo - df_guard[int(df_guard[1])]);
   df_double p = df_add(df_mul_f2(x, f), df_mul_f2(x, 3.0));
   df_double s = df_add_f(df_sub(df_add_f(x, f), df_add_f(df_neg(x), g)), 1.0);
   df_double e = df_add(df_two_prod(f, g), df_two_sum(f, -g));

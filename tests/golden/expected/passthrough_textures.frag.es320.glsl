@@ -2,8 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform float scale_hi;
+uniform float scale_lo;
+
 // doublet float-float runtime: 3 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
 // the caller's plain float result on the high words. One select per component, so the common
@@ -52,8 +56,6 @@ df_double df_mul_pow2(df_double a, float p) {
 }
 
 uniform sampler2D tex;
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale;
 in vec4 uv;
 layout(location = 0) out vec4 o;
@@ -61,7 +63,7 @@ layout(location = 0) out vec4 o;
 
 void main()
 {
-  scale = df_double(scale_hi, scale_lo);
+  scale = df_double(scale_hi - df_guard[int(df_guard[1])], scale_lo - df_guard[int(df_guard[1])]);
   vec4 a = textureProjGradOffset(tex, uv.xyz, uv.xy, uv.zw, ivec2(1, -1));
   vec4 b = textureProjLodOffset(tex, uv.xyz, 0.0, ivec2(0, 1));
   o = (a + b) * df_to_float(df_mul_pow2(scale, 2.0));

@@ -2,8 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform float u_hi;
+uniform float u_lo;
+
 // doublet float-float runtime: 7 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
 // the caller's plain float result on the high words. One select per component, so the common
@@ -138,8 +142,6 @@ df_double df_mul_f2(df_double a, float b) {
   return r;
 }
 
-uniform float u_hi;
-uniform float u_lo;
 df_double u;
 in vec2 uv;
 layout(location = 0) out highp vec4 df_frag_color;
@@ -147,7 +149,7 @@ layout(location = 0) out highp vec4 df_frag_color;
 
 void main()
 {
-  u = df_double(u_hi, u_lo);
+  u = df_double(u_hi - df_guard[int(df_guard[1])], u_lo - df_guard[int(df_guard[1])]);
   precise df_double a = df_mul_f2(u, 3.0);
   precise float b = df_to_float(a) * 2.0 + uv.x;
   df_frag_color = vec4(df_to_float(a), b, 0.0, 1.0);

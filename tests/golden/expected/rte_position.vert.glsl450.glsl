@@ -2,9 +2,14 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+uniform mat4 viewProj;
+
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -128,15 +133,12 @@ vec3 df_to_float(df_dvec3 a) {
 in vec3 position_hi;
 in vec3 position_lo;
 df_dvec3 position;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
-uniform mat4 viewProj;
 
 
 void main()
 {
   position = df_dvec3(position_hi, position_lo);
-  eye = df_dvec3(eye_hi, eye_lo);
+  eye = df_dvec3(eye_hi - df_guard[int(df_guard[1])], eye_lo - df_guard[int(df_guard[1])]);
   gl_Position = viewProj * vec4(df_to_float(df_sub(position, eye)), 1.0);
 }

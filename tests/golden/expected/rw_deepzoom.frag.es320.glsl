@@ -2,9 +2,16 @@
 precision highp float;
 precision highp int;
 
+uniform vec2 center_hi;
+uniform vec2 center_lo;
+uniform float scale_hi;
+uniform float scale_lo;
+uniform vec2 resolution;
+
 // doublet float-float runtime: 26 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_from_float: the exact double-word (f, 0).
 // Algorithm: hi = f, lo = 0
@@ -492,13 +499,8 @@ df_dvec2 df_splat_dvec2(df_double s) {
   return df_dvec2(vec2(s.hi), vec2(s.lo));
 }
 
-uniform vec2 center_hi;
-uniform vec2 center_lo;
 df_dvec2 center;
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale;
-uniform vec2 resolution;
 uniform sampler2D palette;
 in vec2 v_uv;
 df_double pixel_size;
@@ -515,8 +517,8 @@ bool iterate(inout df_dvec2 z, df_dvec2 c)
 
 void main()
 {
-  center = df_dvec2(center_hi, center_lo);
-  scale = df_double(scale_hi, scale_lo);
+  center = df_dvec2(center_hi - df_guard[int(df_guard[1])], center_lo - df_guard[int(df_guard[1])]);
+  scale = df_double(scale_hi - df_guard[int(df_guard[1])], scale_lo - df_guard[int(df_guard[1])]);
   pixel_size = df_div(scale, df_from_float(resolution.y));
   df_dvec2 c = df_add(center, df_mul_f2(df_splat_dvec2(pixel_size), gl_FragCoord.xy - 0.5 * resolution));
   df_dvec2 z = df_dvec2(vec2(0.0), vec2(0.0));

@@ -2,9 +2,14 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 u_eye_ecef_hi;
+uniform vec3 u_eye_ecef_lo;
+uniform mat4 u_view_projection;
+
 // doublet float-float runtime: 23 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
 // the caller's plain float result on the high words. One select per component, so the common
@@ -417,10 +422,7 @@ df_dvec3 df_make_dvec3_1_1_1(df_double a0, df_double a1, df_double a2) {
 const df_double kEquatorialRadius = df_double(6378137.0, 0.0);
 const df_double kFlattening = df_double(0.0033528106, 3.6035303e-11);
 const df_double kEccentricity2 = df_double(0.00669438, -2.0380743e-10);
-uniform vec3 u_eye_ecef_hi;
-uniform vec3 u_eye_ecef_lo;
 df_dvec3 u_eye_ecef;
-uniform mat4 u_view_projection;
 df_dvec3 g_eye;
 in vec3 a_lon_lat_height;
 out float v_height;
@@ -437,7 +439,7 @@ df_dvec3 geodetic_to_ecef(df_double lon, df_double lat, df_double height)
 
 void main()
 {
-  u_eye_ecef = df_dvec3(u_eye_ecef_hi, u_eye_ecef_lo);
+  u_eye_ecef = df_dvec3(u_eye_ecef_hi - df_guard[int(df_guard[1])], u_eye_ecef_lo - df_guard[int(df_guard[1])]);
   g_eye = u_eye_ecef;
   df_dvec3 ecef = geodetic_to_ecef(df_from_float(a_lon_lat_height.x), df_from_float(a_lon_lat_height.y), df_from_float(a_lon_lat_height.z));
   v_height = a_lon_lat_height.z;

@@ -4,6 +4,12 @@ precision highp int;
 precision highp atomic_uint;
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
+uniform float dt_hi;
+uniform float dt_lo;
+uniform float softening_hi;
+uniform float softening_lo;
+uniform int body_count;
+
 struct df_dvec4 {
   vec4 hi;
   vec4 lo;
@@ -11,6 +17,7 @@ struct df_dvec4 {
 // doublet float-float runtime: 25 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -524,21 +531,16 @@ layout(std430, binding = 2) writeonly buffer NextPositions {
   df_dvec4 next_position[];
 };
 layout(binding = 3, offset = 0) uniform atomic_uint close_encounters;
-uniform float dt_hi;
-uniform float dt_lo;
 df_double dt;
-uniform float softening_hi;
-uniform float softening_lo;
 df_double softening;
-uniform int body_count;
 shared df_dvec4 tile[64];
 df_double softening2;
 
 
 void main()
 {
-  dt = df_double(dt_hi, dt_lo);
-  softening = df_double(softening_hi, softening_lo);
+  dt = df_double(dt_hi - df_guard[int(df_guard[1])], dt_lo - df_guard[int(df_guard[1])]);
+  softening = df_double(softening_hi - df_guard[int(df_guard[1])], softening_lo - df_guard[int(df_guard[1])]);
   softening2 = df_sqr(softening);
   uint i = gl_GlobalInvocationID.x;
   df_dvec3 p = df_dvec3(position[i].hi.xyz, position[i].lo.xyz);

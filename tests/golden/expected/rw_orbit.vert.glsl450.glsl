@@ -2,9 +2,25 @@
 precision highp float;
 precision highp int;
 
+uniform float time_seconds_hi;
+uniform float time_seconds_lo;
+uniform vec3 camera_position_hi;
+uniform vec3 camera_position_lo;
+uniform mat4 view_projection;
+
 // doublet float-float runtime: 35 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+struct Orbit {
+  df_double semi_major_axis;
+  df_double eccentricity;
+  df_double mean_motion;
+  df_double epoch;
+};
+
+uniform Orbit orbit;
+
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -658,21 +674,8 @@ df_dvec3 df_make_dvec3_1_1_1(df_double a0, df_double a1, df_double a2) {
   return df_dvec3(vec3(a0.hi, a1.hi, a2.hi), vec3(a0.lo, a1.lo, a2.lo));
 }
 
-struct Orbit {
-  df_double semi_major_axis;
-  df_double eccentricity;
-  df_double mean_motion;
-  df_double epoch;
-};
-
-uniform Orbit orbit;
-uniform float time_seconds_hi;
-uniform float time_seconds_lo;
 df_double time_seconds;
-uniform vec3 camera_position_hi;
-uniform vec3 camera_position_lo;
 df_dvec3 camera_position;
-uniform mat4 view_projection;
 in float phase_offset;
 out float brightness;
 const df_double kTwoPi = df_double(6.2831855, -1.7484555e-07);
@@ -692,8 +695,8 @@ void solve_kepler(df_double mean_anomaly, df_double e, inout df_double eccentric
 
 void main()
 {
-  time_seconds = df_double(time_seconds_hi, time_seconds_lo);
-  camera_position = df_dvec3(camera_position_hi, camera_position_lo);
+  time_seconds = df_double(time_seconds_hi - df_guard[int(df_guard[1])], time_seconds_lo - df_guard[int(df_guard[1])]);
+  camera_position = df_dvec3(camera_position_hi - df_guard[int(df_guard[1])], camera_position_lo - df_guard[int(df_guard[1])]);
   elapsed = df_sub(time_seconds, orbit.epoch);
   df_double m = df_mod(df_add_f(df_mul(orbit.mean_motion, elapsed), phase_offset), df_double(6.2831855, -1.7484555e-07));
   df_double ea = m;

@@ -2,9 +2,13 @@
 precision highp float;
 precision highp int;
 
+uniform float sea_level_hi;
+uniform float sea_level_lo;
+
 // doublet float-float runtime: 28 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_lt: a < b.
 // Algorithm: lexicographic comparison of (hi, lo)
@@ -529,8 +533,6 @@ layout(std140, binding = 1) uniform Lighting {
 };
 uniform sampler2D albedo;
 uniform samplerCube sky;
-uniform float sea_level_hi;
-uniform float sea_level_lo;
 df_double sea_level;
 layout(location = 0) out vec4 frag_color;
 float sea_mask = 0.0;
@@ -539,7 +541,7 @@ df_double altitude_scale;
 
 void main()
 {
-  sea_level = df_double(sea_level_hi, sea_level_lo);
+  sea_level = df_double(sea_level_hi - df_guard[int(df_guard[1])], sea_level_lo - df_guard[int(df_guard[1])]);
   altitude_scale = df_div(df_double(1.0, 0.0), df_max(sea_level, df_double(1.0, 0.0)));
   df_double altitude = df_sub(df_length(fin.world), sea_level);
   float shade = max(dot(normalize(fin.normal), sun_direction.xyz), 0.0);

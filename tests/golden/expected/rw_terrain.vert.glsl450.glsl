@@ -2,6 +2,11 @@
 precision highp float;
 precision highp int;
 
+uniform vec2 tile_origin_hi;
+uniform vec2 tile_origin_lo;
+uniform float tile_size_hi;
+uniform float tile_size_lo;
+
 struct df_dmat4 {
   mat4 hi;
   mat4 lo;
@@ -11,6 +16,7 @@ struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -770,11 +776,7 @@ layout(std140, binding = 0) uniform Camera {
   df_double planet_radius;
 } camera;
 uniform sampler2D height_map;
-uniform vec2 tile_origin_hi;
-uniform vec2 tile_origin_lo;
 df_dvec2 tile_origin;
-uniform float tile_size_hi;
-uniform float tile_size_lo;
 df_double tile_size;
 layout(location = 0) in vec2 grid;
 out TerrainData {
@@ -797,8 +799,8 @@ df_dvec3 sphere_point(df_dvec2 lonlat, df_double radius)
 
 void main()
 {
-  tile_origin = df_dvec2(tile_origin_hi, tile_origin_lo);
-  tile_size = df_double(tile_size_hi, tile_size_lo);
+  tile_origin = df_dvec2(tile_origin_hi - df_guard[int(df_guard[1])], tile_origin_lo - df_guard[int(df_guard[1])]);
+  tile_size = df_double(tile_size_hi - df_guard[int(df_guard[1])], tile_size_lo - df_guard[int(df_guard[1])]);
   metres_per_texel = df_mul_pow2(tile_size, 0.00390625);
   fog_density = df_to_float(df_div(df_double(1.0, 0.0), camera.planet_radius)) * 1.0e+03;
   df_dvec2 lonlat = df_add(tile_origin, df_mul_f2(df_splat_dvec2(tile_size), grid));

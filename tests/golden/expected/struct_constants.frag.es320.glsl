@@ -2,9 +2,14 @@
 precision highp float;
 precision highp int;
 
+uniform vec2 c_hi;
+uniform vec2 c_lo;
+uniform int pick;
+
 // doublet float-float runtime: 15 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -301,16 +306,13 @@ struct Orbit {
 };
 
 const Pair kPairs[2] = Pair[2](Pair(df_double(0.1, -1.4901161e-09), 1.0), Pair(df_double(0.33333334, -9.934108e-09), 2.0));
-uniform vec2 c_hi;
-uniform vec2 c_lo;
 df_dvec2 c;
-uniform int pick;
 out vec4 color;
 
 
 void main()
 {
-  c = df_dvec2(c_hi, c_lo);
+  c = df_dvec2(c_hi - df_guard[int(df_guard[1])], c_lo - df_guard[int(df_guard[1])]);
   Orbit o = Orbit(df_dvec2(vec2(0.25, 1.0e-09), vec2(0.0, 2.828193e-17)), 0, df_double(0.0, 0.0));
   o.z = df_add(df_sqr(o.z), c);
   o.r2 = df_add(df_dot(o.z, o.z), Pair[2](Pair(df_double(0.1, -1.4901161e-09), 1.0), Pair(df_double(0.33333334, -9.934108e-09), 2.0))[pick].a);

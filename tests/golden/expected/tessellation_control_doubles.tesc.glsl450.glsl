@@ -3,9 +3,15 @@ precision highp float;
 precision highp int;
 layout(vertices = 3) out;
 
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+uniform float detail_hi;
+uniform float detail_lo;
+
 // doublet float-float runtime: 32 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -581,11 +587,7 @@ df_dvec3 p[32];
 out vec3 q_hi[3];
 out vec3 q_lo[3];
 df_dvec3 q[3];
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
-uniform float detail_hi;
-uniform float detail_lo;
 df_double detail;
 
 
@@ -623,8 +625,8 @@ void main()
   p[29] = df_dvec3(p_hi[29], p_lo[29]);
   p[30] = df_dvec3(p_hi[30], p_lo[30]);
   p[31] = df_dvec3(p_hi[31], p_lo[31]);
-  eye = df_dvec3(eye_hi, eye_lo);
-  detail = df_double(detail_hi, detail_lo);
+  eye = df_dvec3(eye_hi - df_guard[int(df_guard[1])], eye_lo - df_guard[int(df_guard[1])]);
+  detail = df_double(detail_hi - df_guard[int(df_guard[1])], detail_lo - df_guard[int(df_guard[1])]);
   df_dvec3 rel = df_sub(p[gl_InvocationID], eye);
   q[gl_InvocationID] = df_mul_pow2(rel, vec3(2.0));
   float level = df_to_float(df_clamp(df_div(detail, df_length(rel)), df_double(1.0, 0.0), df_double(16.0, 0.0)));

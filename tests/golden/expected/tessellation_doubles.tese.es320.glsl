@@ -3,9 +3,13 @@ precision highp float;
 precision highp int;
 layout(triangles, equal_spacing, ccw) in;
 
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+
 // doublet float-float runtime: 13 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_from_float: the exact double-word (f, 0).
 // Algorithm: hi = f, lo = 0
@@ -244,8 +248,6 @@ df_double height;
 flat out vec3 position_hi;
 flat out vec3 position_lo;
 df_dvec3 position;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
 
 
@@ -284,7 +286,7 @@ void main()
   control[30] = df_dvec3(control_hi[30], control_lo[30]);
   control[31] = df_dvec3(control_hi[31], control_lo[31]);
   height = df_double(height_hi, height_lo);
-  eye = df_dvec3(eye_hi, eye_lo);
+  eye = df_dvec3(eye_hi - df_guard[int(df_guard[1])], eye_lo - df_guard[int(df_guard[1])]);
   df_dvec3 t = df_from_float(gl_TessCoord);
   df_dvec3 p = df_add(df_add(df_mul(control[0], df_splat_dvec3(df_double(t.hi.x, t.lo.x))), df_mul(control[1], df_splat_dvec3(df_double(t.hi.y, t.lo.y)))), df_mul(control[2], df_splat_dvec3(df_double(t.hi.z, t.lo.z))));
   position = df_add(p, df_make_dvec3_1_1_1(df_double(0.0, 0.0), height, df_double(0.0, 0.0)));

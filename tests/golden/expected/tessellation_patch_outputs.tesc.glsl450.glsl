@@ -3,9 +3,13 @@ precision highp float;
 precision highp int;
 layout(vertices = 3) out;
 
+uniform vec3 eye_hi;
+uniform vec3 eye_lo;
+
 // doublet float-float runtime: 36 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_neg: -a, exact, signed zeros included (the Uniform guard subtracts its +0: -0 - 0 = -0).
 // Algorithm: sign flip of both words
@@ -653,8 +657,6 @@ df_dvec3 center;
 patch out float spread_hi;
 patch out float spread_lo;
 df_double spread;
-uniform vec3 eye_hi;
-uniform vec3 eye_lo;
 df_dvec3 eye;
 
 void widest(out df_double w);
@@ -698,7 +700,7 @@ void main()
   p[29] = df_dvec3(p_hi[29], p_lo[29]);
   p[30] = df_dvec3(p_hi[30], p_lo[30]);
   p[31] = df_dvec3(p_hi[31], p_lo[31]);
-  eye = df_dvec3(eye_hi, eye_lo);
+  eye = df_dvec3(eye_hi - df_guard[int(df_guard[1])], eye_lo - df_guard[int(df_guard[1])]);
   center = df_dvec3(center_hi, center_lo);
   spread = df_double(spread_hi, spread_lo);
   if (gl_InvocationID == 0)

@@ -2,8 +2,12 @@
 precision highp float;
 precision highp int;
 
+uniform float exposure_hi;
+uniform float exposure_lo;
+
 // doublet float-float runtime: 3 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_finish: z where 0 < |z.hi| <= FLT_MAX (a regular result); elsewhere (f, 0), where f is
 // the caller's plain float result on the high words. One select per component, so the common
@@ -54,8 +58,6 @@ df_double df_mul_pow2(df_double a, float p) {
 uniform sampler1D ramp;
 uniform sampler2DRect screen;
 uniform samplerBuffer samples;
-uniform float exposure_hi;
-uniform float exposure_lo;
 df_double exposure;
 in vec2 uv;
 out vec4 color;
@@ -63,7 +65,7 @@ out vec4 color;
 
 void main()
 {
-  exposure = df_double(exposure_hi, exposure_lo);
+  exposure = df_double(exposure_hi - df_guard[int(df_guard[1])], exposure_lo - df_guard[int(df_guard[1])]);
   df_double e = df_mul_pow2(exposure, 0.5);
   color = texture(ramp, uv.x) * texture(screen, uv * 512.0) * texelFetch(samples, 3) * df_to_float(e);
 }

@@ -2,10 +2,21 @@
 precision highp float;
 precision highp int;
 
+uniform vec3 lat_lon_height_hi;
+uniform vec3 lat_lon_height_lo;
+uniform vec3 eye_ecef_hi;
+uniform vec3 eye_ecef_lo;
+uniform float mean_anomaly_hi;
+uniform float mean_anomaly_lo;
+uniform float eccentricity_hi;
+uniform float eccentricity_lo;
+uniform mat4 view_projection;
+
 // doublet float-float runtime: 63 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_select: c ? a : b per component, without a branch (mix on a boolean selector, a
 // ternary on ES 1.00). Every rule with a data-dependent choice between pairs goes through it: an
@@ -1274,19 +1285,10 @@ df_dvec2 df_make_dvec2_1_1(df_double a0, df_double a1) {
   return df_dvec2(vec2(a0.hi, a1.hi), vec2(a0.lo, a1.lo));
 }
 
-uniform vec3 lat_lon_height_hi;
-uniform vec3 lat_lon_height_lo;
 df_dvec3 lat_lon_height;
-uniform vec3 eye_ecef_hi;
-uniform vec3 eye_ecef_lo;
 df_dvec3 eye_ecef;
-uniform float mean_anomaly_hi;
-uniform float mean_anomaly_lo;
 df_double mean_anomaly;
-uniform float eccentricity_hi;
-uniform float eccentricity_lo;
 df_double eccentricity;
-uniform mat4 view_projection;
 out float shade;
 
 df_dvec3 ecef(df_dvec3 llh);
@@ -1312,10 +1314,10 @@ df_double kepler(df_double m, df_double e)
 
 void main()
 {
-  lat_lon_height = df_dvec3(lat_lon_height_hi, lat_lon_height_lo);
-  eye_ecef = df_dvec3(eye_ecef_hi, eye_ecef_lo);
-  mean_anomaly = df_double(mean_anomaly_hi, mean_anomaly_lo);
-  eccentricity = df_double(eccentricity_hi, eccentricity_lo);
+  lat_lon_height = df_dvec3(lat_lon_height_hi - df_guard[int(df_guard[1])], lat_lon_height_lo - df_guard[int(df_guard[1])]);
+  eye_ecef = df_dvec3(eye_ecef_hi - df_guard[int(df_guard[1])], eye_ecef_lo - df_guard[int(df_guard[1])]);
+  mean_anomaly = df_double(mean_anomaly_hi - df_guard[int(df_guard[1])], mean_anomaly_lo - df_guard[int(df_guard[1])]);
+  eccentricity = df_double(eccentricity_hi - df_guard[int(df_guard[1])], eccentricity_lo - df_guard[int(df_guard[1])]);
   df_dvec3 p = df_sub(ecef(lat_lon_height), eye_ecef);
   df_double E = kepler(mean_anomaly, eccentricity);
   df_double nu = df_mul_pow2(df_atan2(df_mul(df_sqrt(df_add_f(eccentricity, 1.0)), df_sin(df_mul_pow2(E, 0.5))), df_mul(df_sqrt(df_add_f(df_neg(eccentricity), 1.0)), df_cos(df_mul_pow2(E, 0.5)))), 2.0);

@@ -2,12 +2,18 @@
 precision highp float;
 precision highp int;
 
+uniform float scale_hi;
+uniform float scale_lo;
+uniform vec2 offset_hi;
+uniform vec2 offset_lo;
+
 struct df_dvec2 {
   vec2 hi;
   vec2 lo;
 };
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -163,19 +169,15 @@ df_double df_mul_f2(df_double a, float b) {
   return r;
 }
 
-uniform float scale_hi;
-uniform float scale_lo;
 df_double scale_;
-uniform vec2 offset_hi;
-uniform vec2 offset_lo;
 df_dvec2 offset_;
 out vec4 color;
 
 
 void main()
 {
-  scale_ = df_double(scale_hi, scale_lo);
-  offset_ = df_dvec2(offset_hi, offset_lo);
+  scale_ = df_double(scale_hi - df_guard[int(df_guard[1])], scale_lo - df_guard[int(df_guard[1])]);
+  offset_ = df_dvec2(offset_hi - df_guard[int(df_guard[1])], offset_lo - df_guard[int(df_guard[1])]);
   df_double s_ = df_mul(scale_, df_double(offset_.hi.x, offset_.lo.x));
   {
     df_double s_1 = df_mul_f2(df_double(offset_.hi.y, offset_.lo.y), 3.0);

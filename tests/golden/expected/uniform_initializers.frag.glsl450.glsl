@@ -2,9 +2,16 @@
 precision highp float;
 precision highp int;
 
+uniform float zoom_hi = 1.1;
+uniform float zoom_lo = -2.3841858e-08;
+uniform vec2 center_hi = vec2(0.5, 0.33333334);
+uniform vec2 center_lo = vec2(0.0, -9.934108e-09);
+uniform int n = 3;
+
 // doublet float-float runtime: 10 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -198,13 +205,8 @@ df_dvec2 df_splat_dvec2(df_double s) {
   return df_dvec2(vec2(s.hi), vec2(s.lo));
 }
 
-uniform float zoom_hi = 1.1;
-uniform float zoom_lo = -2.3841858e-08;
 df_double zoom = df_double(1.1, -2.3841858e-08);
-uniform vec2 center_hi = vec2(0.5, 0.33333334);
-uniform vec2 center_lo = vec2(0.0, -9.934108e-09);
 df_dvec2 center = df_dvec2(vec2(0.5, 0.33333334), vec2(0.0, -9.934108e-09));
-uniform int n = 3;
 flat in vec2 p_hi;
 flat in vec2 p_lo;
 df_dvec2 p;
@@ -213,8 +215,8 @@ layout(location = 0) out vec4 o;
 
 void main()
 {
-  zoom = df_double(zoom_hi, zoom_lo);
-  center = df_dvec2(center_hi, center_lo);
+  zoom = df_double(zoom_hi - df_guard[int(df_guard[1])], zoom_lo - df_guard[int(df_guard[1])]);
+  center = df_dvec2(center_hi - df_guard[int(df_guard[1])], center_lo - df_guard[int(df_guard[1])]);
   p = df_dvec2(p_hi, p_lo);
   df_dvec2 z = p;
   for (int k = 0; k < n; ++k)
