@@ -36,8 +36,10 @@ class GuardConstants {
 
   ir::ExprPtr rewrite(const ir::ExprPtr& e) {
     if (!is_float_float_constant(e)) return e;
+    read_ = true;
     return ir::make_node(Kind::Construct, "", e->type, {guarded(e->args[0]), guarded(e->args[1])}, e->loc);
   }
+  bool read() const { return read_; }
 
  private:
   ir::ExprPtr guard(ir::Loc loc) const { return guard_value(config_, config_.indexed_guard(), loc); }
@@ -69,6 +71,7 @@ class GuardConstants {
   }
 
   const pipeline::Config& config_;
+  bool read_ = false;  // a constant was rewritten: the guard must be declared
 };
 
 }  // namespace
@@ -102,6 +105,7 @@ bool guard_constants(ir::Module& module, Context& ctx) {
       s->expr = ir::rewrite(s->expr, rewrite);
       s->step = ir::rewrite(s->step, rewrite);
     });
+  ctx.guard_read_outside_rules = ctx.guard_read_outside_rules || pass.read();
   return !ctx.failed;
 }
 

@@ -60,9 +60,10 @@ struct Context {
   // default_value); split_interfaces initialises X_hi and X_lo from it where the target keeps it.
   std::map<const ir::Var*, std::vector<double>> uniform_defaults;
 
-  // split_interfaces read a double uniform's words less the guard uniform
-  // (Config::reads_uniforms_through_guard): the linker declares it.
-  bool uniform_reads_guarded = false;
+  // Code outside the rules reads the guard uniform: a float-float constant (guard_constants) or a
+  // double uniform's words (split_interfaces, Config::reads_uniforms_through_guard). The linker
+  // declares it where no rule does.
+  bool guard_read_outside_rules = false;
 
   // #extension lines the generated helpers need beyond the shader's own (subgroup reductions).
   std::set<std::string> extensions;

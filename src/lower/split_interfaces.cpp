@@ -582,7 +582,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         if (s.storage == ir::Storage::Uniform && ctx.config.reads_uniforms_through_guard()) {
           for (auto& word : join->args)
             word = ir::make_binary("-", word->type, word, guard_value(ctx.config, true, word->loc));
-          ctx.uniform_reads_guarded = true;
+          ctx.guard_read_outside_rules = true;
         }
         ins->push_back(assign(elems_df[k], join));
       }

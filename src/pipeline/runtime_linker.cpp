@@ -95,21 +95,20 @@ LinkedRuntime link_runtime(const Config& config, const passes::Context& requests
     linked.types = emit::spell_float_max_for_webgl(linked.types);
     linked.text = emit::spell_float_max_for_webgl(linked.text);
   }
-  const std::string indexed_type = "float[" + std::to_string(rules::kIndexedGuardElements) + "]";
-  if (requests.uniform_reads_guarded && config.guard != rules::GuardStyle::Uniform) {
-    // The guard's declaration without the uniform guard's rules (Config::reads_uniforms_through_guard).
-    linked.text = "uniform highp float " + config.guard_uniform + "[" + std::to_string(rules::kIndexedGuardElements) +
-                  "];  // never set: GL zero-fills it at link\n" + linked.text;
+  // Who reads the guard: the rules (uniform guard), and outside them the shader's float-float
+  // constants (guard-constants) and double uniforms (Config::reads_uniforms_through_guard). The
+  // rule library declares it with the rules; otherwise it is declared here.
+  const bool rules_read_guard = !words && !requests.rules_used.empty() && config.guard == rules::GuardStyle::Uniform;
+  const bool indexed = config.guard != rules::GuardStyle::Uniform || config.indexed_guard();
+  const std::string suffix = indexed ? "[" + std::to_string(rules::kIndexedGuardElements) + "]" : "";
+  if (requests.guard_read_outside_rules && !rules_read_guard)
+    linked.text = "uniform highp float " + config.guard_uniform + suffix + ";  // never set: GL zero-fills it at link\n" + linked.text;
+  if (!words && !requests.rules_used.empty() && config.guard == rules::GuardStyle::Precise) linked.guard.kind = "precise";
+  if (rules_read_guard || requests.guard_read_outside_rules) {
+    if (config.guard == rules::GuardStyle::Uniform) linked.guard.kind = "uniform";
     linked.guard_uniform = config.guard_uniform;
     linked.guard.uniform_name = config.guard_uniform;
-    linked.guard.uniform_type = indexed_type;
-  }
-  if (!requests.rules_used.empty() && !words) {
-    if (config.guard == rules::GuardStyle::Precise) linked.guard.kind = "precise";
-    if (config.guard == rules::GuardStyle::Uniform) {
-      linked.guard_uniform = config.guard_uniform;
-      linked.guard = {"uniform", config.guard_uniform, request.indexed_guard ? indexed_type : "float", 0};
-    }
+    linked.guard.uniform_type = "float" + suffix;
   }
   return linked;
 }

@@ -202,6 +202,22 @@ TEST(Guard, ScalarOnEs100AndWgsl) {
   }
 }
 
+// A float-float constant reads the guard even where no rule is called (a struct copied and
+// compared): the guard is declared all the same, and the manifest names it. (WGSL refuses the
+// comparison; WgslRefusals.AreErrorsWithPositions checks that this is that refusal, not an
+// undeclared guard.)
+TEST(Guard, DeclaredForConstantsWithoutRules) {
+  const char* src = "#version 300 es\nstruct S { double d; };\nout vec4 r;\n"
+                    "void main() { S s = S(1.5lf); S t = s; r = vec4(s == t ? 1.0 : 0.0); }\n";
+  for (doublet::Target target : {doublet::Target::Es100, doublet::Target::Es300}) {
+    auto out = lower(src, doublet::Stage::Fragment, target);
+    ASSERT_TRUE(out.ok) << doublet::to_string(target) << ": " << messages(out);
+    EXPECT_NE(out.output.find("df_guard"), std::string::npos) << out.output;
+    EXPECT_EQ(out.manifest.guard.kind, "uniform");
+    EXPECT_EQ(out.manifest.guard.uniform_name, "df_guard");
+  }
+}
+
 TEST(Guard, PreciseOnATargetWithoutItIsAnError) {
   doublet::Options o;
   o.stage = doublet::Stage::Fragment;
