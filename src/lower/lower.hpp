@@ -129,6 +129,10 @@ bool guards_constants(const pipeline::Config& config);
 ir::ExprPtr guard_value(const pipeline::Config& config, bool indexed, ir::Loc loc);
 bool is_float_float_constant(const ir::ExprPtr& e);
 bool guard_constants(ir::Module& module, Context& context);
+// Where no rule reads the guard (Config::reads_uniforms_through_guard), every float-float value read
+// from a uniform block or a struct uniform reads it: `T(e.hi - G, e.lo - G)` (loose double uniforms:
+// split_interfaces, at their join).
+bool guard_uniform_reads(ir::Module& module, Context& context);
 // GLSL ES 3.00+ and WGSL: several fragment outputs each need a location; the missing ones are given
 // in declaration order, with a warning.
 bool assign_fragment_output_locations(ir::Module& module, Context& context);

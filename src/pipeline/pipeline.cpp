@@ -136,6 +136,8 @@ const std::vector<Pass>& pass_table() {
               passes::hoist_commas(s.module, s.ctx)),
       IR_PASS("share-exact-calls", "interfaces", [](const Config& c) { return c.binary64_words() && c.share_exact_calls; },
               passes::share_exact_calls(s.module, s.ctx)),
+      IR_PASS("guard-uniform-reads", "interfaces", [](const Config& c) { return c.reads_uniforms_through_guard(); },
+              passes::guard_uniform_reads(s.module, s.ctx)),
       IR_PASS("guard-constants", "interfaces", passes::guards_constants, passes::guard_constants(s.module, s.ctx)),
       IR_PASS("check-target", "interfaces", always, passes::check_target(s.module, s.ctx)),
       {"link-runtime", "print", always, link_runtime_pass, false},

@@ -15,6 +15,7 @@ struct df_dmat4 {
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -555,8 +556,8 @@ void main()
     return;
   }
   Particle p = store.particles[i];
-  df_dvec4 moved = df_mul_dmat4_dvec4(transform, df_make_dvec4_3_1(p.position, df_double(1.0, 0.0)));
-  p.position = df_add(df_dvec3(moved.hi.xyz, moved.lo.xyz), df_mul(df_make_dvec3_2_1(offsets[i % 2u], df_double(0.0, 0.0)), df_splat_dvec3(dt)));
+  df_dvec4 moved = df_mul_dmat4_dvec4(df_dmat4(transform.hi - df_guard[int(df_guard[1])], transform.lo - df_guard[int(df_guard[1])]), df_make_dvec4_3_1(p.position, df_double(1.0, 0.0)));
+  p.position = df_add(df_dvec3(moved.hi.xyz, moved.lo.xyz), df_mul(df_make_dvec3_2_1(offsets[i % 2u], df_double(0.0, 0.0)), df_splat_dvec3(df_double(dt.hi - df_guard[int(df_guard[1])], dt.lo - df_guard[int(df_guard[1])]))));
   store.particles[i] = p;
   energies[i] = df_mul(df_mul_pow2(p.mass, 0.5), df_dot(p.position, p.position));
   if (i == 0u)

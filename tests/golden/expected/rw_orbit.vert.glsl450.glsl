@@ -697,12 +697,12 @@ void main()
 {
   time_seconds = df_double(time_seconds_hi - df_guard[int(df_guard[1])], time_seconds_lo - df_guard[int(df_guard[1])]);
   camera_position = df_dvec3(camera_position_hi - df_guard[int(df_guard[1])], camera_position_lo - df_guard[int(df_guard[1])]);
-  elapsed = df_sub(time_seconds, orbit.epoch);
-  df_double m = df_mod(df_add_f(df_mul(orbit.mean_motion, elapsed), phase_offset), df_double(6.2831855, -1.7484555e-07));
+  elapsed = df_sub(time_seconds, df_double(orbit.epoch.hi - df_guard[int(df_guard[1])], orbit.epoch.lo - df_guard[int(df_guard[1])]));
+  df_double m = df_mod(df_add_f(df_mul(df_double(orbit.mean_motion.hi - df_guard[int(df_guard[1])], orbit.mean_motion.lo - df_guard[int(df_guard[1])]), elapsed), phase_offset), df_double(6.2831855, -1.7484555e-07));
   df_double ea = m;
-  solve_kepler(m, orbit.eccentricity, ea);
-  df_double a = orbit.semi_major_axis;
-  df_dvec3 position = df_make_dvec3_1_1_1(df_mul(a, df_add_f(df_neg(orbit.eccentricity), cos(df_to_float(ea)))), df_mul_f2(df_mul(a, df_sqrt(df_add_f(df_neg(df_sqr(orbit.eccentricity)), 1.0))), sin(df_to_float(ea))), df_double(0.0, 0.0));
+  solve_kepler(m, df_double(orbit.eccentricity.hi - df_guard[int(df_guard[1])], orbit.eccentricity.lo - df_guard[int(df_guard[1])]), ea);
+  df_double a = df_double(orbit.semi_major_axis.hi - df_guard[int(df_guard[1])], orbit.semi_major_axis.lo - df_guard[int(df_guard[1])]);
+  df_dvec3 position = df_make_dvec3_1_1_1(df_mul(a, df_add_f(df_neg(df_double(orbit.eccentricity.hi - df_guard[int(df_guard[1])], orbit.eccentricity.lo - df_guard[int(df_guard[1])])), cos(df_to_float(ea)))), df_mul_f2(df_mul(a, df_sqrt(df_add_f(df_neg(df_sqr(df_double(orbit.eccentricity.hi - df_guard[int(df_guard[1])], orbit.eccentricity.lo - df_guard[int(df_guard[1])]))), 1.0))), sin(df_to_float(ea))), df_double(0.0, 0.0));
   df_dvec3 relative = df_sub(position, camera_position);
   brightness = 1.0 / (1.0 + df_to_float(df_length(relative)) * 1.0e-06);
   gl_Position = view_projection * vec4(df_to_float(relative), 1.0);

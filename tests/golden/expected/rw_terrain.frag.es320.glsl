@@ -551,6 +551,6 @@ void main()
     sea_mask = 1.0;
     base = mix(base, texture(sky, reflect(-sun_direction.xyz, fin.normal)).xyz, 0.5);
   }
-  float exposed = df_to_float(df_mul(df_mul(exposure, altitude_scale), df_add(altitude, sea_level)));
+  float exposed = df_to_float(df_mul(df_mul(df_double(exposure.hi - df_guard[int(df_guard[1])], exposure.lo - df_guard[int(df_guard[1])]), altitude_scale), df_add(altitude, sea_level)));
   frag_color = vec4(mix(base * sun_color.xyz * shade * exposed, vec3(0.6, 0.7, 0.8), fin.fog), 1.0 - sea_mask * 0.2);
 }

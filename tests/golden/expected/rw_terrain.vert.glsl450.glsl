@@ -802,15 +802,15 @@ void main()
   tile_origin = df_dvec2(tile_origin_hi - df_guard[int(df_guard[1])], tile_origin_lo - df_guard[int(df_guard[1])]);
   tile_size = df_double(tile_size_hi - df_guard[int(df_guard[1])], tile_size_lo - df_guard[int(df_guard[1])]);
   metres_per_texel = df_mul_pow2(tile_size, 0.00390625);
-  fog_density = df_to_float(df_div(df_double(1.0, 0.0), camera.planet_radius)) * 1.0e+03;
+  fog_density = df_to_float(df_div(df_double(1.0, 0.0), df_double(camera.planet_radius.hi - df_guard[int(df_guard[1])], camera.planet_radius.lo - df_guard[int(df_guard[1])]))) * 1.0e+03;
   df_dvec2 lonlat = df_add(tile_origin, df_mul_f2(df_splat_dvec2(tile_size), grid));
   float h = textureLod(height_map, grid, 0.0).x;
-  df_double radius = df_add(camera.planet_radius, df_two_prod(h, 8848.0));
+  df_double radius = df_add(df_double(camera.planet_radius.hi - df_guard[int(df_guard[1])], camera.planet_radius.lo - df_guard[int(df_guard[1])]), df_two_prod(h, 8848.0));
   df_dvec3 world_1 = sphere_point(lonlat, radius);
-  df_dvec3 relative = df_sub(world_1, camera.eye);
+  df_dvec3 relative = df_sub(world_1, df_dvec3(camera.eye.hi - df_guard[int(df_guard[1])], camera.eye.lo - df_guard[int(df_guard[1])]));
   vout.world = world_1;
   vout.normal = normalize(df_to_float(world_1));
   vout.uv = grid + vec2(df_to_float(metres_per_texel));
   vout.fog = 1.0 - exp(-fog_density * df_to_float(df_length(relative)));
-  gl_Position = camera.projection * vec4(df_to_mat4(camera.view) * vec4(df_to_float(relative), 1.0));
+  gl_Position = camera.projection * vec4(df_to_mat4(df_dmat4(camera.view.hi - df_guard[int(df_guard[1])], camera.view.lo - df_guard[int(df_guard[1])])) * vec4(df_to_float(relative), 1.0));
 }

@@ -9,6 +9,19 @@ struct df_dmat2 {
 // doublet float-float runtime: 22 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+struct Inner {
+  df_double w;
+  df_dvec2 uv;
+};
+struct Outer {
+  Inner inner;
+  df_double scale[2];
+  df_dmat2 m;
+};
+
+uniform Outer params;
+
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_two_sum: s + e == a + b exactly, with s = RN(a + b); no precondition on a, b.
 // Algorithm: TwoSum (branch-free, 6 operations)
@@ -446,21 +459,10 @@ df_dvec2 df_mul_dmat2_dvec2(df_dmat2 m, df_dvec2 v) {
   return df_dvec2(vec2(p0.hi, p1.hi), vec2(p0.lo, p1.lo));
 }
 
-struct Inner {
-  df_double w;
-  df_dvec2 uv;
-};
-struct Outer {
-  Inner inner;
-  df_double scale[2];
-  df_dmat2 m;
-};
-
 flat in float depth_hi;
 flat in float depth_lo;
 df_double depth;
 flat in int k;
-uniform Outer params;
 out vec4 color;
 const df_double kTable[3] = df_double[3](df_double(0.5, 0.0), df_double(0.25, 0.0), df_double(0.125, 0.0));
 
@@ -497,8 +499,8 @@ void main()
   {
     acc[i] = df_mul(df_from_int(i), o.scale[i % 2]);
   }
-  acc[k] = df_add(acc[k], df_add(df_double[3](df_double(0.5, 0.0), df_double(0.25, 0.0), df_double(0.125, 0.0))[k % 3], params.scale[1]));
-  df_dvec2 t = df_add(df_add(df_add(twice(o.inner.uv), df_dvec2(o.m.hi[1], o.m.lo[1])), df_mul_dmat2_dvec2(o.m, o.inner.uv)), params.inner.uv);
+  acc[k] = df_add(acc[k], df_add(df_double[3](df_double(0.5, 0.0), df_double(0.25, 0.0), df_double(0.125, 0.0))[k % 3], df_double(params.scale[1].hi - df_guard[int(df_guard[1])], params.scale[1].lo - df_guard[int(df_guard[1])])));
+  df_dvec2 t = df_add(df_add(df_add(twice(o.inner.uv), df_dvec2(o.m.hi[1], o.m.lo[1])), df_mul_dmat2_dvec2(o.m, o.inner.uv)), df_dvec2(params.inner.uv.hi - df_guard[int(df_guard[1])], params.inner.uv.lo - df_guard[int(df_guard[1])]));
   df_double s = df_add(df_add(df_add(df_add(acc[0], acc[1]), acc[2]), acc[3]), df_mul(o.inner.w, df_double(t.hi.x, t.lo.x)));
   switch (df_to_int(s))
   {

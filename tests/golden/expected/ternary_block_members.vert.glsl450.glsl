@@ -5,6 +5,7 @@ precision highp int;
 // doublet float-float runtime: 8 functions from rules/*.glsl, guard: precise
 struct df_double { float hi; float lo; };
 struct df_dvec2 { vec2 hi; vec2 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_gt: a > b.
 // Algorithm: lexicographic comparison of (hi, lo)
@@ -141,8 +142,8 @@ void main()
   df_double df_select1;
   df_dvec2 df_select2;
   position = df_dvec2(position_hi, position_lo);
-  df_double x = (df_gt(df_double(position.hi.x, position.lo.x), limit) ? (df_select1 = limit, true) : (df_select1 = df_double(position.hi.x, position.lo.x), true), df_select1);
-  df_dvec2 shift = (df_lt(df_double(position.hi.y, position.lo.y), df_double(0.0, 0.0)) ? (df_select2 = offset, true) : (df_select2 = df_make_dvec2_1_1(x, df_double(1.0, 0.0)), true), df_select2);
+  df_double x = (df_gt(df_double(position.hi.x, position.lo.x), df_double(limit.hi - df_guard[int(df_guard[1])], limit.lo - df_guard[int(df_guard[1])])) ? (df_select1 = df_double(limit.hi - df_guard[int(df_guard[1])], limit.lo - df_guard[int(df_guard[1])]), true) : (df_select1 = df_double(position.hi.x, position.lo.x), true), df_select1);
+  df_dvec2 shift = (df_lt(df_double(position.hi.y, position.lo.y), df_double(0.0, 0.0)) ? (df_select2 = df_dvec2(offset.hi - df_guard[int(df_guard[1])], offset.lo - df_guard[int(df_guard[1])]), true) : (df_select2 = df_make_dvec2_1_1(x, df_double(1.0, 0.0)), true), df_select2);
   moved = df_add(shift, position);
   gl_Position = vec4(df_to_float(moved), 0.0, 1.0);
   moved_hi = moved.hi;

@@ -10,6 +10,7 @@ struct df_dmat3 {
 struct df_double { float hi; float lo; };
 struct df_dvec3 { vec3 hi; vec3 lo; };
 struct df_dvec4 { vec4 hi; vec4 lo; };
+uniform highp float df_guard[2];  // never set: GL zero-fills it at link
 
 // df_split (bit-casts): a == hi + lo exactly, hi and lo each fit in 12 significant bits, as
 // Veltkamp's split gives them, from a's bit pattern instead of the constant 4097 (3 flops fewer,
@@ -393,6 +394,6 @@ out vec4 color;
 void main()
 {
   position_flat = df_dvec3(position_flat_hi, position_flat_lo);
-  df_dvec3 p = df_mul_dmat3_dvec3(basis, position_flat);
-  color = df_to_float(df_mul(albedo, df_splat_dvec4(roughness))) + vec4(df_to_float(p), 1.0);
+  df_dvec3 p = df_mul_dmat3_dvec3(df_dmat3(basis.hi - df_guard[int(df_guard[1])], basis.lo - df_guard[int(df_guard[1])]), position_flat);
+  color = df_to_float(df_mul(df_dvec4(albedo.hi - df_guard[int(df_guard[1])], albedo.lo - df_guard[int(df_guard[1])]), df_splat_dvec4(df_double(roughness.hi - df_guard[int(df_guard[1])], roughness.lo - df_guard[int(df_guard[1])])))) + vec4(df_to_float(p), 1.0);
 }
