@@ -42,8 +42,6 @@ class GuardConstants {
   bool read() const { return read_; }
 
  private:
-  ir::ExprPtr guard(ir::Loc loc) const { return guard_value(config_, config_.indexed_guard(), loc); }
-
   static bool is_positive_zero(const ir::Scalar& v) { return v.d == 0 && !std::signbit(v.d); }
 
   // A scalar word with the guard: `c - G`, but `0.0 + G` for +0.0. Both are c when G is +0 (and
@@ -51,7 +49,7 @@ class GuardConstants {
   // (docs/accuracy.md, "Constants the driver folds").
   ir::ExprPtr with_guard(const ir::ExprPtr& word) const {
     const bool plus = word->values.size() == 1 && is_positive_zero(word->values[0]);
-    return ir::make_binary(plus ? "+" : "-", word->type, word, guard(word->loc));
+    return plus ? ir::make_binary("+", word->type, word, guard_value(config_, word->loc)) : less_guard(word, config_);
   }
 
   // A word with the guard. A vector without +0.0 components as a whole (`vec2(0.1, 0.3) - G`);
@@ -76,24 +74,29 @@ class GuardConstants {
 
 }  // namespace
 
-ir::ExprPtr guard_value(const pipeline::Config& config, bool indexed, ir::Loc loc) {
+ir::ExprPtr guard_value(const pipeline::Config& config, ir::Loc loc) {
   auto guard = std::make_shared<ir::Var>();  // declared by the runtime linker, not a module global
   guard->name = config.guard_uniform;
   guard->storage = ir::Storage::Uniform;
   guard->type = ir::scalar_type(ir::Base::Float);
-  if (!indexed) return ir::make_sym(guard, loc);
+  if (!config.guard_is_indexed()) return ir::make_sym(guard, loc);
   guard->type.array_dims = {rules::kIndexedGuardElements};
   auto index = ir::make_node(Kind::Construct, "", ir::scalar_type(ir::Base::Int), {ir::make_index(ir::make_sym(guard, loc), 1)}, loc);
   return ir::make_node(Kind::Index, "", ir::scalar_type(ir::Base::Float), {ir::make_sym(guard, loc), index}, loc);
 }
+
+ir::ExprPtr less_guard(const ir::ExprPtr& word, const pipeline::Config& config) {
+  return ir::make_binary("-", word->type, word, guard_value(config, word->loc));
+}
+
+bool is_float_float_value(const ir::Type& t) { return !t.is_array() && (is_df(t) || matrix::is_matrix(t)); }
 
 bool guards_constants(const pipeline::Config& config) {
   return config.guard == rules::GuardStyle::Uniform && !config.native() && !config.binary64_words();
 }
 
 bool is_float_float_constant(const ir::ExprPtr& e) {
-  return e->kind == Kind::Construct && !e->type.is_array() && (is_df(e->type) || matrix::is_matrix(e->type)) &&
-         e->args.size() == 2 && is_float_word(e->args[0]) && is_float_word(e->args[1]);
+  return e->kind == Kind::Construct && is_float_float_value(e->type) && e->args.size() == 2 && is_float_word(e->args[0]) && is_float_word(e->args[1]);
 }
 
 bool guard_constants(ir::Module& module, Context& ctx) {

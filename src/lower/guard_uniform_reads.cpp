@@ -22,16 +22,14 @@ namespace {
 
 using Kind = ir::Expr::Kind;
 
-bool is_float_float(const ir::Type& t) { return !t.is_array() && (is_df(t) || matrix::is_matrix(t)); }
-
 // A variable access rooted at a uniform that is not yet a float-float value (a block, a struct,
 // an array): what a float-float path continues.
 bool is_uniform_path(const ir::ExprPtr& e) {
   switch (e->kind) {
     case Kind::Sym: return e->var->storage == ir::Storage::Uniform;
-    case Kind::Member: return !is_float_float(e->args[0]->type) && is_uniform_path(e->args[0]);
+    case Kind::Member: return !is_float_float_value(e->args[0]->type) && is_uniform_path(e->args[0]);
     case Kind::Index:
-      return !is_float_float(e->args[0]->type) && ir::is_pure(e->args[1]) && is_uniform_path(e->args[0]);
+      return !is_float_float_value(e->args[0]->type) && ir::is_pure(e->args[1]) && is_uniform_path(e->args[0]);
     default: return false;
   }
 }
@@ -42,10 +40,6 @@ ir::Type word_type(const ir::Type& t) {
   ir::Type m = ir::scalar_type(ir::Base::Float, matrix::rows(t));
   m.cols = matrix::cols(t);
   return m;
-}
-
-ir::ExprPtr less_guard(const ir::ExprPtr& word, const pipeline::Config& config) {
-  return ir::make_binary("-", word->type, word, guard_value(config, true, word->loc));
 }
 
 ir::ExprPtr word_of(const ir::ExprPtr& value, const char* word) {
@@ -63,10 +57,10 @@ class GuardUniformReads {
   // from) becomes `(b0.hi - G)`; the value itself, read whole, `T(b0.hi - G, b0.lo - G)`.
   ir::ExprPtr rewrite(const ir::ExprPtr& e) {
     if (!e) return e;
-    if (e->kind == Kind::Member && (e->name == "hi" || e->name == "lo") && is_float_float(e->args[0]->type) &&
+    if (e->kind == Kind::Member && (e->name == "hi" || e->name == "lo") && is_float_float_value(e->args[0]->type) &&
         is_uniform_path(e->args[0]))
       return read(less_guard(e, ctx_.config));
-    if (is_float_float(e->type) && is_uniform_path(e))
+    if (is_float_float_value(e->type) && is_uniform_path(e))
       return read(ir::make_node(Kind::Construct, "", e->type,
                                 {less_guard(word_of(e, "hi"), ctx_.config), less_guard(word_of(ir::clone(e), "lo"), ctx_.config)},
                                 e->loc));

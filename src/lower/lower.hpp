@@ -125,8 +125,12 @@ bool move_global_initialisers(ir::Module& module, Context& context);
 // Where the guard is a uniform (guards_constants), every float-float constant in a function body
 // (is_float_float_constant: a df_* pair constructed from two float constants) reads the guard.
 bool guards_constants(const pipeline::Config& config);
-// The guard's value as the rules read it: `df_guard[int(df_guard[1])]` where `indexed`, else `df_guard`.
-ir::ExprPtr guard_value(const pipeline::Config& config, bool indexed, ir::Loc loc);
+// The guard's value as the rules read it: `df_guard[int(df_guard[1])]` where
+// Config::guard_is_indexed(), else `df_guard`; and `word - G`.
+ir::ExprPtr guard_value(const pipeline::Config& config, ir::Loc loc);
+ir::ExprPtr less_guard(const ir::ExprPtr& word, const pipeline::Config& config);
+// A df_* pair or df_dmat* value (not an array of them).
+bool is_float_float_value(const ir::Type& t);
 bool is_float_float_constant(const ir::ExprPtr& e);
 bool guard_constants(ir::Module& module, Context& context);
 // Where no rule reads the guard (Config::reads_uniforms_through_guard), every float-float value read

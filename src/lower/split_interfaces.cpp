@@ -580,8 +580,7 @@ bool split_interfaces(ir::Module& module, Context& ctx, Manifest& manifest) {
         auto join = Expr::make(Kind::Construct, elems_df[k]->type);
         join->args = {elems_hi[k], elems_lo[k]};
         if (s.storage == ir::Storage::Uniform && ctx.config.reads_uniforms_through_guard()) {
-          for (auto& word : join->args)
-            word = ir::make_binary("-", word->type, word, guard_value(ctx.config, true, word->loc));
+          for (auto& word : join->args) word = less_guard(word, ctx.config);
           ctx.guard_read_outside_rules = true;
         }
         ins->push_back(assign(elems_df[k], join));

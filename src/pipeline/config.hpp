@@ -55,18 +55,19 @@ struct Config {
   // not WGSL, whose printer gathers the guard into its uniform buffer as one f32 (the indexed read
   // there, an array of 16-byte stride, cost 25-30% of a loop kernel's time in Chromium's WebGPU:
   // docs/accuracy.md).
-  bool indexed_guard() const {
-    return guard == rules::GuardStyle::Uniform && !target::facts(output).wgsl && !(facts->es && facts->version < 300);
-  }
+  bool indexed_guard() const { return guard == rules::GuardStyle::Uniform && guard_array_allowed(); }
   // Float-float code without the uniform guard (`precise`, or df64-int's none) reads the words of
   // the shader's double uniforms less an indexed zero uniform (the guard's declaration, read as the
   // indexed guard is), so that no condition is computed from uniforms and constants alone: a
   // driver that specialises a shader on such uniforms (lavapipe) can take minutes on float-float
   // code (docs/accuracy.md, "Lavapipe's inliner on the user's own uniforms"). GLSL from ES 3.00 on.
   bool reads_uniforms_through_guard() const {
-    return representation == Representation::FloatFloat && guard != rules::GuardStyle::Uniform &&
-           !target::facts(output).wgsl && !(facts->es && facts->version < 300);
+    return representation == Representation::FloatFloat && guard != rules::GuardStyle::Uniform && guard_array_allowed();
   }
+  // Whether the guard, where anything reads it, is the array read at a non-constant index.
+  bool guard_is_indexed() const { return indexed_guard() || reads_uniforms_through_guard(); }
+  // GLSL from ES 3.00 on (and desktop), not WGSL: where the guard may be an indexed array.
+  bool guard_array_allowed() const { return !target::facts(output).wgsl && !(facts->es && facts->version < 300); }
 };
 
 // The Config of `options`, or nullopt with the refusal in `diags`.

@@ -99,8 +99,7 @@ LinkedRuntime link_runtime(const Config& config, const passes::Context& requests
   // constants (guard-constants) and double uniforms (Config::reads_uniforms_through_guard). The
   // rule library declares it with the rules; otherwise it is declared here.
   const bool rules_read_guard = !words && !requests.rules_used.empty() && config.guard == rules::GuardStyle::Uniform;
-  const bool indexed = config.guard != rules::GuardStyle::Uniform || config.indexed_guard();
-  const std::string suffix = indexed ? "[" + std::to_string(rules::kIndexedGuardElements) + "]" : "";
+  const std::string suffix = config.guard_is_indexed() ? "[" + std::to_string(rules::kIndexedGuardElements) + "]" : "";
   if (requests.guard_read_outside_rules && !rules_read_guard)
     linked.text = "uniform highp float " + config.guard_uniform + suffix + ";  // never set: GL zero-fills it at link\n" + linked.text;
   if (!words && !requests.rules_used.empty() && config.guard == rules::GuardStyle::Precise) linked.guard.kind = "precise";
