@@ -108,6 +108,9 @@ std::string df_type_name(int width);
 ir::Type df_type(int width);
 bool is_df(const ir::Type& t);  // a df_double/df_dvecN struct (not an array of them, not a matrix)
 int df_width(const ir::Type& t);
+// df_splat_dvecN(s): the df_double `scalar` in every component of a width-`width` float-float
+// vector (the scalar itself for width 1); the helper is generated once.
+ir::ExprPtr df_splat(Context& context, const ir::ExprPtr& scalar, int width);
 
 // A component of a double vector or matrix passed to an out/inout parameter goes through a
 // temporary (after lowering it is no longer an lvalue); runs before lower_doubles.

@@ -134,6 +134,15 @@ int df_width(const ir::Type& t) {
   return t.vec;  // not a float-float struct (an unnamed type's name has no last character to read)
 }
 
+ir::ExprPtr df_splat(Context& context, const ir::ExprPtr& scalar, int width) {
+  if (width == 1) return scalar;
+  const std::string name = "df_splat_" + df_type_name(width).substr(3);
+  const std::string word = (context.config.binary64_words() ? "uvec" : "vec") + std::to_string(width);
+  context.add_helper(name, df_type_name(width) + " " + name + "(df_double s) {\n  return " + df_type_name(width) + "(" +
+                               word + "(s.hi), " + word + "(s.lo));\n}\n");
+  return ir::make_node(ir::Expr::Kind::Call, name, df_type(width), {scalar}, scalar->loc);
+}
+
 namespace {
 
 using ir::Expr;
@@ -311,13 +320,7 @@ class DoubleLowering {
     return ir::make_node(Kind::Call, name, std::move(type), std::move(args), loc);
   }
 
-  ExprPtr splat(const ExprPtr& scalar, int width) {
-    if (width == 1) return scalar;
-    std::string name = "df_splat_" + df_type_name(width).substr(3);
-    ctx_.add_helper(name, df_type_name(width) + " " + name + "(df_double s) {\n  return " + df_type_name(width) + "(" +
-                              word_type_name(width) + "(s.hi), " + word_type_name(width) + "(s.lo));\n}\n");
-    return ir::make_node(Kind::Call, name, df_type(width), {scalar}, scalar->loc);
-  }
+  ExprPtr splat(const ExprPtr& scalar, int width) { return df_splat(ctx_, scalar, width); }
 
   // Component selection (swizzle letters) of a df vector, as a new df value.
   ExprPtr select(const ExprPtr& base, const std::string& letters, ir::Loc loc) {

@@ -30,7 +30,9 @@
 // store through a call), synchronises (barrier, EmitVertex), depends on the invocations running
 // together (derivatives, subgroup operations) or jumps ends the run and stays as it is. Matrices and
 // arrays are not shared (small_value), and element-wise add/sub/mul/div in several widths share one
-// site over df_dvec4 operands (generic_key).
+// site over df_dvec4 operands (generic_key), as do an addition and a subtraction (ex_each_addsub).
+// dot, length, distance and normalize of variables are written out as the additions, products,
+// square roots and divisions their rules perform (expand), which then share those sites.
 // Declarations in the run are moved before the loop (their initialisers stay in place as
 // assignments), where no other variable of the function has their name.
 #include <algorithm>
@@ -134,8 +136,74 @@ class CallSharer {
     std::vector<ir::VarPtr> operands;
     ir::VarPtr result;
     ir::VarPtr width;  // generic (ex_each_OP): the width of the current call's operands
+    ir::VarPtr negate;  // ex_each_addsub: 1 where the current call is a subtraction
     int number = 0;
   };
+
+  // Mode exact's composite built-ins, written out as the operations their rules perform, in the
+  // same order on the same operands (rules/exact.glsl), so that those share sites with the run's
+  // other calls: dot(a, b) is ((b.x a.x + b.y a.y) + ...) (each product and sum passing on its
+  // first operand's NaN: ex_mul_first(a, b) is ex_mul(b, a), ex_add_first(s, p) is ex_add(p, s)),
+  // length(a) is sqrt(dot(a, a)) (sqrt(a * a) for a double), normalize(a) is a / length(a),
+  // distance(a, b) is length(a - b). An operand read twice must be a variable, member or constant
+  // index. Only where the run evaluates the call whatever the values are (unconditional operands).
+  ExprPtr expand(const ExprPtr& e) {
+    const size_t n = ir::unconditional_operands(*e);
+    for (size_t i = 0; i < n && i < e->args.size(); ++i) e->args[i] = expand(e->args[i]);
+    if (e->kind != EKind::Call || e->args.empty() || !is_df(value_type(e->args[0]->type))) return e;
+    const ExprPtr& a = e->args[0];
+    const int width = df_width(value_type(a->type));
+    const ir::Loc loc = e->loc;
+    if (e->name == "ex_distance" && e->args.size() == 2) {
+      auto difference = runtime_call("ex_sub", width, df_type(width), {a, e->args[1]}, loc);
+      return expand(runtime_call("ex_length", width, e->type, {difference}, loc));
+    }
+    if (e->args.size() == 1 && ir::is_pure(a)) {
+      if (e->name == "ex_normalize") {
+        auto length = expand(runtime_call("ex_length", width, df_type(1), {ir::clone(a)}, loc));
+        return runtime_call("ex_div", width, e->type, {a, df_splat(ctx_, length, width)}, loc);
+      }
+      if (e->name == "ex_length") {
+        auto square = width == 1 ? runtime_call("ex_mul", 1, df_type(1), {a, ir::clone(a)}, loc)
+                                 : expand(runtime_call("ex_dot", width, df_type(1), {a, ir::clone(a)}, loc));
+        return runtime_call("ex_sqrt", 1, e->type, {square}, loc);
+      }
+    }
+    if (e->name == "ex_dot" && e->args.size() == 2 && width > 1 && ir::is_pure(a) && ir::is_pure(e->args[1])) {
+      const auto product = [&](int k) {
+        return runtime_call("ex_mul", 1, df_type(1), {component(e->args[1], k), component(a, k)}, loc);
+      };
+      ExprPtr sum = product(0);
+      for (int k = 1; k < width; ++k) sum = runtime_call("ex_add", 1, df_type(1), {product(k), sum}, loc);
+      return sum;
+    }
+    return e;
+  }
+
+  // Component k of a pure df_dvecN as a df_double.
+  static ExprPtr component(const ExprPtr& v, int k) {
+    const int width = df_width(value_type(v->type));
+    const auto word = [&](const char* half) {
+      auto words = ir::make_node(EKind::Member, half, ir::scalar_type(ir::Base::Uint, width), {ir::clone(v)}, v->loc);
+      return ir::make_node(EKind::Member, std::string(1, "xyzw"[k]), ir::scalar_type(ir::Base::Uint), {words}, v->loc);
+    };
+    return ir::make_node(EKind::Construct, "", df_type(1), {word("hi"), word("lo")}, v->loc);
+  }
+
+  // The expression of `s` a run rewrites: a declaration's initialiser, a return's value, an
+  // assignment's value, an expression statement.
+  static ExprPtr* run_expression(const StmtPtr& s) {
+    if (!s->expr) return nullptr;
+    if (s->kind == SKind::Decl || s->kind == SKind::Return) return &s->expr;
+    if (s->kind != SKind::Expr) return nullptr;
+    if (s->expr->kind == EKind::Binary && s->expr->op == "=") return &s->expr->args[1];
+    return &s->expr;
+  }
+
+  ExprPtr runtime_call(const std::string& name, int width, const ir::Type& type, std::vector<ExprPtr> args, ir::Loc loc) {
+    ctx_.use_rule(name, width);
+    return ir::make_node(EKind::Call, name, type, std::move(args), loc);
+  }
 
   // Every statement list of a body, innermost first.
   void block_lists(const StmtPtr& s) {
@@ -223,6 +291,13 @@ class CallSharer {
     size_t calls = 0;
     std::map<std::string, int> signatures, generics;
     std::map<std::string, std::set<int>> widths;
+    std::map<std::string, std::set<std::string>> names;  // of a generic key's calls (ex_add, ex_sub)
+    // A generic key's calls share one site: they come in two widths or more, or as both ex_add and ex_sub.
+    bool shares_generic(const std::string& key) const {
+      auto w = widths.find(key);
+      auto n = names.find(key);
+      return (w != widths.end() && w->second.size() > 1) || (n != names.end() && n->second.size() > 1);
+    }
   };
 
   void count_calls(const ExprPtr& e, Tally& tally) {
@@ -234,13 +309,15 @@ class CallSharer {
     if (const std::string g = generic_key(*e); !g.empty()) {
       ++tally.generics[g];
       tally.widths[g].insert(df_width(value_type(e->type)));
+      tally.names[g].insert(e->name);
     }
   }
 
-  // "ex_mul(*)" for ex_add, ex_sub, ex_mul and ex_div on df_double or df_dvecN operands of the
-  // result's width (element-wise), else empty. Within a run where such an operation comes in two
-  // widths or more, its calls share one site over df_dvec4 slots (the helper ex_each_OP loops over
-  // the components): one copy of the scalar operation for every width.
+  // "ex_mul(*)" for ex_mul and ex_div on df_double or df_dvecN operands of the result's width
+  // (element-wise), "ex_addsub(*)" for ex_add and ex_sub, else empty. Within a run where such an
+  // operation comes in two widths or more (or as both an addition and a subtraction), its calls
+  // share one site over df_dvec4 slots (the helper ex_each_OP loops over the components): one copy
+  // of the scalar operation for every width.
   static std::string generic_key(const Expr& call) {
     static const std::set<std::string> elementwise = {"ex_add", "ex_sub", "ex_mul", "ex_div"};
     if (call.kind != EKind::Call || !elementwise.count(call.name)) return "";
@@ -248,16 +325,13 @@ class CallSharer {
     if (!is_df(result)) return "";
     for (const auto& a : call.args)
       if (ir::type_name(value_type(a->type)) != ir::type_name(result)) return "";
-    return call.name + "(*)";
+    return (call.name == "ex_add" || call.name == "ex_sub" ? std::string("ex_addsub") : call.name) + "(*)";
   }
 
   // The key a call shares its site under in the current run.
   std::string key_of(const Expr& call) const {
     const std::string g = generic_key(call);
-    if (!g.empty()) {
-      auto w = run_tally_.widths.find(g);
-      if (w != run_tally_.widths.end() && w->second.size() > 1) return g;
-    }
+    if (!g.empty() && run_tally_.shares_generic(g)) return g;
     return signature(call);
   }
 
@@ -335,6 +409,9 @@ class CallSharer {
       size_t first = list.size(), last = 0, j = i;
       bool returned = false;
       for (; j < list.size(); ++j) {
+        Tally ignored;
+        if (role(list[j], ignored) != Role::Barrier)
+          if (ExprPtr* e = run_expression(list[j])) *e = expand(*e);
         const Role r = role(list[j], counts);
         if (r == Role::Barrier) break;
         if (r == Role::Calls) {
@@ -351,7 +428,8 @@ class CallSharer {
         return std::any_of(m.begin(), m.end(), [](const auto& c) { return c.second > 1; });
       };
       const bool worth = repeated(counts.signatures) ||
-                         std::any_of(counts.widths.begin(), counts.widths.end(), [](const auto& w) { return w.second.size() > 1; });
+                         std::any_of(counts.generics.begin(), counts.generics.end(),
+                                     [&](const auto& g) { return counts.shares_generic(g.first); });
       if (first < list.size() && worth) {
         out.insert(out.end(), list.begin() + i, list.begin() + first);
         run_tally_ = counts;
@@ -387,12 +465,14 @@ class CallSharer {
       op.operands.push_back(temporary(stem + "_a" + std::to_string(a), generic ? df_type(4) : value_type(call.args[a]->type)));
     op.result = temporary(stem + "_r", op.call->type);
     if (generic) op.width = temporary(stem + "_w", ir::scalar_type(ir::Base::Int));
+    if (generic && key == "ex_addsub(*)") op.negate = temporary(stem + "_n", ir::scalar_type(ir::Base::Int));
     return operations_.emplace(key, std::move(op)).first->second;
   }
 
   // ex_each_OP(a, b, w): the width-1 OP on components w-1 .. 0 of two df_dvec4 (the index counts
   // down, as mode exact's per-component loops do: docs/performance.md).
   std::string each_helper(const Expr& call) {
+    if (call.name == "ex_add" || call.name == "ex_sub") return addsub_helper();
     const std::string op = call.name.substr(3), name = "ex_each_" + op;
     ctx_.use_rule(call.name, 1);
     ctx_.use_width(1);
@@ -404,6 +484,31 @@ class CallSharer {
                           "    df_double c = " + call.name + "(df_double(a.hi[i], a.lo[i]), df_double(b.hi[i], b.lo[i]));\n"
                           "    r.hi[i] = c.hi;\n"
                           "    r.lo[i] = c.lo;\n"
+                          "  }\n"
+                          "  return r;\n"
+                          "}\n");
+    return name;
+  }
+
+  // ex_each_addsub(a, b, w, n): a + b, or a - b where n is 1, on components w-1 .. 0. A subtraction
+  // is the addition of b with its sign flipped, except for which NaN it passes on: ex_sub_bits's
+  // (rules/exact.glsl), selected where n is 1 and an operand is a NaN. One ex_add_bits for both.
+  std::string addsub_helper() {
+    const std::string name = "ex_each_addsub";
+    ctx_.use_rule("ex_sub", 1);  // ex_sub_bits: ex_add_bits, ex_either_nan, ex_pick_nan, ex_sel64
+    ctx_.use_width(1);
+    ctx_.use_width(4);
+    ctx_.add_helper(name, "df_dvec4 " + name + "(df_dvec4 a, df_dvec4 b, int w, int n) {\n"
+                          "  df_dvec4 r = a;\n"
+                          "  uint sign = uint(n) << 31;\n"
+                          "  for (int k = 0; k < w; ++k) {\n"
+                          "    int i = w - 1 - k;\n"
+                          "    uvec2 x = uvec2(a.lo[i], a.hi[i]);\n"
+                          "    uvec2 y = uvec2(b.lo[i], b.hi[i]);\n"
+                          "    uvec2 s = ex_add_bits(x, uvec2(y.x, y.y ^ sign));\n"
+                          "    s = ex_sel64(all(bvec2(n == 1, ex_either_nan(x, y))), ex_pick_nan(x, y), s);\n"
+                          "    r.hi[i] = s.y;\n"
+                          "    r.lo[i] = s.x;\n"
                           "  }\n"
                           "  return r;\n"
                           "}\n");
@@ -439,6 +544,7 @@ class CallSharer {
     for (size_t a = 0; a < e->args.size(); ++a)
       cases_.back().push_back(assign(op.operands[a], op.width ? widened(e->args[a], width) : e->args[a]));
     if (op.width) cases_.back().push_back(assign(op.width, ir::make_int(width)));
+    if (op.negate) cases_.back().push_back(assign(op.negate, ir::make_int(e->name == "ex_sub" ? 1 : 0)));
     cases_.back().push_back(assign(op_, ir::make_int(op.number)));
     const ir::Type type = op.width ? df_type(width) : op.call->type;
     auto result = temporary("ex_c" + std::to_string(run_number_) + "_" + std::to_string(cases_.size()), type);
@@ -497,6 +603,7 @@ class CallSharer {
       auto call = ir::make_node(op->call->kind, op->call->name, op->call->type, {}, op->call->loc);
       for (const auto& v : op->operands) call->args.push_back(ir::make_sym(v));
       if (op->width) call->args.push_back(ir::make_sym(op->width));
+      if (op->negate) call->args.push_back(ir::make_sym(op->negate));
       auto branch = Stmt::make(SKind::If);
       branch->expr = ir::make_binary("==", ir::scalar_type(ir::Base::Bool), ir::make_sym(op_), ir::make_int(op->number));
       auto then = Stmt::make(SKind::Block);

@@ -76,6 +76,29 @@ const std::vector<Group>& groups() {
         {"faceforward1", "faceforward(d[0], d[1], d[2])"},
         {"reflect1", "reflect(d[0], d[1])"},
         {"refract1", "refract(d[0], d[1], d[2])"}}},
+      // On variables, where share-exact-calls writes dot, length, distance and normalize out as the
+      // additions, products, square roots and divisions their rules perform, and runs a sum and a
+      // difference through one site (src/lower/share_exact_calls.cpp).
+      {"geometric on variables, shared", 9, 0,
+       {{"dot3 of variables", "dot(a, b)"},
+        {"length3 of a variable", "length(a)"},
+        {"distance3 of variables", "distance(a, b)"},
+        {"normalize3 of a variable .x", "normalize(a).x"},
+        {"normalize3 of a variable .z", "normalize(a).z"},
+        {"sum .y", "(a + b).y"},
+        {"difference .z", "(a - b).z"},
+        {"dot2 of a variable", "dot(p, p)"},
+        {"normalize2 of a variable .y", "normalize(p).y"},
+        {"dot4 of variables", "dot(q, c)"},
+        {"length4 of a variable", "length(q)"},
+        {"normalize4 of a variable .w", "normalize(q).w"},
+        {"length1 of a variable", "length(x)"},
+        {"normalize1 of a variable", "normalize(x)"},
+        {"distance1 of variables", "distance(x, y)"},
+        {"difference1", "x - y"}},
+       "  dvec3 a = dvec3(d[0], d[1], d[2]);\n  dvec3 b = dvec3(d[3], d[4], d[5]);\n  dvec2 p = dvec2(d[6], d[7]);\n"
+       "  dvec4 q = dvec4(d[0], d[3], d[6], d[8]);\n  dvec4 c = dvec4(d[5], d[7], d[1], d[2]);\n"
+       "  double x = d[8];\n  double y = d[4];\n"},
   };
   return list;
 }
@@ -103,6 +126,8 @@ TEST(ExactBuiltinsSabotage, OtherOrdersAndRulesDiffer) {
       {"dot3 summed from the last component", 3,
        "uvec2 s = ex_mul_first(uvec2(a.lo.x, a.hi.x), uvec2(b.lo.x, b.hi.x));\n  for (int k = 1; k < 3; ++k)",
        "uvec2 s = ex_mul_first(uvec2(a.lo.z, a.hi.z), uvec2(b.lo.z, b.hi.z));\n  for (int k = 1; k >= 0; --k)", {0}},
+      {"the shared site adding where it subtracts", 6, "_n = 1;", "_n = 0;", {5, 6}},
+      {"the shared site dropping its sign flip", 6, "uint sign = uint(n) << 31;", "uint sign = 0u;", {5, 6}},
   });
 }
 

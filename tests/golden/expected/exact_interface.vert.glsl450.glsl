@@ -461,13 +461,17 @@ df_dvec3 ex_narrow_dvec3(df_dvec4 x) {
   return df_dvec3(x.hi.xyz, x.lo.xyz);
 }
 
-df_dvec4 ex_each_add(df_dvec4 a, df_dvec4 b, int w) {
+df_dvec4 ex_each_addsub(df_dvec4 a, df_dvec4 b, int w, int n) {
   df_dvec4 r = a;
+  uint sign = uint(n) << 31;
   for (int k = 0; k < w; ++k) {
     int i = w - 1 - k;
-    df_double c = ex_add(df_double(a.hi[i], a.lo[i]), df_double(b.hi[i], b.lo[i]));
-    r.hi[i] = c.hi;
-    r.lo[i] = c.lo;
+    uvec2 x = uvec2(a.lo[i], a.hi[i]);
+    uvec2 y = uvec2(b.lo[i], b.hi[i]);
+    uvec2 s = ex_add_bits(x, uvec2(y.x, y.y ^ sign));
+    s = ex_sel64(all(bvec2(n == 1, ex_either_nan(x, y))), ex_pick_nan(x, y), s);
+    r.hi[i] = s.y;
+    r.lo[i] = s.x;
   }
   return r;
 }
@@ -541,10 +545,12 @@ void main()
   df_dvec4 ex_k1_2_a1;
   df_dvec4 ex_k1_2_r;
   int ex_k1_2_w;
+  int ex_k1_2_n;
   df_dvec3 ex_c1_2;
   df_dvec3 ex_c1_3;
   df_double ex_c1_4;
   df_double ex_c1_5;
+  df_double ex_c1_6;
   a_value = df_double(a.y, a.x);
   b_value = df_dvec2(b.yw, b.xz);
   c = df_dvec3(uvec3(c_xy.yw, c_z.y), uvec3(c_xy.xz, c_z.x));
@@ -552,7 +558,7 @@ void main()
   u_value[0] = df_double(u[0].y, u[0].x);
   u_value[1] = df_double(u[1].y, u[1].x);
   e = df_dvec3(uvec3(e_xy.yw, e_z.y), uvec3(e_xy.xz, e_z.x));
-  for (int ex_pc1 = 0; ex_pc1 < 5; ++ex_pc1)
+  for (int ex_pc1 = 0; ex_pc1 < 6; ++ex_pc1)
   {
     switch (ex_pc1)
     {
@@ -567,6 +573,7 @@ void main()
       ex_k1_2_a0 = ex_widen_dvec3(c);
       ex_k1_2_a1 = ex_widen_dvec3(ex_c1_1);
       ex_k1_2_w = 3;
+      ex_k1_2_n = 0;
       ex_op = 2;
       break;
     case 2:
@@ -574,6 +581,7 @@ void main()
       ex_k1_2_a0 = ex_widen_dvec3(ex_c1_2);
       ex_k1_2_a1 = ex_widen_dvec3(ex_load_dvec3(g_xy, g_z));
       ex_k1_2_w = 3;
+      ex_k1_2_n = 0;
       ex_op = 2;
       break;
     case 3:
@@ -586,9 +594,18 @@ void main()
       break;
     case 4:
       ex_c1_4 = ex_narrow_double(ex_k1_1_r);
-      ex_k1_2_a0 = ex_widen_double(ex_sub(a_value, ex_c1_4));
+      ex_k1_2_a0 = ex_widen_double(a_value);
+      ex_k1_2_a1 = ex_widen_double(ex_c1_4);
+      ex_k1_2_w = 1;
+      ex_k1_2_n = 1;
+      ex_op = 2;
+      break;
+    case 5:
+      ex_c1_5 = ex_narrow_double(ex_k1_2_r);
+      ex_k1_2_a0 = ex_widen_double(ex_c1_5);
       ex_k1_2_a1 = ex_widen_double(ex_load_double(h[1]));
       ex_k1_2_w = 1;
+      ex_k1_2_n = 0;
       ex_op = 2;
       break;
     }
@@ -599,11 +616,11 @@ void main()
     else
     if (ex_op == 2)
     {
-      ex_k1_2_r = ex_each_add(ex_k1_2_a0, ex_k1_2_a1, ex_k1_2_w);
+      ex_k1_2_r = ex_each_addsub(ex_k1_2_a0, ex_k1_2_a1, ex_k1_2_w, ex_k1_2_n);
     }
   }
-  ex_c1_5 = ex_narrow_double(ex_k1_2_r);
-  t_value = ex_c1_5;
+  ex_c1_6 = ex_narrow_double(ex_k1_2_r);
+  t_value = ex_c1_6;
   gl_Position = vec4(ex_to_float(t_value), float(s), 0.0, 1.0);
   r_xy = uvec4(r.lo.x, r.hi.x, r.lo.y, r.hi.y);
   r_z = uvec2(r.lo.z, r.hi.z);

@@ -31,7 +31,7 @@ struct df_dmat4 {
   uvec4 hi[4];
   uvec4 lo[4];
 };
-// doublet exact binary64 runtime (mode exact): 27 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 30 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct df_double { uint hi; uint lo; };
 struct df_dvec4 { uvec4 hi; uvec4 lo; };
 
@@ -400,6 +400,35 @@ df_dvec4 ex_add(df_dvec4 a, df_dvec4 b) {
   return per_r;
 }
 
+// ex_neg_bits: -a (flips the sign bit, NaN included, as GLSL's negation of a double does).
+// Algorithm: sign bit flip
+// Source: IEEE 754-2019, 5.5.1 (negate)
+// Bound: exact
+// Flops: 0
+uvec2 ex_neg_bits(uvec2 a) {
+  return uvec2(a.x, a.y ^ 0x80000000u);
+}
+
+// ex_sub_bits: a - b = a + (-b), correctly rounded.
+// Algorithm: NaN operands as ex_pick_nan(a, b); otherwise ex_add with the sign of b flipped
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
+  bool nan = ex_either_nan(a, b);
+  uvec2 r = ex_add_bits(a, ex_neg_bits(b));
+  return ex_sel64(nan, ex_pick_nan(a, b), r);
+}
+
+// ex_sub: a - b (mode exact), correctly rounded.
+// Algorithm: ex_sub_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+df_double ex_sub(df_double a, df_double b) {
+  return ex_from_bits(ex_sub_bits(ex_bits(a), ex_bits(b)));
+}
+
 // ex_mul_dmat4_dvec4: (m * v)[i] = fma(m[0][i], v[0], fma(m[1][i], v[1], ...)), the last column
 // first, every step rounded as native's (each fma twice).
 df_dvec4 ex_mul_dmat4_dvec4(df_dmat4 m, df_dvec4 v) {
@@ -492,13 +521,17 @@ df_double df_assign_element_dmat3x2(inout df_dmat3x2 m, int j, int i, df_double 
   return x;
 }
 
-df_dvec4 ex_each_add(df_dvec4 a, df_dvec4 b, int w) {
+df_dvec4 ex_each_addsub(df_dvec4 a, df_dvec4 b, int w, int n) {
   df_dvec4 r = a;
+  uint sign = uint(n) << 31;
   for (int k = 0; k < w; ++k) {
     int i = w - 1 - k;
-    df_double c = ex_add(df_double(a.hi[i], a.lo[i]), df_double(b.hi[i], b.lo[i]));
-    r.hi[i] = c.hi;
-    r.lo[i] = c.lo;
+    uvec2 x = uvec2(a.lo[i], a.hi[i]);
+    uvec2 y = uvec2(b.lo[i], b.hi[i]);
+    uvec2 s = ex_add_bits(x, uvec2(y.x, y.y ^ sign));
+    s = ex_sel64(all(bvec2(n == 1, ex_either_nan(x, y))), ex_pick_nan(x, y), s);
+    r.hi[i] = s.y;
+    r.lo[i] = s.x;
   }
   return r;
 }
@@ -623,6 +656,7 @@ void main()
   df_dvec4 ex_k1_1_a1;
   df_dvec4 ex_k1_1_r;
   int ex_k1_1_w;
+  int ex_k1_1_n;
   df_dvec4 ex_c1_1;
   df_double ex_c1_2;
   u_model_value = df_dmat4(uvec4[4](uvec4(u_model[0].y, u_model[0].w, u_model[1].y, u_model[1].w), uvec4(u_model[2].y, u_model[2].w, u_model[3].y, u_model[3].w), uvec4(u_model[4].y, u_model[4].w, u_model[5].y, u_model[5].w), uvec4(u_model[6].y, u_model[6].w, u_model[7].y, u_model[7].w)), uvec4[4](uvec4(u_model[0].x, u_model[0].z, u_model[1].x, u_model[1].z), uvec4(u_model[2].x, u_model[2].z, u_model[3].x, u_model[3].z), uvec4(u_model[4].x, u_model[4].z, u_model[5].x, u_model[5].z), uvec4(u_model[6].x, u_model[6].z, u_model[7].x, u_model[7].z)));
@@ -642,6 +676,7 @@ void main()
         ex_k1_1_a0 = ex_load_dvec4(io.m.c[1]);
         ex_k1_1_a1 = df_make_dvec4_3_1(ex_load_dvec3(a.c[0]), df_swizzle_dvec3_z(ex_load_dvec3(b.c[1])));
         ex_k1_1_w = 4;
+        ex_k1_1_n = 0;
         ex_op = 1;
         break;
       case 1:
@@ -652,12 +687,13 @@ void main()
         ex_k1_1_a0 = ex_widen_double(df_swizzle_dvec2_y(ex_load_dvec2(io.n[0].c[2])));
         ex_k1_1_a1 = ex_widen_double(df_swizzle_dvec3_z(ex_load_dvec3(a.c[2])));
         ex_k1_1_w = 1;
+        ex_k1_1_n = 0;
         ex_op = 1;
         break;
       }
       if (ex_op == 1)
       {
-        ex_k1_1_r = ex_each_add(ex_k1_1_a0, ex_k1_1_a1, ex_k1_1_w);
+        ex_k1_1_r = ex_each_addsub(ex_k1_1_a0, ex_k1_1_a1, ex_k1_1_w, ex_k1_1_n);
       }
     }
     ex_c1_2 = ex_narrow_double(ex_k1_1_r);
