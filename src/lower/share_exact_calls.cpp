@@ -372,10 +372,21 @@ class CallSharer {
     const ExprPtr& e = s->expr;
     const bool assignment = e->kind == EKind::Binary && e->op == "=";
     const ExprPtr& value = assignment ? e->args[1] : e;
-    if (assignment ? (has_effects(e->args[0]) || has_effects(value)) : has_effects(value)) return Role::Barrier;
+    if (assignment ? (has_effects(e->args[0]) || has_effects(value)) : has_effects(value) && !call_with_effects(s))
+      return Role::Barrier;
     const size_t before = counts.calls;
     count_calls(value, counts);
     return counts.calls > before ? Role::Calls : Role::Plain;
+  }
+
+  // `f(x, y);` where only the call itself has effects (a user's function that writes outputs or
+  // emits a vertex, an image store, an atomic): its arguments are evaluated before it, so they may
+  // be the run's last code, and the call follows the loop; nothing after it joins the run.
+  bool call_with_effects(const StmtPtr& s) {
+    if (s->kind != SKind::Expr || !s->expr) return false;
+    const Expr& e = *s->expr;
+    if (e.kind != EKind::Call && !(e.kind == EKind::Builtin && !needs_convergence(e.name))) return false;
+    return std::none_of(e.args.begin(), e.args.end(), [&](const ExprPtr& a) { return has_effects(a); });
   }
 
   // `a = x, b = f(a);` as a statement (mode exact's stores into blocks) is `a = x; b = f(a);`: split,
@@ -407,7 +418,7 @@ class CallSharer {
       // A run: statements that are Plain or Calls; it is rewritten from its first to its last Calls.
       Tally counts;
       size_t first = list.size(), last = 0, j = i;
-      bool returned = false;
+      bool ended = false;  // the statement that ended the run is its last (a return, call_with_effects)
       for (; j < list.size(); ++j) {
         Tally ignored;
         if (role(list[j], ignored) != Role::Barrier)
@@ -418,8 +429,8 @@ class CallSharer {
           first = std::min(first, j);
           last = j;
         }
-        if (list[j]->kind == SKind::Return) {  // nothing after it runs
-          returned = true;
+        if (list[j]->kind == SKind::Return || (call_with_effects(list[j]) && has_effects(list[j]->expr))) {
+          ended = true;
           ++j;
           break;
         }
@@ -438,7 +449,7 @@ class CallSharer {
       } else {
         out.insert(out.end(), list.begin() + i, list.begin() + j);
       }
-      if (j < list.size() && !returned) {  // the statement that ended the run
+      if (j < list.size() && !ended) {  // the statement that ended the run
         out.push_back(list[j]);
         ++j;
       }

@@ -1,6 +1,7 @@
 // Mode exact's shared call sites (src/lower/share_exact_calls.cpp): a shader whose runs of
 // statements call the same operations many times (a pure user function twice per step, dvec3 and
-// double products and sums, which share one site through ex_each_mul, a loop body) becomes loops
+// double products and sums, which share one site through ex_each_mul, a loop body, the argument of
+// a function that writes the buffer, which ends a run) becomes loops
 // that execute one call per iteration. Lowered
 // to ES 3.10 and run on lavapipe and Mesa GLES, it must store the same 64 bits per result as the
 // original shader on native fp64 (lavapipe; `precise` keeps native's products uncontracted), and a
@@ -28,6 +29,7 @@ layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer In { uvec2 x[]; };
 layout(std430, binding = 1) writeonly buffer Out { uvec2 r[]; };
 double cube(double t) { precise double c = t * t * t; return c; }
+void store(uint k, double value) { r[k] = unpackDouble2x32(value); }
 dvec3 pull(dvec3 p, double gm) {
   precise double d = length(p);
   precise dvec3 g = -gm * p / (d * d * d);
@@ -55,7 +57,9 @@ void main() {
   r[o + 3u] = unpackDouble2x32(v2.x);
   r[o + 4u] = unpackDouble2x32(v2.y);
   r[o + 5u] = unpackDouble2x32(v2.z);
-  r[o + 6u] = unpackDouble2x32(s);
+  precise double t = s * c;
+  precise double u = t * q + s * a;
+  store(o + 6u, u * b);
   r[o + 7u] = unpackDouble2x32(q);
 }
 )";
@@ -114,6 +118,8 @@ TEST(ExactSharedCalls, SharedCallSitesBitIdenticalToNativeFp64) {
   EXPECT_NE(text.find("= pull(ex_k"), std::string::npos) << text;
   EXPECT_NE(text.find("= cube(ex_k"), std::string::npos) << text;
   EXPECT_NE(text.find("= ex_each_mul(ex_k"), std::string::npos) << text;  // double and dvec3 products: one site
+  // store() writes the buffer: its argument's product is the run's last call, the call follows the loop.
+  EXPECT_TRUE(std::regex_search(text, std::regex(R"(\n *store\(o \+ 6u, ex_c\d+_\d+\);)"))) << text;
   const std::vector<uint64_t> in = make_inputs();
   const std::vector<uint64_t> native = run(Backend::Vulkan, kSource, in);
   ASSERT_EQ(native.size(), size_t(kInvocations) * kResults);
