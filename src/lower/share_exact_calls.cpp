@@ -300,6 +300,24 @@ class CallSharer {
     }
   };
 
+  // Writing the run's composites out pays where their operations then share a site with other
+  // calls: the run also calls an operation they perform, or composites of two kinds. A run of
+  // one composite alone keeps its calls, shared by signature: written out, each of its products
+  // and sums would be a trip of the loop (dot3 1.45x and length3 2.1x the run time,
+  // docs/performance.md, "Mode exact: composites written out").
+  static bool expansion_pays(const Tally& run) {
+    static const std::set<std::string> composites = {"ex_dot", "ex_length", "ex_distance", "ex_normalize"};
+    static const std::set<std::string> performed = {"ex_add", "ex_sub", "ex_mul", "ex_div", "ex_sqrt"};
+    std::set<std::string> kinds;
+    bool shares = false;
+    for (const auto& [signature, count] : run.signatures) {
+      const std::string name = signature.substr(0, signature.find('('));
+      if (composites.count(name)) kinds.insert(signature);
+      shares = shares || performed.count(name);
+    }
+    return !kinds.empty() && (shares || kinds.size() > 1);
+  }
+
   void count_calls(const ExprPtr& e, Tally& tally) {
     const size_t n = ir::unconditional_operands(*e);
     for (size_t i = 0; i < n && i < e->args.size(); ++i) count_calls(e->args[i], tally);
@@ -420,9 +438,6 @@ class CallSharer {
       size_t first = list.size(), last = 0, j = i;
       bool ended = false;  // the statement that ended the run is its last (a return, call_with_effects)
       for (; j < list.size(); ++j) {
-        Tally ignored;
-        if (role(list[j], ignored) != Role::Barrier)
-          if (ExprPtr* e = run_expression(list[j])) *e = expand(*e);
         const Role r = role(list[j], counts);
         if (r == Role::Barrier) break;
         if (r == Role::Calls) {
@@ -433,6 +448,13 @@ class CallSharer {
           ended = true;
           ++j;
           break;
+        }
+      }
+      if (expansion_pays(counts)) {  // the same statements, their composites written out
+        counts = Tally{};
+        for (size_t k = i; k < j; ++k) {
+          if (ExprPtr* e = run_expression(list[k])) *e = expand(*e);
+          role(list[k], counts);
         }
       }
       const auto repeated = [](const auto& m) {

@@ -11,7 +11,7 @@ struct df_dvec4 {
   uvec4 hi;
   uvec4 lo;
 };
-// doublet exact binary64 runtime (mode exact): 29 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
+// doublet exact binary64 runtime (mode exact): 32 functions from rules/exact.glsl and rules/rte_exact.glsl, integer arithmetic (no optimizer guard needed)
 struct df_double { uint hi; uint lo; };
 struct df_dvec3 { uvec3 hi; uvec3 lo; };
 
@@ -410,10 +410,70 @@ df_double ex_from_float(float f) {
   return ex_from_bits(ex_from_float_bits(f));
 }
 
+// ex_neg_bits: -a (flips the sign bit, NaN included, as GLSL's negation of a double does).
+// Algorithm: sign bit flip
+// Source: IEEE 754-2019, 5.5.1 (negate)
+// Bound: exact
+// Flops: 0
+uvec2 ex_neg_bits(uvec2 a) {
+  return uvec2(a.x, a.y ^ 0x80000000u);
+}
+
+// ex_sub_bits: a - b = a + (-b), correctly rounded.
+// Algorithm: NaN operands as ex_pick_nan(a, b); otherwise ex_add with the sign of b flipped
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0
+uvec2 ex_sub_bits(uvec2 a, uvec2 b) {
+  bool nan = ex_either_nan(a, b);
+  uvec2 r = ex_add_bits(a, ex_neg_bits(b));
+  return ex_sel64(nan, ex_pick_nan(a, b), r);
+}
+
+// ex_sub: a - b (mode exact), correctly rounded.
+// Algorithm: ex_sub_bits on the patterns
+// Source: IEEE 754-2019, 5.4.1
+// Bound: 0.5 ulp (correctly rounded)
+// Flops: 0 (integer arithmetic)
+df_double ex_sub(df_double a, df_double b) {
+  return ex_from_bits(ex_sub_bits(ex_bits(a), ex_bits(b)));
+}
+
 df_double df_assign_component_dvec4(inout df_dvec4 v, int i, df_double x) {
   v.hi[i] = x.hi;
   v.lo[i] = x.lo;
   return x;
+}
+
+df_dvec4 ex_each_addsub(df_dvec4 a, df_dvec4 b, int w, int n) {
+  df_dvec4 r = a;
+  uint sign = uint(n) << 31;
+  for (int k = 0; k < w; ++k) {
+    int i = w - 1 - k;
+    uvec2 x = uvec2(a.lo[i], a.hi[i]);
+    uvec2 y = uvec2(b.lo[i], b.hi[i]);
+    uvec2 s = ex_add_bits(x, uvec2(y.x, y.y ^ sign));
+    s = ex_sel64(all(bvec2(n == 1, ex_either_nan(x, y))), ex_pick_nan(x, y), s);
+    r.hi[i] = s.y;
+    r.lo[i] = s.x;
+  }
+  return r;
+}
+
+df_dvec4 ex_widen_dvec3(df_dvec3 x) {
+  return df_dvec4(uvec4(x.hi, 0u), uvec4(x.lo, 0u));
+}
+
+df_dvec3 ex_narrow_dvec3(df_dvec4 x) {
+  return df_dvec3(x.hi.xyz, x.lo.xyz);
+}
+
+df_dvec4 ex_widen_double(df_double x) {
+  return df_dvec4(uvec4(x.hi, 0u, 0u, 0u), uvec4(x.lo, 0u, 0u, 0u));
+}
+
+df_double ex_narrow_double(df_dvec4 x) {
+  return df_double(x.hi.x, x.lo.x);
 }
 
 struct ex_dvec3_words {
@@ -539,43 +599,59 @@ void bump(inout df_double x)
 void main()
 {
   int ex_op;
-  df_dvec3 ex_k1_1_a0;
-  df_dvec3 ex_k1_1_a1;
-  df_dvec3 ex_k1_1_r;
+  df_dvec4 ex_k1_1_a0;
+  df_dvec4 ex_k1_1_a1;
+  df_dvec4 ex_k1_1_r;
+  int ex_k1_1_w;
+  int ex_k1_1_n;
   df_dvec3 ex_c1_1;
   df_dvec3 ex_c1_2;
+  df_double ex_c1_3;
   uint i = gl_GlobalInvocationID.x;
   inb.d[i] = ex_words_double(ex_add(ex_mul(ex_load_double(inb.d[i]), ex_load_double(k)), df_double(ex_load_dvec4(v4_xy, v4_zw).hi.y, ex_load_dvec4(v4_xy, v4_zw).lo.y)));
   df_double ex_member0 = ex_load_double(inb.d[i]);
   bump(ex_member0);
   inb.d[i] = ex_words_double(ex_member0);
   P q = ex_load_P_words(p[i]);
-  for (int ex_pc1 = 0; ex_pc1 < 2; ++ex_pc1)
+  df_dvec4 ex_member1;
+  for (int ex_pc1 = 0; ex_pc1 < 3; ++ex_pc1)
   {
     switch (ex_pc1)
     {
     case 0:
-      ex_k1_1_a0 = df_dvec3(q.q[1].hi.xyz, q.q[1].lo.xyz);
-      ex_k1_1_a1 = ex_load_dvec3(v3s[i & 1u]);
+      ex_k1_1_a0 = ex_widen_dvec3(df_dvec3(q.q[1].hi.xyz, q.q[1].lo.xyz));
+      ex_k1_1_a1 = ex_widen_dvec3(ex_load_dvec3(v3s[i & 1u]));
+      ex_k1_1_w = 3;
+      ex_k1_1_n = 0;
       ex_op = 1;
       break;
     case 1:
-      ex_c1_1 = ex_k1_1_r;
-      ex_k1_1_a0 = q.pos;
-      ex_k1_1_a1 = ex_c1_1;
+      ex_c1_1 = ex_narrow_dvec3(ex_k1_1_r);
+      ex_k1_1_a0 = ex_widen_dvec3(q.pos);
+      ex_k1_1_a1 = ex_widen_dvec3(ex_c1_1);
+      ex_k1_1_w = 3;
+      ex_k1_1_n = 0;
+      ex_op = 1;
+      break;
+    case 2:
+      ex_c1_2 = ex_narrow_dvec3(ex_k1_1_r);
+      q.pos = ex_c1_2;
+      p[i] = ex_words_P_words(q);
+      ex_member1 = ex_load_dvec4(p[i].q[0]);
+      ex_k1_1_a0 = ex_widen_double(ex_from_int(n));
+      ex_k1_1_a1 = ex_widen_double(q.m);
+      ex_k1_1_w = 1;
+      ex_k1_1_n = 0;
       ex_op = 1;
       break;
     }
     if (ex_op == 1)
     {
-      ex_k1_1_r = ex_add(ex_k1_1_a0, ex_k1_1_a1);
+      ex_k1_1_r = ex_each_addsub(ex_k1_1_a0, ex_k1_1_a1, ex_k1_1_w, ex_k1_1_n);
     }
   }
-  ex_c1_2 = ex_k1_1_r;
-  q.pos = ex_c1_2;
-  p[i] = ex_words_P_words(q);
-  df_dvec4 ex_member1 = ex_load_dvec4(p[i].q[0]);
-  df_assign_component_dvec4(ex_member1, 3, ex_add(ex_from_int(n), q.m));
+  ex_c1_3 = ex_narrow_double(ex_k1_1_r);
+  df_assign_component_dvec4(ex_member1, 3, ex_c1_3);
   p[i].q[0] = ex_words_dvec4(ex_member1);
   if (i == 0u)
   {
