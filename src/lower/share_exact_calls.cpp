@@ -28,7 +28,10 @@
 // values are moved (not the second operand of &&, || or ?:), and only from statements whose
 // evaluation writes nothing but their own target; a statement that writes elsewhere (an atomic, a
 // store through a call), synchronises (barrier, EmitVertex), depends on the invocations running
-// together (derivatives, subgroup operations) or jumps ends the run and stays as it is. Matrices and
+// together (derivatives, subgroup operations) or jumps ends the run and stays as it is; where it is
+// a call whose arguments have no effects (barrier(), a store through a helper, a user's function
+// that emits a vertex), its arguments are the run's last code and the call follows the loop
+// (call_with_effects). Matrices and
 // arrays are not shared (small_value), and element-wise add/sub/mul/div in several widths share one
 // site over df_dvec4 operands (generic_key), as do an addition and a subtraction (ex_each_addsub).
 // dot, length, distance and normalize of variables are written out as the additions, products,
