@@ -111,6 +111,9 @@ int df_width(const ir::Type& t);
 // df_splat_dvecN(s): the df_double `scalar` in every component of a width-`width` float-float
 // vector (the scalar itself for width 1); the helper is generated once.
 ir::ExprPtr df_splat(Context& context, const ir::ExprPtr& scalar, int width);
+// The components `letters` of a float-float vector `base` without side effects, as a df value:
+// `df_dvecN(base.hi.xy, base.lo.xy)` (uint words where the representation is binary64 words).
+ir::ExprPtr df_select_pure(const Context& context, const ir::ExprPtr& base, const std::string& letters, ir::Loc loc);
 
 // A component of a double vector or matrix passed to an out/inout parameter goes through a
 // temporary (after lowering it is no longer an lvalue); runs before lower_doubles.

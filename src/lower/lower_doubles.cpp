@@ -143,6 +143,16 @@ ir::ExprPtr df_splat(Context& context, const ir::ExprPtr& scalar, int width) {
   return ir::make_node(ir::Expr::Kind::Call, name, df_type(width), {scalar}, scalar->loc);
 }
 
+ir::ExprPtr df_select_pure(const Context& context, const ir::ExprPtr& base, const std::string& letters, ir::Loc loc) {
+  const int width = static_cast<int>(letters.size()), source = df_width(base->type);
+  const ir::Base word = context.config.binary64_words() ? ir::Base::Uint : ir::Base::Float;
+  const auto part = [&](const char* half) {
+    auto words = ir::make_node(ir::Expr::Kind::Member, half, ir::scalar_type(word, source), {base}, base->loc);
+    return ir::make_node(ir::Expr::Kind::Member, letters, ir::scalar_type(word, width), {words}, base->loc);
+  };
+  return ir::make_node(ir::Expr::Kind::Construct, "", df_type(width), {part("hi"), part("lo")}, loc);
+}
+
 namespace {
 
 using ir::Expr;
@@ -326,12 +336,7 @@ class DoubleLowering {
   ExprPtr select(const ExprPtr& base, const std::string& letters, ir::Loc loc) {
     int width = static_cast<int>(letters.size());
     int src = df_width(base->type);
-    if (is_pure(base)) {
-      const ir::Base word = exact() ? ir::Base::Uint : ir::Base::Float;
-      auto hi = member(member(base, "hi", ir::scalar_type(word, src)), letters, ir::scalar_type(word, width));
-      auto lo = member(member(base, "lo", ir::scalar_type(word, src)), letters, ir::scalar_type(word, width));
-      return ir::make_node(Kind::Construct, "", df_type(width), {hi, lo}, loc);
-    }
+    if (is_pure(base)) return df_select_pure(ctx_, base, letters, loc);
     std::string name = "df_swizzle_" + df_type_name(src).substr(3) + "_" + letters;
     ctx_.add_helper(name, df_type_name(width) + " " + name + "(" + df_type_name(src) + " v) {\n  return " +
                               df_type_name(width) + "(v.hi." + letters + ", v.lo." + letters + ");\n}\n");

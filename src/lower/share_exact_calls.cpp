@@ -184,14 +184,7 @@ class CallSharer {
   }
 
   // Component k of a pure df_dvecN as a df_double.
-  static ExprPtr component(const ExprPtr& v, int k) {
-    const int width = df_width(value_type(v->type));
-    const auto word = [&](const char* half) {
-      auto words = ir::make_node(EKind::Member, half, ir::scalar_type(ir::Base::Uint, width), {ir::clone(v)}, v->loc);
-      return ir::make_node(EKind::Member, std::string(1, "xyzw"[k]), ir::scalar_type(ir::Base::Uint), {words}, v->loc);
-    };
-    return ir::make_node(EKind::Construct, "", df_type(1), {word("hi"), word("lo")}, v->loc);
-  }
+  ExprPtr component(const ExprPtr& v, int k) const { return df_select_pure(ctx_, ir::clone(v), std::string(1, "xyzw"[k]), v->loc); }
 
   // The expression of `s` a run rewrites: a declaration's initialiser, a return's value, an
   // assignment's value, an expression statement.
@@ -407,7 +400,8 @@ class CallSharer {
     if (s->kind != SKind::Expr || !s->expr) return false;
     const Expr& e = *s->expr;
     if (e.kind != EKind::Call && !(e.kind == EKind::Builtin && !needs_convergence(e.name))) return false;
-    return std::none_of(e.args.begin(), e.args.end(), [&](const ExprPtr& a) { return has_effects(a); });
+    return std::none_of(e.args.begin(), e.args.end(), [&](const ExprPtr& a) { return has_effects(a); }) &&
+           has_effects(s->expr);
   }
 
   // `a = x, b = f(a);` as a statement (mode exact's stores into blocks) is `a = x; b = f(a);`: split,
@@ -447,7 +441,7 @@ class CallSharer {
           first = std::min(first, j);
           last = j;
         }
-        if (list[j]->kind == SKind::Return || (call_with_effects(list[j]) && has_effects(list[j]->expr))) {
+        if (list[j]->kind == SKind::Return || call_with_effects(list[j])) {
           ended = true;
           ++j;
           break;
@@ -509,42 +503,38 @@ class CallSharer {
   // down, as mode exact's per-component loops do: docs/performance.md).
   std::string each_helper(const Expr& call) {
     if (call.name == "ex_add" || call.name == "ex_sub") return addsub_helper();
-    const std::string op = call.name.substr(3), name = "ex_each_" + op;
+    const std::string name = "ex_each_" + call.name.substr(3);
     ctx_.use_rule(call.name, 1);
-    ctx_.use_width(1);
-    ctx_.use_width(4);
-    ctx_.add_helper(name, "df_dvec4 " + name + "(df_dvec4 a, df_dvec4 b, int w) {\n"
-                          "  df_dvec4 r = a;\n"
-                          "  for (int k = 0; k < w; ++k) {\n"
-                          "    int i = w - 1 - k;\n"
+    return component_loop(name, "", "",
                           "    df_double c = " + call.name + "(df_double(a.hi[i], a.lo[i]), df_double(b.hi[i], b.lo[i]));\n"
                           "    r.hi[i] = c.hi;\n"
-                          "    r.lo[i] = c.lo;\n"
-                          "  }\n"
-                          "  return r;\n"
-                          "}\n");
-    return name;
+                          "    r.lo[i] = c.lo;\n");
   }
 
   // ex_each_addsub(a, b, w, n): a + b, or a - b where n is 1, on components w-1 .. 0. A subtraction
   // is the addition of b with its sign flipped, except for which NaN it passes on: ex_sub_bits's
   // (rules/exact.glsl), selected where n is 1 and an operand is a NaN. One ex_add_bits for both.
   std::string addsub_helper() {
-    const std::string name = "ex_each_addsub";
     ctx_.use_rule("ex_sub", 1);  // ex_sub_bits: ex_add_bits, ex_either_nan, ex_pick_nan, ex_sel64
-    ctx_.use_width(1);
-    ctx_.use_width(4);
-    ctx_.add_helper(name, "df_dvec4 " + name + "(df_dvec4 a, df_dvec4 b, int w, int n) {\n"
-                          "  df_dvec4 r = a;\n"
-                          "  uint sign = uint(n) << 31;\n"
-                          "  for (int k = 0; k < w; ++k) {\n"
-                          "    int i = w - 1 - k;\n"
+    return component_loop("ex_each_addsub", ", int n", "  uint sign = uint(n) << 31;\n",
                           "    uvec2 x = uvec2(a.lo[i], a.hi[i]);\n"
                           "    uvec2 y = uvec2(b.lo[i], b.hi[i]);\n"
                           "    uvec2 s = ex_add_bits(x, uvec2(y.x, y.y ^ sign));\n"
                           "    s = ex_sel64(all(bvec2(n == 1, ex_either_nan(x, y))), ex_pick_nan(x, y), s);\n"
                           "    r.hi[i] = s.y;\n"
-                          "    r.lo[i] = s.x;\n"
+                          "    r.lo[i] = s.x;\n");
+  }
+
+  // `df_dvec4 NAME(df_dvec4 a, df_dvec4 b, int w PARAMS)`: r = a, then `body` for component i of
+  // w-1 .. 0 (the index counts down, as mode exact's per-component loops do), after `setup`.
+  std::string component_loop(const std::string& name, const std::string& params, const std::string& setup,
+                             const std::string& body) {
+    ctx_.use_width(1);
+    ctx_.use_width(4);
+    ctx_.add_helper(name, "df_dvec4 " + name + "(df_dvec4 a, df_dvec4 b, int w" + params + ") {\n"
+                          "  df_dvec4 r = a;\n" + setup +
+                          "  for (int k = 0; k < w; ++k) {\n"
+                          "    int i = w - 1 - k;\n" + body +
                           "  }\n"
                           "  return r;\n"
                           "}\n");
