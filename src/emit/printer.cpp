@@ -76,6 +76,8 @@ class Printer {
   std::string expression(const ir::ExprPtr& e) { return expr(e); }
 
  private:
+  std::string target_name() const { return options_.target_name.empty() ? std::string(to_string(options_.target)) : options_.target_name; }
+
   void error(ir::Loc loc, const std::string& msg) {
     diags_.push_back({ir::file_of(loc, file_), loc.line, loc.column, Severity::Error, msg});
   }
@@ -181,7 +183,7 @@ class Printer {
           dynamic = true;
           if (es_)
             error(e->loc, "gl_FragData indexed by a computed value cannot be expressed on " +
-                              std::string(to_string(options_.target)) +
+                              target_name() +
                               " (GLSL ES forbids variable indexing of fragment outputs); index it with constants or "
                               "target glsl330/glsl450");
         }
@@ -283,7 +285,7 @@ class Printer {
     if (!precise_dropped_) {
       precise_dropped_ = true;
       diags_.push_back({ir::file_of(v.loc, file_), v.loc.line, v.loc.column, Severity::Warning,
-                        "'precise' on '" + v.name + "' is dropped: target " + std::string(to_string(options_.target)) +
+                        "'precise' on '" + v.name + "' is dropped: target " + target_name() +
                             " has no 'precise' qualifier (ES 3.20, desktop 4.00+, or ES 3.10 with GL_EXT_gpu_shader5), "
                             "so the driver may reorder or fuse that float arithmetic; target es320 or glsl450 to keep it"});
     }

@@ -14,6 +14,7 @@ namespace doublet::emit {
 
 struct PrintOptions {
   Target target = Target::Es300;
+  std::string target_name;  // the target diagnostics name (the user's: wgsl over es310); empty: target's
   std::vector<std::string> extensions;  // #extension NAME : require
   std::vector<std::string> user_extensions;  // the shader's own: #extension NAME : enable
   std::string runtime_types;            // the runtime's pair types, then:

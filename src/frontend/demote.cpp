@@ -17,9 +17,9 @@ size_t comment_end(std::string_view s, size_t i) {
   return i;
 }
 
-}  // namespace
-
-std::string demote_doubles(std::string_view s) {
+// `s` with every identifier or number outside comments replaced by what `map` appends for it.
+template <typename Map>
+std::string map_words(std::string_view s, Map map) {
   std::string out;
   out.reserve(s.size());
   for (size_t i = 0; i < s.size();) {
@@ -34,7 +34,16 @@ std::string demote_doubles(std::string_view s) {
     }
     size_t j = i;
     while (j < s.size() && ident_char(s[j])) ++j;
-    std::string_view word = s.substr(i, j - i);
+    map(s.substr(i, j - i), out);
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string demote_doubles(std::string_view s) {
+  return map_words(s, [](std::string_view word, std::string& out) {
     if (std::isdigit(static_cast<unsigned char>(word[0]))) {
       // A number: 1.0lf / 2LF -> 1.0 / 2 (exponent parts such as 1e-3 contain no 'l').
       if (word.size() > 2 && (word.ends_with("lf") || word.ends_with("LF"))) word.remove_suffix(2);
@@ -47,9 +56,16 @@ std::string demote_doubles(std::string_view s) {
     } else {
       out.append(word);
     }
-    i = j;
-  }
-  return out;
+  });
+}
+
+std::string blank_precise(std::string_view s) {
+  return map_words(s, [](std::string_view word, std::string& out) {
+    if (word == "precise")
+      out.append(word.size(), ' ');
+    else
+      out.append(word);
+  });
 }
 
 }  // namespace doublet::frontend

@@ -10,4 +10,9 @@ namespace doublet::frontend {
 
 std::string demote_doubles(std::string_view source);
 
+// The text with every `precise` outside comments blanked, columns kept: doublet drops the qualifier
+// (with a warning) on targets without it, so a recompilation of the user's text as such a target
+// must not stop there (pipeline/validation.cpp).
+std::string blank_precise(std::string_view source);
+
 }  // namespace doublet::frontend

@@ -462,8 +462,10 @@ void explain_vulkan_only(std::vector<Diagnostic>& diags, size_t first,
       continue;
     }
     if (!explained.insert({d.file, d.line}).second) continue;  // one explanation per line
-    d.message = std::string(found->advice) + " (target " + std::string(to_string(target)) +
-                " is " + (target_is_es(target) ? "OpenGL ES" : "OpenGL") + " GLSL)";
+    const std::string name(to_string(target));
+    d.message = std::string(found->advice) + " (target " + name +
+                (target == Target::Wgsl ? ": doublet reads OpenGL GLSL for WGSL output too)"
+                                        : std::string(" is ") + (target_is_es(target) ? "OpenGL ES" : "OpenGL") + " GLSL)");
     kept.push_back(std::move(d));
   }
   diags = std::move(kept);

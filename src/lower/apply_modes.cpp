@@ -500,7 +500,7 @@ class ModeApplier {
       out_argument = 1;
       base = e->args[1]->type.base;
       if (base == Base::Float && !has_float_builtin(n)) {
-        ctx_.error(e->loc, "modf has no float version on " + std::string(to_string(ctx_.config.target)) +
+        ctx_.error(e->loc, "modf has no float version on " + ctx_.config.target_name() +
                                ": give its out argument a float-float mode (rte, df64-fast or df64)");
         return e;
       }

@@ -154,7 +154,7 @@ class TypeAvailabilityChecker {
 
   void run() {
     const Target target = ctx_.config.target;
-    const std::string target_name(to_string(target));
+    const std::string target_name = ctx_.config.target_name();
     for (const auto& g : module_.globals) {
       if (g->type.base == ir::Base::Opaque && !target::opaque_type_exists(g->type.name, target)) {
         std::string elsewhere;

@@ -87,14 +87,14 @@ class Flattener {
     if (block.layout.passthrough) {  // a passthrough input must stay a block (or gl_PerVertex)
       ctx_.error(block.loc, "the passthrough input block '" + block.type.name +
                                 "' (GL_NV_geometry_shader_passthrough) cannot be flattened into plain inputs for " +
-                                std::string(to_string(ctx_.config.target)) +
+                                ctx_.config.target_name() +
                                 " (it has no in/out blocks); target es320 or glsl450");
       return false;
     }
     if (!block.type.is_array()) return true;
     ctx_.error(block.loc, "the " + std::string(block.storage == ir::Storage::In ? "input" : "output") + " block '" +
                               block.type.name + "' is an array, which cannot be flattened into plain varyings for " +
-                              std::string(to_string(ctx_.config.target)) +
+                              ctx_.config.target_name() +
                               " (it has no in/out blocks); declare one block per element, or target es320 or glsl330+");
     return false;
   }
@@ -108,7 +108,7 @@ class Flattener {
       v->name = block.type.name + "_" + f.name;
       if (!taken.insert(v->name).second)
         ctx_.error(block.loc, "flattening the block '" + block.type.name + "' for " +
-                                  std::string(to_string(ctx_.config.target)) + " needs the name '" + v->name +
+                                  ctx_.config.target_name() + " needs the name '" + v->name +
                                   "', which the shader already uses; rename it, or target es320 or glsl330+");
       v->type = f.type;
       v->declared_type = f.type;

@@ -701,14 +701,14 @@ class DoubleLowering {
     ExprPtr lhs = e->args[0];
     if (!swizzle_letters(lhs->args[0]).empty()) {  // v.xz[i]: compose_swizzles took the constant indices
       ctx_.error(e->loc, "writing a swizzle of a double vector through a variable index (v.xz[i]) cannot be lowered "
-                         "for " + std::string(to_string(ctx_.config.target)) +
+                         "for " + ctx_.config.target_name() +
                          ": index the vector itself (v[i]) or use a temporary");
       return e;
     }
     if (e->op != "=" && ir::has_side_effects(lhs)) {  // the compound form reads the vector, then writes it
       ctx_.error(e->loc, "compound assignment to a component of a double vector reached through an expression with "
                          "side effects (a call, ++, an assignment) cannot be lowered for " +
-                         std::string(to_string(ctx_.config.target)) +
+                         ctx_.config.target_name() +
                          ": copy the vector to a temporary, update it and store it back");
       return e;
     }
@@ -1018,7 +1018,7 @@ class DoubleLowering {
       return rule("df_unpack_double2x32", 1, ir::scalar_type(ir::Base::Uint, 2), e->args, e->loc);
     if (n.rfind("atomic", 0) == 0) {
       ctx_.error(e->loc, "atomic operations on doubles (" + n + ") cannot be lowered for " +
-                             std::string(to_string(ctx_.config.target)) +
+                             ctx_.config.target_name() +
                              ": a double becomes two floats (hi, lo) that no atomic can update together; accumulate "
                              "per invocation and reduce afterwards, or use an integer fixed-point atomicAdd");
       return e;

@@ -133,8 +133,7 @@ std::optional<Config> resolve_config(const Options& o, std::vector<Diagnostic>& 
 }
 
 Options frontend_options(const Options& options, const Config& config) {
-  Options o = options;
-  o.target = config.target;
+  Options o = options;  // target: the user's, which the front end only names in diagnostics
   if (config.output != config.target) o.allow_gpu_shader5 = false;
   return o;
 }

@@ -48,6 +48,9 @@ struct Config {
   std::vector<std::string> skip_passes;
   bool check_ir = false;
 
+  // The target diagnostics name: the user's (wgsl, not its GLSL ES 3.10 intermediate).
+  std::string target_name() const { return target::facts(output).name; }
+
   bool binary64_words() const { return representation == Representation::Binary64Words; }
   bool native() const { return representation == Representation::Native; }
   // The uniform guard as an array read at a non-constant index (rules::EmitRequest::indexed_guard):
@@ -73,7 +76,7 @@ struct Config {
 // The Config of `options`, or nullopt with the refusal in `diags`.
 std::optional<Config> resolve_config(const Options& options, std::vector<Diagnostic>& diags);
 
-// The Options the front end reads for `config` (the GLSL profile under wgsl).
+// The Options the front end reads for `config` (no `precise` through GL_EXT_gpu_shader5 under wgsl).
 Options frontend_options(const Options& options, const Config& config);
 
 }  // namespace doublet::pipeline

@@ -76,6 +76,7 @@ bool link_runtime_pass(State& s) {
 
 bool print(State& s) {
   s.print_options.target = s.config.target;
+  s.print_options.target_name = s.config.target_name();
   // The stage's, the guard's and the helpers' extensions, in that order, each once.
   auto add_extensions = [&](const auto& list) {
     for (const std::string& e : list)

@@ -25,7 +25,7 @@ struct State {
       : config(c), frontend_options(pipeline::frontend_options(o, c)), source(s), result(r), ctx{c, r.diagnostics, s} {}
 
   const Config& config;
-  const Options frontend_options;  // what the front end reads (the GLSL profile under wgsl)
+  const Options frontend_options;  // what the front end reads (its target the user's: wgsl, not config.target)
   std::string_view source;
   Result& result;
   frontend::ParsedShader parsed;

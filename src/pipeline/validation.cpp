@@ -25,7 +25,8 @@ namespace {
 bool report_builtins_the_target_lacks(const std::string& log,
                                       const std::map<std::string, emit::PrintResult::BuiltinUse>& first_use,
                                       const State& state, std::vector<Diagnostic>& diags) {
-  const Options& options = state.frontend_options;  // the GLSL profile lowered for
+  const Options& options = state.frontend_options;
+  const Target profile = state.config.target;  // the GLSL profile lowered for (es310 under wgsl)
   static const char* const kMissing[] = {"' : undeclared identifier", "' : no matching overloaded function found"};
   std::set<std::string> reported;
   for (size_t start = 0; start < log.size();) {
@@ -40,7 +41,7 @@ bool report_builtins_the_target_lacks(const std::string& log,
       const std::string name(line.substr(open + 1, tail - open - 1));
       auto use = first_use.find(name);
       if (use == first_use.end() || !reported.insert(name).second) continue;
-      const std::string target(to_string(options.target));
+      const std::string target = state.config.target_name();
       const std::string& written = use->second.source_name;
       const char* stage = target::stage_noun(*options.stage);
       const bool variable = name.rfind("gl_", 0) == 0;
@@ -49,7 +50,7 @@ bool report_builtins_the_target_lacks(const std::string& log,
                             " shaders";
       if (!variable) {
         message += "; remove it";
-        if (options.target != Target::Glsl450) message += ", or target glsl450 (desktop GLSL 4.50 has it)";
+        if (profile != Target::Glsl450) message += ", or target glsl450 (desktop GLSL 4.50 has it)";
       } else if (const std::string have = target::targets_with_builtin_variable(written, *options.stage); !have.empty()) {
         message += "; remove it, or target one that has it (" + have + ")";
       } else {
@@ -116,7 +117,8 @@ std::vector<std::pair<int, std::string>> main_string_errors(std::string_view log
 // reporting an internal error. A complaint about anything doublet wrote (its names, its types)
 // does not match, and stays an internal error.
 bool report_what_the_source_lacks(std::string_view source, const std::string& lowered_log, const Options& options,
-                                  std::vector<Diagnostic>& diags) {
+                                  const Config& config, std::vector<Diagnostic>& diags) {
+  const Target profile = config.target;  // the GLSL profile lowered for (es310 under wgsl)
   const auto lowered = main_string_errors(lowered_log);
   if (lowered.empty()) return false;
   // Only the main file is recompiled: a shader with #include keeps the internal error.
@@ -130,7 +132,7 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
     if (name == "version" && version_line == 0) version_line = lines.line();
     if (name == "extension") {
       last_extension_line = lines.line();
-      if (!target::facts(options.target).carries_extensions) extension_lines.insert(lines.line());
+      if (!target::facts(profile).carries_extensions) extension_lines.insert(lines.line());
     }
   }
   if (version_line == 0) return false;
@@ -140,12 +142,12 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
   const int prelude_after = std::max(version_line, last_extension_line);
   std::string prelude;
   // The stage's own extension (es310 geometry and tessellation), as the lowering declares it.
-  if (const char* extension = target::stage_extension(target::facts(options.target), *options.stage))
+  if (const char* extension = target::stage_extension(target::facts(profile), *options.stage))
     prelude += std::string("#extension ") + extension + " : require\n";
   for (const auto& [name, value] : options.defines) prelude += "#define " + name + " " + frontend::demote_doubles(value) + "\n";
-  if (target_is_es(options.target)) {
+  if (target_is_es(profile)) {
     prelude += "precision highp float;\nprecision highp int;\n";  // desktop shaders declare none
-    if (target_version(options.target) >= 300)
+    if (target_version(profile) >= 300)
       for (const char* t : {"sampler3D", "samplerCubeShadow", "sampler2DShadow", "sampler2DArray", "sampler2DArrayShadow",
                             "isampler2D", "isampler3D", "isamplerCube", "isampler2DArray", "usampler2D", "usampler3D",
                             "usamplerCube", "usampler2DArray"})
@@ -154,18 +156,19 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
   prelude += "#line " + std::to_string(prelude_after + 1) + "\n";
   const frontend::LineIndex index(source);
   // The user's text with doubles read as floats, line for line (ES stops at the reserved word
-  // `double`; `1.5lf` becomes `1.5`): frontend::demote_doubles, as verify's drop-lo uses it.
-  const std::string demoted = frontend::demote_doubles(source);
+  // `double`; `1.5lf` becomes `1.5`): frontend::demote_doubles, as verify's drop-lo uses it; its
+  // `precise` blanked, which doublet drops with a warning where the target lacks it.
+  const std::string demoted = frontend::blank_precise(frontend::demote_doubles(source));
   const frontend::LineIndex demoted_index(demoted);
   std::string text;
   for (int n = 1; n <= index.line_count(); ++n) {
     if (n == version_line)
-      text += target::version_directive(options.target) + "\n";
+      text += target::version_directive(profile) + "\n";
     else
       text += extension_lines.count(n) ? "\n" : std::string(demoted_index.line(n)) + "\n";
     if (n == prelude_after) text += prelude;
   }
-  auto original = main_string_errors(target::validate(text, *options.stage, options.target));
+  auto original = main_string_errors(target::validate(text, *options.stage, profile));
   // What doublet lowers is not the user's to change: a uniform's initializer goes to the manifest
   // on targets without them (uniform-defaults).
   std::erase_if(original, [](const auto& e) { return e.second.find("cannot initialize this type of qualifier") != std::string::npos; });
@@ -183,7 +186,9 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
     for (const auto& e : lowered) m.insert(e.second);
     return m;
   }();
-  const std::string target(to_string(options.target));
+  const std::string target = config.target_name();
+  const std::string compiled_as = config.output == profile ? target
+                                                           : std::string(to_string(profile)) + ", the GLSL " + target + " is lowered through";
   std::set<std::pair<int, std::string>> reported;
   for (const auto& [line, message] : original) {
     if ((same_complaint && !lowered_messages.count(message)) || !reported.insert({line, message}).second) continue;
@@ -192,7 +197,7 @@ bool report_what_the_source_lacks(std::string_view source, const std::string& lo
     if (message.size() > 1 && message[0] == '\'') token = message.substr(1, message.find('\'', 1) - 1);
     const int column = frontend::column_in_row(index.line(line), token);
     diags.push_back({options.file_name, line, column, Severity::Error,
-                     "target " + target + " does not allow this (glslang, compiling the shader itself as " + target +
+                     "target " + target + " does not allow this (glslang, compiling the shader itself as " + compiled_as +
                          ": " + message + "); change it, or choose a target that allows it"});
   }
   return true;
@@ -210,7 +215,7 @@ bool validate_output(State& state) {
   const Config& config = state.config;
   std::string log = target::validate(text, config.stage, config.target);
   if (!log.empty() && report_builtins_the_target_lacks(log, state.printed.builtin_first_use, state, diags)) return false;
-  if (!log.empty() && report_what_the_source_lacks(state.source, log, state.frontend_options, diags)) return false;
+  if (!log.empty() && report_what_the_source_lacks(state.source, log, state.frontend_options, config, diags)) return false;
   if (!log.empty()) {
     // Quote the emitted lines glslang names, so the report is actionable.
     const frontend::LineIndex lines(text);

@@ -15,6 +15,12 @@ TEST(Sabotage, DemotesTypesAndLiteralSuffixesButNotComments) {
             "mat4 m; mat2x3 n; int doubled; float f = 1e-3; float s = 1e3; dvecx d;");
 }
 
+// frontend::blank_precise: the recompilation of the user's text as the target (pipeline/validation.cpp).
+TEST(Sabotage, BlanksPreciseKeepingColumnsButNotCommentsOrLongerNames) {
+  EXPECT_EQ(frontend::blank_precise("precise float x; // precise\nfloat imprecise = 1.0; precise_x = 2;"),
+            "        float x; // precise\nfloat imprecise = 1.0; precise_x = 2;");
+}
+
 TEST(Sabotage, NamesRoundTrip) {
   for (Sabotage s : {Sabotage::None, Sabotage::DropLo, Sabotage::DropGuard, Sabotage::TiesAway})
     EXPECT_EQ(parse_sabotage(to_string(s)), s);
