@@ -463,7 +463,11 @@ void explain_vulkan_only(std::vector<Diagnostic>& diags, size_t first,
     }
     if (!explained.insert({d.file, d.line}).second) continue;  // one explanation per line
     const std::string name(to_string(target));
-    d.message = std::string(found->advice) + " (target " + name +
+    std::string advice = found->advice;
+    if (target == Target::Wgsl && std::string_view(found->word) == "set")
+      advice = "descriptor sets (layout(set = N)) are Vulkan GLSL; remove 'set = N' and keep 'binding = M' (WGSL output "
+               "puts every resource in @group(0), at its binding)";
+    d.message = advice + " (target " + name +
                 (target == Target::Wgsl ? ": doublet reads OpenGL GLSL for WGSL output too)"
                                         : std::string(" is ") + (target_is_es(target) ? "OpenGL ES" : "OpenGL") + " GLSL)");
     kept.push_back(std::move(d));
@@ -553,6 +557,10 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
   std::string preamble = "#extension GL_GOOGLE_include_directive : enable\n";
   for (const auto& [name, value] : options.defines)
     preamble += "#define " + name + " " + (value.empty() ? "1" : value) + "\n";
+  // WGSL has Vulkan's vertex and instance indices (vertex_index, instance_index: counted from the
+  // draw's first vertex and first instance), which the WGSL printer gives both spellings.
+  if (options.target == Target::Wgsl)
+    preamble += "#define gl_VertexIndex gl_VertexID\n#define gl_InstanceIndex gl_InstanceID\n";
   if (needs_preprocessing) {
     if (auto error = check_expanded_operators(text, preamble, options, includer)) {
       diagnostics.push_back(*error);
