@@ -42,7 +42,12 @@ struct OutputStats {
   // keep kBeyondFloatBits more, unless float alone keeps kFloatIsEnoughBits (nothing to tell apart).
   double float_median_bits = -1;
   static constexpr double kBeyondFloatBits = 8, kFloatIsEnoughBits = 40;
-  double median_bits() const { return median_rel_err > 0 ? std::fmin(kMaxBits, -std::log2(median_rel_err)) : kMaxBits; }
+  // In [0, kMaxBits]: a relative error of 1 or more (an Inf or a NaN where native is finite) keeps
+  // no bits. (Unclamped, a float median of -inf bits read as "not judged" above, and an output that
+  // was Inf in every sample in both float and float-float passed.)
+  double median_bits() const {
+    return median_rel_err > 0 ? std::fmax(0.0, std::fmin(kMaxBits, -std::log2(median_rel_err))) : kMaxBits;
+  }
   bool beyond_float_passed() const {
     return float_median_bits < 0 || float_median_bits >= kFloatIsEnoughBits ||
            median_bits() >= float_median_bits + kBeyondFloatBits;

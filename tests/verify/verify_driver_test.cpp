@@ -110,6 +110,36 @@ TEST_P(VerifyShader, WithoutAThresholdACollapseToFloatFails) {
   }
 }
 
+// An output Inf in every sample where native fp64 is finite (a product beyond float's range, in
+// float-float and in float alone) keeps 0 bits: without a threshold it fails. Its float median
+// was -inf bits, which read as "not judged", and verify printed PASS.
+TEST(VerifyWithoutAThreshold, AnOutputBeyondFloatsRangeFails) {
+  VerifyOptions o;
+  o.lower.stage = Stage::Compute;
+  o.lower.target = Target::Es310;
+  o.lower.file_name = "beyond_range.comp";
+  o.samples = 64;
+  o.judge_against_float = true;
+  o.spec.inputs["x"].lo = 1e30;
+  o.spec.inputs["x"].hi = 1e31;
+  const VerifyReport r = verify(R"(#version 450
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) readonly buffer In0 { double x[]; };
+layout(std430, binding = 1) writeonly buffer Out0 { double r[]; };
+void main() { uint i = gl_GlobalInvocationID.x; r[i] = x[i] * x[i]; }
+)", o);
+  ASSERT_EQ(r.input_error, "") << format_table(r);
+  ASSERT_EQ(r.runs.size(), 2u) << format_table(r);
+  for (const BackendRun& run : r.runs)
+    for (const OutputStats& out : run.outputs) {
+      EXPECT_EQ(run.error, "") << format_table(r);
+      EXPECT_EQ(out.class_mismatches, 64u) << format_table(r);
+      EXPECT_EQ(out.median_bits(), 0.0) << format_table(r);
+      EXPECT_EQ(out.float_median_bits, 0.0) << format_table(r);
+    }
+  EXPECT_FALSE(r.passed()) << format_table(r);
+}
+
 // The foundation's golden compute shaders have float outputs: native and lowered must agree on
 // every float (their ~48-bit intermediates round to the same float here).
 TEST(VerifyGolden, FoundationComputeShadersAgree) {
