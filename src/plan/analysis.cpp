@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
+#include <optional>
+#include <set>
 
 #include "ir/walk.hpp"
 #include "plan/analysis_internal.hpp"
@@ -85,8 +88,26 @@ bool Analysis::run(const ir::Module& module, const Scene& scene, std::vector<Dia
   bool ok = true;
   std::map<const Var*, Box> env;
   Relations relations;
+  // STRUCT.MEMBER inputs (`sats.pos`, as verify names a buffer's struct members): a struct has one
+  // hull here, the join of every member's range, so every member needs one.
+  std::map<const Var*, std::pair<std::optional<Interval>, std::set<std::string>>> member_hulls;
   for (const auto& [name, range] : scene.inputs) {
     auto it = inputs_.find(name);
+    const size_t dot = name.find('.');
+    const auto whole = dot == std::string::npos || it != inputs_.end() ? inputs_.end() : inputs_.find(name.substr(0, dot));
+    if (whole != inputs_.end() && whole->second->type.element().base == ir::Base::Struct && whole->second->type.fields) {
+      const std::string member = name.substr(dot + 1);
+      const auto& fields = *whole->second->type.fields;
+      if (std::none_of(fields.begin(), fields.end(), [&](const ir::Field& f) { return f.name == member; })) {
+        diagnostics->push_back(scene_diagnostic(scene, range.path, "the struct '" + whole->first + "' has no member '" + member + "'"));
+        ok = false;
+        continue;
+      }
+      auto& [hull, named] = member_hulls[whole->second];
+      for (const Interval& c : range.components) hull = hull ? join(*hull, c) : c;
+      named.insert(member);
+      continue;
+    }
     if (it == inputs_.end()) {
       diagnostics->push_back(scene_diagnostic(scene, range.path, "the shader has no input (in, uniform or buffer) named '" + name + "'"));
       ok = false;
@@ -106,6 +127,26 @@ bool Analysis::run(const ir::Module& module, const Scene& scene, std::vector<Dia
     for (size_t i = 0; i < n; ++i) b.push_back(range.component(i));
     env[it->second] = b;
     var_range_[it->second] = b;
+  }
+  for (const auto& [v, hull_and_named] : member_hulls) {
+    if (env.count(v)) {
+      diagnostics->push_back({scene.file, 0, 0, Severity::Error,
+                              "the struct input '" + v->name + "' has a range of its own and ranges per member: give one or the other"});
+      ok = false;
+      continue;
+    }
+    std::string missing;
+    for (const ir::Field& f : *v->type.fields)
+      if (!hull_and_named.second.count(f.name)) missing += (missing.empty() ? "" : ", ") + v->name + "." + f.name;
+    if (!missing.empty()) {
+      diagnostics->push_back({scene.file, 0, 0, Severity::Error,
+                              "the struct input '" + v->name + "' is ranged member by member, without " + missing +
+                                  ": give every member a range, or one range for '" + v->name + "'"});
+      ok = false;
+      continue;
+    }
+    env[v] = Box{*hull_and_named.first};
+    var_range_[v] = env[v];
   }
   for (const auto& [name, req] : scene.outputs)
     if (!outputs_.count(name)) {

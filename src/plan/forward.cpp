@@ -329,6 +329,9 @@ struct Forward {
       }
       case Expr::Kind::Member: {
         eval_args(0);
+        // A struct's member: the struct's one hull holds every member's values.
+        if (!is_swizzle(e) && e.args[0]->type.base == ir::Base::Struct && !e.args[0]->type.is_array() && !args[0].empty())
+          return record(&e, Box(static_cast<size_t>(components(e.type)), Analysis::hull(args[0])), args);
         if (!is_swizzle(e)) return record(&e, top(e.type), args);
         Box r;
         for (char c : e.name) {

@@ -213,6 +213,7 @@ std::string ComputeHarness::plan(const std::string& native_glsl, const std::stri
   for (const auto& [name, in] : spec.inputs) {
     auto it = std::find_if(inputs_.begin(), inputs_.end(), [&name = name](const Variable& v) { return v.name == name; });
     if (it == inputs_.end() && in.from_initializer) continue;
+    if (it == inputs_.end() && apply_to_parts(inputs_, name, in)) continue;  // a struct's members: each
     if (it == inputs_.end()) {
       std::string known;
       for (const auto& v : inputs_) known += " " + v.name;

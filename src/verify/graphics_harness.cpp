@@ -198,15 +198,7 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
     auto it = std::find_if(inputs_.begin(), inputs_.end(), [&name = name](const Variable& v) { return v.name == name; });
     if (it == inputs_.end() && in.from_initializer) continue;
     // A per-vertex input array of a geometry or tessellation shader by its own name: every element.
-    const std::string element_prefix = name + "[";
-    bool elements = false;
-    if (it == inputs_.end())
-      for (Variable& v : inputs_)
-        if (v.name.compare(0, element_prefix.size(), element_prefix) == 0) {
-          v.input = in;
-          elements = true;
-        }
-    if (elements) continue;
+    if (it == inputs_.end() && apply_to_parts(inputs_, name, in)) continue;
     if (it == inputs_.end()) {
       std::string known;
       for (const auto& v : inputs_) known += " " + v.name;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "verify/spec.hpp"
 
@@ -31,6 +32,21 @@ class InputGenerator {
   bool binary64_ = false;
   uint64_t beyond_float_range_ = 0;
 };
+
+// An input named as a whole, `name`, when the harness lists it by parts: every input named
+// `name[...` (the elements of a per-vertex input array) or `name.MEMBER` (the members of a struct
+// in a buffer; `doublet plan` gives a struct one range) takes `in`. False when none is named so.
+template <typename Variable>
+bool apply_to_parts(std::vector<Variable>& inputs, const std::string& name, const InputSpec& in) {
+  bool any = false;
+  for (Variable& v : inputs)
+    if (v.name.size() > name.size() && v.name.compare(0, name.size(), name) == 0 &&
+        (v.name[name.size()] == '[' || v.name[name.size()] == '.')) {
+      v.input = in;
+      any = true;
+    }
+  return any;
+}
 
 // The note verify prints (and writes in the JSON report's "notes") when `count` input values
 // were beyond float range; empty when there were none.

@@ -276,4 +276,32 @@ void main() { uint i = gl_GlobalInvocationID.x; double x = body[i].x; double y =
   for (const std::string& n : p.notes) EXPECT_EQ(n.find("'r' has no range"), std::string::npos) << n;
 }
 
+// A buffer of structs ranged member by member, as verify names the members (`sats.pos`): the
+// struct's one hull is the join of the members' ranges ([1, 2] and [-5, 3] -> [-5, 3]); a member
+// left out, or one the struct lacks, is an error naming it.
+TEST(PlanAnalysis, StructMembersRangedOneByOneJoinIntoTheStructsHull) {
+  const std::string shader = R"(#version 450
+layout(local_size_x = 64) in;
+struct Sat { dvec2 pos; double t0; };
+layout(std430, binding = 0) readonly buffer In { Sat sats[]; };
+layout(std430, binding = 1) writeonly buffer Out { double r[]; };
+void main() { uint i = gl_GlobalInvocationID.x; double x = sats[i].pos.x; r[i] = x + sats[i].t0; }
+)";
+  const PlanOutcome p = run(shader, R"({"inputs": {"sats.pos": {"min": 1, "max": 2}, "sats.t0": {"min": -5, "max": 3}},
+      "outputs": {"r": {"abs_error": 1e-3}}})", Stage::Compute);
+  ASSERT_TRUE(p.ok);
+  EXPECT_EQ(row(p, "main.x").range.lo, -5);
+  EXPECT_EQ(row(p, "main.x").range.hi, 3);
+  const PlanOutcome missing = run(shader, R"({"inputs": {"sats.pos": {"min": 1, "max": 2}}, "outputs": {"r": {"abs_error": 1e-3}}})",
+                                  Stage::Compute);
+  EXPECT_FALSE(missing.ok);
+  ASSERT_FALSE(missing.diagnostics.empty());
+  EXPECT_NE(missing.diagnostics[0].message.find("without sats.t0"), std::string::npos) << missing.diagnostics[0].message;
+  const PlanOutcome unknown = run(shader, R"({"inputs": {"sats": {"min": 1, "max": 2}, "sats.vel": {"min": 1, "max": 2}},
+      "outputs": {"r": {"abs_error": 1e-3}}})", Stage::Compute);
+  EXPECT_FALSE(unknown.ok);
+  ASSERT_FALSE(unknown.diagnostics.empty());
+  EXPECT_NE(unknown.diagnostics[0].message.find("has no member 'vel'"), std::string::npos) << unknown.diagnostics[0].message;
+}
+
 }  // namespace

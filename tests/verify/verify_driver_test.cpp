@@ -140,6 +140,35 @@ void main() { uint i = gl_GlobalInvocationID.x; r[i] = x[i] * x[i]; }
   EXPECT_FALSE(r.passed()) << format_table(r);
 }
 
+// A buffer of structs ranged as a whole (as `doublet plan` gives a struct one range): every member
+// takes the range (verify lists them as sats.a, sats.b); before, "no input named 'sats'".
+TEST(VerifyInputs, AStructRangedAsAWholeRangesEachMember) {
+  VerifyOptions o;
+  o.lower.stage = Stage::Compute;
+  o.lower.target = Target::Es310;
+  o.lower.file_name = "struct_buffer.comp";
+  o.samples = 64;
+  o.spec.inputs["sats"].lo = 1;
+  o.spec.inputs["sats"].hi = 2;
+  o.min_bits = 44;
+  const VerifyReport r = verify(R"(#version 450
+layout(local_size_x = 1) in;
+struct Sat { dvec2 a; double b; };
+layout(std430, binding = 0) readonly buffer In0 { Sat sats[]; };
+layout(std430, binding = 1) writeonly buffer Out0 { double r[]; };
+void main() { uint i = gl_GlobalInvocationID.x; r[i] = sats[i].a.x * sats[i].a.y + sats[i].b; }
+)", o);
+  expect_ran_on_both_backends(r);
+  EXPECT_TRUE(r.passed()) << format_table(r);
+  // Each member in [1, 2]: r = a.x * a.y + b in [2, 6] in every sample, so no sample was left at 0.
+  for (const BackendRun& run : r.runs)
+    for (const OutputStats& out : run.outputs)
+      for (double want : out.want_values) {
+        EXPECT_GE(want, 2.0);
+        EXPECT_LE(want, 6.0);
+      }
+}
+
 // The foundation's golden compute shaders have float outputs: native and lowered must agree on
 // every float (their ~48-bit intermediates round to the same float here).
 TEST(VerifyGolden, FoundationComputeShadersAgree) {
