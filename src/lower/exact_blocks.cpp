@@ -658,6 +658,9 @@ class BlockWords {
         } else if (fp.kind == FieldPlan::Words) {
           element_loads.push_back(df_accessor(element, Access::Load) + "(" + word + ")");
           stores.push_back(word + " = " + df_accessor(element, Access::Words) + "(" + value + ");");
+        } else if (fp.kind == FieldPlan::Matrix) {  // ex_dmatCxR_words, column by column
+          element_loads.push_back(matrix_accessor(element, Access::Load) + "(" + word + ")");
+          stores.push_back(word + " = " + matrix_accessor(element, Access::Words) + "(" + value + ");");
         } else {  // a nested twin
           ir::Type we = fp.word;
           we.array_dims.clear();

@@ -243,18 +243,26 @@ class DoubleLowering {
                                   "uniform: pass its columns as dvecN members and build the matrix in the shader");
         return true;
       }
-      for (const auto& f : *g.type.fields) {
-        if (!holds_double_matrix(f.type)) continue;
-        if (f.type.base != ir::Base::Double)
-          return refuse(f.name, "inside a struct member of a block is not supported by --mode exact yet: make the "
-                                "matrix a member of the block itself");
-        if (f.layout.matrix == "row_major" || (f.layout.matrix.empty() && g.layout.matrix == "row_major"))
-          return refuse(f.name, "with layout(row_major) is not supported by --mode exact: declare it column_major "
-                                "(the default) and transpose the host's data");
-        if (f.type.array_dims.size() > 1)
-          return refuse(f.name, "in a multi-dimensional array is not supported by --mode exact");
-      }
-      return true;
+      // Members and the members of struct members (exact_blocks.cpp: a struct's twin holds its
+      // matrices' column words as a block does).
+      std::function<bool(const std::vector<ir::Field>&)> check = [&](const std::vector<ir::Field>& fields) {
+        for (const auto& f : fields) {
+          if (!holds_double_matrix(f.type)) continue;
+          if (f.type.base == ir::Base::Struct && f.type.fields) {
+            if (f.type.array_dims.size() > 1)
+              return refuse(f.name, "in a multi-dimensional array of structs is not supported by --mode exact");
+            if (!check(*f.type.fields)) return false;
+            continue;
+          }
+          if (f.layout.matrix == "row_major" || (f.layout.matrix.empty() && g.layout.matrix == "row_major"))
+            return refuse(f.name, "with layout(row_major) is not supported by --mode exact: declare it column_major "
+                                  "(the default) and transpose the host's data");
+          if (f.type.array_dims.size() > 1)
+            return refuse(f.name, "in a multi-dimensional array is not supported by --mode exact");
+        }
+        return true;
+      };
+      return check(*g.type.fields);
     }
     if (g.storage == ir::Storage::Uniform && g.type.base == ir::Base::Double) {
       if (g.type.array_dims.size() > 1 || (g.type.is_array() && g.type.array_dims[0] <= 0))

@@ -287,6 +287,84 @@ TEST(ExactMatrixInterface, SabotagedWordsOrColumnsDiffer) {
   EXPECT_GT(shifted_differ, 0u);
 }
 
+// Matrices inside structs in blocks: a std140 array of structs holding a dmat3, a struct holding a
+// struct and a dmat2x3, and a std430 array of such structs written whole. Read and written in
+// place (the struct's twin holds each matrix's column words as a block member's), same bytes as
+// native fp64 on both drivers; a column read one off in the struct's load must differ.
+const char* kStructShader = R"(#version 450
+layout(local_size_x = 64) in;
+struct Frame { dmat3 rot; dvec3 origin; double scale[2]; };
+struct Node { Frame frame; dmat2x3 skew; };
+layout(std140, binding = 0) readonly buffer Scene { vec4 pad; Frame frames[4]; Node node; };
+layout(std430, binding = 1) readonly buffer In { dvec4 v[]; };
+layout(std430, binding = 2) writeonly buffer Out { dvec4 o[]; };
+layout(std430, binding = 3) writeonly buffer Written { Frame written[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  dvec4 x = v[i];
+  Frame f = frames[i & 3u];
+  o[4u * i] = dvec4(f.rot * x.xyz + f.origin, f.scale[i & 1u]);
+  o[4u * i + 1u] = dvec4(frames[(i + 1u) & 3u].rot[i % 3u], node.frame.scale[0]);
+  o[4u * i + 2u] = dvec4(node.skew * x.zw, node.frame.rot[2][1]);
+  o[4u * i + 3u] = dvec4(node.frame.rot * f.origin, double(pad.y));
+  written[i] = Frame(f.rot * dmat3(x.w), x.xyz, double[2](x.x, f.scale[1]));
+}
+)";
+
+// Doubles near 1 (exponents 2^-10 .. 2^11, random signs and significands): no NaN, no overflow.
+std::vector<uint8_t> near_one_doubles(size_t count, std::mt19937_64& rng) {
+  std::vector<uint8_t> bytes(count * 8);
+  for (size_t k = 0; k < count; ++k) {
+    const uint64_t x = (rng() & 0x800FFFFFFFFFFFFFull) | (uint64_t(1013 + rng() % 22) << 52);
+    std::memcpy(bytes.data() + 8 * k, &x, 8);
+  }
+  return bytes;
+}
+
+std::vector<std::vector<uint8_t>> run_struct_shader(Backend backend, const std::string& glsl,
+                                                    const std::vector<std::vector<uint8_t>>& buffers) {
+  ComputeJob job;
+  job.glsl = glsl;
+  job.buffers = buffers;
+  job.groups_x = kInvocations / 64;
+  ComputeResult result = run_compute(backend, job);
+  EXPECT_TRUE(result.ok) << backend_name(backend) << ": " << result.error;
+  return result.ok ? result.buffers : std::vector<std::vector<uint8_t>>{};
+}
+
+TEST(ExactMatrixInterface, MatricesInStructsInBlocksKeepNativesBytes) {
+  REQUIRE_BACKEND(Backend::Vulkan);
+  REQUIRE_BACKEND(Backend::Gles);
+  Options o;
+  o.stage = Stage::Compute;
+  o.target = Target::Es310;
+  o.mode = Mode::Exact;
+  const Result lowered = lower(kStructShader, o);
+  ASSERT_TRUE(lowered.ok) << diagnostics(lowered);
+  std::mt19937_64 rng(2028);
+  std::vector<std::vector<uint8_t>> buffers = {near_one_doubles(256, rng), near_one_doubles(4 * kInvocations, rng),
+                                               std::vector<uint8_t>(size_t(kInvocations) * 4 * 32, 0),
+                                               std::vector<uint8_t>(size_t(kInvocations) * 160, 0)};
+  const float pad[4] = {0.0f, 1.25f, 0.0f, 0.0f};  // pad.y: a float, not the low half of a double
+  std::memcpy(buffers[0].data(), pad, sizeof pad);
+  const auto native = run_struct_shader(Backend::Vulkan, kStructShader, buffers);
+  ASSERT_EQ(native.size(), 4u);
+  EXPECT_NE(differing_bytes(native, buffers), 0u) << "the shader wrote nothing";
+  for (Backend backend : {Backend::Vulkan, Backend::Gles}) {
+    const size_t differing = differing_bytes(run_struct_shader(backend, lowered.output, buffers), native);
+    std::cout << "[ exact ] matrices in structs in blocks on " << backend_name(backend) << ": " << differing
+              << " output bytes differ from native fp64\n";
+    EXPECT_EQ(differing, 0u) << backend_name(backend);
+  }
+  const std::string column = "df_dvec3 c1 = ex_load_dvec3(w.c[1]);";
+  ASSERT_NE(lowered.output.find(column), std::string::npos) << lowered.output;
+  std::string shifted = lowered.output;
+  shifted.replace(shifted.find(column), column.size(), "df_dvec3 c1 = ex_load_dvec3(w.c[2]);");
+  const size_t shifted_differ = differing_bytes(run_struct_shader(Backend::Vulkan, shifted, buffers), native);
+  std::cout << "[ exact ] a struct's matrix column read one off: " << shifted_differ << " bytes differ\n";
+  EXPECT_GT(shifted_differ, 0u);
+}
+
 TEST(ExactMatrixInterface, InOutAndRowMajorMatricesAreDiagnosed) {
   Options o;
   o.mode = Mode::Exact;
@@ -300,6 +378,11 @@ TEST(ExactMatrixInterface, InOutAndRowMajorMatricesAreDiagnosed) {
                            "void main() { gl_Position = vec4(m[0], 1.0); }\n", o);
   ASSERT_FALSE(row.ok);
   EXPECT_NE(diagnostics(row).find("row_major"), std::string::npos) << diagnostics(row);
+  // A struct's matrix in a row_major block: the same refusal, at the block.
+  const Result nested = lower("#version 450\nstruct S { dmat3 m; };\nlayout(std140, row_major) uniform U { S s; };\n"
+                              "void main() { gl_Position = vec4(s.m[0], 1.0); }\n", o);
+  ASSERT_FALSE(nested.ok);
+  EXPECT_NE(diagnostics(nested).find("row_major"), std::string::npos) << diagnostics(nested);
 }
 
 }  // namespace
