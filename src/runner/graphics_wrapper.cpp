@@ -399,11 +399,13 @@ std::string wrap_graphics(GraphicsStage stage, const std::string& glsl, WrappedP
   std::string w = "#undef main\n";
   if (out->es) w += "precision highp float;\nprecision highp int;\n";
   if (stage == GraphicsStage::Vertex) w += kVertexIndexMacro;
+  w += "#ifdef VULKAN\n#define doublet_wrapper_set set = " + std::to_string(kWrapperSet) +
+       ",\n#else\n#define doublet_wrapper_set\n#endif\n";
   if (!out->iface.inputs.empty())
-    w += struct_decl("doublet_In", out->iface.inputs) + "layout(std430, binding = " + std::to_string(kInputBinding) +
-         ") readonly buffer doublet_Inputs { doublet_In doublet_in[]; };\n";
-  w += struct_decl("doublet_Out", out->iface.outputs) + "layout(std430, binding = " + std::to_string(kOutputBinding) +
-       ") writeonly buffer doublet_Outputs { doublet_Out doublet_out[]; };\n";
+    w += struct_decl("doublet_In", out->iface.inputs) + "layout(std430, doublet_wrapper_set binding = " +
+         std::to_string(kInputBinding) + ") readonly buffer doublet_Inputs { doublet_In doublet_in[]; };\n";
+  w += struct_decl("doublet_Out", out->iface.outputs) + "layout(std430, doublet_wrapper_set binding = " +
+       std::to_string(kOutputBinding) + ") writeonly buffer doublet_Outputs { doublet_Out doublet_out[]; };\n";
   std::string stores;  // the outputs into their record
   for (size_t i = 0; i < out->iface.outputs.size(); ++i) {
     const std::string& name = out->iface.outputs[i].name;

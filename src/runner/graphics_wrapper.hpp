@@ -17,8 +17,11 @@ namespace doublet::runner::detail {
 
 inline constexpr uint32_t kGridWidth = 64;      // pixels per row of a fragment job
 inline constexpr uint32_t kGridHeight = 1024;   // rows: at most 65536 samples per draw
-inline constexpr uint32_t kInputBinding = 0;    // storage buffer bindings of the wrapper (set 0)
+inline constexpr uint32_t kInputBinding = 0;    // storage buffer bindings of the wrapper
 inline constexpr uint32_t kOutputBinding = 1;
+// Under Vulkan the wrapper's buffers have a descriptor set of their own, so that the user's uniform
+// blocks keep their bindings (0 and 1 included) in set 0; GL's storage buffers have bindings apart.
+inline constexpr uint32_t kWrapperSet = 2;
 
 struct WrappedProgram {
   std::string vertex, fragment;  // full texts of both stages

@@ -15,7 +15,7 @@ namespace {
 constexpr VkShaderStageFlags kStages = VK_SHADER_STAGE_ALL_GRAPHICS;
 
 struct GraphicsPipeline {
-  VkDescriptorSetLayout layouts[2] = {};
+  VkDescriptorSetLayout layouts[3] = {};  // set 0: the shader's blocks and samplers; 1: loose uniforms; 2: the wrapper's
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass render_pass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
@@ -35,36 +35,34 @@ std::string make_module(VulkanDevice& d, JobObjects& objs, const std::vector<uin
   return {};
 }
 
-// Set 0: the wrapper's input and output buffers, the shader's named uniform blocks and samplers (at
-// glslang's automatic bindings); set kUniformSet: the global block of loose uniforms.
+// Set 0: the shader's named uniform blocks and samplers (at their bindings, or glslang's automatic
+// ones); set kUniformSet: the global block of loose uniforms; set kWrapperSet: the wrapper's input
+// and output buffers.
 std::string make_layouts(VulkanDevice& d, const SpirvProgram& program, JobObjects& objs, GraphicsPipeline* p) {
-  static_assert(kUniformSet == 1 && kUniformBinding == 0, "layout below assumes set 1, binding 0");
-  std::vector<VkDescriptorSetLayoutBinding> set0 = {
-      {kInputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr},
-      {kOutputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr}};
+  static_assert(kUniformSet == 1 && kUniformBinding == 0 && kWrapperSet == 2, "layout below assumes sets 1 and 2");
+  std::vector<VkDescriptorSetLayoutBinding> set0;
   for (const auto* list : {&program.uniform_blocks, &program.samplers})
     for (const SpirvProgram::Resource& r : *list) {
       const bool sampler = list == &program.samplers;
-      for (const VkDescriptorSetLayoutBinding& b : set0)
-        if (r.set != 0 || b.binding == r.binding)
-          return "uniform '" + r.name + "' is at set " + std::to_string(r.set) + ", binding " +
-                 std::to_string(r.binding) + ", which the runner cannot use (set 0, not bindings " +
-                 std::to_string(kInputBinding) + "/" + std::to_string(kOutputBinding) + "): drop its layout(set/binding)";
+      if (r.set != 0)  // (OpenGL GLSL has no sets: a resource is always in set 0)
+        return "uniform '" + r.name + "' is at set " + std::to_string(r.set) + ", which the runner cannot use (set 0)";
       set0.push_back({r.binding, sampler ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                       1, kStages, nullptr});
     }
   const VkDescriptorSetLayoutBinding ubo{kUniformBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kStages, nullptr};
-  for (int s = 0; s < 2; ++s) {
+  const VkDescriptorSetLayoutBinding wrapper[2] = {{kInputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr},
+                                                   {kOutputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kStages, nullptr}};
+  for (int s = 0; s < 3; ++s) {
     VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    lci.bindingCount = s == 0 ? static_cast<uint32_t>(set0.size()) : 1;
-    lci.pBindings = s == 0 ? set0.data() : &ubo;
+    lci.bindingCount = s == 0 ? static_cast<uint32_t>(set0.size()) : s == 1 ? 1 : 2;
+    lci.pBindings = s == 0 ? set0.data() : s == 1 ? &ubo : wrapper;
     if (VkResult r = vkCreateDescriptorSetLayout(d.device, &lci, nullptr, &p->layouts[s]); r != VK_SUCCESS)
       return vk_failed("vkCreateDescriptorSetLayout", r);
     VkDescriptorSetLayout l = p->layouts[s];
     objs.cleanup.push_back([&d, l] { vkDestroyDescriptorSetLayout(d.device, l, nullptr); });
   }
   VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  plci.setLayoutCount = 2;
+  plci.setLayoutCount = 3;
   plci.pSetLayouts = p->layouts;
   if (VkResult r = vkCreatePipelineLayout(d.device, &plci, nullptr, &p->layout); r != VK_SUCCESS)
     return vk_failed("vkCreatePipelineLayout", r);
@@ -203,7 +201,7 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
                                              {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1 + block_count}};
   if (sampler_count) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sampler_count});
   VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  dpci.maxSets = 2;
+  dpci.maxSets = 3;
   dpci.poolSizeCount = static_cast<uint32_t>(sizes.size());
   dpci.pPoolSizes = sizes.data();
   VkDescriptorPool pool;
@@ -212,9 +210,9 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
   objs.cleanup.push_back([&d, pool] { vkDestroyDescriptorPool(d.device, pool, nullptr); });
   VkDescriptorSetAllocateInfo dsai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   dsai.descriptorPool = pool;
-  dsai.descriptorSetCount = 2;
+  dsai.descriptorSetCount = 3;
   dsai.pSetLayouts = p.layouts;
-  VkDescriptorSet sets[2];
+  VkDescriptorSet sets[3];
   if (VkResult r = vkAllocateDescriptorSets(d.device, &dsai, sets); r != VK_SUCCESS)
     return vk_failed("vkAllocateDescriptorSets", r);
   // Buffers: input, output, global uniforms, then the named blocks; then the samplers.
@@ -236,8 +234,8 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
     w.descriptorType = type;
     writes.push_back(w);
   };
-  write(sets[0], kInputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-  write(sets[0], kOutputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  write(sets[kWrapperSet], kInputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  write(sets[kWrapperSet], kOutputBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
   write(sets[1], kUniformBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
   for (const SpirvProgram::Resource& r : program.uniform_blocks)
     write(sets[0], r.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
@@ -257,7 +255,7 @@ std::string draw(VulkanDevice& d, const WrappedProgram& w, const SpirvProgram& p
   rpbi.renderArea = {{0, 0}, {kGridWidth, kGridHeight}};
   vkCmdBeginRenderPass(cmd, &rpbi, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, 0, 2, sets, 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, 0, 3, sets, 0, nullptr);
   vkCmdDraw(cmd, count * w.iface.input_vertices, 1, 0, 0);
   vkCmdEndRenderPass(cmd);
   // Make the stages' buffer stores visible to the host mapping we read back from.

@@ -199,6 +199,17 @@ std::string GraphicsHarness::plan(runner::GraphicsStage stage, const std::string
     if (it == inputs_.end() && in.from_initializer) continue;
     // A per-vertex input array of a geometry or tessellation shader by its own name: every element.
     if (it == inputs_.end() && apply_to_parts(inputs_, name, in)) continue;
+    // A member of a uniform block by the name the shader reads it by (`center` of an anonymous block
+    // listed as Camera.center, as `doublet plan` names it), where one block has it.
+    if (it == inputs_.end() && name.find('.') == std::string::npos) {
+      const std::string suffix = "." + name;
+      const auto member = [&](const Variable& v) {
+        return v.is_uniform && v.name.size() > suffix.size() &&
+               v.name.compare(v.name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+               v.name.find('.') == v.name.size() - suffix.size();
+      };
+      if (std::count_if(inputs_.begin(), inputs_.end(), member) == 1) it = std::find_if(inputs_.begin(), inputs_.end(), member);
+    }
     if (it == inputs_.end()) {
       std::string known;
       for (const auto& v : inputs_) known += " " + v.name;

@@ -169,6 +169,39 @@ void main() { uint i = gl_GlobalInvocationID.x; r[i] = sats[i].a.x * sats[i].a.y
       }
 }
 
+// A fragment shader's uniform blocks at bindings 0 and 1 run as written: the runner's own buffers
+// are in a descriptor set of their own under Vulkan (before: "which the runner cannot use").
+TEST(VerifyInputs, UniformBlocksAtBindingsZeroAndOneRun) {
+  VerifyOptions o;
+  o.lower.stage = Stage::Fragment;
+  o.lower.target = Target::Es310;
+  o.lower.file_name = "bound_blocks.frag";
+  o.samples = 64;
+  o.spec.inputs["center"].lo = 1;
+  o.spec.inputs["center"].hi = 2;
+  o.spec.inputs["scale"].lo = 1e-6;
+  o.spec.inputs["scale"].hi = 2e-6;
+  o.spec.inputs["tint"].lo = 0.5;
+  o.spec.inputs["tint"].hi = 1;
+  const VerifyReport r = verify(R"(#version 450
+layout(std140, binding = 0) uniform Camera { dvec2 center; double scale; };
+layout(std140, binding = 1) uniform Tint { vec4 tint; };
+layout(location = 0) in vec2 uv;
+layout(location = 0) out vec4 color;
+void main() {
+  dvec2 p = center + dvec2(uv) * scale;
+  color = vec4(float(p.x), float(p.x - double(float(p.x))), float(p.y), tint.x);
+}
+)", o);
+  expect_ran_on_both_backends(r);
+  // color.w is tint.x, a block member read at binding 1: never left at 0.
+  for (const BackendRun& run : r.runs)
+    for (const OutputStats& out : run.outputs)
+      if (out.name == "color.w")
+        for (double want : out.want_values) EXPECT_GE(want, 0.5);
+  EXPECT_TRUE(r.passed()) << format_table(r);
+}
+
 // The foundation's golden compute shaders have float outputs: native and lowered must agree on
 // every float (their ~48-bit intermediates round to the same float here).
 TEST(VerifyGolden, FoundationComputeShadersAgree) {
