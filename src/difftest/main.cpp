@@ -67,7 +67,7 @@ int run(const RunArgs& a) {
   fs::create_directories(a.out);
   std::map<std::string, uint64_t> checked;
   std::set<std::string> covered;
-  uint64_t programs = 0, failures = 0, invalid = 0, excused = 0, timeouts = 0;
+  uint64_t programs = 0, failures = 0, invalid = 0, excused = 0, excused_int = 0, timeouts = 0;
   for (uint64_t seed = a.seed; seconds_since(start) < a.seconds; ++seed) {
     const Program p = generate(seed);
     CheckOptions options;
@@ -87,6 +87,7 @@ int run(const RunArgs& a) {
     covered.insert(p.features.begin(), p.features.end());
     for (const std::string& o : r.checked) ++checked[o];
     excused += r.excused_zero_signs;
+    excused_int += r.excused_int_zero_signs;
     if (!r.invalid.empty()) {
       ++invalid;
       std::cout << "seed " << seed << ": the generated program is invalid (a generator bug):\n" << r.invalid << "\n";
@@ -134,6 +135,8 @@ int run(const RunArgs& a) {
   if (invalid) std::cout << "invalid programs (generator bugs): " << invalid << "\n";
   if (timeouts) std::cout << "programs without a result in time (skipped): " << timeouts << "\n";
   if (excused) std::cout << "exact: " << excused << " result(s) were zeros of the other sign than native's (excused)\n";
+  if (excused_int)
+    std::cout << "int: " << excused_int << " result(s) were zeros of the other sign than df64's (excused)\n";
   std::cout << "programs: " << programs << ", failures: " << failures + invalid << ", oracles: exact=" << checked["exact"]
             << " int=" << checked["int"] << " bound=" << checked["bound"] << " guard=" << checked["guard"]
             << " targets=" << checked["targets"] << std::endl;
@@ -168,6 +171,8 @@ int check_files(const std::vector<std::string>& files, uint64_t samples, bool we
     std::cout << file << ": " << (r.findings.empty() ? "ok" : "FAIL") << " (oracles:";
     for (const std::string& o : r.checked) std::cout << " " << o;
     std::cout << ")";
+    if (r.excused_zero_signs) std::cout << "; exact: " << r.excused_zero_signs << " zeros of native's other sign excused";
+    if (r.excused_int_zero_signs) std::cout << "; int: " << r.excused_int_zero_signs << " zeros of df64's other sign excused";
     for (const auto& [what, s] : r.seconds) std::cout << "; " << what << " " << static_cast<int>(s * 1000) << " ms";
     std::cout << "\n";
     print_findings(r);

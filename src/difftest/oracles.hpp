@@ -50,6 +50,7 @@ struct CheckResult {
   std::vector<Finding> findings;
   std::vector<std::string> notes;     // what was left unchecked and why (a documented refusal)
   std::vector<std::pair<std::string, double>> seconds;
+  uint64_t excused_int_zero_signs = 0;  // int: df64-int's +0 against df64's -0 or the reverse (oracles.cpp)
   uint64_t excused_zero_signs = 0;  // exact: +0 against native's -0 or the reverse (oracles.cpp)  // wall time per verify run ("exact es310", ...)
 };
 
