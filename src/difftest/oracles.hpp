@@ -49,9 +49,9 @@ struct CheckResult {
   std::vector<std::string> checked;   // oracles that ran to a verdict
   std::vector<Finding> findings;
   std::vector<std::string> notes;     // what was left unchecked and why (a documented refusal)
-  std::vector<std::pair<std::string, double>> seconds;
+  std::vector<std::pair<std::string, double>> seconds;  // wall time per verify run ("exact es310", ...)
   uint64_t excused_int_zero_signs = 0;  // int: df64-int's +0 against df64's -0 or the reverse (oracles.cpp)
-  uint64_t excused_zero_signs = 0;  // exact: +0 against native's -0 or the reverse (oracles.cpp)  // wall time per verify run ("exact es310", ...)
+  uint64_t excused_zero_signs = 0;  // exact: +0 against native's -0 or the reverse (oracles.cpp)
 };
 
 // The program compiles as native fp64 GLSL 4.50 the way verify runs it (stage "comp", "vert" or

@@ -245,16 +245,19 @@ class DoubleLowering {
       }
       // Members and the members of struct members (exact_blocks.cpp: a struct's twin holds its
       // matrices' column words as a block does).
-      std::function<bool(const std::vector<ir::Field>&)> check = [&](const std::vector<ir::Field>& fields) {
+      // `row_major`: the layout the enclosing block or struct member gives.
+      std::function<bool(const std::vector<ir::Field>&, bool)> check = [&](const std::vector<ir::Field>& fields,
+                                                                          bool row_major) {
         for (const auto& f : fields) {
           if (!holds_double_matrix(f.type)) continue;
+          const bool row = f.layout.matrix == "row_major" || (f.layout.matrix.empty() && row_major);
           if (f.type.base == ir::Base::Struct && f.type.fields) {
             if (f.type.array_dims.size() > 1)
               return refuse(f.name, "in a multi-dimensional array of structs is not supported by --mode exact");
-            if (!check(*f.type.fields)) return false;
+            if (!check(*f.type.fields, row)) return false;
             continue;
           }
-          if (f.layout.matrix == "row_major" || (f.layout.matrix.empty() && g.layout.matrix == "row_major"))
+          if (row)
             return refuse(f.name, "with layout(row_major) is not supported by --mode exact: declare it column_major "
                                   "(the default) and transpose the host's data");
           if (f.type.array_dims.size() > 1)
@@ -262,7 +265,7 @@ class DoubleLowering {
         }
         return true;
       };
-      return check(*g.type.fields);
+      return check(*g.type.fields, g.layout.matrix == "row_major");
     }
     if (g.storage == ir::Storage::Uniform && g.type.base == ir::Base::Double) {
       if (g.type.array_dims.size() > 1 || (g.type.is_array() && g.type.array_dims[0] <= 0))

@@ -383,6 +383,11 @@ TEST(ExactMatrixInterface, InOutAndRowMajorMatricesAreDiagnosed) {
                               "void main() { gl_Position = vec4(s.m[0], 1.0); }\n", o);
   ASSERT_FALSE(nested.ok);
   EXPECT_NE(diagnostics(nested).find("row_major"), std::string::npos) << diagnostics(nested);
+  // ... and in a struct member declared row_major.
+  const Result member = lower("#version 450\nstruct S { dmat3 m; };\nlayout(std140) uniform U { layout(row_major) S s; };\n"
+                              "void main() { gl_Position = vec4(s.m[0], 1.0); }\n", o);
+  ASSERT_FALSE(member.ok);
+  EXPECT_NE(diagnostics(member).find("row_major"), std::string::npos) << diagnostics(member);
 }
 
 }  // namespace
