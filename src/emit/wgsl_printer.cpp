@@ -76,7 +76,8 @@ std::string f32_literal(float value) {
 
 class WgslPrinter {
  public:
-  WgslPrinter(const ir::Module& m, const std::string& file, const std::string& note) : m_(m), file_(file), note_(note) {
+  WgslPrinter(const ir::Module& m, const std::string& file, const std::string& note, const std::map<std::string, int>& groups)
+      : m_(m), file_(file), note_(note), block_groups_(groups) {
     out_.imbue(std::locale::classic());
   }
 
@@ -96,6 +97,7 @@ class WgslPrinter {
  private:
   const ir::Module& m_;
   std::string file_, note_;
+  const std::map<std::string, int>& block_groups_;
   std::ostringstream out_;
   std::vector<Diagnostic> diags_;
   InterfaceVariable uniform_buffer_;
@@ -209,26 +211,34 @@ class WgslPrinter {
     return v.storage == ir::Storage::Uniform && !v.block && v.type.base != Base::Block && v.type.base != Base::Opaque;
   }
 
-  // Explicit bindings first (GL's uniform and storage blocks have separate binding namespaces,
-  // WGSL's group 0 has one: a clash is an error); blocks without one take the next free numbers in
-  // declaration order, and the loose-uniform buffer the one after them all.
+  int group_of(const ir::Var& block) const {
+    const auto found = block_groups_.find(block.type.name);
+    return found == block_groups_.end() ? 0 : found->second;
+  }
+
+  // Explicit bindings first, per group (GL's uniform and storage blocks have separate binding
+  // namespaces, a WGSL group has one: a clash is an error); blocks without one take the next free
+  // numbers of their group in declaration order, and the loose-uniform buffer the one after group
+  // 0's.
   std::map<const ir::Var*, int> assign_bindings(int& next_free) {
     std::map<const ir::Var*, int> assigned;
-    std::set<int> used;
+    std::map<int, std::set<int>> used;  // by group
     auto is_block = [](const ir::Var& v) {
       return (v.storage == ir::Storage::Uniform || v.storage == ir::Storage::Buffer) && v.type.base == Base::Block;
     };
     for (const auto& v : m_.globals)
       if (is_block(*v) && v->layout.binding >= 0) {
-        if (!used.insert(v->layout.binding).second)
-          error(v->loc, "binding " + std::to_string(v->layout.binding) +
+        if (!used[group_of(*v)].insert(v->layout.binding).second)
+          error(v->loc, "binding " + std::to_string(v->layout.binding) + " of group " + std::to_string(group_of(*v)) +
                             " is used twice: WGSL has one binding namespace per group (GL's uniform and storage "
                             "blocks have two); give each block its own binding");
         assigned[v.get()] = v->layout.binding;
       }
-    next_free = used.empty() ? 0 : *used.rbegin() + 1;
+    std::map<int, int> next;  // by group
+    for (const auto& [group, bindings] : used) next[group] = bindings.empty() ? 0 : *bindings.rbegin() + 1;
     for (const auto& v : m_.globals)
-      if (is_block(*v) && v->layout.binding < 0) assigned[v.get()] = next_free++;
+      if (is_block(*v) && v->layout.binding < 0) assigned[v.get()] = next[group_of(*v)]++;
+    next_free = next[0];
     return assigned;
   }
 
@@ -261,7 +271,7 @@ class WgslPrinter {
           }
           const bool uniform = v->storage == ir::Storage::Uniform;
           const int binding = bindings_of.at(v.get());
-          block_bindings_.push_back({v->type.name, anonymous_name(*v), binding});
+          block_bindings_.push_back({v->type.name, anonymous_name(*v), group_of(*v), binding});
           struct_definition(v->type);
           const std::string var_name = anonymous_name(*v).empty() ? "df_block_" + v->type.name : name;
           block_var_names_[v.get()] = var_name;
@@ -275,7 +285,7 @@ class WgslPrinter {
                             "'; write it from a compute shader, or use --target glsl450/es310");
             read_only = true;
           }
-          out_ << "@group(0) @binding(" << binding << ") var<"
+          out_ << "@group(" << group_of(*v) << ") @binding(" << binding << ") var<"
                << (uniform ? "uniform" : read_only ? "storage, read" : "storage, read_write") << "> " << var_name
                << ": " << ident(v->type.name) << ";\n";
           break;
@@ -1283,8 +1293,9 @@ class WgslPrinter {
 
 }  // namespace
 
-WgslPrintResult print_wgsl(const ir::Module& module, const std::string& file_name, const std::string& position_note) {
-  return WgslPrinter(module, file_name, position_note).run();
+WgslPrintResult print_wgsl(const ir::Module& module, const std::string& file_name, const std::string& position_note,
+                           const std::map<std::string, int>& block_groups) {
+  return WgslPrinter(module, file_name, position_note, block_groups).run();
 }
 
 }  // namespace doublet::emit

@@ -20,6 +20,7 @@
 #include <tuple>
 #include <functional>
 #include <mutex>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -464,15 +465,39 @@ void explain_vulkan_only(std::vector<Diagnostic>& diags, size_t first,
     if (!explained.insert({d.file, d.line}).second) continue;  // one explanation per line
     const std::string name(to_string(target));
     std::string advice = found->advice;
-    if (target == Target::Wgsl && std::string_view(found->word) == "set")
-      advice = "descriptor sets (layout(set = N)) are Vulkan GLSL; remove 'set = N' and keep 'binding = M' (WGSL output "
-               "puts every resource in @group(0), at its binding)";
+    if (target == Target::Wgsl && std::string_view(found->word) == "set")  // (the main file's are read: parse)
+      advice = "a descriptor set (layout(set = N)) in an #include'd file: wgsl reads the main file's as @group(N); "
+               "declare the block there";
     d.message = advice + " (target " + name +
                 (target == Target::Wgsl ? ": doublet reads OpenGL GLSL for WGSL output too)"
                                         : std::string(" is ") + (target_is_es(target) ? "OpenGL ES" : "OpenGL") + " GLSL)");
     kept.push_back(std::move(d));
   }
   diags = std::move(kept);
+}
+
+// `layout(... set = N ...)` with N > 0 rewritten as set = 0, padded to the same length (columns
+// kept), each recorded; comments are not told apart (a rewritten comment changes nothing).
+std::string parse_descriptor_sets_as_zero(std::string text, std::vector<ParsedShader::DescriptorSet>& sets) {
+  static const std::regex layout(R"(\blayout\s*\()"), set(R"(\bset\s*=\s*([0-9]+))");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), layout); it != std::sregex_iterator(); ++it) {
+    const size_t open = static_cast<size_t>(it->position(0) + it->length(0));
+    const size_t close = text.find(')', open);
+    if (close == std::string::npos) break;
+    std::smatch m;
+    std::string inside = text.substr(open, close - open);
+    for (auto s = inside.cbegin(); std::regex_search(s, inside.cend(), m, set); s = m[0].second) {
+      const size_t at = open + static_cast<size_t>(m.position(0) + (s - inside.cbegin()));
+      const size_t digits = open + static_cast<size_t>(m.position(1) + (s - inside.cbegin()));
+      const int value = m.length(1) > 6 ? 1000000 : std::stoi(m.str(1));
+      if (value == 0) continue;
+      const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+      const size_t line_start = text.rfind('\n', at);
+      sets.push_back({line, static_cast<int>(at - (line_start == std::string::npos ? 0 : line_start + 1)) + 1, value});
+      text.replace(digits, static_cast<size_t>(m.length(1)), "0" + std::string(static_cast<size_t>(m.length(1)) - 1, ' '));
+    }
+  }
+  return text;
 }
 
 bool has_main(glslang::TIntermediate* intermediate) {
@@ -548,6 +573,8 @@ bool parse(std::string_view source, const Options& options, ParsedShader& out,
 
   std::string text(source);
   std::vector<std::pair<std::string, std::string>> files{{options.file_name, text}};
+  // WGSL has bind groups (Vulkan's descriptor sets, which glslang allows OpenGL GLSL only as set 0).
+  if (options.target == Target::Wgsl) text = parse_descriptor_sets_as_zero(std::move(text), out.descriptor_sets);
   IncludeAdapter includer(options, files, out.included_files, kMaxSourceBytes - std::min(kMaxSourceBytes, source.size()));
   bool needs_preprocessing = false;  // or includes files: then the operator limit applies to the preprocessed text
   if (auto error = check_macro_budget(source, options, includer, needs_preprocessing)) {

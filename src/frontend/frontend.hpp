@@ -34,6 +34,13 @@ struct ParsedShader {
   std::vector<std::string> included_files;
   std::string source;  // the main file's text (global declarations are located in it)
   bool transcendentals = false;  // parsed with the transcendental prototypes (transcendentals.hpp)
+  // --target wgsl: each Vulkan `layout(set = N)` with N > 0 of the main file, parsed as set = 0
+  // (OpenGL GLSL has set 0 only), as (line, column of `set`, N); import_module gives N to the
+  // declaration it qualifies, the WGSL printer makes it the @group.
+  struct DescriptorSet {
+    int line = 0, column = 0, set = 0;
+  };
+  std::vector<DescriptorSet> descriptor_sets;
   ParsedShader();
   ParsedShader(ParsedShader&&) noexcept;
   ~ParsedShader();

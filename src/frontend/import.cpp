@@ -850,6 +850,17 @@ bool import_module(const ParsedShader& parsed, const Options& options, ir::Modul
   importer.transcendentals = parsed.transcendentals;
   if (!importer.run(*parsed.intermediate)) return false;
   if (parsed.transcendentals) mark_transcendental_calls(out);
+  // A `layout(set = N)` read as set 0 (parse, --target wgsl) qualifies the first global declared
+  // after it in the main file.
+  for (const ParsedShader::DescriptorSet& s : parsed.descriptor_sets) {
+    ir::Var* qualified = nullptr;
+    auto before = [](const ir::Loc& a, int line, int column) { return a.line < line || (a.line == line && a.column < column); };
+    for (const auto& g : out.globals)
+      if (!g->loc.file && !before(g->loc, s.line, s.column) && g->layout.set == 0 &&
+          (!qualified || before(g->loc, qualified->loc.line, qualified->loc.column)))
+        qualified = g.get();
+    if (qualified) qualified->layout.set = s.set;
+  }
   return place_declarations(out, options, diagnostics);
 }
 

@@ -65,7 +65,10 @@ bool print_wgsl(State& state) {
   }
   const std::string note = " (position in the intermediate GLSL: see `doublet lower --target es310 --guard uniform " +
                            state.config.file_name + "`)";
-  emit::WgslPrintResult printed = emit::print_wgsl(module, state.config.file_name, note);
+  std::map<std::string, int> groups;  // Vulkan GLSL's sets (frontend::ParsedShader::descriptor_sets)
+  for (const auto& v : state.module.globals)
+    if (v->type.base == ir::Base::Block && v->layout.set > 0) groups[v->type.name] = v->layout.set;
+  emit::WgslPrintResult printed = emit::print_wgsl(module, state.config.file_name, note, groups);
   for (auto& d : printed.diagnostics) {
     d.message = restore_prefix(d.message);
     place_in_user_source(d, state.printed.source_lines, note);
@@ -75,7 +78,7 @@ bool print_wgsl(State& state) {
   for (auto& v : result.manifest.variables)
     for (const auto& b : printed.block_bindings)
       if ((v.storage == "uniform" || v.storage == "buffer") && (v.name == b.block || (!b.instance.empty() && v.name == b.instance))) {
-        v.group = 0;
+        v.group = b.group;
         v.binding = b.binding;
       }
   if (!printed.uniform_buffer.name.empty()) {

@@ -99,7 +99,8 @@ WebGpuRun run_webgpu_compute(const std::string& wgsl, const std::vector<WebGpuBu
   job["groups"] = {workgroups[0], workgroups[1], workgroups[2]};
   job["buffers"] = nlohmann::json::array();
   for (const auto& b : buffers)
-    job["buffers"].push_back({{"binding", b.binding},
+    job["buffers"].push_back({{"group", b.group},
+                              {"binding", b.binding},
                               {"kind", b.kind == WebGpuBuffer::Kind::Uniform ? "uniform"
                                        : b.kind == WebGpuBuffer::Kind::Storage ? "storage" : "read-only-storage"},
                               {"data", base64(b.bytes)}});

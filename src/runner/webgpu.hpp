@@ -12,9 +12,10 @@ namespace doublet::runner {
 
 struct WebGpuBuffer {
   enum class Kind { Uniform, Storage, ReadOnlyStorage };
-  int binding = 0;  // @group(0) @binding(N)
+  int binding = 0;  // @group(group) @binding(N)
   Kind kind = Kind::Storage;
   std::vector<std::uint8_t> bytes;  // initial contents (std430-compatible for storage buffers)
+  int group = 0;
 };
 
 struct WebGpuRun {

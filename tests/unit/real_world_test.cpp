@@ -270,8 +270,6 @@ INSTANTIATE_TEST_SUITE_P(
                 "texelFetch(tex, ivec2(gl_FragCoord.xy), 0)", 2},
         Refusal{"VulkanVertexIndex", kVertexIndex, Stage::Vertex, Target::Es300, "'gl_VertexIndex' is Vulkan GLSL",
                 "gl_VertexID", 3},
-        Refusal{"VulkanDescriptorSetOnWgsl", kDescriptorSet, Stage::Fragment, Target::Wgsl,
-                "descriptor sets (layout(set = N)) are Vulkan GLSL", "WGSL output puts every resource in @group(0)", 2},
         Refusal{"Sampler1DOnWgsl", kSampler1D, Stage::Fragment, Target::Wgsl,
                 "'ramp' has the type sampler1D, which wgsl does not have", "target glsl330, glsl450", 2},
         Refusal{"PreciseDoesNotHideAnIndexedOutputOnEs300", kPreciseAndOutputIndex, Stage::Fragment, Target::Es300,

@@ -2,7 +2,7 @@
 //   job.kind == 'validate': job.modules = [{name, stage, code}]; each module is compiled
 //     (createShaderModule + getCompilationInfo) and put in a pipeline (compute, or render with a
 //     minimal partner stage) inside a validation error scope. Reports {adapter, results: [{name, ok, messages}]}.
-//   job.kind == 'compute': job.code, job.groups [x,y,z], job.buffers = [{binding, kind: 'uniform'|
+//   job.kind == 'compute': job.code, job.groups [x,y,z], job.buffers = [{group (0 if absent), binding, kind: 'uniform'|
 //     'storage'|'read-only-storage', data (base64)}]; runs one dispatch and reports {adapter, buffers
 //     (base64, the storage buffers read back, in job order), messages}.
 const fromBase64 = (s) => Uint8Array.from(atob(s), (c) => c.charCodeAt(0));
@@ -57,11 +57,15 @@ async function compute(device, job) {
   device.pushErrorScope('validation');
   const module = device.createShaderModule({ code: job.code });
   const messages = await messagesOf(module);
-  const layout = device.createBindGroupLayout({
-    entries: job.buffers.map((b) => ({ binding: b.binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: b.kind } })),
-  });
+  // One bind group per @group index up to the highest used (an unused one is empty).
+  const groupOf = (b) => b.group ?? 0;
+  const groupCount = 1 + Math.max(0, ...job.buffers.map(groupOf));
+  const layouts = [...Array(groupCount).keys()].map((g) => device.createBindGroupLayout({
+    entries: job.buffers.filter((b) => groupOf(b) === g)
+      .map((b) => ({ binding: b.binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: b.kind } })),
+  }));
   const pipeline = device.createComputePipeline({
-    layout: device.createPipelineLayout({ bindGroupLayouts: [layout] }), compute: { module, entryPoint: 'main' } });
+    layout: device.createPipelineLayout({ bindGroupLayouts: layouts }), compute: { module, entryPoint: 'main' } });
   const buffers = job.buffers.map((b) => {
     const data = fromBase64(b.data);
     const size = Math.max(16, Math.ceil(data.length / 16) * 16);
@@ -72,11 +76,15 @@ async function compute(device, job) {
     device.queue.writeBuffer(buffer, 0, padded);
     return { buffer, size, length: data.length, kind: b.kind };
   });
-  const group = device.createBindGroup({ layout, entries: job.buffers.map((b, i) => ({ binding: b.binding, resource: { buffer: buffers[i].buffer } })) });
+  const bindGroups = layouts.map((layout, g) => device.createBindGroup({
+    layout,
+    entries: job.buffers.map((b, i) => ({ b, i })).filter(({ b }) => groupOf(b) === g)
+      .map(({ b, i }) => ({ binding: b.binding, resource: { buffer: buffers[i].buffer } })),
+  }));
   const encoder = device.createCommandEncoder();
   const pass = encoder.beginComputePass();
   pass.setPipeline(pipeline);
-  pass.setBindGroup(0, group);
+  bindGroups.forEach((group, g) => pass.setBindGroup(g, group));
   pass.dispatchWorkgroups(...job.groups);
   pass.end();
   const reads = buffers.map((b) => {
