@@ -4,6 +4,8 @@
 
 #include <fstream>
 #include <sstream>
+#include <tuple>
+#include <vector>
 
 #include "verify/report.hpp"
 #include "verify/verify.hpp"
@@ -110,18 +112,27 @@ TEST_P(VerifyShader, WithoutAThresholdACollapseToFloatFails) {
   }
 }
 
+// Options for verifying an inline shader: es310, 64 samples, each input ranged [lo, hi].
+VerifyOptions inline_options(Stage stage, const char* file_name,
+                             const std::vector<std::tuple<const char*, double, double>>& ranges) {
+  VerifyOptions o;
+  o.lower.stage = stage;
+  o.lower.target = Target::Es310;
+  o.lower.file_name = file_name;
+  o.samples = 64;
+  for (const auto& [name, lo, hi] : ranges) {
+    o.spec.inputs[name].lo = lo;
+    o.spec.inputs[name].hi = hi;
+  }
+  return o;
+}
+
 // An output Inf in every sample where native fp64 is finite (a product beyond float's range, in
 // float-float and in float alone) keeps 0 bits: without a threshold it fails. Its float median
 // was -inf bits, which read as "not judged", and verify printed PASS.
 TEST(VerifyWithoutAThreshold, AnOutputBeyondFloatsRangeFails) {
-  VerifyOptions o;
-  o.lower.stage = Stage::Compute;
-  o.lower.target = Target::Es310;
-  o.lower.file_name = "beyond_range.comp";
-  o.samples = 64;
+  VerifyOptions o = inline_options(Stage::Compute, "beyond_range.comp", {{"x", 1e30, 1e31}});
   o.judge_against_float = true;
-  o.spec.inputs["x"].lo = 1e30;
-  o.spec.inputs["x"].hi = 1e31;
   const VerifyReport r = verify(R"(#version 450
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) readonly buffer In0 { double x[]; };
@@ -143,13 +154,7 @@ void main() { uint i = gl_GlobalInvocationID.x; r[i] = x[i] * x[i]; }
 // A buffer of structs ranged as a whole (as `doublet plan` gives a struct one range): every member
 // takes the range (verify lists them as sats.a, sats.b); before, "no input named 'sats'".
 TEST(VerifyInputs, AStructRangedAsAWholeRangesEachMember) {
-  VerifyOptions o;
-  o.lower.stage = Stage::Compute;
-  o.lower.target = Target::Es310;
-  o.lower.file_name = "struct_buffer.comp";
-  o.samples = 64;
-  o.spec.inputs["sats"].lo = 1;
-  o.spec.inputs["sats"].hi = 2;
+  VerifyOptions o = inline_options(Stage::Compute, "struct_buffer.comp", {{"sats", 1, 2}});
   o.min_bits = 44;
   const VerifyReport r = verify(R"(#version 450
 layout(local_size_x = 1) in;
@@ -172,17 +177,8 @@ void main() { uint i = gl_GlobalInvocationID.x; r[i] = sats[i].a.x * sats[i].a.y
 // A fragment shader's uniform blocks at bindings 0 and 1 run as written: the runner's own buffers
 // are in a descriptor set of their own under Vulkan (before: "which the runner cannot use").
 TEST(VerifyInputs, UniformBlocksAtBindingsZeroAndOneRun) {
-  VerifyOptions o;
-  o.lower.stage = Stage::Fragment;
-  o.lower.target = Target::Es310;
-  o.lower.file_name = "bound_blocks.frag";
-  o.samples = 64;
-  o.spec.inputs["center"].lo = 1;
-  o.spec.inputs["center"].hi = 2;
-  o.spec.inputs["scale"].lo = 1e-6;
-  o.spec.inputs["scale"].hi = 2e-6;
-  o.spec.inputs["tint"].lo = 0.5;
-  o.spec.inputs["tint"].hi = 1;
+  const VerifyOptions o =
+      inline_options(Stage::Fragment, "bound_blocks.frag", {{"center", 1, 2}, {"scale", 1e-6, 2e-6}, {"tint", 0.5, 1}});
   const VerifyReport r = verify(R"(#version 450
 layout(std140, binding = 0) uniform Camera { dvec2 center; double scale; };
 layout(std140, binding = 1) uniform Tint { vec4 tint; };
