@@ -20,7 +20,6 @@
 #include <tuple>
 #include <functional>
 #include <mutex>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -477,24 +476,48 @@ void explain_vulkan_only(std::vector<Diagnostic>& diags, size_t first,
 }
 
 // `layout(... set = N ...)` with N > 0 rewritten as set = 0, padded to the same length (columns
-// kept), each recorded; comments are not told apart (a rewritten comment changes nothing).
+// kept), each recorded. One pass, no regex (a 4 MB line stays linear and shallow); comments are not
+// told apart (a rewritten comment changes nothing).
 std::string parse_descriptor_sets_as_zero(std::string text, std::vector<ParsedShader::DescriptorSet>& sets) {
-  static const std::regex layout(R"(\blayout\s*\()"), set(R"(\bset\s*=\s*([0-9]+))");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), layout); it != std::sregex_iterator(); ++it) {
-    const size_t open = static_cast<size_t>(it->position(0) + it->length(0));
-    const size_t close = text.find(')', open);
-    if (close == std::string::npos) break;
-    std::smatch m;
-    std::string inside = text.substr(open, close - open);
-    for (auto s = inside.cbegin(); std::regex_search(s, inside.cend(), m, set); s = m[0].second) {
-      const size_t at = open + static_cast<size_t>(m.position(0) + (s - inside.cbegin()));
-      const size_t digits = open + static_cast<size_t>(m.position(1) + (s - inside.cbegin()));
-      const int value = m.length(1) > 6 ? 1000000 : std::stoi(m.str(1));
-      if (value == 0) continue;
-      const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
-      const size_t line_start = text.rfind('\n', at);
-      sets.push_back({line, static_cast<int>(at - (line_start == std::string::npos ? 0 : line_start + 1)) + 1, value});
-      text.replace(digits, static_cast<size_t>(m.length(1)), "0" + std::string(static_cast<size_t>(m.length(1)) - 1, ' '));
+  const size_t n = text.size();
+  auto word_end = [&](size_t i) {
+    while (i < n && is_word_char(text[i])) ++i;
+    return i;
+  };
+  auto skip_blanks = [&](size_t i) {
+    while (i < n && (is_blank(text[i]) || text[i] == '\n')) ++i;
+    return i;
+  };
+  int line = 1;
+  size_t line_start = 0;
+  bool after_layout = false, inside = false;  // the word `layout` seen, its '(' not yet / open
+  for (size_t i = 0; i < n; ++i) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      line_start = i + 1;
+    } else if (is_word_char(c)) {
+      const size_t end = word_end(i);
+      const std::string_view word(text.data() + i, end - i);
+      after_layout = !inside && word == "layout";
+      if (inside && word == "set") {
+        const size_t equals = skip_blanks(end);
+        const size_t first = equals < n && text[equals] == '=' ? skip_blanks(equals + 1) : n;
+        size_t last = first;
+        while (last < n && is_digit(text[last])) ++last;
+        if (last > first) {
+          const int value = last - first > 6 ? 1000000 : std::stoi(text.substr(first, last - first));
+          if (value != 0) {
+            sets.push_back({line, static_cast<int>(i - line_start) + 1, value});
+            text.replace(first, last - first, "0" + std::string(last - first - 1, ' '));
+          }
+        }
+      }
+      i = end - 1;
+    } else if (!is_blank(c)) {
+      if (c == '(' && after_layout) inside = true;
+      else if (c == ')') inside = false;
+      after_layout = false;
     }
   }
   return text;
